@@ -1,0 +1,114 @@
+/* Calls every foundation export through the C ABI: valid values against independent C
+ * computations (closed forms evaluated here, and a fine RK4 integration of the equation of
+ * motion for the force-zero criterion), and every class of bad input. */
+#include "check.h"
+#include <demcontact.h>
+#include <stdint.h>
+#include <string.h>
+
+static const double PI = 3.14159265358979323846;
+
+/* Velocity-Verlet-free reference: classical RK4, m = k = 1, tiny fixed step, end event located
+ * by linear interpolation between steps. Returns realised e. */
+static double rk4_restitution(double p, double alpha, int force_end) {
+    double d = 0.0, v = 1.0, h = 2e-5;
+    double dexp = 0.5 * (p - 1.0);
+#define ACC(dd, vv) (-(alpha) * pow(fabs(dd), dexp) * (vv) - copysign(pow(fabs(dd), p), (dd)))
+#define FORCE(dd, vv) (copysign(pow(fabs(dd), p), (dd)) + (alpha) * pow(fabs(dd), dexp) * (vv))
+    for (long i = 0; i < 100000000L; i++) {
+        double k1d = v, k1v = ACC(d, v);
+        double k2d = v + 0.5 * h * k1v, k2v = ACC(d + 0.5 * h * k1d, v + 0.5 * h * k1v);
+        double k3d = v + 0.5 * h * k2v, k3v = ACC(d + 0.5 * h * k2d, v + 0.5 * h * k2v);
+        double k4d = v + h * k3v, k4v = ACC(d + h * k3d, v + h * k3v);
+        double nd = d + h / 6.0 * (k1d + 2 * k2d + 2 * k3d + k4d);
+        double nv = v + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v);
+        if (v < 0.0) { /* unloading: look for the end event */
+            double g0 = force_end ? FORCE(d, v) : d;
+            double g1 = force_end ? FORCE(nd, nv) : nd;
+            if (g1 <= 0.0) {
+                double s = g0 / (g0 - g1);
+                return -(v + s * (nv - v));
+            }
+        }
+        d = nd;
+        v = nv;
+    }
+    return NAN;
+#undef ACC
+#undef FORCE
+}
+
+int main(void) {
+    const double ps[] = {1.0, 1.5, 2.0, 3.0};
+    const double es[] = {0.1, 0.3, 0.5, 0.7, 0.9};
+    double a = 0, e = 0;
+
+    /* Overlap criterion: the closed form, computed here independently. */
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 5; j++) {
+            double p = ps[i], L = -log(es[j]);
+            double want = sqrt(2.0 * (p + 1.0)) * L / sqrt(PI * PI + L * L);
+            CHECK_STATUS(dc_alpha_from_e(es[j], p, DC_END_OVERLAP, &a), DC_OK);
+            CHECK(dc_rel(a, want) < 1e-14, "p=%g e=%g: %.17g vs %.17g", p, es[j], a, want);
+            CHECK_STATUS(dc_e_from_alpha(a, p, DC_END_OVERLAP, &e), DC_OK);
+            CHECK(dc_rel(e, es[j]) < 1e-14, "round trip %g -> %.17g", es[j], e);
+        }
+
+    /* Force criterion: realised e by direct RK4 integration (accuracy ~1e-6 with this step). */
+    for (int i = 0; i < 4; i++) {
+        double p = ps[i];
+        for (int j = 0; j < 5; j += 2) {
+            CHECK_STATUS(dc_alpha_from_e(es[j], p, DC_END_FORCE, &a), DC_OK);
+            double got = rk4_restitution(p, a, 1);
+            CHECK(dc_rel(got, es[j]) < 2e-5, "force end p=%g e=%g: RK4 realises %.9f", p, es[j], got);
+            /* and the overlap-calibrated alpha overshoots in a clamping solver */
+            CHECK_STATUS(dc_alpha_from_e(es[j], p, DC_END_OVERLAP, &a), DC_OK);
+            double clamped = rk4_restitution(p, a, 1);
+            CHECK(clamped > es[j] + 1e-3, "overlap alpha in clamping solver should overshoot: %g", clamped);
+            double unclamped = rk4_restitution(p, a, 0);
+            CHECK(dc_rel(unclamped, es[j]) < 2e-5, "overlap end p=%g e=%g: %.9f", p, es[j], unclamped);
+        }
+    }
+
+    /* Critical damping: force-end restitution exp(-2) at zeta = 1, no rebound for overlap end. */
+    CHECK_STATUS(dc_e_from_alpha(sqrt(5.0), 1.5, DC_END_FORCE, &e), DC_OK);
+    CHECK(dc_rel(e, exp(-2.0)) < 1e-15, "e_F(zeta=1) = %.17g", e);
+    CHECK_STATUS(dc_e_from_alpha(sqrt(5.0), 1.5, DC_END_OVERLAP, &e), DC_OK);
+    CHECK(e == 0.0, "e_O(zeta=1) = %g", e);
+
+    /* dt_crit: 2/omega0 for p = 1, and the seed's scaling for p = 1.5. */
+    double dt = 0;
+    CHECK_STATUS(dc_dt_crit(1.0, 2.0, 100.0, &dt), DC_OK);
+    CHECK(dc_rel(dt, 0.02) < 1e-15, "dt = %g", dt);
+    CHECK_STATUS(dc_dt_crit(1.5, 2.0, 100.0, &dt), DC_OK);
+    double want = 4.0 / 2.5 * pow(1.25, 0.4) / 100.0 * pow(2.0 / 100.0, -0.2);
+    CHECK(dc_rel(dt, want) < 1e-14, "dt = %.17g vs %.17g", dt, want);
+
+    /* Bad input: statuses, and the output stays untouched. */
+    double out = 42.0;
+    CHECK_STATUS(dc_alpha_from_e(0.0, 1.5, DC_END_FORCE, &out), DC_ERR_RESTITUTION_RANGE);
+    CHECK_STATUS(dc_alpha_from_e(1.5, 1.5, DC_END_FORCE, &out), DC_ERR_RESTITUTION_RANGE);
+    CHECK_STATUS(dc_alpha_from_e(NAN, 1.5, DC_END_FORCE, &out), DC_ERR_NOT_FINITE);
+    CHECK_STATUS(dc_alpha_from_e(0.5, INFINITY, DC_END_FORCE, &out), DC_ERR_NOT_FINITE);
+    CHECK_STATUS(dc_alpha_from_e(0.5, 0.5, DC_END_FORCE, &out), DC_ERR_EXPONENT_RANGE);
+    CHECK_STATUS(dc_alpha_from_e(0.5, 1.5, 3, &out), DC_ERR_CRITERION);
+    CHECK_STATUS(dc_alpha_from_e(0.5, 1.5, DC_END_FORCE, NULL), DC_ERR_NULL_POINTER);
+    CHECK_STATUS(dc_e_from_alpha(-1.0, 1.5, DC_END_FORCE, &out), DC_ERR_NEGATIVE);
+    CHECK_STATUS(dc_e_from_alpha(NAN, 1.5, DC_END_FORCE, &out), DC_ERR_NOT_FINITE);
+    CHECK_STATUS(dc_e_from_alpha(1.0, 1.5, -7, &out), DC_ERR_CRITERION);
+    CHECK_STATUS(dc_e_from_alpha(1.0, 1.5, DC_END_FORCE, NULL), DC_ERR_NULL_POINTER);
+    CHECK_STATUS(dc_dt_crit(1.5, -1.0, 1.0, &out), DC_ERR_NOT_POSITIVE);
+    CHECK_STATUS(dc_dt_crit(1.5, 1.0, 0.0, &out), DC_ERR_NOT_POSITIVE);
+    CHECK_STATUS(dc_dt_crit(1.5, NAN, 1.0, &out), DC_ERR_NOT_FINITE);
+    CHECK_STATUS(dc_dt_crit(0.0, 1.0, 1.0, &out), DC_ERR_EXPONENT_RANGE);
+    CHECK_STATUS(dc_dt_crit(1.5, 1.0, 1.0, NULL), DC_ERR_NULL_POINTER);
+    CHECK(out == 42.0, "output touched on error: %g", out);
+
+    /* Strings. */
+    CHECK(strcmp(dc_status_str(DC_OK), "ok") == 0, "%s", dc_status_str(DC_OK));
+    CHECK(strlen(dc_status_str(DC_ERR_NULL_POINTER)) > 0, "empty message");
+    CHECK(strcmp(dc_status_str(-99), "unknown demcontact status") == 0, "%s", dc_status_str(-99));
+    CHECK(strcmp(dc_version(), "0.1.0") == 0, "version %s", dc_version());
+
+    return dc_check_summary("test_calibration");
+}

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Runs every test: Rust unit/integration tests (release: the ODE references are heavy), the
+# no-panic lints on src/, a benchmark smoke run, and every C/C++ program through ctest.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+cargo test --release --locked
+cargo clippy --release --locked --lib -- -D warnings
+# Benchmarks are measured by `cargo bench`; here they only have to run (a few samples each).
+cargo bench --locked -- --sample-count 3 --sample-size 1 >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j2
+ctest --test-dir build --output-on-failure -j2

@@ -1,0 +1,22 @@
+//! The one error type of the core. The FFI layer maps each variant to a `DC_ERR_*` status code.
+
+/// Why a computation was refused or failed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Error {
+    /// An input was NaN or ±infinity.
+    NotFinite,
+    /// The restitution coefficient is outside its valid range (0, 1].
+    RestitutionRange,
+    /// The force-law exponent p is below 1.
+    ExponentRange,
+    /// A quantity that must be positive (speed, stiffness, mass, frequency, ...) was not.
+    NotPositive,
+    /// A quantity that must not be negative (damping coefficient, overlap, ...) was negative.
+    Negative,
+    /// The end-of-contact criterion code is unknown.
+    Criterion,
+    /// The result is not representable as a finite double (overflow).
+    ResultRange,
+    /// An iterative method did not converge (never expected; reported rather than hidden).
+    NoConvergence,
+}

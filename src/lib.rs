@@ -1,0 +1,21 @@
+//! demcontact: exact, allocation-free contact mechanics for discrete-element (DEM) solvers.
+//!
+//! The maths lives in small modules named after the physics; the C boundary lives alone in
+//! [`ffi`]. Nothing in this crate allocates on the heap or keeps global mutable state, so every
+//! function may be called from any number of threads at once.
+//!
+//! * [`lsd`]: the linear spring-dashpot (LSD) in dimensionless form. Every power-law Tsuji contact
+//!   maps exactly onto it, so its restitution functions are the heart of the calibration.
+//! * [`powerlaw`]: the power-law Tsuji contact `m δ'' + α √(m k) δ^((p-1)/2) δ' + k δ^p = 0`.
+//! * [`numerics`]: root finding and the reference ODE integrator used to check everything else.
+//! * [`ffi`]: the `extern "C"` functions exported as `include/demcontact.h`.
+
+pub mod criterion;
+pub mod error;
+pub mod ffi;
+pub mod lsd;
+pub mod numerics;
+pub mod powerlaw;
+
+pub use criterion::EndCriterion;
+pub use error::Error;
