@@ -70,6 +70,17 @@
 #define DC_ERR_NO_CONVERGENCE 6109
 
 /**
+ * A caller-provided buffer is too short, or a requested sample count is zero.
+ */
+#define DC_ERR_BUFFER_TOO_SHORT 6110
+
+/**
+ * The requested event never happens for these inputs, e.g. the overlap of an overdamped contact
+ * never returns to zero under DC_END_OVERLAP.
+ */
+#define DC_ERR_NO_EVENT 6111
+
+/**
  * An internal error was caught at the boundary (not expected; please report).
  */
 #define DC_ERR_INTERNAL 6199

@@ -19,4 +19,9 @@ pub enum Error {
     ResultRange,
     /// An iterative method did not converge (never expected; reported rather than hidden).
     NoConvergence,
+    /// A caller-provided buffer is too short, or a requested count is zero.
+    BufferTooShort,
+    /// The requested event never happens: e.g. the end of an overdamped contact under the overlap
+    /// criterion (the overlap only tends to zero as t → ∞).
+    NoEvent,
 }

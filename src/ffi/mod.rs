@@ -29,6 +29,8 @@ pub(crate) const fn status_of(err: Error) -> i32 {
         Error::Criterion => DC_ERR_CRITERION,
         Error::ResultRange => DC_ERR_RESULT_RANGE,
         Error::NoConvergence => DC_ERR_NO_CONVERGENCE,
+        Error::BufferTooShort => DC_ERR_BUFFER_TOO_SHORT,
+        Error::NoEvent => DC_ERR_NO_EVENT,
     }
 }
 

@@ -25,6 +25,11 @@ pub const DC_ERR_CRITERION: i32 = 6107;
 pub const DC_ERR_RESULT_RANGE: i32 = 6108;
 /// An iteration failed to converge (not expected for valid input; please report).
 pub const DC_ERR_NO_CONVERGENCE: i32 = 6109;
+/// A caller-provided buffer is too short, or a requested sample count is zero.
+pub const DC_ERR_BUFFER_TOO_SHORT: i32 = 6110;
+/// The requested event never happens for these inputs, e.g. the overlap of an overdamped contact
+/// never returns to zero under DC_END_OVERLAP.
+pub const DC_ERR_NO_EVENT: i32 = 6111;
 /// An internal error was caught at the boundary (not expected; please report).
 pub const DC_ERR_INTERNAL: i32 = 6199;
 
@@ -46,6 +51,8 @@ const fn message(status: i32) -> &'static str {
         DC_ERR_CRITERION => "end-of-contact criterion must be DC_END_OVERLAP or DC_END_FORCE\0",
         DC_ERR_RESULT_RANGE => "the result is not representable as a finite double\0",
         DC_ERR_NO_CONVERGENCE => "an iteration did not converge (please report)\0",
+        DC_ERR_BUFFER_TOO_SHORT => "a buffer is too short or a sample count is zero\0",
+        DC_ERR_NO_EVENT => "the requested event never happens for these inputs\0",
         DC_ERR_INTERNAL => "internal error caught at the C boundary (please report)\0",
         _ => "unknown demcontact status\0",
     }
@@ -75,6 +82,8 @@ mod tests {
             DC_ERR_CRITERION,
             DC_ERR_RESULT_RANGE,
             DC_ERR_NO_CONVERGENCE,
+            DC_ERR_BUFFER_TOO_SHORT,
+            DC_ERR_NO_EVENT,
             DC_ERR_INTERNAL,
         ];
         let unknown = message(-1);
