@@ -104,6 +104,22 @@ int main(void) {
     CHECK_STATUS(dc_dt_crit(1.5, 1.0, 1.0, NULL), DC_ERR_NULL_POINTER);
     CHECK(out == 42.0, "output touched on error: %g", out);
 
+    /* Hertz helper: two equal glass beads, E* = E/(2(1-nu^2)), R* = R/2. */
+    double k = 0;
+    CHECK_STATUS(dc_hertz_stiffness(63e9, 0.23, 1e-3, 63e9, 0.23, 1e-3, &k), DC_OK);
+    double kw = 4.0 / 3.0 * 63e9 / (2.0 * (1.0 - 0.23 * 0.23)) * sqrt(0.5e-3);
+    CHECK(dc_rel(k, kw) < 1e-14, "k = %.17g vs %.17g", k, kw);
+    CHECK_STATUS(dc_hertz_stiffness(63e9, 0.23, INFINITY, 63e9, 0.23, 1e-3, &k), DC_OK);
+    CHECK(dc_rel(k, 4.0 / 3.0 * 63e9 / (2.0 * (1.0 - 0.23 * 0.23)) * sqrt(1e-3)) < 1e-14, "wall k = %g", k);
+    CHECK_STATUS(dc_hertz_stiffness(-1.0, 0.23, 1e-3, 63e9, 0.23, 1e-3, &out), DC_ERR_NOT_POSITIVE);
+    CHECK_STATUS(dc_hertz_stiffness(63e9, 0.7, 1e-3, 63e9, 0.23, 1e-3, &out), DC_ERR_NOT_POSITIVE);
+    CHECK_STATUS(dc_hertz_stiffness(NAN, 0.2, 1e-3, 63e9, 0.23, 1e-3, &out), DC_ERR_NOT_FINITE);
+    CHECK_STATUS(dc_hertz_stiffness(63e9, 0.2, 1e-3, 63e9, 0.23, 1e-3, NULL), DC_ERR_NULL_POINTER);
+    double estar = 0;
+    CHECK_STATUS(dc_effective_modulus(1e9, 0.5, 3e9, 0.0, &estar), DC_OK);
+    CHECK(dc_rel(estar, 1.0 / (0.75 / 1e9 + 1.0 / 3e9)) < 1e-15, "E* = %g", estar);
+    CHECK(out == 42.0, "output touched on error: %g", out);
+
     /* Strings. */
     CHECK(strcmp(dc_status_str(DC_OK), "ok") == 0, "%s", dc_status_str(DC_OK));
     CHECK(strlen(dc_status_str(DC_ERR_NULL_POINTER)) > 0, "empty message");

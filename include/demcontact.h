@@ -152,6 +152,38 @@ int32_t dc_alpha_from_e(double e,
 int32_t dc_e_from_alpha(double alpha, double p, int32_t criterion, double *e_out);
 
 /**
+ * Hertz stiffness k = (4/3) E* sqrt(R*) of two elastic spheres, with
+ * 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2 and R* = R1 R2/(R1 + R2); the Hertz force is k d^(3/2).
+ *
+ * @param E1,E2    Young's moduli > 0 [Pa].
+ * @param nu1,nu2  Poisson ratios in (-1, 0.5].
+ * @param R1,R2    radii > 0 [m]; one of them may be +INFINITY for a flat wall (R* = the other).
+ * @param k_out    receives k [N m^-3/2] on success; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE (NaN, or both radii infinite),
+ *         DC_ERR_NOT_POSITIVE (E <= 0, R <= 0 or nu out of range), DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `k_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_hertz_stiffness(double E1,
+                           double nu1,
+                           double R1,
+                           double E2,
+                           double nu2,
+                           double R2,
+                           double *k_out);
+
+/**
+ * Effective modulus E* of two materials: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
+ *
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE, DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `E_star_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_effective_modulus(double E1, double nu1, double E2, double nu2, double *E_star_out);
+
+/**
  * A static, NUL-terminated English message for a status code; never NULL, never freed.
  * Unknown codes give "unknown demcontact status".
  */

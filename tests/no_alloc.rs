@@ -4,7 +4,7 @@
 
 mod alloc_counter;
 use alloc_counter::{assert_counter_works, count_allocations, Counting};
-use demcontact::ffi::{calibration::*, status::*, timestep::*, version::*};
+use demcontact::ffi::{calibration::*, material::*, status::*, timestep::*, version::*};
 
 #[global_allocator]
 static ALLOC: Counting = Counting;
@@ -29,7 +29,9 @@ fn foundation_exports_do_not_allocate() {
                 }
                 for &c in &INPUTS {
                     unsafe { std::hint::black_box(dc_dt_crit(a, b, c, &mut out)) };
-                    calls += 1;
+                    unsafe { std::hint::black_box(dc_hertz_stiffness(a, 0.3, b, c, 0.2, 1e-3, &mut out)) };
+                    unsafe { std::hint::black_box(dc_effective_modulus(a, 0.3, b, c, &mut out)) };
+                    calls += 3;
                 }
             }
         }

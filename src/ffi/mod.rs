@@ -11,6 +11,7 @@
 //! * no heap allocation, no global mutable state: callable from any thread at any time.
 
 pub mod calibration;
+pub mod material;
 pub mod status;
 pub mod timestep;
 pub mod version;
