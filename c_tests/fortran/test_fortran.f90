@@ -1,0 +1,119 @@
+! Fortran test of `use demcontact`: the bind(c) interfaces and elemental wrappers compute the same
+! numbers as the C tests (with --table it prints the common table that ctest compares bit for bit
+! with c_tests/common_table.c and the C++ test), bad input is reported through `stat`, and the
+! named constants and struct layouts agree with the C header (abi_expect vs abi_probe.c).
+program test_fortran
+  use, intrinsic :: iso_c_binding
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+  use demcontact
+  use abi_expect
+  implicit none
+  real(c_double), parameter :: ps(4) = [1.0_c_double, 1.5_c_double, 2.0_c_double, 3.0_c_double]
+  real(c_double), parameter :: es(5) = [0.1_c_double, 0.3_c_double, 0.5_c_double, 0.7_c_double, 0.9_c_double]
+  real(c_double), parameter :: pi = 3.14159265358979323846_c_double
+  real(c_double) :: a, e, k, dt, want, av(5), ev(5), l
+  integer(c_int32_t) :: s, s2, c, stats(5)
+  integer :: i, j, passed, failed
+  character(len=16) :: arg
+
+  call get_command_argument(1, arg)
+  if (trim(arg) == '--table') then
+    do c = 0, 1
+      do i = 1, 4
+        do j = 1, 5
+          s = dc_alpha_from_e(es(j), ps(i), c, a)
+          s2 = dc_e_from_alpha(a, ps(i), c, e)
+          write (*, '(I0,1X,I0,1X,I0,1X,I0,1X,I0)') c, s, s2, transfer(a, 0_c_int64_t), transfer(e, 0_c_int64_t)
+        end do
+      end do
+    end do
+    s = dc_hertz_stiffness(63e9_c_double, 0.23_c_double, 1e-3_c_double, 70e9_c_double, 0.3_c_double, 2e-3_c_double, k)
+    write (*, '(I0,1X,I0)') s, transfer(k, 0_c_int64_t)
+    s = dc_dt_crit(1.5_c_double, 2.0_c_double, 1e4_c_double, dt)
+    write (*, '(I0,1X,I0)') s, transfer(dt, 0_c_int64_t)
+    write (*, '(I0)') dc_alpha_from_e(1.5_c_double, 1.5_c_double, DC_END_FORCE, a)
+    stop
+  end if
+
+  passed = 0
+  failed = 0
+  ! Overlap-end closed form, computed here independently.
+  do i = 1, 4
+    do j = 1, 5
+      l = -log(es(j))
+      want = sqrt(2.0_c_double * (ps(i) + 1.0_c_double)) * l / sqrt(pi * pi + l * l)
+      s = dc_alpha_from_e(es(j), ps(i), DC_END_OVERLAP, a)
+      call check(s == DC_OK .and. abs(a - want) <= 1e-14_c_double * want, 'overlap alpha closed form')
+    end do
+  end do
+  ! Elemental wrapper over an array, both criteria, round trip.
+  call alpha_from_e(es, 1.5_c_double, DC_END_FORCE, av, stats)
+  call check(all(stats == DC_OK), 'elemental alpha_from_e status')
+  call e_from_alpha(av, 1.5_c_double, DC_END_FORCE, ev, stats)
+  call check(all(abs(ev - es) <= 1e-14_c_double * es), 'elemental round trip')
+  ! Bad input: status through stat, NaN in the output.
+  call alpha_from_e(0.0_c_double, 1.5_c_double, DC_END_FORCE, a, s)
+  call check(s == DC_ERR_RESTITUTION_RANGE .and. ieee_is_nan(a), 'e = 0 rejected')
+  s = dc_alpha_from_e(0.5_c_double, 0.5_c_double, DC_END_FORCE, a)
+  call check(s == DC_ERR_EXPONENT_RANGE, 'p < 1 rejected')
+  call check(dc_status_message(DC_ERR_EXPONENT_RANGE) == 'force-law exponent p must be >= 1', 'status message')
+  call check(len(dc_version_string()) > 0, 'version string')
+  ! Hertz helper against the formula.
+  s = dc_hertz_stiffness(63e9_c_double, 0.23_c_double, 1e-3_c_double, 63e9_c_double, 0.23_c_double, 1e-3_c_double, k)
+  want = 4.0_c_double / 3.0_c_double * 63e9_c_double / (2.0_c_double * (1.0_c_double - 0.23_c_double**2)) * sqrt(0.5e-3_c_double)
+  call check(s == DC_OK .and. abs(k - want) <= 1e-14_c_double * want, 'hertz stiffness')
+  ! ABI: constants and struct layouts as the C compiler sees them.
+  call check_abi()
+
+  write (*, '(A,I0,A,I0,A)') 'test_fortran: ', passed, ' passed, ', failed, ' failed'
+  if (failed /= 0) error stop 1
+
+contains
+
+  subroutine check(cond, what)
+    logical, intent(in) :: cond
+    character(len=*), intent(in) :: what
+    if (cond) then
+      passed = passed + 1
+    else
+      failed = failed + 1
+      write (*, '(A,A)') 'check failed: ', what
+    end if
+  end subroutine check
+
+  subroutine check_abi()
+    interface
+      function dc_probe_n_consts() bind(c)
+        import :: c_int32_t
+        integer(c_int32_t) :: dc_probe_n_consts
+      end function
+      function dc_probe_const(i) bind(c)
+        import :: c_int32_t, c_int64_t
+        integer(c_int32_t), value :: i
+        integer(c_int64_t) :: dc_probe_const
+      end function
+      function dc_probe_n_layout() bind(c)
+        import :: c_int32_t
+        integer(c_int32_t) :: dc_probe_n_layout
+      end function
+      function dc_probe_layout(i) bind(c)
+        import :: c_int32_t, c_int64_t
+        integer(c_int32_t), value :: i
+        integer(c_int64_t) :: dc_probe_layout
+      end function
+    end interface
+    integer(c_int64_t) :: v(4096)
+    integer :: n, m
+    call expected_consts(v, n)
+    call check(n == dc_probe_n_consts(), 'number of constants')
+    do m = 1, n
+      call check(v(m) == dc_probe_const(int(m, c_int32_t)), 'constant value')
+    end do
+    call expected_layout(v, n)
+    call check(n == dc_probe_n_layout(), 'number of layout entries')
+    do m = 1, n
+      call check(v(m) == dc_probe_layout(int(m, c_int32_t)), 'struct size/offset')
+    end do
+  end subroutine check_abi
+
+end program test_fortran

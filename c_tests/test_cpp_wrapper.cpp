@@ -1,0 +1,89 @@
+// C++ test of include/demcontact.hpp: value-returning wrappers throw demcontact::error on bad
+// input, noexcept overloads return the status, and the numbers are those of the C API
+// (with --table it prints the common table compared bit for bit with C and Fortran).
+#include <demcontact.hpp>
+
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+namespace dc = demcontact;
+
+static int passed = 0, failed = 0;
+#define CHECK(cond)                                                      \
+    do {                                                                 \
+        if (cond) {                                                      \
+            passed++;                                                    \
+        } else {                                                         \
+            failed++;                                                    \
+            std::fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
+        }                                                                \
+    } while (0)
+
+static std::int64_t bits(double x) {
+    std::int64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+}
+
+static int table() {
+    const double ps[] = {1.0, 1.5, 2.0, 3.0};
+    const double es[] = {0.1, 0.3, 0.5, 0.7, 0.9};
+    for (auto c : {dc::criterion::overlap, dc::criterion::force})
+        for (double p : ps)
+            for (double e : es) {
+                double a = 0, back = 0;
+                auto s1 = dc::alpha_from_e(e, p, c, a);
+                auto s2 = dc::e_from_alpha(a, p, c, back);
+                std::printf("%d %d %d %" PRId64 " %" PRId64 "\n", static_cast<int>(c), static_cast<int>(s1),
+                            static_cast<int>(s2), bits(a), bits(back));
+            }
+    double k = 0, dt = 0, out = 0;
+    // Call before printing: argument evaluation order is unspecified.
+    auto sk = dc::hertz_stiffness(63e9, 0.23, 1e-3, 70e9, 0.3, 2e-3, k);
+    auto sd = dc::dt_crit(1.5, 2.0, 1e4, dt);
+    std::printf("%d %" PRId64 "\n", static_cast<int>(sk), bits(k));
+    std::printf("%d %" PRId64 "\n", static_cast<int>(sd), bits(dt));
+    std::printf("%d\n", static_cast<int>(dc::alpha_from_e(1.5, 1.5, dc::criterion::force, out)));
+    return 0;
+}
+
+int main(int argc, char** argv) {
+    if (argc > 1 && std::strcmp(argv[1], "--table") == 0) return table();
+
+    // Value-returning form agrees with the C call.
+    double a_c = 0;
+    CHECK(dc_alpha_from_e(0.5, 1.5, DC_END_FORCE, &a_c) == DC_OK);
+    CHECK(dc::alpha_from_e(0.5, 1.5, dc::criterion::force) == a_c);
+    CHECK(std::fabs(dc::e_from_alpha(a_c, 1.5, dc::criterion::force) - 0.5) < 1e-15);
+
+    // Bad input throws demcontact::error carrying the status ...
+    bool threw = false;
+    try {
+        (void)dc::alpha_from_e(0.0, 1.5, dc::criterion::overlap);
+    } catch (const dc::error& err) {
+        threw = err.code() == dc::status::restitution_range &&
+                std::strcmp(err.what(), dc::status_str(dc::status::restitution_range)) == 0;
+    }
+    CHECK(threw);
+    // ... and the noexcept overload returns it, leaving the output untouched.
+    double out = 42.0;
+    CHECK(dc::alpha_from_e(0.5, 0.9, dc::criterion::force, out) == dc::status::exponent_range);
+    CHECK(out == 42.0);
+    static_assert(noexcept(dc::alpha_from_e(0.5, 0.9, dc::criterion::force, out)), "status overload is noexcept");
+
+    // Hertz helper through the wrapper.
+    double k = dc::hertz_stiffness(63e9, 0.23, 1e-3, 63e9, 0.23, 1e-3);
+    CHECK(std::fabs(k - 4.0 / 3.0 * 63e9 / (2.0 * (1.0 - 0.23 * 0.23)) * std::sqrt(0.5e-3)) < 1e-14 * k);
+
+    // span view over a vector.
+    std::vector<double> v{1.0, 2.0, 3.0};
+    dc::span<double> s(v);
+    CHECK(s.size() == 3 && s[2] == 3.0);
+    CHECK(std::string(dc::version()) == "0.1.0");
+
+    std::printf("test_cpp_wrapper: %d passed, %d failed\n", passed, failed);
+    return failed == 0 ? 0 : 1;
+}

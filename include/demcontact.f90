@@ -1,0 +1,57 @@
+! demcontact for Fortran: `use demcontact`.
+!
+! Everything of the C API is here through the generated module demcontact_c (include/demcontact_c.f90,
+! kept in step with include/demcontact.h by `cargo test --test bindings`):
+!   * the C functions themselves, callable directly; they return a status, e.g.
+!       stat = dc_alpha_from_e(0.5_c_double, 1.5_c_double, DC_END_FORCE, alpha)
+!   * every constant as a named parameter (DC_OK, DC_ERR_*, DC_END_*) and every struct as a
+!     bind(c) derived type;
+!   * impure elemental wrappers without the dc_ prefix for the scalar functions, which work on
+!     arrays and return the status in an optional `stat` (the output is NaN on error):
+!       call alpha_from_e(e_array, 1.5_c_double, DC_END_FORCE, alpha_array, stat_array)
+! This file adds what needs Fortran idiom by hand: status and version strings.
+module demcontact
+  use, intrinsic :: iso_c_binding
+  use demcontact_c
+  implicit none
+  public
+
+contains
+
+  !> The message of a status code as a Fortran string.
+  function dc_status_message(status) result(msg)
+    integer(c_int32_t), intent(in) :: status
+    character(len=:), allocatable :: msg
+    msg = c_string(dc_status_str(status))
+  end function dc_status_message
+
+  !> The library version as a Fortran string.
+  function dc_version_string() result(v)
+    character(len=:), allocatable :: v
+    v = c_string(dc_version())
+  end function dc_version_string
+
+  !> Copies a static NUL-terminated C string.
+  function c_string(p) result(s)
+    type(c_ptr), intent(in) :: p
+    character(len=:), allocatable :: s
+    character(kind=c_char), pointer :: chars(:)
+    integer :: n
+    interface
+      pure function c_strlen(str) bind(c, name='strlen')
+        import :: c_ptr, c_size_t
+        type(c_ptr), value :: str
+        integer(c_size_t) :: c_strlen
+      end function c_strlen
+    end interface
+    if (.not. c_associated(p)) then
+      s = ''
+      return
+    end if
+    n = int(c_strlen(p))
+    call c_f_pointer(p, chars, [n])
+    allocate(character(len=n) :: s)
+    s = transfer(chars(1:n), s)
+  end function c_string
+
+end module demcontact
