@@ -251,16 +251,19 @@ fn f_type(api: &Api, b: &Base) -> String {
     }
 }
 
-/// Struct pointers are single objects; numeric pointers are arrays in functions that take a
-/// count (size_t), otherwise `*_out` scalars.
+/// Struct pointers are single objects (arrays only when plural and counted); numeric pointers
+/// are arrays in functions that take a count (size_t) or read an input array (`const double *`),
+/// otherwise `*_out` pointers are scalar outputs.
 fn is_array_param(f: &Func, p: &Param) -> bool {
     if !p.ty.ptr || matches!(p.ty.base, Base::Char | Base::Void) {
         return false;
     }
+    let counted = f.params.iter().any(|q| q.ty.base == Base::Usize && !q.ty.ptr);
     if matches!(p.ty.base, Base::Named(_)) {
-        return p.name.ends_with('s') && f.params.iter().any(|q| q.ty.base == Base::Usize && !q.ty.ptr);
+        return p.name.ends_with('s') && counted;
     }
-    f.params.iter().any(|q| q.ty.base == Base::Usize && !q.ty.ptr) || !p.name.ends_with("_out")
+    let reads_array = f.params.iter().any(|q| q.ty.ptr && q.ty.is_const && !matches!(q.ty.base, Base::Named(_) | Base::Char | Base::Void));
+    counted || reads_array || !p.name.ends_with("_out")
 }
 
 fn f_dummy(api: &Api, f: &Func, p: &Param) -> String {
