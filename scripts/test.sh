@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
-# Runs every test: Rust unit/integration tests (release: the ODE references are heavy), the
-# no-panic lints on src/, a benchmark smoke run, and every C/C++ program through ctest.
+# Runs every test: Rust unit/integration/property tests (release: the ODE references are heavy),
+# the no-panic lints on src/, a benchmark smoke run, every C/C++/Fortran program through ctest
+# (plain and under ASan+UBSan), the FFI tests under Miri, and a short libFuzzer run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 cargo test --release --locked
 cargo clippy --release --locked --lib -- -D warnings
 # Benchmarks are measured by `cargo bench`; here they only have to run (a few samples each).
-cargo bench --locked -- --sample-count 3 --sample-size 1 >/dev/null
+cargo bench --locked --benches -- --sample-count 3 --sample-size 1 >/dev/null
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j2
 ctest --test-dir build --output-on-failure -j2
+scripts/miri.sh
+scripts/fuzz.sh 30000 120
