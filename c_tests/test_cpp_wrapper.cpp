@@ -78,6 +78,22 @@ int main(int argc, char** argv) {
     double k = dc::hertz_stiffness(63e9, 0.23, 1e-3, 63e9, 0.23, 1e-3);
     CHECK(std::fabs(k - 4.0 / 3.0 * 63e9 / (2.0 * (1.0 - 0.23 * 0.23)) * std::sqrt(0.5e-3)) < 1e-14 * k);
 
+    // Force kernels: constructor, scalar, batch over spans, 3D helper.
+    ::dc_pair pair = dc::pair_hertz(63e9, 0.23, 63e9, 0.23, 0.5, dc::criterion::force);
+    std::vector<double> d{1e-6, 2e-6, 0.0}, vn{0.1, -0.2, 0.1}, r(3, 0.5e-3), m(3, 1e-5), f(3);
+    dc::normal_force_batch(pair, dc::span<const double>(d.data(), 3), dc::span<const double>(vn.data(), 3),
+                           dc::span<const double>(r.data(), 3), dc::span<const double>(m.data(), 3), dc::span<double>(f));
+    CHECK(f[0] == dc::normal_force(pair, d[0], vn[0], r[0], m[0]) && f[2] == 0.0);
+    bool short_threw = false;
+    try {
+        dc::normal_force_batch(pair, dc::span<const double>(d.data(), 3), dc::span<const double>(vn.data(), 2), {}, {}, dc::span<double>(f));
+    } catch (const dc::error& err) {
+        short_threw = err.code() == dc::status::buffer_too_short;
+    }
+    CHECK(short_threw);
+    dc::vec3 F = dc::normal_force_3d(pair, {0, 0, 0}, {0, 0, 0}, 1e-3, 1e-5, {1.999e-3, 0, 0}, {-0.1, 0, 0}, 1e-3, 1e-5);
+    CHECK(F.x < 0.0 && F.y == 0.0 && F.z == 0.0);  // sphere 1 pushed away from sphere 2 (at +x)
+
     // span view over a vector.
     std::vector<double> v{1.0, 2.0, 3.0};
     dc::span<double> s(v);

@@ -18,6 +18,24 @@ module demcontact
 
 contains
 
+  !> Normal forces of n = size(overlap) contacts of one pair (dc_normal_force_batch) from
+  !> contiguous arrays; every array must have at least size(overlap) elements.
+  subroutine normal_force_batch(pair, overlap, vn, r_eff, m_eff, force, stat)
+    type(dc_pair), intent(in) :: pair
+    real(c_double), intent(in), contiguous :: overlap(:), vn(:), r_eff(:), m_eff(:)
+    real(c_double), intent(out), contiguous :: force(:)
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    integer :: n
+    n = size(overlap)
+    if (size(vn) < n .or. size(r_eff) < n .or. size(m_eff) < n .or. size(force) < n) then
+      s = DC_ERR_BUFFER_TOO_SHORT
+    else
+      s = dc_normal_force_batch(pair, int(n, c_size_t), overlap, vn, r_eff, m_eff, force)
+    end if
+    if (present(stat)) stat = s
+  end subroutine normal_force_batch
+
   !> The message of a status code as a Fortran string.
   function dc_status_message(status) result(msg)
     integer(c_int32_t), intent(in) :: status

@@ -65,3 +65,36 @@ private:
 }  // namespace demcontact
 
 #include "demcontact_generated.hpp"
+
+namespace demcontact {
+
+/// Normal forces of n contacts of one pair (dc_normal_force_batch) from structure-of-arrays
+/// views. Arrays the pair's model does not read may be empty views (passed as NULL). Throws
+/// demcontact::error on a non-OK status (also when a non-empty view is shorter than `overlap`).
+inline void normal_force_batch(const ::dc_pair& pair, span<const double> overlap, span<const double> vn,
+                               span<const double> r_eff, span<const double> m_eff, span<double> force_out) {
+    const std::size_t n = overlap.size();
+    auto fits = [n](std::size_t m) { return m == 0 || m >= n; };
+    if (force_out.size() < n || !fits(vn.size()) || !fits(r_eff.size()) || !fits(m_eff.size()))
+        throw error(status::buffer_too_short);
+    detail::check(::dc_normal_force_batch(&pair, n, overlap.data(), vn.size() ? vn.data() : nullptr,
+                                          r_eff.size() ? r_eff.data() : nullptr,
+                                          m_eff.size() ? m_eff.data() : nullptr, force_out.data()));
+}
+
+/// 3-vector for the geometry helper.
+struct vec3 {
+    double x, y, z;
+};
+
+/// Normal force on sphere 1 (dc_normal_force_3d); sphere 2 receives the opposite. Throws on error.
+inline vec3 normal_force_3d(const ::dc_pair& pair, const vec3& x1, const vec3& v1, double R1, double m1,
+                            const vec3& x2, const vec3& v2, double R2, double m2) {
+    const double a1[3] = {x1.x, x1.y, x1.z}, b1[3] = {v1.x, v1.y, v1.z};
+    const double a2[3] = {x2.x, x2.y, x2.z}, b2[3] = {v2.x, v2.y, v2.z};
+    double f[3] = {0, 0, 0};
+    detail::check(::dc_normal_force_3d(&pair, a1, b1, R1, m1, a2, b2, R2, m2, f));
+    return vec3{f[0], f[1], f[2]};
+}
+
+}  // namespace demcontact

@@ -62,6 +62,25 @@ program test_fortran
   s = dc_hertz_stiffness(63e9_c_double, 0.23_c_double, 1e-3_c_double, 63e9_c_double, 0.23_c_double, 1e-3_c_double, k)
   want = 4.0_c_double / 3.0_c_double * 63e9_c_double / (2.0_c_double * (1.0_c_double - 0.23_c_double**2)) * sqrt(0.5e-3_c_double)
   call check(s == DC_OK .and. abs(k - want) <= 1e-14_c_double * want, 'hertz stiffness')
+  ! Force kernel: pair constructor, elemental force over an array, batch wrapper, same numbers.
+  block
+    type(dc_pair) :: pair
+    real(c_double) :: d(4), vn(4), r(4), m(4), fe(4), fb(4), fc
+    call pair_hertz(63e9_c_double, 0.23_c_double, 63e9_c_double, 0.23_c_double, 0.5_c_double, DC_END_FORCE, pair, s)
+    call check(s == DC_OK, 'pair_hertz')
+    d = [1e-6_c_double, 2e-6_c_double, 0.0_c_double, -1e-6_c_double]
+    vn = [0.1_c_double, -0.2_c_double, 0.1_c_double, 0.1_c_double]
+    r = 0.5e-3_c_double
+    m = 1e-5_c_double
+    fe = normal_force(pair, d, vn, r, m)
+    call normal_force_batch(pair, d, vn, r, m, fb, s)
+    call check(s == DC_OK .and. all(fe == fb), 'elemental force equals batch')
+    call check(fe(3) == 0.0_c_double .and. fe(4) == 0.0_c_double .and. fe(1) > 0.0_c_double, 'force signs')
+    s = dc_normal_force_checked(pair, d(1), vn(1), r(1), m(1), fc)
+    call check(s == DC_OK .and. fc == fe(1), 'checked force')
+    call normal_force_batch(pair, d, vn(1:2), r, m, fb, s)
+    call check(s == DC_ERR_BUFFER_TOO_SHORT, 'short batch array')
+  end block
   ! ABI: constants and struct layouts as the C compiler sees them.
   call check_abi()
 
