@@ -48,6 +48,33 @@ static void compute(table *t) {
                 put(t, dc_effective_modulus(xs[i], 0.3, xs[k], 0.25, &o), o);
             }
         }
+    /* Force kernels: constructors over the grid, then scalar, checked, batch and 3D forces. */
+    for (size_t i = 0; i < nx; i++)
+        for (size_t j = 0; j < nx; j++) {
+            dc_pair pr;
+            memset(&pr, 0, sizeof pr);
+            put(t, dc_pair_powerlaw(xs[i], 1e4, xs[j] > 1.0 ? 0.5 : xs[j], (int32_t)(i % 2), &pr), pr.alpha);
+            put(t, dc_pair_hertz(1e9 * xs[i], 0.3, 2e9, 0.25, 0.4, (int32_t)(j % 2), &pr), pr.k);
+        }
+    dc_pair pair;
+    if (dc_pair_hertz(63e9, 0.23, 70e9, 0.3, 0.5, DC_END_FORCE, &pair) == DC_OK) {
+        double d[64], vn[64], r[64], m[64], f[64];
+        for (int i = 0; i < 64; i++) {
+            d[i] = 1e-7 * (i - 8);
+            vn[i] = 0.05 * (i - 32);
+            r[i] = 1e-3;
+            m[i] = 1e-5;
+        }
+        put(t, dc_normal_force_batch(&pair, 64, d, vn, r, m, f), 0.0);
+        for (int i = 0; i < 64; i++) {
+            double c = -1.0;
+            put(t, dc_normal_force_checked(&pair, d[i], vn[i], r[i], m[i], &c), c);
+            put(t, 0, dc_normal_force(&pair, d[i], vn[i], r[i], m[i]));
+            put(t, 0, f[i]);
+        }
+        double x1[3] = {0, 0, 0}, v1[3] = {0.1, 0, 0}, x2[3] = {1.9e-3, 0, 0}, v2[3] = {-0.1, 0, 0}, f3[3] = {0, 0, 0};
+        put(t, dc_normal_force_3d(&pair, x1, v1, 1e-3, 1e-5, x2, v2, 1e-3, 1e-5, f3), f3[0]);
+    }
     put(t, (int32_t)strlen(dc_status_str(DC_ERR_NOT_FINITE)), 0.0);
     put(t, (int32_t)strlen(dc_version()), 0.0);
 }

@@ -28,7 +28,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     memcpy(&c, buf + sizeof x, sizeof c);
     c = (c % 4 + 4) % 4 - 1; /* -1, 0, 1, 2: valid and invalid criteria */
     double out = SENTINEL;
-    switch (data[0] % 6) {
+    dc_pair pair;
+    double v3[3] = {SENTINEL, SENTINEL, SENTINEL};
+    switch (data[0] % 12) {
     case 0: verdict(dc_alpha_from_e(x[0], x[1], c, &out), out); break;
     case 1: verdict(dc_e_from_alpha(x[0], x[1], c, &out), out); break;
     case 2: verdict(dc_dt_crit(x[0], x[1], x[2], &out), out); break;
@@ -37,6 +39,42 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     case 5:
         if (!dc_status_str(c) || !dc_version()) abort();
         if (dc_alpha_from_e(x[0], x[1], c, NULL) != DC_ERR_NULL_POINTER) abort();
+        break;
+    case 6: /* a pair from a constructor with fuzzed inputs, then a checked force */
+    case 7:
+    case 8: {
+        int32_t s;
+        if (data[0] % 12 == 6) s = dc_pair_powerlaw(x[0], x[1], x[2], c, &pair);
+        else if (data[0] % 12 == 7) s = dc_pair_hertz(x[0], x[1], x[0], x[1], x[2], c, &pair);
+        else s = dc_pair_viscoelastic(x[0], x[1], x[0], x[1], x[2], c, &pair);
+        verdict(s == DC_OK ? DC_OK : s, s == DC_OK ? 0.0 : SENTINEL);
+        if (s == DC_OK) {
+            verdict(dc_normal_force_checked(&pair, x[3], x[4], x[5], x[6], &out), out);
+            /* The unchecked kernel must not crash and must give a finite force for finite input. */
+            double f = dc_normal_force(&pair, x[3], x[4], x[5], x[6]);
+            if (isfinite(x[3]) && isfinite(x[4]) && isfinite(x[5]) && isfinite(x[6]) && x[5] > 0 && x[6] > 0 &&
+                out != SENTINEL && !isfinite(f))
+                abort();
+        }
+        break;
+    }
+    case 9: /* arbitrary bytes as a pair: the checked paths must reject or compute, never crash */
+        memset(&pair, 0, sizeof pair);
+        memcpy(&pair, data + 1, size - 1 < sizeof pair ? size - 1 : sizeof pair);
+        verdict(dc_normal_force_checked(&pair, x[0], x[1], x[2], x[3], &out), out);
+        (void)dc_normal_force(&pair, x[0], x[1], x[2], x[3]);
+        break;
+    case 10: { /* batch of 4 contacts from fuzzed doubles */
+        if (dc_pair_powerlaw(1.0 + fabs(fmod(x[0], 4.0)), 1e3, 0.5, c & 1, &pair) != DC_OK) break;
+        double f4[4] = {SENTINEL, SENTINEL, SENTINEL, SENTINEL};
+        int32_t s = dc_normal_force_batch(&pair, 4, x, x + 4, x, x + 4, f4);
+        if (!(s == DC_OK || (s >= 6101 && s <= 6139))) abort();
+        if (s != DC_OK && f4[0] != SENTINEL) abort();
+        break;
+    }
+    case 11: /* 3D helper with fuzzed geometry */
+        if (dc_pair_hertz(1e9, 0.3, 1e9, 0.3, 0.5, c & 1, &pair) != DC_OK) break;
+        verdict(dc_normal_force_3d(&pair, x, x + 3, x[6], x[7], x + 1, x + 4, x[7], x[6], v3), v3[0]);
         break;
     }
     return 0;
