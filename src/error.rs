@@ -24,4 +24,6 @@ pub enum Error {
     /// The requested event never happens: e.g. the end of an overdamped contact under the overlap
     /// criterion (the overlap only tends to zero as t → ∞).
     NoEvent,
+    /// A quadrature accuracy level outside the supported range.
+    Level,
 }

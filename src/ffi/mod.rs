@@ -12,6 +12,7 @@
 
 pub mod calibration;
 pub mod material;
+pub mod powerlaw;
 pub mod status;
 pub mod timestep;
 pub mod version;
@@ -32,6 +33,7 @@ pub(crate) const fn status_of(err: Error) -> i32 {
         Error::NoConvergence => DC_ERR_NO_CONVERGENCE,
         Error::BufferTooShort => DC_ERR_BUFFER_TOO_SHORT,
         Error::NoEvent => DC_ERR_NO_EVENT,
+        Error::Level => DC_ERR_LEVEL,
     }
 }
 

@@ -30,6 +30,8 @@ pub const DC_ERR_BUFFER_TOO_SHORT: i32 = 6110;
 /// The requested event never happens for these inputs, e.g. the overlap of an overdamped contact
 /// never returns to zero under DC_END_OVERLAP.
 pub const DC_ERR_NO_EVENT: i32 = 6111;
+/// A quadrature accuracy level is outside DC_LEVEL_MIN..=DC_LEVEL_MAX.
+pub const DC_ERR_LEVEL: i32 = 6112;
 /// An internal error was caught at the boundary (not expected; please report).
 pub const DC_ERR_INTERNAL: i32 = 6199;
 
@@ -53,6 +55,7 @@ const fn message(status: i32) -> &'static str {
         DC_ERR_NO_CONVERGENCE => "an iteration did not converge (please report)\0",
         DC_ERR_BUFFER_TOO_SHORT => "a buffer is too short or a sample count is zero\0",
         DC_ERR_NO_EVENT => "the requested event never happens for these inputs\0",
+        DC_ERR_LEVEL => "quadrature accuracy level out of range\0",
         DC_ERR_INTERNAL => "internal error caught at the C boundary (please report)\0",
         _ => "unknown demcontact status\0",
     }
@@ -84,6 +87,7 @@ mod tests {
             DC_ERR_NO_CONVERGENCE,
             DC_ERR_BUFFER_TOO_SHORT,
             DC_ERR_NO_EVENT,
+            DC_ERR_LEVEL,
             DC_ERR_INTERNAL,
         ];
         let unknown = message(-1);

@@ -23,6 +23,10 @@ pub struct Collision {
     pub tau: f64,
     /// Right-hand-side evaluations used.
     pub evals: u32,
+    /// Overlap at the end event (0 for the overlap end, > 0 for the force end).
+    pub delta_end: f64,
+    /// Overlap rate at the end event.
+    pub v_end: f64,
 }
 
 /// Integrates one power-law collision to the end event of `criterion`.
@@ -58,5 +62,7 @@ pub fn collide(p: f64, alpha: f64, v0: f64, omega0: f64, criterion: EndCriterion
         t_max: load.t,
         tau: unload.t,
         evals: load.stats.evals + unload.stats.evals,
+        delta_end: unload.y[0],
+        v_end: unload.y[1],
     }
 }
