@@ -248,3 +248,31 @@ fn trajectory_matches_reference() {
     println!("trajectory: {checked} samples; worst rel t {worst_t:.2e}, worst |Δv|/v0 {worst_v:.2e}");
     assert!(worst_t < 1e-10 && worst_v < 1e-10);
 }
+
+#[test]
+fn accuracy_levels() {
+    // The knob's table: worst relative error of τ (force end) and t_max per level against the
+    // reference over p ∈ {1.25, 1.5, 2, 3, 5}, e ∈ [0.01, 0.999] (force calibration) and
+    // ζ ∈ {1, 1.5, 4, 30}. Level 4 (the default) must meet 1e-10.
+    let mut worst = [0.0f64; 5];
+    for &p in &PS[1..] {
+        let s = (2.0 * (p + 1.0)).sqrt();
+        let mut alphas: Vec<f64> = ES.iter().map(|&e| alpha_from_e(e, p, EndCriterion::Force).unwrap()).collect();
+        alphas.extend([1.0, 1.5, 4.0, 30.0].iter().map(|z| z * s));
+        for alpha in alphas {
+            let r = collide(p, alpha, 1.0, 1.0, EndCriterion::Force, RTOL);
+            for (lv, w) in worst.iter_mut().enumerate() {
+                let mut tau = 0.0;
+                let st = unsafe { dc_contact_duration_level(p, alpha, 1.0, 1.0, DC_END_FORCE, lv as i32, &mut tau) };
+                assert_eq!(st, DC_OK);
+                let c = demcontact::powerlaw::Contact::new(p, alpha, 1.0, 1.0).unwrap();
+                let tm = demcontact::powerlaw::time_of_max_overlap(&c, lv as u32).unwrap();
+                *w = w.max(rel(tau, r.tau)).max(rel(tm, r.t_max));
+            }
+        }
+    }
+    for (lv, w) in worst.iter().enumerate() {
+        println!("level {lv}: {} nodes per panel, worst rel error {w:.1e}", demcontact::numerics::tanh_sinh::nodes(lv as u32));
+    }
+    assert!(worst[4] < 1e-10);
+}
