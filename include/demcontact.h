@@ -285,7 +285,8 @@ int32_t dc_contact_duration(double p,
 
 /**
  * dc_contact_duration with a cost/accuracy knob: `level` in DC_LEVEL_MIN..=DC_LEVEL_MAX selects
- * the tanh-sinh step 2^-level (9, 15, 29, 57, 113 nodes per panel). Closed-form cases ignore it.
+ * the Chebyshev interpolation order N = 6, 8, 12, 16, 24 (N + 1 integrand evaluations per panel;
+ * one panel except strongly overdamped contacts). Closed-form cases ignore it.
  * Measured errors per level are tabulated in docs/powerlaw.md.
  *
  * @return as dc_contact_duration, plus DC_ERR_LEVEL.

@@ -4,11 +4,11 @@
 //! * [`ode`]: an adaptive Dormand–Prince 5(4) integrator with event location, used as the
 //!   independent reference that every closed form and quadrature in this crate is checked against.
 //! * [`gamma`]: Re ln Γ(a + ib), for the closed-form contact duration.
-//! * [`tanh_sinh`]: double-exponential quadrature on [0, 1], for the damped time integrals.
+//! * [`jacobi_cc`]: ∫ y^ν f(y) dy by Clenshaw–Curtis with modified moments (the contact times).
 
 pub mod gamma;
+pub mod jacobi_cc;
 pub mod ode;
 pub mod roots;
-pub mod tanh_sinh;
 
 pub use roots::newton_bracketed;
