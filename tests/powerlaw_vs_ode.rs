@@ -294,3 +294,34 @@ fn reference_tolerance_for_benchmark() {
         assert!(rel(r.tau, tau) < 1e-10);
     }
 }
+
+#[test]
+fn reference_tolerance_for_trajectory_benchmark() {
+    // The trajectory benchmark's reference: chained events at the 998 interior sample overlaps
+    // of a 1000-point trajectory (p = 1.5, e = 0.5, force end), at the rtol the bench uses.
+    let (p, v0, w0) = (1.5, 1.0, 1.0);
+    let alpha = alpha_from_e(0.5, p, EndCriterion::Force).unwrap();
+    const N: usize = 1000;
+    let (mut t, mut d, mut v, mut f) = (vec![0.0; N], vec![0.0; N], vec![0.0; N], vec![0.0; N]);
+    let st = unsafe {
+        dc_contact_trajectory(p, alpha, v0, w0, 1.0, DC_END_FORCE, 2, N, t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), N)
+    };
+    assert_eq!(st, DC_OK);
+    let targets = &d[1..N - 1];
+    let ups: Vec<bool> = v[1..N - 1].iter().map(|&x| x > 0.0).collect();
+    for &rtol in &[1e-9, 1e-10, 1e-11, 1e-12, 1e-13] {
+        let mut tr = vec![0.0; N - 2];
+        let end = common::chained_reference(p, alpha, v0, w0, EndCriterion::Force, targets, &ups, rtol, &mut tr);
+        // Compare where t(δ) is well conditioned (|v| ≥ 0.05 v0).
+        let mut worst: f64 = rel(end, t[N - 1]);
+        for j in 1..N - 1 {
+            if v[j].abs() >= 0.05 * v0 {
+                worst = worst.max(rel(tr[j - 1], t[j]));
+            }
+        }
+        println!("chained reference rtol {rtol:.0e}: worst rel t difference {worst:.1e}");
+        if rtol == 1e-12 {
+            assert!(worst < 1e-10);
+        }
+    }
+}

@@ -168,13 +168,21 @@ pub fn integrate_weighted<F: FnMut(f64) -> f64>(mut f: F, nu: f64, level: u32) -
             *m = next;
         }
     }
-    // Σ''_k a_k M_k with a_k = (2/N) Σ''_j f_j cos(jkπ/N).
+    // Σ''_k a_k M_k with a_k = (2/N) Σ''_j f_j cos(jkπ/N); the table index jk·(48/N) mod 96 is
+    // advanced by addition (no division in the O(N²) loop).
+    let step = BASE / n;
     let mut total = 0.0;
     for (k, &mk) in mom.iter().enumerate().take(n + 1) {
+        let dk = (k * step) % (2 * BASE);
+        let mut idx = 0usize;
         let mut a = 0.0;
         for (j, &fj) in fv.iter().enumerate().take(n + 1) {
-            let c = cos_jk(j, k, n);
+            let c = COS48.get(idx).copied().unwrap_or(f64::NAN);
             a += if j == 0 || j == n { 0.5 * fj * c } else { fj * c };
+            idx += dk;
+            if idx >= 2 * BASE {
+                idx -= 2 * BASE;
+            }
         }
         let term = a * mk;
         total += if k == 0 || k == n { 0.5 * term } else { term };
