@@ -133,3 +133,14 @@ fn trajectory_1000_ode_reference(b: Bencher) {
     let mut tr = vec![0.0; N - 2];
     b.bench_local(|| common::chained_reference(P, black_box(al), 1.0, 1.0, EndCriterion::Force, &targets, &ups, 1e-12, &mut tr));
 }
+
+/// Per-restitution cost of the force-end duration at level 2 (one call per sample).
+#[divan::bench(args = [0usize, 1, 2, 3, 4, 5, 6, 7])]
+fn duration_force_end_by_e(b: Bencher, i: usize) {
+    let al = alphas(DC_END_FORCE)[i];
+    b.bench(|| {
+        let mut t = 0.0;
+        unsafe { dc_contact_duration_level(black_box(P), black_box(al), 1.0, 1.0, DC_END_FORCE, 2, &mut t) };
+        t
+    });
+}

@@ -21,6 +21,8 @@ pub(crate) const LEVEL_N: [usize; 5] = [6, 8, 12, 16, 24];
 pub(crate) const MAX_LEVEL: u32 = 4;
 
 const BASE: usize = 48;
+/// Largest N in LEVEL_N (sizes the stack arrays).
+const MAX_N: usize = 24;
 
 /// cos(mπ/48), m = 0..=96.
 const COS48: [f64; 2 * BASE + 1] = [
@@ -144,12 +146,12 @@ fn cos_jk(j: usize, k: usize, n: usize) -> f64 {
 pub fn integrate_weighted<F: FnMut(f64) -> f64>(mut f: F, nu: f64, level: u32) -> f64 {
     let n = n_of(level);
     // Function values at the Lobatto points, j = 0 is y = 1, j = n is y = 0.
-    let mut fv = [0.0f64; BASE + 1];
+    let mut fv = [0.0f64; MAX_N + 1];
     for (j, slot) in fv.iter_mut().enumerate().take(n + 1) {
         *slot = f(0.5 * (1.0 + cos_jk(j, 1, n)));
     }
     // Modified moments of (1+x)^ν, scaled by 2^{−(ν+1)} for the map y = (1+x)/2.
-    let mut mom = [0.0f64; BASE + 1];
+    let mut mom = [0.0f64; MAX_N + 1];
     let i0 = 1.0 / (nu + 1.0);
     let mut prev = i0;
     let mut cur = nu * i0 / (nu + 2.0);
@@ -168,22 +170,24 @@ pub fn integrate_weighted<F: FnMut(f64) -> f64>(mut f: F, nu: f64, level: u32) -
             *m = next;
         }
     }
-    // Σ''_k a_k M_k with a_k = (2/N) Σ''_j f_j cos(jkπ/N); the table index jk·(48/N) mod 96 is
-    // advanced by addition (no division in the O(N²) loop).
+    // Σ''_k a_k M_k with a_k = (2/N) Σ''_j f_j cos(jkπ/N). Accumulated j-outer into independent
+    // a_k (no long dependency chain); the table index jk·(48/N) mod 96 advances by addition.
     let step = BASE / n;
-    let mut total = 0.0;
-    for (k, &mk) in mom.iter().enumerate().take(n + 1) {
-        let dk = (k * step) % (2 * BASE);
+    let mut acc = [0.0f64; MAX_N + 1];
+    for (j, &fj) in fv.iter().enumerate().take(n + 1) {
+        let fj = if j == 0 || j == n { 0.5 * fj } else { fj };
+        let dj = (j * step) % (2 * BASE);
         let mut idx = 0usize;
-        let mut a = 0.0;
-        for (j, &fj) in fv.iter().enumerate().take(n + 1) {
-            let c = COS48.get(idx).copied().unwrap_or(f64::NAN);
-            a += if j == 0 || j == n { 0.5 * fj * c } else { fj * c };
-            idx += dk;
+        for a in acc.iter_mut().take(n + 1) {
+            *a += fj * COS48.get(idx).copied().unwrap_or(f64::NAN);
+            idx += dj;
             if idx >= 2 * BASE {
                 idx -= 2 * BASE;
             }
         }
+    }
+    let mut total = 0.0;
+    for (k, (&mk, &a)) in mom.iter().zip(acc.iter()).enumerate().take(n + 1) {
         let term = a * mk;
         total += if k == 0 || k == n { 0.5 * term } else { term };
     }
