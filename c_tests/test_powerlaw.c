@@ -151,6 +151,25 @@ int main(void) {
     CHECK_STATUS(dc_omega0(0.0, 1.0, &out), DC_ERR_NOT_POSITIVE);
     CHECK(out == 42.0 && en0.e == 42.0, "output touched on error");
 
+    /* Time steps: linearised bound = seed's / sqrt(2p/(p+1)); static bound, damped factor. */
+    double dts = 0, dtl = 0, dtq = 0;
+    CHECK_STATUS(dc_dt_crit(2.0, 0.3, 50.0, &dts), DC_OK);
+    CHECK_STATUS(dc_dt_linearised(2.0, 0.3, 50.0, &dtl), DC_OK);
+    CHECK(dc_rel(dts / dtl, sqrt(4.0 / 3.0)) < 1e-14, "seed/lin = %.17g", dts / dtl);
+    CHECK_STATUS(dc_dt_static(2.0, 0.0, 50.0, 9.81, &dtq), DC_OK);
+    {
+        double deq = pow(9.81 / 2500.0, 0.5), weq = 50.0 * sqrt(2.0 * deq);
+        CHECK(dc_rel(dtq, 2.0 / weq) < 1e-14, "static %.17g vs %.17g", dtq, 2.0 / weq);
+        double z = 0.7 / (2.0 * sqrt(2.0));
+        CHECK_STATUS(dc_dt_static(2.0, 0.7, 50.0, 9.81, &dtq), DC_OK);
+        CHECK(dc_rel(dtq, 2.0 / weq * (sqrt(1 + z * z) - z)) < 1e-14, "damped static %.17g", dtq);
+    }
+    out = 42.0;
+    CHECK_STATUS(dc_dt_static(2.0, -1.0, 50.0, 9.81, &out), DC_ERR_NEGATIVE);
+    CHECK_STATUS(dc_dt_static(2.0, 0.1, 50.0, 0.0, &out), DC_ERR_NOT_POSITIVE);
+    CHECK_STATUS(dc_dt_linearised(2.0, 0.3, NAN, &out), DC_ERR_NOT_FINITE);
+    CHECK(out == 42.0, "output touched on error");
+
     /* omega0 with the Hertz helper: glass beads. */
     double k, w;
     CHECK_STATUS(dc_hertz_stiffness(63e9, 0.23, 1e-3, 63e9, 0.23, 1e-3, &k), DC_OK);

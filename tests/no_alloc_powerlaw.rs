@@ -3,7 +3,7 @@
 
 mod alloc_counter;
 use alloc_counter::{assert_counter_works, count_allocations, Counting};
-use demcontact::ffi::{powerlaw::*, status::*};
+use demcontact::ffi::{powerlaw::*, status::*, timestep::*};
 
 #[global_allocator]
 static ALLOC: Counting = Counting;
@@ -45,8 +45,13 @@ fn powerlaw_exports_do_not_allocate() {
                         calls += 16;
                     }
                 }
-                unsafe { std::hint::black_box(dc_omega0(p, alpha, &mut out)) };
-                calls += 1;
+                unsafe {
+                    std::hint::black_box(dc_omega0(p, alpha, &mut out));
+                    std::hint::black_box(dc_dt_linearised(p, alpha, 2.0, &mut out));
+                    std::hint::black_box(dc_dt_static(p, alpha, 2.0, 9.81, &mut out));
+                    std::hint::black_box(dc_dt_static(p, alpha, 2.0, 9.81, std::ptr::null_mut()));
+                }
+                calls += 4;
             }
         }
     });
