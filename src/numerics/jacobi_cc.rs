@@ -125,6 +125,34 @@ const COS48: [f64; 2 * BASE + 1] = [
     1.0,
 ];
 
+/// Cosine matrices C[k][j] = cos(jkπ/N) for each level's N, built at compile time from COS48 so
+/// that the transform is a contiguous dot product per k.
+// Indexing here runs at compile time, where an out-of-range index is a build error, not a panic.
+#[allow(clippy::indexing_slicing)]
+const fn cos_matrix(n: usize) -> [[f64; MAX_N + 1]; MAX_N + 1] {
+    let mut m = [[0.0; MAX_N + 1]; MAX_N + 1];
+    let step = BASE / n;
+    let mut k = 0;
+    while k <= n {
+        let mut j = 0;
+        while j <= n {
+            m[k][j] = COS48[(j * k * step) % (2 * BASE)];
+            j += 1;
+        }
+        k += 1;
+    }
+    m
+}
+
+#[allow(clippy::indexing_slicing)]
+static COS_MATRICES: [[[f64; MAX_N + 1]; MAX_N + 1]; 5] = [
+    cos_matrix(LEVEL_N[0]),
+    cos_matrix(LEVEL_N[1]),
+    cos_matrix(LEVEL_N[2]),
+    cos_matrix(LEVEL_N[3]),
+    cos_matrix(LEVEL_N[4]),
+];
+
 /// Number of f evaluations at `level` (clamped to 0..=MAX_LEVEL).
 pub fn evaluations(level: u32) -> usize {
     n_of(level) + 1
@@ -170,24 +198,20 @@ pub fn integrate_weighted<F: FnMut(f64) -> f64>(mut f: F, nu: f64, level: u32) -
             *m = next;
         }
     }
-    // Σ''_k a_k M_k with a_k = (2/N) Σ''_j f_j cos(jkπ/N). Accumulated j-outer into independent
-    // a_k (no long dependency chain); the table index jk·(48/N) mod 96 advances by addition.
-    let step = BASE / n;
-    let mut acc = [0.0f64; MAX_N + 1];
-    for (j, &fj) in fv.iter().enumerate().take(n + 1) {
-        let fj = if j == 0 || j == n { 0.5 * fj } else { fj };
-        let dj = (j * step) % (2 * BASE);
-        let mut idx = 0usize;
-        for a in acc.iter_mut().take(n + 1) {
-            *a += fj * COS48.get(idx).copied().unwrap_or(f64::NAN);
-            idx += dj;
-            if idx >= 2 * BASE {
-                idx -= 2 * BASE;
-            }
-        }
+    // Σ''_k a_k M_k with a_k = (2/N) Σ''_j f_j cos(jkπ/N): halve the end values once, then one
+    // contiguous dot product per k against the level's cosine matrix.
+    if let Some(f0) = fv.first_mut() {
+        *f0 *= 0.5;
     }
+    if let Some(fnn) = fv.get_mut(n) {
+        *fnn *= 0.5;
+    }
+    let Some(mat) = COS_MATRICES.get(level.min(MAX_LEVEL) as usize) else {
+        return f64::NAN;
+    };
     let mut total = 0.0;
-    for (k, (&mk, &a)) in mom.iter().zip(acc.iter()).enumerate().take(n + 1) {
+    for (k, (&mk, row)) in mom.iter().zip(mat.iter()).enumerate().take(n + 1) {
+        let a: f64 = row.iter().zip(fv.iter()).take(n + 1).map(|(c, f)| c * f).sum();
         let term = a * mk;
         total += if k == 0 || k == n { 0.5 * term } else { term };
     }
