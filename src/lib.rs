@@ -18,6 +18,7 @@ pub mod lsd;
 pub mod material;
 pub mod numerics;
 pub mod powerlaw;
+pub mod viscoelastic;
 
 pub use criterion::EndCriterion;
 pub use error::Error;

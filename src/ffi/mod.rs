@@ -15,6 +15,7 @@ pub mod material;
 pub mod status;
 pub mod timestep;
 pub mod version;
+pub mod viscoelastic;
 
 use crate::{EndCriterion, Error};
 use status::*;

@@ -3,8 +3,11 @@
 //! * [`roots`]: a bracketed Newton iteration for monotone functions.
 //! * [`ode`]: an adaptive Dormand–Prince 5(4) integrator with event location, used as the
 //!   independent reference that every closed form and quadrature in this crate is checked against.
+//! * [`taylor`]: Taylor-series (automatic differentiation) building blocks over real or complex
+//!   numbers, for the viscoelastic reference integrator.
 
 pub mod ode;
 pub mod roots;
+pub mod taylor;
 
 pub use roots::newton_bracketed;
