@@ -36,8 +36,8 @@ pub unsafe extern "C" fn dc_viscoelastic_e(b: f64, criterion: i32, e_out: *mut f
 ///
 /// DC_END_FORCE: sum_{k=0}^{20} h_k b^(k/2) (their Table V); DC_END_OVERLAP:
 /// 1 + sum_{k=1}^{10} c_k b^k (their Table III), coefficients as printed.
-/// Precision: within 1e-6 of the reference only for b <= 0.09 (force) / 0.30 (overlap), within
-/// 1e-3 for b <= 0.37 / 0.68; meaningless beyond b ~ 1. Prefer dc_viscoelastic_e.
+/// Precision: within 1e-6 of the reference only for b <= 0.48 (force) / 0.41 (overlap), within
+/// 1e-3 for b <= 0.76 / 0.78; meaningless beyond b ~ 1. Prefer dc_viscoelastic_e.
 ///
 /// @param b          b >= 0, finite.
 /// @param criterion  DC_END_OVERLAP or DC_END_FORCE.
