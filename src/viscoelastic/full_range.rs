@@ -11,7 +11,7 @@
 //! * beyond: the large-b laws measured with the reference (docs/viscoelastic.md):
 //!   overlap e = C_O b^{−5} (exact up to terms below 1e-16 for b ≥ 8: the trajectory collapses onto
 //!   one attracting solution whose exit speed is independent of the impact speed), force
-//!   e = C_F b^{−5/3} (1 − D b^{−P}), C_F = (3/2)^{2/3}, P ≈ 1.58 and D ≈ 11.9 fitted (7e-12
+//!   e = C_F b^{−5/3} (1 − D b^{−P}), C_F = (3/2)^{2/3}, P ≈ 1.59 and D ≈ 12.7 fitted (7e-12
 //!   relative on [2^20, 2^21.5], at the reference's own accuracy there).
 
 use super::table::*;
