@@ -228,7 +228,7 @@ const char *dc_version(void);
  * Precision: relative error below 1e-10 for every b >= 0: measured max 6e-14 against the
  * reference integration on [0, 1e6] (force) and 4e-15 on [0, 3e3] (overlap;
  * beyond b = 8 the overlap law is exact to 1e-16); beyond 2^20 the force law
- * 1.3103707 b^(-5/3) (1 - 11.9 b^-1.58), 7e-12 on [2^20, 2^21.5].
+ * 1.3103707 b^(-5/3) (1 - 12.7 b^-1.59), 7e-12 on [2^20, 2^21.5].
  * Cost: one Chebyshev sum of 20 terms, about 40 ns (overlap) / 60 ns (force) per call.
  *
  * @param b          dimensionless damping-speed parameter, b >= 0, finite.
