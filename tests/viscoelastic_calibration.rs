@@ -58,6 +58,12 @@ fn calibration_round_trips() {
             let back = e_full(b, c).unwrap();
             worst = worst.max(((back - e) / e).abs());
         }
+        // Exactly representable b values (b = 1 is s = ln b = 0 in the iteration) and e near 1.
+        for &b in &[0.05, 0.3, 1.0, 2.0, 4.0, 8.0, 1024.0] {
+            let e = e_full(b, c).unwrap();
+            let back = calibration::b_from_e(e, c).unwrap();
+            assert!((back / b - 1.0).abs() < 1e-12, "{c:?} b={b} back={back}");
+        }
         for &e in &[1.0 - 1e-12, 0.999999, 0.99, 0.9, 0.8] {
             let b = calibration::b_from_e(e, c).unwrap();
             let back = e_full(b, c).unwrap();

@@ -8,7 +8,6 @@
 
 use super::full_range::e_full;
 use super::scaling;
-use crate::numerics::newton_bracketed;
 use crate::{EndCriterion, Error};
 
 fn check_e(e: f64) -> Result<f64, Error> {
@@ -51,17 +50,38 @@ pub fn b_from_e(e: f64, criterion: EndCriterion) -> Result<f64, Error> {
         EndCriterion::Force => (1.31 / e).powf(0.6).ln(),
         EndCriterion::Overlap => (5.16 / e).powf(0.2).ln(),
     };
-    let s = newton_bracketed(
-        |s| {
-            let h = 1e-6;
-            let fs = f(s);
-            (fs, (f(s + h) - f(s - h)) / (2.0 * h))
-        },
-        lo,
-        hi,
-        x0.clamp(lo, hi),
-        200,
-    )?;
+    // Newton on s = ln b, safeguarded by the bracket. s is an absolute scale (its error is the
+    // relative error of b), so convergence is tested absolutely: |Δs| ≤ 4ε·max(1, |s|); a
+    // relative test would never end at b = 1 (s = 0).
+    let (mut lo, mut hi) = (lo, hi);
+    let mut s = x0.clamp(lo, hi);
+    let mut done = false;
+    for _ in 0..200 {
+        let fs = f(s);
+        if fs == 0.0 {
+            done = true;
+            break;
+        }
+        if fs < 0.0 {
+            lo = s;
+        } else {
+            hi = s;
+        }
+        let h = 1e-6;
+        let d = (f(s + h) - f(s - h)) / (2.0 * h);
+        let newton = s - fs / d;
+        let next = if newton.is_finite() && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+        let tol = 4.0 * f64::EPSILON * s.abs().max(1.0);
+        let step = (next - s).abs();
+        s = next;
+        if step <= tol || hi - lo <= tol {
+            done = true;
+            break;
+        }
+    }
+    if !done {
+        return Err(Error::NoConvergence);
+    }
     let b = s.exp();
     if b.is_finite() { Ok(b) } else { Err(Error::ResultRange) }
 }
