@@ -8,6 +8,8 @@
 //!   maps exactly onto it, so its restitution functions are the heart of the calibration.
 //! * [`powerlaw`]: the power-law Tsuji contact `m δ'' + α √(m k) δ^((p-1)/2) δ' + k δ^p = 0`.
 //! * [`material`]: Hertz stiffness from two spheres' E, ν, R.
+//! * [`viscoelastic`]: speed-dependent restitution of viscoelastic Hertz spheres, e(β v^{1/5}),
+//!   in three tiers (published series, full-range tables, reference integration), and calibration.
 //! * [`numerics`]: root finding and the reference ODE integrator used to check everything else.
 //! * [`ffi`]: the `extern "C"` functions exported as `include/demcontact.h`.
 
