@@ -17,6 +17,7 @@ pub mod powerlaw;
 pub mod status;
 pub mod timestep;
 pub mod version;
+pub mod viscoelastic;
 
 use crate::{EndCriterion, Error};
 use status::*;
