@@ -1,0 +1,217 @@
+/*
+ * LIGGGHTS 3.8 normal contact model "demcontact", compiled against the installed LIGGGHTS headers
+ * (Debian libliggghts-dev) and loaded into the stock `liggghts` executable with LD_PRELOAD:
+ *
+ *   pair_style gran model demcontact tangential history [limitForce on] [exponent 1.5]
+ *   fix wall wall/gran model demcontact tangential history primitive type 1 zplane 0.0
+ *
+ * Force: F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn (power-law Tsuji), with
+ *   k = (4/3) Y* R*^(2-p)  (Hertz, k = 4/3 Y* sqrt(R*), at the default p = 1.5; Y* = LIGGGHTS' Yeff
+ *                           from youngsModulus and poissonsRatio),
+ *   alpha = dc_alpha_from_e(e, p, limitForce ? DC_END_FORCE : DC_END_OVERLAP), e from
+ *   coefficientRestitution (per type pair), so the realised restitution is e in both cases.
+ * The tangential stiffness/damping handed to the tangential model are exactly those of the
+ * builtin `model hertz`, so `tangential history` behaves identically.
+ *
+ * Registration: LIGGGHTS selects a compiled template instance by a hash of the model ids
+ * (normal | tangential << 6 | ...). A static initializer adds the name "demcontact" to the contact
+ * model factory and registers the pair-style and wall instances for the combinations below with
+ * the process-wide pair and wall factories. LIGGGHTS itself is not modified.
+ */
+
+// The generated style_*.h (see gen_styles.cmake) must be found first; contact_models.h pulls in
+// every installed model header, which in turn need pointers.h/lammps.h already declared.
+#include "contact_models.h"
+#include "granular_pair_style.h"
+#include "granular_wall.h"
+#include "fix_insert_stream.h" // fix_insert_stream_predefined.h (via pair_gran_base.h) needs it first
+#include "pair_gran_base.h"
+#include "fix_wall_gran_base.h"
+#include "global_properties.h"
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+
+#include <demcontact.h>
+#include "tsuji_force.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+// 6-bit model id; the installed ids are 0..12 (NORMAL_OFF = 9). Checked at registration.
+static const int DEMCONTACT = 42;
+
+template<>
+class NormalModel<DEMCONTACT> : public NormalModelBase
+{
+public:
+    NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c)
+        : NormalModelBase(lmp, hsetup, c), Yeff(NULL), Geff(NULL), betaeff(NULL), coeffRest(NULL),
+          tangential_damping(true), limitForce(false), exponent(1.5), ntypes(0) {}
+
+    void registerSettings(Settings &settings)
+    {
+        settings.registerOnOff("tangential_damping", tangential_damping, true);
+        settings.registerOnOff("limitForce", limitForce);
+        settings.registerDoubleSetting("exponent", exponent, 1.5);
+    }
+
+    void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+
+    void connectToProperties(PropertyRegistry &registry)
+    {
+        registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, "model demcontact");
+        registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, "model demcontact");
+        registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, "model demcontact");
+        registry.registerProperty("coeffRest", &MODEL_PARAMS::createCoeffRest, "model demcontact");
+        registry.connect("Yeff", Yeff, "model demcontact");
+        registry.connect("Geff", Geff, "model demcontact");
+        registry.connect("betaeff", betaeff, "model demcontact");
+        registry.connect("coeffRest", coeffRest, "model demcontact");
+        ntypes = 0; // recalibrate: properties may have changed between runs
+    }
+
+    double stressStrainExponent() { return exponent; }
+
+    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
+        if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+        if (ntypes == 0) calibrate();
+
+        const int itype = sidata.itype, jtype = sidata.jtype;
+        const double reff = sidata.is_wall ? sidata.radi
+                                           : sidata.radi * sidata.radj / (sidata.radi + sidata.radj);
+        const double meff = sidata.meff;
+        const double deltan = sidata.deltan;
+        const demcontact_sim::TsujiPair &tp = pairs[itype * (ntypes + 1) + jtype];
+
+        // k d^p with k = 4/3 Y* R*^(2-p): Hertz at p = 1.5, dimensionally consistent for any p.
+        const double k = (tp.p == 1.5 ? 4. / 3. * Yeff[itype][jtype] * std::sqrt(reff)
+                                      : 4. / 3. * Yeff[itype][jtype] * std::pow(reff, 2.0 - tp.p))
+                         / force->nktv2p;
+        // LIGGGHTS' vn is negative while approaching; demcontact's is positive while compressing.
+        const double Fn = demcontact_sim::tsuji_force(tp, k, deltan, -sidata.vn, meff);
+
+        // What the tangential model reads: identical to the builtin `model hertz`.
+        const double sqrtval = std::sqrt(reff * deltan);
+        const double St = 8. * Geff[itype][jtype] * sqrtval;
+        const double sqrtFiveOverSix = 0.91287092917527685576161630466800355658790782499663875;
+        sidata.Fn = Fn;
+        sidata.kn = 4. / 3. * Yeff[itype][jtype] * sqrtval / force->nktv2p;
+        sidata.kt = St / force->nktv2p;
+        sidata.gamman = tp.alpha * std::sqrt(meff * k) * (tp.p == 1.5 ? std::sqrt(std::sqrt(deltan))
+                                                                       : std::pow(deltan, 0.5 * (tp.p - 1.0)));
+        sidata.gammat = tangential_damping
+                            ? -2. * sqrtFiveOverSix * betaeff[itype][jtype] * std::sqrt(St * meff) : 0.0;
+
+        if (sidata.is_wall) {
+            const double Fn_ = Fn * sidata.area_ratio;
+            i_forces.delta_F[0] += Fn_ * sidata.en[0];
+            i_forces.delta_F[1] += Fn_ * sidata.en[1];
+            i_forces.delta_F[2] += Fn_ * sidata.en[2];
+        } else {
+            i_forces.delta_F[0] += Fn * sidata.en[0];
+            i_forces.delta_F[1] += Fn * sidata.en[1];
+            i_forces.delta_F[2] += Fn * sidata.en[2];
+            j_forces.delta_F[0] -= Fn * sidata.en[0];
+            j_forces.delta_F[1] -= Fn * sidata.en[1];
+            j_forces.delta_F[2] -= Fn * sidata.en[2];
+        }
+    }
+
+    void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)
+    {
+        if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
+    }
+    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+private:
+    // alpha for every type pair, once (calibration costs ~0.2 us per pair; see README benchmarks).
+    void calibrate()
+    {
+        const int n = atom->ntypes;
+        pairs.assign((n + 1) * (n + 1), demcontact_sim::TsujiPair());
+        for (int i = 1; i <= n; i++)
+            for (int j = 1; j <= n; j++) {
+                const int32_t s = demcontact_sim::tsuji_setup(coeffRest[i][j], exponent, limitForce,
+                                                              &pairs[i * (n + 1) + j]);
+                if (s != DC_OK) {
+                    char msg[256];
+                    std::snprintf(msg, sizeof msg,
+                                  "model demcontact: types %d-%d (e = %g, exponent = %g): %s", i, j,
+                                  coeffRest[i][j], exponent, dc_status_str(s));
+                    error->all(FLERR, msg);
+                }
+            }
+        if (comm->me == 0) {
+            char msg[256];
+            std::snprintf(msg, sizeof msg,
+                          "model demcontact: exponent %g, limitForce %s, alpha(1,1) = %.15g (%s)\n",
+                          exponent, limitForce ? "on" : "off", pairs[(n + 1) + 1].alpha,
+                          limitForce ? "DC_END_FORCE" : "DC_END_OVERLAP");
+            if (screen) std::fputs(msg, screen);
+            if (logfile) std::fputs(msg, logfile);
+        }
+        ntypes = n;
+    }
+
+    double **Yeff, **Geff, **betaeff, **coeffRest;
+    bool tangential_damping, limitForce;
+    double exponent;
+    int ntypes;
+    std::vector<demcontact_sim::TsujiPair> pairs;
+};
+
+} // namespace ContactModels
+} // namespace LIGGGHTS
+
+namespace {
+
+using namespace LIGGGHTS;
+using namespace LIGGGHTS::ContactModels;
+
+template<typename T>
+PairStyles::IGranularPairStyle *create_pair(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *parent, int64_t hash)
+{
+    return new T(lmp, parent, hash);
+}
+
+template<typename T>
+Walls::IGranularWall *create_wall(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::FixWallGran *parent, int64_t hash)
+{
+    return new T(lmp, parent, hash);
+}
+
+template<int TANGENTIAL, int ROLLING>
+void register_combination()
+{
+    typedef GranStyle<DEMCONTACT, TANGENTIAL, COHESION_OFF, ROLLING, SURFACE_DEFAULT> Style;
+    typedef ContactModel<Style> CModel;
+    PairStyles::Factory::instance().addStyle("gran", Style::HASHCODE,
+                                             &create_pair<PairStyles::Granular<CModel> >);
+    Walls::Factory::instance().addStyle("gran", Style::HASHCODE, &create_wall<Walls::Granular<CModel> >);
+}
+
+struct RegisterDemcontact {
+    RegisterDemcontact()
+    {
+        Factory &f = Factory::instance();
+        f.addNormalModel("demcontact", DEMCONTACT);
+        register_combination<TANGENTIAL_OFF, ROLLING_OFF>();
+        register_combination<TANGENTIAL_NO_HISTORY, ROLLING_OFF>();
+        register_combination<TANGENTIAL_HISTORY, ROLLING_OFF>();
+        register_combination<TANGENTIAL_HISTORY, ROLLING_CDT>();
+        register_combination<TANGENTIAL_HISTORY, ROLLING_EPSD2>();
+    }
+};
+
+RegisterDemcontact register_demcontact;
+
+} // namespace
