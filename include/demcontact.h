@@ -20,6 +20,22 @@
 #include <stddef.h>
 
 /**
+ * dc_pair.model of a power-law Tsuji pair with fixed stiffness (including the linear
+ * spring-dashpot, p = 1).
+ */
+#define DC_MODEL_POWERLAW 1
+
+/**
+ * dc_pair.model of a Hertz pair from material data (k = (4/3) E* sqrt(R*) per contact).
+ */
+#define DC_MODEL_HERTZ 2
+
+/**
+ * dc_pair.model of a viscoelastic Hertz pair (Brilliantov et al.).
+ */
+#define DC_MODEL_VISCOELASTIC 3
+
+/**
  * Success.
  */
 #define DC_OK 0
@@ -81,6 +97,18 @@
 #define DC_ERR_NO_EVENT 6111
 
 /**
+ * A dc_pair was not initialised by a dc_pair_* constructor (unknown kernel code), e.g. a
+ * zero-filled struct.
+ */
+#define DC_ERR_PAIR_INVALID 6120
+
+/**
+ * A caller buffer is misaligned for double, too large to address, or an output array overlaps an
+ * input array.
+ */
+#define DC_ERR_BUFFER_LAYOUT 6121
+
+/**
  * An internal error was caught at the boundary (not expected; please report).
  */
 #define DC_ERR_INTERNAL 6199
@@ -95,6 +123,78 @@
  * attractive normal forces to zero: LIGGGHTS limitForce, LAMMPS limit_damping, Chrono, YADE).
  */
 #define DC_END_FORCE 1
+
+/**
+ * A calibrated contact model for one material pair (type pair): plain data, owned by the
+ * caller, built once at set-up by a dc_pair_* constructor and then only read. Arrays of dc_pair
+ * (one per type pair) are fine; copying one with memcpy or assignment is fine. Do not edit the
+ * fields: `kernel`, `k`, `c`, `h` are what the force functions read, the others are for
+ * inspection. A zero-filled dc_pair is invalid (DC_ERR_PAIR_INVALID / NaN force).
+ *
+ * Sign conventions of every force function (per contact):
+ *  - overlap d [m]: positive when the bodies interpenetrate; d <= 0 (no contact) gives force 0.
+ *  - vn [m/s]: the rate dd/dt of the overlap, positive while compressing (approaching).
+ *  - r_eff = R1 R2/(R1 + R2) [m] and m_eff = m1 m2/(m1 + m2) [kg] of the two bodies.
+ *  - result: the normal force magnitude [N], positive = repulsive. Pairs built with
+ *    DC_END_FORCE clamp it to >= 0; pairs built with DC_END_OVERLAP return the raw value, which
+ *    turns negative (attractive) near the end of a damped contact.
+ *
+ * Models (alpha calibrated exactly from e for the pair's criterion, speed independent):
+ *  - power law:    F = k d^p + alpha sqrt(m_eff k) d^((p-1)/2) vn      (r_eff ignored)
+ *  - Hertz:        same with p = 3/2 and k = (4/3) E* sqrt(r_eff) per contact
+ *  - viscoelastic: F = rho d^(3/2) + (3/2) A rho sqrt(d) vn, rho = (4/3) E* sqrt(r_eff),
+ *    m_eff ignored
+ */
+typedef struct dc_pair {
+    /**
+     * DC_MODEL_POWERLAW, DC_MODEL_HERTZ or DC_MODEL_VISCOELASTIC.
+     */
+    int32_t model;
+    /**
+     * The specialised kernel chosen at construction (exponent path, damping, clamping).
+     */
+    int32_t kernel;
+    /**
+     * DC_END_OVERLAP or DC_END_FORCE, as given to the constructor.
+     */
+    int32_t criterion;
+    /**
+     * 1 if attractive forces are clamped to zero (criterion DC_END_FORCE), else 0.
+     */
+    int32_t clamp;
+    /**
+     * Force-law exponent p (3/2 for Hertz and viscoelastic).
+     */
+    double p;
+    /**
+     * k [N m^-p] for power-law pairs; (4/3) E* [Pa] for Hertz and viscoelastic pairs.
+     */
+    double stiffness;
+    /**
+     * Tsuji damping coefficient alpha (0 for viscoelastic pairs and for e = 1).
+     */
+    double alpha;
+    /**
+     * Viscoelastic damping constant A [s] (0 for the other models).
+     */
+    double damping_a;
+    /**
+     * Target restitution e (NaN for viscoelastic pairs: their e depends on impact speed).
+     */
+    double e;
+    /**
+     * Kernel constant: elastic prefactor (k, or (4/3) E*).
+     */
+    double k;
+    /**
+     * Kernel constant: damping prefactor (alpha sqrt(k), alpha sqrt((4/3) E*), or (3/2) A).
+     */
+    double c;
+    /**
+     * Kernel constant: damping exponent (p - 1)/2.
+     */
+    double h;
+} dc_pair;
 
 #ifdef __cplusplus
 extern "C" {
@@ -150,6 +250,207 @@ int32_t dc_alpha_from_e(double e,
  * `e_out` must be NULL or point to writable memory for one double.
  */
 int32_t dc_e_from_alpha(double alpha, double p, int32_t criterion, double *e_out);
+
+/**
+ * Power-law Tsuji pair F = k d^p + alpha sqrt(m_eff k) d^((p-1)/2) vn with alpha calibrated so
+ * that every collision of this pair has restitution `e` under `criterion` (exact, independent of
+ * impact speed and mass). p = 1, 3/2 and 2 get dedicated kernels without pow; other p use one pow
+ * per contact. e = 1 gives an undamped kernel that reads neither vn nor m_eff.
+ *
+ * @param p          exponent, p >= 1 (1 linear spring-dashpot, 1.5 Hertz with fixed k).
+ * @param k          stiffness > 0 [N m^-p].
+ * @param e          target restitution, 0 < e <= 1.
+ * @param criterion  DC_END_FORCE: attractive force clamped to zero, alpha from the force-zero
+ *                   criterion. DC_END_OVERLAP: no clamp, alpha from the overlap-zero criterion.
+ * @param out        receives the pair on success; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
+ *         DC_ERR_NOT_POSITIVE, DC_ERR_RESTITUTION_RANGE, DC_ERR_CRITERION, DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `out` must be NULL or point to writable memory for one dc_pair.
+ */
+int32_t dc_pair_powerlaw(double p, double k, double e, int32_t criterion, struct dc_pair *out);
+
+/**
+ * Power-law Tsuji pair from its damping coefficient alpha >= 0 directly (for hosts that already
+ * have alpha); `e` of the result is the restitution this alpha realises under `criterion`.
+ *
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
+ *         DC_ERR_NOT_POSITIVE (k), DC_ERR_NEGATIVE (alpha), DC_ERR_CRITERION, DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `out` must be NULL or point to writable memory for one dc_pair.
+ */
+int32_t dc_pair_powerlaw_alpha(double p,
+                               double k,
+                               double alpha,
+                               int32_t criterion,
+                               struct dc_pair *out);
+
+/**
+ * Linear spring-dashpot pair F = k d + alpha sqrt(m_eff k) vn (the power law with p = 1);
+ * same contract as dc_pair_powerlaw.
+ *
+ * # Safety
+ * `out` must be NULL or point to writable memory for one dc_pair.
+ */
+int32_t dc_pair_linear(double k, double e, int32_t criterion, struct dc_pair *out);
+
+/**
+ * Hertz pair of two materials: F = k d^(3/2) + alpha sqrt(m_eff k) d^(1/4) vn with
+ * k = (4/3) E* sqrt(r_eff) per contact, 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2, and alpha calibrated
+ * exactly for p = 3/2 so that every collision has restitution `e` under `criterion`.
+ * Per contact: two square roots, no pow.
+ *
+ * @param E1,E2      Young's moduli > 0 [Pa].
+ * @param nu1,nu2    Poisson ratios in (-1, 0.5].
+ * @param e          target restitution, 0 < e <= 1.
+ * @param criterion  DC_END_FORCE (clamped, force-zero alpha) or DC_END_OVERLAP (no clamp).
+ * @param out        receives the pair on success; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE (E, nu),
+ *         DC_ERR_RESTITUTION_RANGE, DC_ERR_CRITERION, DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `out` must be NULL or point to writable memory for one dc_pair.
+ */
+int32_t dc_pair_hertz(double E1,
+                      double nu1,
+                      double E2,
+                      double nu2,
+                      double e,
+                      int32_t criterion,
+                      struct dc_pair *out);
+
+/**
+ * Viscoelastic Hertz pair (Brilliantov et al.): F = rho d^(3/2) + (3/2) A rho sqrt(d) vn with
+ * rho = (4/3) E* sqrt(r_eff) per contact (for one material, rho = 2 E sqrt(r_eff)/(3(1-nu^2))).
+ * The damping constant A [s] is given directly; e then depends on the impact speed, so there is
+ * no calibration here. m_eff is not read. A = 0 gives the elastic Hertz kernel.
+ *
+ * @param E1,E2,nu1,nu2  as for dc_pair_hertz.
+ * @param A              damping constant >= 0 [s].
+ * @param criterion      DC_END_FORCE clamps attractive force to zero; DC_END_OVERLAP does not.
+ * @param out            receives the pair on success; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE (E, nu),
+ *         DC_ERR_NEGATIVE (A), DC_ERR_CRITERION, DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `out` must be NULL or point to writable memory for one dc_pair.
+ */
+int32_t dc_pair_viscoelastic(double E1,
+                             double nu1,
+                             double E2,
+                             double nu2,
+                             double A,
+                             int32_t criterion,
+                             struct dc_pair *out);
+
+/**
+ * Normal force [N] of one contact (sign conventions: see dc_pair). The hot path: no status, no
+ * input checks beyond what keeps it defined.
+ *
+ * Behaviour on every input (never undefined, never traps):
+ *  - overlap <= 0 or NaN: returns 0 (no contact).
+ *  - finite overlap > 0, vn, r_eff > 0, m_eff > 0 without overflow of the two force terms:
+ *    a finite force, equal to the model formula within a few ulp of |elastic| + |damping|.
+ *  - r_eff <= 0 (for Hertz/viscoelastic pairs) or m_eff < 0 (for damped Tsuji pairs), or NaN/inf
+ *    in vn, r_eff, m_eff: NaN or inf may result (clamped pairs turn NaN into 0). Use
+ *    dc_normal_force_checked to have these reported.
+ *  - pair NULL or not made by a dc_pair_* constructor: NaN.
+ *
+ * @param pair     the pair model.
+ * @param overlap  d [m], > 0 in contact.
+ * @param vn       dd/dt [m/s], positive while compressing.
+ * @param r_eff    effective radius [m]; ignored by power-law pairs (fixed k).
+ * @param m_eff    effective mass [kg]; ignored by viscoelastic pairs and undamped pairs.
+ *
+ * # Safety
+ * `pair` must be NULL or point to a readable dc_pair.
+ */
+double dc_normal_force(const struct dc_pair *pair,
+                       double overlap,
+                       double vn,
+                       double r_eff,
+                       double m_eff);
+
+/**
+ * dc_normal_force with every check: the force is written to `force_out` only on success.
+ *
+ * @return DC_OK, DC_ERR_NULL_POINTER (pair or force_out), DC_ERR_PAIR_INVALID,
+ *         DC_ERR_NOT_FINITE (overlap, or an input the pair reads), DC_ERR_NOT_POSITIVE (r_eff or
+ *         m_eff <= 0 where read), DC_ERR_RESULT_RANGE (a force term overflows, also when a
+ *         clamp would hide it).
+ *         overlap <= 0 is valid and gives 0.
+ *
+ * # Safety
+ * `pair` must be NULL or point to a readable dc_pair; `force_out` NULL or writable for a double.
+ */
+int32_t dc_normal_force_checked(const struct dc_pair *pair,
+                                double overlap,
+                                double vn,
+                                double r_eff,
+                                double m_eff,
+                                double *force_out);
+
+/**
+ * Structure-of-arrays normal forces of n contacts of one pair:
+ * force_out[i] = dc_normal_force(pair, overlap[i], vn[i], r_eff[i], m_eff[i]) for i < n, with the
+ * same per-value behaviour (no per-value checks: validate upstream or use the checked scalar).
+ * One dispatch per call, then a loop the compiler vectorises. Group contacts by type pair.
+ *
+ * Arrays the pair does not read may be NULL: vn and m_eff for undamped pairs, r_eff for
+ * power-law pairs, m_eff for viscoelastic pairs.
+ *
+ * @param n          number of contacts, > 0.
+ * @param force_out  n doubles; must not overlap any input array (in-place is not supported).
+ * @return DC_OK, DC_ERR_NULL_POINTER (pair, overlap, force_out, or an array the pair reads),
+ *         DC_ERR_PAIR_INVALID, DC_ERR_BUFFER_TOO_SHORT (n = 0),
+ *         DC_ERR_BUFFER_LAYOUT (a pointer misaligned for double, n too large, or force_out
+ *         overlapping an input). On error force_out is untouched.
+ *
+ * # Safety
+ * Every non-NULL array must be valid for n doubles (force_out writable); pair NULL or readable.
+ */
+int32_t dc_normal_force_batch(const struct dc_pair *pair,
+                              size_t n,
+                              const double *overlap,
+                              const double *vn,
+                              const double *r_eff,
+                              const double *m_eff,
+                              double *force_out);
+
+/**
+ * Normal contact force between two spheres from their centres, velocities, radii and masses,
+ * for codes without their own contact geometry (computed with nalgebra).
+ *
+ * Conventions: n = (x1 - x2)/|x1 - x2| (unit vector from sphere 2 to sphere 1);
+ * overlap d = R1 + R2 - |x1 - x2|; vn = (v2 - v1).n (positive while approaching);
+ * r_eff = R1 R2/(R1 + R2), m_eff = m1 m2/(m1 + m2); force_out = F n is the force ON SPHERE 1
+ * (repulsive: along n), sphere 2 receives -force_out. F as in dc_normal_force. Not in contact
+ * (d <= 0): the zero vector and DC_OK.
+ *
+ * @param x1,v1,x2,v2  3-vectors [m], [m/s].
+ * @param R1,R2        radii > 0 [m] (finite: walls are not spheres).
+ * @param m1,m2        masses > 0 [kg].
+ * @param force_out    3 doubles, written only on success.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_PAIR_INVALID, DC_ERR_NOT_FINITE,
+ *         DC_ERR_NOT_POSITIVE (radius or mass <= 0, or overlapping spheres with coincident
+ *         centres), DC_ERR_RESULT_RANGE (distance or force overflows).
+ *
+ * # Safety
+ * Non-NULL vector pointers must be readable (force_out writable) for 3 doubles; pair NULL or
+ * readable.
+ */
+int32_t dc_normal_force_3d(const struct dc_pair *pair,
+                           const double *x1,
+                           const double *v1,
+                           double R1,
+                           double m1,
+                           const double *x2,
+                           const double *v2,
+                           double R2,
+                           double m2,
+                           double *force_out);
 
 /**
  * Hertz stiffness k = (4/3) E* sqrt(R*) of two elastic spheres, with

@@ -24,4 +24,8 @@ pub enum Error {
     /// The requested event never happens: e.g. the end of an overdamped contact under the overlap
     /// criterion (the overlap only tends to zero as t → ∞).
     NoEvent,
+    /// A pair model (`dc_pair`) was not made by a `dc_pair_*` constructor (unknown kernel code).
+    PairInvalid,
+    /// Caller buffers are misaligned for their type or an output overlaps an input.
+    BufferLayout,
 }

@@ -7,6 +7,7 @@
 //! * [`lsd`]: the linear spring-dashpot (LSD) in dimensionless form. Every power-law Tsuji contact
 //!   maps exactly onto it, so its restitution functions are the heart of the calibration.
 //! * [`powerlaw`]: the power-law Tsuji contact `m δ'' + α √(m k) δ^((p-1)/2) δ' + k δ^p = 0`.
+//! * [`force`]: per-contact normal-force kernels (scalar, batch, 3D), monomorphised per model.
 //! * [`material`]: Hertz stiffness from two spheres' E, ν, R.
 //! * [`numerics`]: root finding and the reference ODE integrator used to check everything else.
 //! * [`ffi`]: the `extern "C"` functions exported as `include/demcontact.h`.
@@ -14,6 +15,7 @@
 pub mod criterion;
 pub mod error;
 pub mod ffi;
+pub mod force;
 pub mod lsd;
 pub mod material;
 pub mod numerics;

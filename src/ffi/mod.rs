@@ -11,6 +11,7 @@
 //! * no heap allocation, no global mutable state: callable from any thread at any time.
 
 pub mod calibration;
+pub mod force;
 pub mod material;
 pub mod status;
 pub mod timestep;
@@ -32,6 +33,8 @@ pub(crate) const fn status_of(err: Error) -> i32 {
         Error::NoConvergence => DC_ERR_NO_CONVERGENCE,
         Error::BufferTooShort => DC_ERR_BUFFER_TOO_SHORT,
         Error::NoEvent => DC_ERR_NO_EVENT,
+        Error::PairInvalid => DC_ERR_PAIR_INVALID,
+        Error::BufferLayout => DC_ERR_BUFFER_LAYOUT,
     }
 }
 

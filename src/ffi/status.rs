@@ -30,6 +30,12 @@ pub const DC_ERR_BUFFER_TOO_SHORT: i32 = 6110;
 /// The requested event never happens for these inputs, e.g. the overlap of an overdamped contact
 /// never returns to zero under DC_END_OVERLAP.
 pub const DC_ERR_NO_EVENT: i32 = 6111;
+/// A dc_pair was not initialised by a dc_pair_* constructor (unknown kernel code), e.g. a
+/// zero-filled struct.
+pub const DC_ERR_PAIR_INVALID: i32 = 6120;
+/// A caller buffer is misaligned for double, too large to address, or an output array overlaps an
+/// input array.
+pub const DC_ERR_BUFFER_LAYOUT: i32 = 6121;
 /// An internal error was caught at the boundary (not expected; please report).
 pub const DC_ERR_INTERNAL: i32 = 6199;
 
@@ -53,6 +59,8 @@ const fn message(status: i32) -> &'static str {
         DC_ERR_NO_CONVERGENCE => "an iteration did not converge (please report)\0",
         DC_ERR_BUFFER_TOO_SHORT => "a buffer is too short or a sample count is zero\0",
         DC_ERR_NO_EVENT => "the requested event never happens for these inputs\0",
+        DC_ERR_PAIR_INVALID => "the dc_pair was not initialised by a dc_pair_* constructor\0",
+        DC_ERR_BUFFER_LAYOUT => "a buffer is misaligned or an output overlaps an input\0",
         DC_ERR_INTERNAL => "internal error caught at the C boundary (please report)\0",
         _ => "unknown demcontact status\0",
     }
@@ -84,6 +92,8 @@ mod tests {
             DC_ERR_NO_CONVERGENCE,
             DC_ERR_BUFFER_TOO_SHORT,
             DC_ERR_NO_EVENT,
+            DC_ERR_PAIR_INVALID,
+            DC_ERR_BUFFER_LAYOUT,
             DC_ERR_INTERNAL,
         ];
         let unknown = message(-1);

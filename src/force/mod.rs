@@ -1,0 +1,28 @@
+//! Per-contact normal-force kernels: the hot path of every DEM step.
+//!
+//! A pair model ([`PairModel`]) is built once per material pair at set-up; everything that does
+//! not depend on the individual contact (calibrated damping, effective modulus, the choice of
+//! exponent and of clamping) is folded into a *kernel code* and three constants there. Per
+//! contact only the overlap δ, its rate vn (positive while compressing), the effective radius and
+//! the effective mass vary.
+//!
+//! "Only what the scene requires": each kernel code names one monomorphised law with a fixed
+//! exponent path (p = 1, 3/2, 2 without `pow`; `pow` only for other p), with or without damping,
+//! with or without clamping. Scalar calls dispatch once per call, batches once per batch
+//! ([`batch`]): no loop ever branches on the model kind.
+//!
+//! * [`pair`]: the kernel codes, the constants, the shared overlap/clamp finish, dispatch.
+//! * [`powerlaw`]: Tsuji power-law contact with a fixed stiffness (linear spring-dashpot = p 1).
+//! * [`hertz`]: Hertz from material data, k = (4/3) E* √R* per contact.
+//! * [`viscoelastic`]: Brilliantov et al. viscoelastic Hertz, damping constant A.
+//! * [`batch`]: structure-of-arrays loops.
+//! * [`geometry3d`]: two spheres in 3D → normal force vector (nalgebra).
+
+pub mod batch;
+pub mod geometry3d;
+pub mod hertz;
+pub mod pair;
+pub mod powerlaw;
+pub mod viscoelastic;
+
+pub use pair::{normal_force, Consts, PairModel};

@@ -1,0 +1,56 @@
+//! Viscoelastic Hertz contact (Brilliantov, Spahn, Hertzsch, Pöschel 1996; Schwager & Pöschel
+//! 2008, eqs. 13–14): `F = ρ ξ^(3/2) + (3/2) A ρ √ξ ξ'` with ρ = (4/3) E* √R_eff.
+//!
+//! The seed writes ρ = 2Y √R_eff / (3(1 − ν²)) for two spheres of one material; with
+//! E* = Y/(2(1 − ν²)) for identical materials that is (4/3) E* √R_eff, which is the form used
+//! here for two materials. With kf = (4/3) E* and q = √(R ξ):
+//! `F = kf q (ξ + (3/2) A ξ')` — one square root per contact, no mass needed.
+//!
+//! The damping constant A [s] is given directly: its calibration from a measured e(v) is a
+//! separate problem (e depends on impact speed for this model). The criterion only decides
+//! clamping (`Force`: attractive force clamped to zero, the physically consistent choice of
+//! Schwager & Pöschel).
+
+use super::hertz::hertz_factor;
+use super::pair::{code, pick, Consts, Law, PairModel, MODEL_VISCOELASTIC};
+use crate::{EndCriterion, Error};
+
+pub(crate) struct Viscoelastic;
+
+impl Law for Viscoelastic {
+    const NEEDS_VN: bool = true;
+    const NEEDS_R: bool = true;
+    const NEEDS_M: bool = false;
+    #[inline(always)]
+    fn raw(c: &Consts, d: f64, vn: f64, r: f64, _m: f64) -> f64 {
+        c.k * (r * d).sqrt() * (d + c.c * vn)
+    }
+}
+
+/// A viscoelastic pair of materials (E1, ν1), (E2, ν2) with damping constant A ≥ 0 [s].
+/// A = 0 gives the purely elastic Hertz kernel.
+pub fn viscoelastic(e1: f64, nu1: f64, e2: f64, nu2: f64, a: f64, criterion: EndCriterion) -> Result<PairModel, Error> {
+    let kf = hertz_factor(e1, nu1, e2, nu2)?;
+    if !a.is_finite() {
+        return Err(Error::NotFinite);
+    }
+    if !(a >= 0.0) {
+        return Err(Error::Negative);
+    }
+    let c = 1.5 * a;
+    if !c.is_finite() {
+        return Err(Error::ResultRange);
+    }
+    let kernel = pick(a > 0.0, criterion, code::HERTZ_ELASTIC, code::VISCO_DAMPED, code::VISCO_DAMPED_CLAMPED);
+    Ok(PairModel {
+        model: MODEL_VISCOELASTIC,
+        kernel,
+        criterion,
+        p: 1.5,
+        stiffness: kf,
+        alpha: 0.0,
+        damping_a: a,
+        e: f64::NAN,
+        consts: Consts { k: kf, c, h: 0.25 },
+    })
+}
