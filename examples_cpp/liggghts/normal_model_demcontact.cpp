@@ -5,11 +5,12 @@
  *   pair_style gran model demcontact tangential history [limitForce on] [exponent 1.5]
  *   fix wall wall/gran model demcontact tangential history primitive type 1 zplane 0.0
  *
- * Force: F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn (power-law Tsuji), with
- *   k = (4/3) Y* R*^(2-p)  (Hertz, k = 4/3 Y* sqrt(R*), at the default p = 1.5; Y* = LIGGGHTS' Yeff
- *                           from youngsModulus and poissonsRatio),
- *   alpha = dc_alpha_from_e(e, p, limitForce ? DC_END_FORCE : DC_END_OVERLAP), e from
- *   coefficientRestitution (per type pair), so the realised restitution is e in both cases.
+ * Force: F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn (power-law Tsuji) from demcontact's dc_pair
+ * and dc_normal_force (see ../sim/tsuji_force.h): at the default p = 1.5 a dc_pair_hertz of the two
+ * types' youngsModulus and poissonsRatio (k = 4/3 E* sqrt(R*)); otherwise k = (4/3) E* R*^(2-p).
+ * alpha is calibrated for coefficientRestitution (per type pair) with DC_END_FORCE when
+ * `limitForce on` (the kernel clamps too), DC_END_OVERLAP otherwise: the realised restitution is
+ * the target in both cases.
  * The tangential stiffness/damping handed to the tangential model are exactly those of the
  * builtin `model hertz`, so `tangential history` behaves identically.
  *
@@ -52,7 +53,7 @@ class NormalModel<DEMCONTACT> : public NormalModelBase
 {
 public:
     NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c)
-        : NormalModelBase(lmp, hsetup, c), Yeff(NULL), Geff(NULL), betaeff(NULL), coeffRest(NULL),
+        : NormalModelBase(lmp, hsetup, c), Y(NULL), nu(NULL), Yeff(NULL), Geff(NULL), betaeff(NULL), coeffRest(NULL),
           tangential_damping(true), limitForce(false), exponent(1.5), ntypes(0) {}
 
     void registerSettings(Settings &settings)
@@ -66,10 +67,14 @@ public:
 
     void connectToProperties(PropertyRegistry &registry)
     {
+        registry.registerProperty("youngsModulus", &MODEL_PARAMS::createYoungsModulus, "model demcontact");
+        registry.registerProperty("poissonsRatio", &MODEL_PARAMS::createPoissonsRatio, "model demcontact");
         registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, "model demcontact");
         registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, "model demcontact");
         registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, "model demcontact");
         registry.registerProperty("coeffRest", &MODEL_PARAMS::createCoeffRest, "model demcontact");
+        registry.connect("youngsModulus", Y, "model demcontact");
+        registry.connect("poissonsRatio", nu, "model demcontact");
         registry.connect("Yeff", Yeff, "model demcontact");
         registry.connect("Geff", Geff, "model demcontact");
         registry.connect("betaeff", betaeff, "model demcontact");
@@ -89,14 +94,11 @@ public:
                                            : sidata.radi * sidata.radj / (sidata.radi + sidata.radj);
         const double meff = sidata.meff;
         const double deltan = sidata.deltan;
-        const demcontact_sim::TsujiPair &tp = pairs[itype * (ntypes + 1) + jtype];
+        const dc_pair &pair = pairs[itype * (ntypes + 1) + jtype];
 
-        // k d^p with k = 4/3 Y* R*^(2-p): Hertz at p = 1.5, dimensionally consistent for any p.
-        const double k = (tp.p == 1.5 ? 4. / 3. * Yeff[itype][jtype] * std::sqrt(reff)
-                                      : 4. / 3. * Yeff[itype][jtype] * std::pow(reff, 2.0 - tp.p))
-                         / force->nktv2p;
         // LIGGGHTS' vn is negative while approaching; demcontact's is positive while compressing.
-        const double Fn = demcontact_sim::tsuji_force(tp, k, deltan, -sidata.vn, meff);
+        // (units si/cgs: nktv2p = 1, as the builtin models assume for the force itself.)
+        const double Fn = demcontact_sim::contact_force(pair, deltan, -sidata.vn, reff, meff);
 
         // What the tangential model reads: identical to the builtin `model hertz`.
         const double sqrtval = std::sqrt(reff * deltan);
@@ -105,8 +107,10 @@ public:
         sidata.Fn = Fn;
         sidata.kn = 4. / 3. * Yeff[itype][jtype] * sqrtval / force->nktv2p;
         sidata.kt = St / force->nktv2p;
-        sidata.gamman = tp.alpha * std::sqrt(meff * k) * (tp.p == 1.5 ? std::sqrt(std::sqrt(deltan))
-                                                                       : std::pow(deltan, 0.5 * (tp.p - 1.0)));
+        // gamman: the Tsuji damping coefficient of this contact (read only by diagnostics)
+        sidata.gamman = pair.alpha * std::sqrt(meff * demcontact_sim::contact_stiffness(pair, reff)) *
+                        (pair.model == DC_MODEL_HERTZ ? std::sqrt(std::sqrt(deltan))
+                                                      : std::pow(deltan, 0.5 * (pair.p - 1.0)));
         sidata.gammat = tangential_damping
                             ? -2. * sqrtFiveOverSix * betaeff[itype][jtype] * std::sqrt(St * meff) : 0.0;
 
@@ -133,15 +137,15 @@ public:
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
-    // alpha for every type pair, once (calibration costs ~0.2 us per pair; see README benchmarks).
+    // One calibrated dc_pair for every type pair, once (calibration costs ~0.2 us per pair).
     void calibrate()
     {
         const int n = atom->ntypes;
-        pairs.assign((n + 1) * (n + 1), demcontact_sim::TsujiPair());
+        pairs.assign((n + 1) * (n + 1), dc_pair());
         for (int i = 1; i <= n; i++)
             for (int j = 1; j <= n; j++) {
-                const int32_t s = demcontact_sim::tsuji_setup(coeffRest[i][j], exponent, limitForce,
-                                                              &pairs[i * (n + 1) + j]);
+                const int32_t s = demcontact_sim::contact_setup(Y[i], nu[i], Y[j], nu[j], coeffRest[i][j],
+                                                                exponent, limitForce, &pairs[i * (n + 1) + j]);
                 if (s != DC_OK) {
                     char msg[256];
                     std::snprintf(msg, sizeof msg,
@@ -150,7 +154,9 @@ private:
                     error->all(FLERR, msg);
                 }
             }
-        if (comm->me == 0) {
+        static bool reported = false; // one line per process, not one per wall/pair instance
+        if (comm->me == 0 && !reported) {
+            reported = true;
             char msg[256];
             std::snprintf(msg, sizeof msg,
                           "model demcontact: exponent %g, limitForce %s, alpha(1,1) = %.15g (%s)\n",
@@ -162,11 +168,12 @@ private:
         ntypes = n;
     }
 
+    double *Y, *nu;
     double **Yeff, **Geff, **betaeff, **coeffRest;
     bool tangential_damping, limitForce;
     double exponent;
     int ntypes;
-    std::vector<demcontact_sim::TsujiPair> pairs;
+    std::vector<dc_pair> pairs;
 };
 
 } // namespace ContactModels
