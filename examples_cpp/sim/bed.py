@@ -10,8 +10,6 @@ the two runs integrate the same physics: any difference in the statistics is cha
 import math
 import os
 import re
-import shutil
-import sys
 
 import harness as H
 
@@ -95,6 +93,8 @@ def parse_log(text):
         elif cols and len(f) == len(cols) and re.match(r"^\d+$", f[0]):
             last = dict(zip(cols, map(float, f)))
     loop = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", text)
+    pair = re.search(r"Pair  time \(%\) = ([0-9.eE+-]+)", text)
+    last["pair_time"] = float(pair.group(1))
     return last, float(loop.group(1)), int(loop.group(2))
 
 
@@ -107,7 +107,6 @@ def main(a, workdir):
     per_layer, layers, dt, steps = setup(a.n, a.steps)
     a.n = per_layer * layers
     nps = [1] + ([a.np] if a.np > 1 else [])
-    mpirun = shutil.which("mpirun")
     rows = {}
     for label, model in MODELS:
         d = os.path.join(workdir, "bed_" + label)
@@ -115,19 +114,18 @@ def main(a, workdir):
         open(os.path.join(d, "in.bed"), "w").write(liggghts_deck(model, a.n, dt, steps))
         for np_ in nps:
             cmd = [exe, "-in", "in.bed", "-log", "log.np%d" % np_]
-            if np_ > 1:
-                cmd = [mpirun, "-np", str(np_), "-x", "LD_PRELOAD"] + cmd
+            cmd = H.mpi_prefix(np_) + cmd
             H.run(cmd, d, env)
             rows[(label, np_)] = parse_log(open(os.path.join(d, "log.np%d" % np_)).read())
     print("## liggghts settling bed: %d spheres, dt = %.3g s, %d steps (%.3g s), thermo output"
           % (a.n, dt, steps, dt * steps))
     print()
-    print("| model | ranks | atoms | KE [J] | rot KE [J] | mean contacts | mean z [mm] | top z [mm] | solid fraction | loop time [s] |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    print("| model | ranks | atoms | KE [J] | rot KE [J] | mean contacts | mean z [mm] | top z [mm] | solid fraction | loop time [s] | pair time [s] |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for (label, np_), (t, loop, procs) in rows.items():
-        print("| %s | %d | %d | %.3g | %.3g | %.3f | %.3f | %.3f | %.4f | %.2f |"
+        print("| %s | %d | %d | %.3g | %.3g | %.3f | %.3f | %.3f | %.4f | %.2f | %.2f |"
               % (label, procs, t["Atoms"], t["KinEng"], t["c_rke"], t["c_mcn"], 1e3 * t["v_zm"],
-                 1e3 * t["v_ztop"], t["v_phi"], loop))
+                 1e3 * t["v_ztop"], t["v_phi"], loop, t["pair_time"]))
     print()
     ref = rows[("hertz", 1)][0]
     ok = True
@@ -148,8 +146,9 @@ def main(a, workdir):
             ok = False
             print("MISMATCH %s np=%d vs hertz serial: %s" % (key[0], key[1], ", ".join(bad)))
     for np_ in nps:
-        print("wall-time ratio demcontact / hertz (%d rank%s): %.3f"
-              % (np_, "s" if np_ > 1 else "", rows[("demcontact", np_)][1] / rows[("hertz", np_)][1]))
+        ours, ref_ = rows[("demcontact", np_)], rows[("hertz", np_)]
+        print("wall-time ratio demcontact / hertz (%d rank%s): loop %.3f, pair %.3f"
+              % (np_, "s" if np_ > 1 else "", ours[1] / ref_[1], ours[0]["pair_time"] / ref_[0]["pair_time"]))
     print("tolerances vs hertz serial: solid fraction +-%g, mean z +-%g%%, mean contacts +-%g"
           % (TOL_PHI, 100 * TOL_Z, TOL_CN))
     if a.check and not ok:

