@@ -44,9 +44,10 @@ def types():
     return [(E, e) for E in MODULI for e in TARGETS]
 
 
-def collision_setup():
+def collision_setup(spc=STEPS_PER_CONTACT):
+    """Time step (shortest contact / spc), step count, initial gap and the 27 pairs."""
     tc_min = min(hertz_contact_time(E, v) for E in MODULI for v in SPEEDS)
-    dt = tc_min / STEPS_PER_CONTACT
+    dt = tc_min / spc
     gap = 1e-6  # surface gap at t = 0 [m]
     t_end = max(gap / v + 2.0 * hertz_contact_time(E, v) for E in MODULI for v in SPEEDS)
     pairs = []  # (id_left, id_right, type, E, e, v, y)
@@ -158,9 +159,9 @@ def mpi_prefix(np_, mpirun="mpirun"):
                                      os.path.realpath(exe).endswith("orterun") else [])
 
 
-def collision_liggghts(plugin, workdir, np_=1):
+def collision_liggghts(plugin, workdir, np_=1, spc=STEPS_PER_CONTACT):
     exe, env = liggghts_cmd(plugin)
-    dt, steps, gap, pairs = collision_setup()
+    dt, steps, gap, pairs = collision_setup(spc)
     results = {}
     for label, model, _, _ in LIGGGHTS_MODELS:
         d = os.path.join(workdir, re.sub(r"\W+", "_", label))
@@ -180,9 +181,9 @@ def realised(final, pairs):
     return out
 
 
-def print_collision(sim, dt, pairs, results, models):
+def print_collision(sim, dt, pairs, results, models, spc):
     print("## %s: realised restitution (dt = %.3g s, %d steps per shortest contact)"
-          % (sim, dt, STEPS_PER_CONTACT))
+          % (sim, dt, spc))
     print()
     print("| E [Pa] | v [m/s] | target e | " + " | ".join(m for m, _ in models) + " |")
     print("|---|---|---|" + "---|" * len(models))
@@ -214,6 +215,8 @@ def main():
     ap.add_argument("--n", type=int, default=5000)
     ap.add_argument("--steps", type=int, default=0)
     ap.add_argument("--np", type=int, default=1)
+    ap.add_argument("--steps-per-contact", type=int, default=STEPS_PER_CONTACT,
+                    help="collision: time step = shortest Hertz contact time / this")
     ap.add_argument("--smoke", action="store_true", help="bed: 1000 spheres, 3000 steps, no settling checks")
     ap.add_argument("--lmp", help="LAMMPS executable")
     a = ap.parse_args()
@@ -221,12 +224,13 @@ def main():
     os.makedirs(workdir, exist_ok=True)
     if a.what == "collision":
         if a.sim == "liggghts":
-            dt, pairs, results, models = collision_liggghts(a.plugin, workdir, a.np)
+            dt, pairs, results, models = collision_liggghts(a.plugin, workdir, a.np, a.steps_per_contact)
         else:
             import lammps_runs  # noqa
-            dt, pairs, results, models = lammps_runs.collision(a.plugin, a.lmp, workdir, a.np)
+            dt, pairs, results, models = lammps_runs.collision(a.plugin, a.lmp, workdir, a.np,
+                                                                 a.steps_per_contact)
         worst = print_collision("%s, %d MPI rank%s" % (a.sim, a.np, "s" if a.np > 1 else ""),
-                                dt, pairs, results, models)
+                                dt, pairs, results, models, a.steps_per_contact)
         if a.check and not worst <= TOL:
             raise SystemExit("FAIL: demcontact misses a target by %.3g > %g" % (worst, TOL))
     else:

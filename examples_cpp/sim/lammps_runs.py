@@ -55,10 +55,10 @@ def deck(style, coeff, plugin, dt, steps, gap, pairs):
     return "\n".join(L) + "\n"
 
 
-def collision(plugin, lmp, workdir, np_=1):
+def collision(plugin, lmp, workdir, np_=1, spc=H.STEPS_PER_CONTACT):
     exe = find_lmp(lmp)
     env = H.mpi_env()
-    dt, steps, gap, pairs = H.collision_setup()
+    dt, steps, gap, pairs = H.collision_setup(spc)
     results = {}
     for label, style, coeff, _ in LAMMPS_MODELS:
         d = os.path.join(workdir, re.sub(r"\W+", "_", label))
