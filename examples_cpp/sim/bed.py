@@ -76,8 +76,50 @@ def liggghts_deck(model, n, dt, steps):
           "variable ztop equal bound(all,zmax)",
           "thermo_style custom step atoms ke c_rke c_mcn v_zm v_ztop v_phi",
           "thermo_modify norm no lost error",
-          "thermo %d" % thermo, "run %d" % steps]
+          "thermo %d" % thermo, "run %d" % steps,
+          "write_data settled.data"]
     return "\n".join(L) + "\n"
+
+
+def timing_deck(model, data, dt, steps):
+    """The settled bed (every sphere in contact) run on for `steps` with the given model: the
+    timing comparison, free of the settling transient. Contact history starts from zero for both."""
+    L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
+         "communicate single vel yes", "units si", "read_data %s" % data,
+         "neighbor 0.0004 bin", "neigh_modify delay 0",
+         "fix m1 all property/global youngsModulus peratomtype %g" % E_BED,
+         "fix m2 all property/global poissonsRatio peratomtype %g" % H.NU,
+         "fix m3 all property/global coefficientRestitution peratomtypepair 1 %g" % E_REST,
+         "fix m4 all property/global coefficientFriction peratomtypepair 1 %g" % MU,
+         "pair_style gran " + model, "pair_coeff * *", "timestep %.17g" % dt,
+         "fix gravi all gravity 9.81 vector 0.0 0.0 -1.0"]
+    for i, (kind, pos) in enumerate([("zplane", 0.0), ("xplane", -HALF), ("xplane", HALF),
+                                     ("yplane", -HALF), ("yplane", HALF)]):
+        L.append("fix w%d all wall/gran %s primitive type 1 %s %g" % (i, model, kind, pos))
+    L += ["fix integr all nve/sphere", "thermo %d" % steps, "run %d" % steps]
+    return "\n".join(L) + "\n"
+
+
+def timing(exe, env, workdir, dt, nps, reps, steps):
+    """Minimum loop and pair time over `reps` alternating runs per model and rank count (the
+    machine is shared: the minimum is the least disturbed run)."""
+    data = os.path.join(workdir, "bed_hertz", "settled.data")
+    d = os.path.join(workdir, "timing")
+    os.makedirs(d, exist_ok=True)
+    best = {}
+    for label, model in MODELS:
+        open(os.path.join(d, "in.%s" % label), "w").write(timing_deck(model, data, dt, steps))
+    for np_ in nps:
+        for r in range(reps):
+            for label, _ in MODELS:
+                log = "log.%s.np%d.%d" % (label, np_, r)
+                H.run(H.mpi_prefix(np_) + [exe, "-in", "in.%s" % label, "-log", log], d, env)
+                text = open(os.path.join(d, log)).read()
+                loop = float(re.search(r"Loop time of ([0-9.eE+-]+)", text).group(1))
+                pair = float(re.search(r"Pair  time \(%\) = ([0-9.eE+-]+)", text).group(1))
+                old = best.get((label, np_), (float("inf"), float("inf")))
+                best[(label, np_)] = (min(old[0], loop), min(old[1], pair))
+    return best
 
 
 MODELS = [("demcontact", "model demcontact tangential history"),
@@ -147,8 +189,20 @@ def main(a, workdir):
             print("MISMATCH %s np=%d vs hertz serial: %s" % (key[0], key[1], ", ".join(bad)))
     for np_ in nps:
         ours, ref_ = rows[("demcontact", np_)], rows[("hertz", np_)]
-        print("wall-time ratio demcontact / hertz (%d rank%s): loop %.3f, pair %.3f"
+        print("settling runs, wall-time ratio demcontact / hertz (%d rank%s): loop %.3f, pair %.3f"
               % (np_, "s" if np_ > 1 else "", ours[1] / ref_[1], ours[0]["pair_time"] / ref_[0]["pair_time"]))
+    reps, tsteps = (1, 200) if a.smoke else (3, 2000)
+    best = timing(exe, env, workdir, dt, nps, reps, tsteps)
+    print()
+    print("Timing on the settled bed (%d steps, tangential history, walls with the same model; "
+          "minimum of %d alternating runs):" % (tsteps, reps))
+    print()
+    print("| ranks | demcontact loop [s] | hertz loop [s] | ratio loop | demcontact pair [s] | hertz pair [s] | ratio pair |")
+    print("|---|---|---|---|---|---|---|")
+    for np_ in nps:
+        o, h = best[("demcontact", np_)], best[("hertz", np_)]
+        print("| %d | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |" % (np_, o[0], h[0], o[0] / h[0], o[1], h[1], o[1] / h[1]))
+    print()
     print("tolerances vs hertz serial: solid fraction +-%g, mean z +-%g%%, mean contacts +-%g"
           % (TOL_PHI, 100 * TOL_Z, TOL_CN))
     if a.check and not ok:
