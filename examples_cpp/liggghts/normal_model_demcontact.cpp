@@ -79,7 +79,9 @@ public:
         registry.connect("Geff", Geff, "model demcontact");
         registry.connect("betaeff", betaeff, "model demcontact");
         registry.connect("coeffRest", coeffRest, "model demcontact");
-        ntypes = 0; // recalibrate: properties may have changed between runs
+        // Called on every rank at each run's init, after the material fixes exist: calibrate here
+        // (error->all is collective) rather than lazily at a first contact that not all ranks see.
+        calibrate();
     }
 
     double stressStrainExponent() { return exponent; }
@@ -87,7 +89,6 @@ public:
     void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
         if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
-        if (ntypes == 0) calibrate();
 
         const int itype = sidata.itype, jtype = sidata.jtype;
         const double reff = sidata.is_wall ? sidata.radi

@@ -20,7 +20,7 @@ STEPS_PER_CONTACT = 50
 # Statistics window: central columns, away from floor and free surface.
 WIN = (-0.015, 0.015, -0.015, 0.015, 0.004, 0.010)
 # Tolerances for "same packing" (serial vs MPI, demcontact vs hertz).
-TOL_PHI = 0.01      # absolute, solid fraction in the window
+TOL_PHI = 0.015     # absolute, solid fraction in the window (~770 centres: +-0.004 run to run)
 TOL_Z = 0.01        # relative, mean height
 TOL_CN = 0.15       # absolute, mean contacts per particle
 
@@ -155,9 +155,11 @@ def main(a, workdir):
         os.makedirs(d, exist_ok=True)
         open(os.path.join(d, "in.bed"), "w").write(liggghts_deck(model, a.n, dt, steps))
         for np_ in nps:
-            cmd = [exe, "-in", "in.bed", "-log", "log.np%d" % np_]
-            cmd = H.mpi_prefix(np_) + cmd
-            H.run(cmd, d, env)
+            log = os.path.join(d, "log.np%d" % np_)
+            done = os.path.exists(log) and "Loop time" in open(log).read() and \
+                os.path.exists(os.path.join(d, "settled.data"))
+            if not (a.resume and done):
+                H.run(H.mpi_prefix(np_) + [exe, "-in", "in.bed", "-log", "log.np%d" % np_], d, env)
             rows[(label, np_)] = parse_log(open(os.path.join(d, "log.np%d" % np_)).read())
     print("## liggghts settling bed: %d spheres, dt = %.3g s, %d steps (%.3g s), thermo output"
           % (a.n, dt, steps, dt * steps))

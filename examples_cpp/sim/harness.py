@@ -217,10 +217,13 @@ def main():
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--steps-per-contact", type=int, default=STEPS_PER_CONTACT,
                     help="collision: time step = shortest Hertz contact time / this")
+    ap.add_argument("--resume", action="store_true",
+                    help="bed: keep settling runs whose log is complete (rerun only the rest)")
     ap.add_argument("--smoke", action="store_true", help="bed: 1000 spheres, 3000 steps, no settling checks")
     ap.add_argument("--lmp", help="LAMMPS executable")
     a = ap.parse_args()
-    workdir = a.workdir or tempfile.mkdtemp(prefix="dc_%s_" % a.sim)
+    # absolute: the decks refer to files of other runs, and each run has its own cwd
+    workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_%s_" % a.sim))
     os.makedirs(workdir, exist_ok=True)
     if a.what == "collision":
         if a.sim == "liggghts":
