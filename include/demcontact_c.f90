@@ -10,6 +10,9 @@ module demcontact_c
   implicit none
   private :: ieee_value, ieee_quiet_nan
 
+  integer(c_int32_t), parameter :: DC_MODEL_POWERLAW = 1
+  integer(c_int32_t), parameter :: DC_MODEL_HERTZ = 2
+  integer(c_int32_t), parameter :: DC_MODEL_VISCOELASTIC = 3
   integer(c_int32_t), parameter :: DC_OK = 0
   integer(c_int32_t), parameter :: DC_ERR_NULL_POINTER = 6101
   integer(c_int32_t), parameter :: DC_ERR_NOT_FINITE = 6102
@@ -22,9 +25,26 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_ERR_NO_CONVERGENCE = 6109
   integer(c_int32_t), parameter :: DC_ERR_BUFFER_TOO_SHORT = 6110
   integer(c_int32_t), parameter :: DC_ERR_NO_EVENT = 6111
+  integer(c_int32_t), parameter :: DC_ERR_PAIR_INVALID = 6120
+  integer(c_int32_t), parameter :: DC_ERR_BUFFER_LAYOUT = 6121
   integer(c_int32_t), parameter :: DC_ERR_INTERNAL = 6199
   integer(c_int32_t), parameter :: DC_END_OVERLAP = 0
   integer(c_int32_t), parameter :: DC_END_FORCE = 1
+
+  type, bind(c) :: dc_pair
+    integer(c_int32_t) :: model
+    integer(c_int32_t) :: kernel
+    integer(c_int32_t) :: criterion
+    integer(c_int32_t) :: clamp
+    real(c_double) :: p
+    real(c_double) :: stiffness
+    real(c_double) :: alpha
+    real(c_double) :: damping_a
+    real(c_double) :: e
+    real(c_double) :: k
+    real(c_double) :: c
+    real(c_double) :: h
+  end type dc_pair
 
   interface
     function dc_alpha_from_e(e, p, criterion, alpha_out) bind(c, name='dc_alpha_from_e')
@@ -43,6 +63,103 @@ module demcontact_c
       real(c_double), intent(out) :: e_out
       integer(c_int32_t) :: dc_e_from_alpha
     end function dc_e_from_alpha
+    function dc_pair_powerlaw(p, k, e, criterion, out) bind(c, name='dc_pair_powerlaw')
+      import
+      real(c_double), value, intent(in) :: p
+      real(c_double), value, intent(in) :: k
+      real(c_double), value, intent(in) :: e
+      integer(c_int32_t), value, intent(in) :: criterion
+      type(dc_pair), intent(out) :: out
+      integer(c_int32_t) :: dc_pair_powerlaw
+    end function dc_pair_powerlaw
+    function dc_pair_powerlaw_alpha(p, k, alpha, criterion, out) bind(c, &
+        name='dc_pair_powerlaw_alpha')
+      import
+      real(c_double), value, intent(in) :: p
+      real(c_double), value, intent(in) :: k
+      real(c_double), value, intent(in) :: alpha
+      integer(c_int32_t), value, intent(in) :: criterion
+      type(dc_pair), intent(out) :: out
+      integer(c_int32_t) :: dc_pair_powerlaw_alpha
+    end function dc_pair_powerlaw_alpha
+    function dc_pair_linear(k, e, criterion, out) bind(c, name='dc_pair_linear')
+      import
+      real(c_double), value, intent(in) :: k
+      real(c_double), value, intent(in) :: e
+      integer(c_int32_t), value, intent(in) :: criterion
+      type(dc_pair), intent(out) :: out
+      integer(c_int32_t) :: dc_pair_linear
+    end function dc_pair_linear
+    function dc_pair_hertz(E1, nu1, E2, nu2, e, criterion, out) bind(c, name='dc_pair_hertz')
+      import
+      real(c_double), value, intent(in) :: E1
+      real(c_double), value, intent(in) :: nu1
+      real(c_double), value, intent(in) :: E2
+      real(c_double), value, intent(in) :: nu2
+      real(c_double), value, intent(in) :: e
+      integer(c_int32_t), value, intent(in) :: criterion
+      type(dc_pair), intent(out) :: out
+      integer(c_int32_t) :: dc_pair_hertz
+    end function dc_pair_hertz
+    function dc_pair_viscoelastic(E1, nu1, E2, nu2, A, criterion, out) bind(c, &
+        name='dc_pair_viscoelastic')
+      import
+      real(c_double), value, intent(in) :: E1
+      real(c_double), value, intent(in) :: nu1
+      real(c_double), value, intent(in) :: E2
+      real(c_double), value, intent(in) :: nu2
+      real(c_double), value, intent(in) :: A
+      integer(c_int32_t), value, intent(in) :: criterion
+      type(dc_pair), intent(out) :: out
+      integer(c_int32_t) :: dc_pair_viscoelastic
+    end function dc_pair_viscoelastic
+    pure function dc_normal_force(pair, overlap, vn, r_eff, m_eff) bind(c, name='dc_normal_force')
+      import
+      type(dc_pair), intent(in) :: pair
+      real(c_double), value, intent(in) :: overlap
+      real(c_double), value, intent(in) :: vn
+      real(c_double), value, intent(in) :: r_eff
+      real(c_double), value, intent(in) :: m_eff
+      real(c_double) :: dc_normal_force
+    end function dc_normal_force
+    function dc_normal_force_checked(pair, overlap, vn, r_eff, m_eff, force_out) bind(c, &
+        name='dc_normal_force_checked')
+      import
+      type(dc_pair), intent(in) :: pair
+      real(c_double), value, intent(in) :: overlap
+      real(c_double), value, intent(in) :: vn
+      real(c_double), value, intent(in) :: r_eff
+      real(c_double), value, intent(in) :: m_eff
+      real(c_double), intent(out) :: force_out
+      integer(c_int32_t) :: dc_normal_force_checked
+    end function dc_normal_force_checked
+    function dc_normal_force_batch(pair, n, overlap, vn, r_eff, m_eff, force_out) bind(c, &
+        name='dc_normal_force_batch')
+      import
+      type(dc_pair), intent(in) :: pair
+      integer(c_size_t), value, intent(in) :: n
+      real(c_double), intent(in) :: overlap(*)
+      real(c_double), intent(in) :: vn(*)
+      real(c_double), intent(in) :: r_eff(*)
+      real(c_double), intent(in) :: m_eff(*)
+      real(c_double), intent(out) :: force_out(*)
+      integer(c_int32_t) :: dc_normal_force_batch
+    end function dc_normal_force_batch
+    function dc_normal_force_3d(pair, x1, v1, R1, m1, x2, v2, R2, m2, force_out) bind(c, &
+        name='dc_normal_force_3d')
+      import
+      type(dc_pair), intent(in) :: pair
+      real(c_double), intent(in) :: x1(*)
+      real(c_double), intent(in) :: v1(*)
+      real(c_double), value, intent(in) :: R1
+      real(c_double), value, intent(in) :: m1
+      real(c_double), intent(in) :: x2(*)
+      real(c_double), intent(in) :: v2(*)
+      real(c_double), value, intent(in) :: R2
+      real(c_double), value, intent(in) :: m2
+      real(c_double), intent(out) :: force_out
+      integer(c_int32_t) :: dc_normal_force_3d
+    end function dc_normal_force_3d
     function dc_hertz_stiffness(E1, nu1, R1, E2, nu2, R2, k_out) bind(c, name='dc_hertz_stiffness')
       import
       real(c_double), value, intent(in) :: E1
@@ -110,6 +227,89 @@ contains
     if (s /= DC_OK) e_out = ieee_value(e_out, ieee_quiet_nan)
   end subroutine e_from_alpha
 
+  !> Elemental form of dc_pair_powerlaw: on error `out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine pair_powerlaw(p, k, e, criterion, out, stat)
+    real(c_double), intent(in) :: p
+    real(c_double), intent(in) :: k
+    real(c_double), intent(in) :: e
+    integer(c_int32_t), intent(in) :: criterion
+    type(dc_pair), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_pair_powerlaw(p, k, e, criterion, out)
+    if (present(stat)) stat = s
+  end subroutine pair_powerlaw
+
+  !> Elemental form of dc_pair_powerlaw_alpha: on error `out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine pair_powerlaw_alpha(p, k, alpha, criterion, out, stat)
+    real(c_double), intent(in) :: p
+    real(c_double), intent(in) :: k
+    real(c_double), intent(in) :: alpha
+    integer(c_int32_t), intent(in) :: criterion
+    type(dc_pair), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_pair_powerlaw_alpha(p, k, alpha, criterion, out)
+    if (present(stat)) stat = s
+  end subroutine pair_powerlaw_alpha
+
+  !> Elemental form of dc_pair_linear: on error `out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine pair_linear(k, e, criterion, out, stat)
+    real(c_double), intent(in) :: k
+    real(c_double), intent(in) :: e
+    integer(c_int32_t), intent(in) :: criterion
+    type(dc_pair), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_pair_linear(k, e, criterion, out)
+    if (present(stat)) stat = s
+  end subroutine pair_linear
+
+  !> Elemental form of dc_pair_hertz: on error `out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine pair_hertz(E1, nu1, E2, nu2, e, criterion, out, stat)
+    real(c_double), intent(in) :: E1
+    real(c_double), intent(in) :: nu1
+    real(c_double), intent(in) :: E2
+    real(c_double), intent(in) :: nu2
+    real(c_double), intent(in) :: e
+    integer(c_int32_t), intent(in) :: criterion
+    type(dc_pair), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_pair_hertz(E1, nu1, E2, nu2, e, criterion, out)
+    if (present(stat)) stat = s
+  end subroutine pair_hertz
+
+  !> Elemental form of dc_pair_viscoelastic: on error `out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine pair_viscoelastic(E1, nu1, E2, nu2, A, criterion, out, stat)
+    real(c_double), intent(in) :: E1
+    real(c_double), intent(in) :: nu1
+    real(c_double), intent(in) :: E2
+    real(c_double), intent(in) :: nu2
+    real(c_double), intent(in) :: A
+    integer(c_int32_t), intent(in) :: criterion
+    type(dc_pair), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_pair_viscoelastic(E1, nu1, E2, nu2, A, criterion, out)
+    if (present(stat)) stat = s
+  end subroutine pair_viscoelastic
+
+  !> Elemental form of dc_normal_force_checked: on error `force_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine normal_force_checked(pair, overlap, vn, r_eff, m_eff, force_out, stat)
+    type(dc_pair), intent(in) :: pair
+    real(c_double), intent(in) :: overlap
+    real(c_double), intent(in) :: vn
+    real(c_double), intent(in) :: r_eff
+    real(c_double), intent(in) :: m_eff
+    real(c_double), intent(out) :: force_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_normal_force_checked(pair, overlap, vn, r_eff, m_eff, force_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) force_out = ieee_value(force_out, ieee_quiet_nan)
+  end subroutine normal_force_checked
+
   !> Elemental form of dc_hertz_stiffness: on error `k_out` is NaN (numeric) and `stat` the status.
   impure elemental subroutine hertz_stiffness(E1, nu1, R1, E2, nu2, R2, k_out, stat)
     real(c_double), intent(in) :: E1
@@ -152,4 +352,15 @@ contains
     if (present(stat)) stat = s
     if (s /= DC_OK) dt_out = ieee_value(dt_out, ieee_quiet_nan)
   end subroutine dt_crit
+
+  !> Elemental form of dc_normal_force (pure: arrays of contacts in one call).
+  elemental function normal_force(pair, overlap, vn, r_eff, m_eff) result(r)
+    type(dc_pair), intent(in) :: pair
+    real(c_double), intent(in) :: overlap
+    real(c_double), intent(in) :: vn
+    real(c_double), intent(in) :: r_eff
+    real(c_double), intent(in) :: m_eff
+    real(c_double) :: r
+    r = dc_normal_force(pair, overlap, vn, r_eff, m_eff)
+  end function normal_force
 end module demcontact_c

@@ -18,6 +18,8 @@ enum class status : std::int32_t {
     no_convergence = DC_ERR_NO_CONVERGENCE,
     buffer_too_short = DC_ERR_BUFFER_TOO_SHORT,
     no_event = DC_ERR_NO_EVENT,
+    pair_invalid = DC_ERR_PAIR_INVALID,
+    buffer_layout = DC_ERR_BUFFER_LAYOUT,
     internal = DC_ERR_INTERNAL,
 };
 
@@ -47,6 +49,77 @@ inline double e_from_alpha(double alpha, double p, criterion criterion_) {
 /// dc_e_from_alpha: returns the status; `out` is written only on status::ok.
 inline status e_from_alpha(double alpha, double p, criterion criterion_, double& out) noexcept {
     return static_cast<status>(::dc_e_from_alpha(alpha, p, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_pair_powerlaw: throws demcontact::error on a non-OK status.
+inline ::dc_pair pair_powerlaw(double p, double k, double e, criterion criterion_) {
+    ::dc_pair out{};
+    detail::check(::dc_pair_powerlaw(p, k, e, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_pair_powerlaw: returns the status; `out` is written only on status::ok.
+inline status pair_powerlaw(double p, double k, double e, criterion criterion_, ::dc_pair& out) noexcept {
+    return static_cast<status>(::dc_pair_powerlaw(p, k, e, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_pair_powerlaw_alpha: throws demcontact::error on a non-OK status.
+inline ::dc_pair pair_powerlaw_alpha(double p, double k, double alpha, criterion criterion_) {
+    ::dc_pair out{};
+    detail::check(::dc_pair_powerlaw_alpha(p, k, alpha, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_pair_powerlaw_alpha: returns the status; `out` is written only on status::ok.
+inline status pair_powerlaw_alpha(double p, double k, double alpha, criterion criterion_, ::dc_pair& out) noexcept {
+    return static_cast<status>(::dc_pair_powerlaw_alpha(p, k, alpha, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_pair_linear: throws demcontact::error on a non-OK status.
+inline ::dc_pair pair_linear(double k, double e, criterion criterion_) {
+    ::dc_pair out{};
+    detail::check(::dc_pair_linear(k, e, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_pair_linear: returns the status; `out` is written only on status::ok.
+inline status pair_linear(double k, double e, criterion criterion_, ::dc_pair& out) noexcept {
+    return static_cast<status>(::dc_pair_linear(k, e, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_pair_hertz: throws demcontact::error on a non-OK status.
+inline ::dc_pair pair_hertz(double E1, double nu1, double E2, double nu2, double e, criterion criterion_) {
+    ::dc_pair out{};
+    detail::check(::dc_pair_hertz(E1, nu1, E2, nu2, e, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_pair_hertz: returns the status; `out` is written only on status::ok.
+inline status pair_hertz(double E1, double nu1, double E2, double nu2, double e, criterion criterion_, ::dc_pair& out) noexcept {
+    return static_cast<status>(::dc_pair_hertz(E1, nu1, E2, nu2, e, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_pair_viscoelastic: throws demcontact::error on a non-OK status.
+inline ::dc_pair pair_viscoelastic(double E1, double nu1, double E2, double nu2, double A, criterion criterion_) {
+    ::dc_pair out{};
+    detail::check(::dc_pair_viscoelastic(E1, nu1, E2, nu2, A, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_pair_viscoelastic: returns the status; `out` is written only on status::ok.
+inline status pair_viscoelastic(double E1, double nu1, double E2, double nu2, double A, criterion criterion_, ::dc_pair& out) noexcept {
+    return static_cast<status>(::dc_pair_viscoelastic(E1, nu1, E2, nu2, A, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_normal_force (no status: see the C documentation).
+inline double normal_force(const ::dc_pair& pair, double overlap, double vn, double r_eff, double m_eff) noexcept {
+    return ::dc_normal_force(&pair, overlap, vn, r_eff, m_eff);
+}
+
+/// dc_normal_force_checked: throws demcontact::error on a non-OK status.
+inline double normal_force_checked(const ::dc_pair& pair, double overlap, double vn, double r_eff, double m_eff) {
+    double out{};
+    detail::check(::dc_normal_force_checked(&pair, overlap, vn, r_eff, m_eff, &out));
+    return out;
+}
+/// dc_normal_force_checked: returns the status; `out` is written only on status::ok.
+inline status normal_force_checked(const ::dc_pair& pair, double overlap, double vn, double r_eff, double m_eff, double& out) noexcept {
+    return static_cast<status>(::dc_normal_force_checked(&pair, overlap, vn, r_eff, m_eff, &out));
 }
 
 /// dc_hertz_stiffness: throws demcontact::error on a non-OK status.

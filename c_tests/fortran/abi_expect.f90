@@ -7,27 +7,48 @@ contains
   subroutine expected_consts(v, n)
     integer(c_int64_t), intent(out) :: v(:)
     integer, intent(out) :: n
-    v(1) = DC_OK
-    v(2) = DC_ERR_NULL_POINTER
-    v(3) = DC_ERR_NOT_FINITE
-    v(4) = DC_ERR_RESTITUTION_RANGE
-    v(5) = DC_ERR_EXPONENT_RANGE
-    v(6) = DC_ERR_NOT_POSITIVE
-    v(7) = DC_ERR_NEGATIVE
-    v(8) = DC_ERR_CRITERION
-    v(9) = DC_ERR_RESULT_RANGE
-    v(10) = DC_ERR_NO_CONVERGENCE
-    v(11) = DC_ERR_BUFFER_TOO_SHORT
-    v(12) = DC_ERR_NO_EVENT
-    v(13) = DC_ERR_INTERNAL
-    v(14) = DC_END_OVERLAP
-    v(15) = DC_END_FORCE
-    n = 15
+    v(1) = DC_MODEL_POWERLAW
+    v(2) = DC_MODEL_HERTZ
+    v(3) = DC_MODEL_VISCOELASTIC
+    v(4) = DC_OK
+    v(5) = DC_ERR_NULL_POINTER
+    v(6) = DC_ERR_NOT_FINITE
+    v(7) = DC_ERR_RESTITUTION_RANGE
+    v(8) = DC_ERR_EXPONENT_RANGE
+    v(9) = DC_ERR_NOT_POSITIVE
+    v(10) = DC_ERR_NEGATIVE
+    v(11) = DC_ERR_CRITERION
+    v(12) = DC_ERR_RESULT_RANGE
+    v(13) = DC_ERR_NO_CONVERGENCE
+    v(14) = DC_ERR_BUFFER_TOO_SHORT
+    v(15) = DC_ERR_NO_EVENT
+    v(16) = DC_ERR_PAIR_INVALID
+    v(17) = DC_ERR_BUFFER_LAYOUT
+    v(18) = DC_ERR_INTERNAL
+    v(19) = DC_END_OVERLAP
+    v(20) = DC_END_FORCE
+    n = 20
   end subroutine expected_consts
 
   subroutine expected_layout(v, n)
     integer(c_int64_t), intent(out) :: v(:)
     integer, intent(out) :: n
-    n = 0
+    block
+      type(dc_pair), target :: x_dc_pair
+      v(1) = c_sizeof(x_dc_pair)
+      v(2) = transfer(c_loc(x_dc_pair%model), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(3) = transfer(c_loc(x_dc_pair%kernel), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(4) = transfer(c_loc(x_dc_pair%criterion), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(5) = transfer(c_loc(x_dc_pair%clamp), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(6) = transfer(c_loc(x_dc_pair%p), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(7) = transfer(c_loc(x_dc_pair%stiffness), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(8) = transfer(c_loc(x_dc_pair%alpha), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(9) = transfer(c_loc(x_dc_pair%damping_a), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(10) = transfer(c_loc(x_dc_pair%e), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(11) = transfer(c_loc(x_dc_pair%k), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(12) = transfer(c_loc(x_dc_pair%c), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(13) = transfer(c_loc(x_dc_pair%h), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+    end block
+    n = 13
   end subroutine expected_layout
 end module abi_expect
