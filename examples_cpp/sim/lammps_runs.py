@@ -60,7 +60,10 @@ def collision(plugin, lmp, workdir, np_=1, spc=H.STEPS_PER_CONTACT):
     env = H.mpi_env()
     dt, steps, gap, pairs = H.collision_setup(spc)
     results = {}
-    for label, style, coeff, _ in LAMMPS_MODELS:
+    # Under MPI only demcontact (the mpich wheel busy-polls: 2 ranks on a shared 2-core machine are
+    # slow); the builtin styles are compared in the serial run.
+    models = LAMMPS_MODELS if np_ <= 1 else [m for m in LAMMPS_MODELS if m[3]]
+    for label, style, coeff, _ in models:
         d = os.path.join(workdir, re.sub(r"\W+", "_", label))
         os.makedirs(d, exist_ok=True)
         open(os.path.join(d, "in.collision"), "w").write(deck(style, coeff, plugin, dt, steps, gap, pairs))
@@ -68,4 +71,4 @@ def collision(plugin, lmp, workdir, np_=1, spc=H.STEPS_PER_CONTACT):
         pre = H.mpi_prefix(np_, os.path.join(os.path.dirname(exe), "mpirun"))
         H.run(pre + [exe, "-in", "in.collision", "-log", "log.lammps"], d, env)
         results[label] = H.realised(H.read_last_dump(os.path.join(d, "final.dump")), pairs)
-    return dt, pairs, results, [(m[0], m[3]) for m in LAMMPS_MODELS]
+    return dt, pairs, results, [(m[0], m[3]) for m in models]
