@@ -94,6 +94,17 @@ int main(int argc, char** argv) {
     dc::vec3 F = dc::normal_force_3d(pair, {0, 0, 0}, {0, 0, 0}, 1e-3, 1e-5, {1.999e-3, 0, 0}, {-0.1, 0, 0}, 1e-3, 1e-5);
     CHECK(F.x < 0.0 && F.y == 0.0 && F.z == 0.0);  // sphere 1 pushed away from sphere 2 (at +x)
 
+    // Trajectory into vectors through spans; ends at the contact duration.
+    {
+        const double alpha = dc::alpha_from_e(0.5, 1.5, dc::criterion::overlap);
+        std::vector<double> t(65), dl(65), vel(65), fo(65);
+        dc::contact_trajectory(1.5, alpha, 1.0, 100.0, 1e-3, dc::criterion::overlap, DC_LEVEL_MAX, dc::span<double>(t),
+                               dc::span<double>(dl), dc::span<double>(vel), dc::span<double>(fo));
+        const double tau = dc::contact_duration(1.5, alpha, 1.0, 100.0, dc::criterion::overlap);
+        CHECK(std::fabs(t[64] - tau) <= 1e-13 * tau);
+        CHECK(std::fabs(vel[64] + 0.5) <= 1e-12);
+    }
+
     // span view over a vector.
     std::vector<double> v{1.0, 2.0, 3.0};
     dc::span<double> s(v);

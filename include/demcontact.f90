@@ -36,6 +36,25 @@ contains
     if (present(stat)) stat = s
   end subroutine normal_force_batch
 
+  !> Samples one power-law collision at n = size(t) points (dc_contact_trajectory); delta, v and
+  !> force must be at least as long as t. stat: DC_OK or the C status.
+  subroutine contact_trajectory(p, alpha, v0, omega0, mass, criterion, level, t, delta, v, force, stat)
+    real(c_double), intent(in) :: p, alpha, v0, omega0, mass
+    integer(c_int32_t), intent(in) :: criterion, level
+    real(c_double), intent(out), contiguous :: t(:), delta(:), v(:), force(:)
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    integer :: n
+    n = size(t)
+    if (size(delta) < n .or. size(v) < n .or. size(force) < n) then
+      s = DC_ERR_BUFFER_TOO_SHORT
+    else
+      s = dc_contact_trajectory(p, alpha, v0, omega0, mass, criterion, level, int(n, c_size_t), &
+          t, delta, v, force, int(n, c_size_t))
+    end if
+    if (present(stat)) stat = s
+  end subroutine contact_trajectory
+
   !> The message of a status code as a Fortran string.
   function dc_status_message(status) result(msg)
     integer(c_int32_t), intent(in) :: status

@@ -98,3 +98,19 @@ inline vec3 normal_force_3d(const ::dc_pair& pair, const vec3& x1, const vec3& v
 }
 
 }  // namespace demcontact
+
+namespace demcontact {
+
+/// Samples one power-law collision at n = t.size() points (dc_contact_trajectory) into the four
+/// views (each at least t.size() long). Throws demcontact::error on a non-OK status.
+inline void contact_trajectory(double p, double alpha, double v0, double omega0, double mass, criterion c,
+                               std::int32_t level, span<double> t, span<double> delta, span<double> v,
+                               span<double> force) {
+    const std::size_t n = t.size();
+    std::size_t len = n;
+    for (std::size_t m : {delta.size(), v.size(), force.size()}) len = m < len ? m : len;
+    detail::check(::dc_contact_trajectory(p, alpha, v0, omega0, mass, static_cast<std::int32_t>(c), level, n,
+                                          t.data(), delta.data(), v.data(), force.data(), len));
+}
+
+}  // namespace demcontact

@@ -81,6 +81,23 @@ program test_fortran
     call normal_force_batch(pair, d, vn(1:2), r, m, fb, s)
     call check(s == DC_ERR_BUFFER_TOO_SHORT, 'short batch array')
   end block
+  ! Power-law calculus: trajectory into Fortran arrays ends at the duration; energy partition sums to 1.
+  block
+    real(c_double) :: tt(101), dd(101), vv(101), ff(101), tau, alpha
+    type(dc_energy) :: en
+    s = dc_alpha_from_e(0.5_c_double, 1.5_c_double, DC_END_FORCE, alpha)
+    call contact_trajectory(1.5_c_double, alpha, 1.0_c_double, 100.0_c_double, 1e-3_c_double, DC_END_FORCE, &
+        DC_LEVEL_MAX, tt, dd, vv, ff, s)
+    call check(s == DC_OK, 'trajectory status')
+    s = dc_contact_duration(1.5_c_double, alpha, 1.0_c_double, 100.0_c_double, DC_END_FORCE, tau)
+    call check(s == DC_OK .and. abs(tt(101) - tau) <= 1e-13_c_double * tau, 'trajectory ends at tau')
+    call check(abs(vv(101) + 0.5_c_double) <= 1e-12_c_double, 'exit speed is e v0')
+    call contact_trajectory(1.5_c_double, alpha, 1.0_c_double, 100.0_c_double, 1e-3_c_double, DC_END_FORCE, &
+        DC_LEVEL_MAX, tt, dd(1:50), vv, ff, s)
+    call check(s == DC_ERR_BUFFER_TOO_SHORT, 'short trajectory buffer')
+    call energy_partition(1.5_c_double, alpha, DC_END_FORCE, en, s)
+    call check(s == DC_OK, 'energy partition')
+  end block
   ! ABI: constants and struct layouts as the C compiler sees them.
   call check_abi()
 
