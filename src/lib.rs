@@ -9,6 +9,8 @@
 //! * [`powerlaw`]: the power-law Tsuji contact `m δ'' + α √(m k) δ^((p-1)/2) δ' + k δ^p = 0`.
 //! * [`force`]: per-contact normal-force kernels (scalar, batch, 3D), monomorphised per model.
 //! * [`material`]: Hertz stiffness from two spheres' E, ν, R.
+//! * [`timestep`]: a contact integrated as DEM hosts do (velocity-Verlet, symplectic Euler) with
+//!   the library's kernels, and the largest step for a tolerance on the realised restitution.
 //! * [`numerics`]: root finding and the reference ODE integrator used to check everything else.
 //! * [`ffi`]: the `extern "C"` functions exported as `include/demcontact.h`.
 
@@ -20,6 +22,7 @@ pub mod lsd;
 pub mod material;
 pub mod numerics;
 pub mod powerlaw;
+pub mod timestep;
 
 pub use criterion::EndCriterion;
 pub use error::Error;

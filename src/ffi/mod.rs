@@ -14,6 +14,7 @@ pub mod calibration;
 pub mod force;
 pub mod material;
 pub mod status;
+pub mod step_accuracy;
 pub mod timestep;
 pub mod version;
 
