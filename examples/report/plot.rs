@@ -189,8 +189,11 @@ fn draw_panel(p: &Panel, area: &DrawingArea<BitMapBackend, plotters::coord::Shif
     };
     let pad = |a: &mut f64, b: &mut f64, log: bool| {
         if log {
-            *a = (*a - 0.05 * (*b - *a)).floor().min(*a - 0.05);
-            *b = (*b + 0.05 * (*b - *a)).ceil().max(*b + 0.05);
+            // At least one full decade, so that a labelled tick (an integer power) is inside.
+            let span = (*b - *a).max(1.0);
+            let mid = 0.5 * (*a + *b);
+            *a = (mid - 0.55 * span).min(*a - 0.05);
+            *b = (mid + 0.55 * span).max(*b + 0.05);
         } else {
             let d = 0.04 * (*b - *a);
             *a -= d;
