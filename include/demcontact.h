@@ -36,6 +36,16 @@
 #define DC_MODEL_VISCOELASTIC 3
 
 /**
+ * Lowest quadrature accuracy level (fastest; see docs/powerlaw.md for its measured error).
+ */
+#define DC_LEVEL_MIN 0
+
+/**
+ * Highest quadrature accuracy level, used by the functions without a level argument.
+ */
+#define DC_LEVEL_MAX 4
+
+/**
  * Success.
  */
 #define DC_OK 0
@@ -107,6 +117,11 @@
  * input array.
  */
 #define DC_ERR_BUFFER_LAYOUT 6121
+
+/**
+ * A quadrature accuracy level is outside DC_LEVEL_MIN..=DC_LEVEL_MAX.
+ */
+#define DC_ERR_LEVEL 6112
 
 /**
  * An internal error was caught at the boundary (not expected; please report).
@@ -195,6 +210,34 @@ typedef struct dc_pair {
      */
     double h;
 } dc_pair;
+
+/**
+ * Energy partition of one collision, each as a fraction of the impact energy m v0^2 / 2.
+ * The five fractions loading + unloading + returned + clamped sum to 1.
+ */
+typedef struct dc_energy {
+    /**
+     * Realised restitution e = |exit speed|/v0 (e^2 = returned).
+     */
+    double e;
+    /**
+     * Dissipated by the dashpot while loading (impact to maximum overlap): 1 - e_F.
+     */
+    double loading;
+    /**
+     * Dissipated by the dashpot while unloading (maximum overlap to the end event).
+     */
+    double unloading;
+    /**
+     * Kinetic energy returned at the end event: e^2.
+     */
+    double returned;
+    /**
+     * DC_END_FORCE only: elastic energy still stored when the total force reaches zero,
+     * (2 zeta e_F)^2; a solver that clamps the force loses it. 0 for DC_END_OVERLAP.
+     */
+    double clamped;
+} dc_energy;
 
 #ifdef __cplusplus
 extern "C" {
@@ -485,6 +528,145 @@ int32_t dc_hertz_stiffness(double E1,
 int32_t dc_effective_modulus(double E1, double nu1, double E2, double nu2, double *E_star_out);
 
 /**
+ * Maximum overlap of a collision, in closed form for every p >= 1 and every alpha >= 0
+ * (underdamped, critical and overdamped):
+ * delta_max = A ((v0/omega0) exp(-g(zeta)))^q, q = 2/(p+1), A = ((p+1)/2)^(1/(p+1)),
+ * g(zeta) = zeta acos(zeta)/sqrt(1-zeta^2) (acosh form above critical damping).
+ *
+ * @param p, alpha, v0, omega0  see the file header: p >= 1, alpha >= 0, v0 > 0, omega0 > 0.
+ * @param delta_max_out  receives delta_max [m]; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
+ *         DC_ERR_NOT_POSITIVE, DC_ERR_NEGATIVE, DC_ERR_RESULT_RANGE.
+ *
+ * Precision: 1e-12 relative against an adaptive integration of the equation of motion.
+ *
+ * # Safety
+ * `delta_max_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_max_overlap(double p, double alpha, double v0, double omega0, double *delta_max_out);
+
+/**
+ * Time from impact to maximum overlap [s], at the highest accuracy level (closed form for p = 1
+ * and for alpha = 0, where it is half the contact duration; quadrature otherwise).
+ *
+ * @return as dc_max_overlap.
+ *
+ * # Safety
+ * `t_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_time_of_max_overlap(double p, double alpha, double v0, double omega0, double *t_out);
+
+/**
+ * Contact duration tau [s] under `criterion`, at the highest accuracy level.
+ *
+ * - DC_END_OVERLAP (overlap returns to 0): closed form for every p (Gamma functions of complex
+ *   argument; the Beta function B(1/(p+1), 1/2) when undamped). An overdamped or critically
+ *   damped contact (zeta >= 1) never returns to zero overlap (tau = infinity): DC_ERR_NO_EVENT.
+ * - DC_END_FORCE (total force first reaches 0 while unloading): exact singularity-free quadrature
+ *   (closed form for p = 1); finite for every alpha.
+ *
+ * @param criterion  DC_END_OVERLAP or DC_END_FORCE.
+ * @param tau_out    receives tau; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
+ *         DC_ERR_NOT_POSITIVE, DC_ERR_NEGATIVE, DC_ERR_CRITERION, DC_ERR_NO_EVENT,
+ *         DC_ERR_RESULT_RANGE (tau overflows, e.g. zeta within ~1e-300 of 1).
+ *
+ * Precision: 1e-12 relative (closed forms) and 1e-10 (quadrature) against an adaptive
+ * integration of the equation of motion; see docs/powerlaw.md.
+ *
+ * # Safety
+ * `tau_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_contact_duration(double p,
+                            double alpha,
+                            double v0,
+                            double omega0,
+                            int32_t criterion,
+                            double *tau_out);
+
+/**
+ * dc_contact_duration with a cost/accuracy knob: `level` in DC_LEVEL_MIN..=DC_LEVEL_MAX selects
+ * the Chebyshev interpolation order N = 6, 8, 12, 16, 24 (N + 1 integrand evaluations per panel;
+ * one panel except strongly overdamped contacts). Closed-form cases ignore it.
+ * Measured errors per level are tabulated in docs/powerlaw.md.
+ *
+ * @return as dc_contact_duration, plus DC_ERR_LEVEL.
+ *
+ * # Safety
+ * `tau_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_contact_duration_level(double p,
+                                  double alpha,
+                                  double v0,
+                                  double omega0,
+                                  int32_t criterion,
+                                  int32_t level,
+                                  double *tau_out);
+
+/**
+ * Energy partition of a collision as fractions of m v0^2/2 (independent of v0, m and k):
+ * loading = 1 - e_F, with e_F = exp(-2 g(zeta)) the force-end restitution;
+ * DC_END_OVERLAP: returned = e_O^2, unloading = e_F - e_O^2 (overdamped: the t -> infinity
+ * limit, returned 0, e = 0); DC_END_FORCE: returned = e_F^2, clamped = (2 zeta e_F)^2,
+ * unloading = e_F - (1 + 4 zeta^2) e_F^2.
+ *
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
+ *         DC_ERR_NEGATIVE, DC_ERR_CRITERION.
+ *
+ * # Safety
+ * `energy_out` must be NULL or point to writable memory for one dc_energy.
+ */
+int32_t dc_energy_partition(double p,
+                            double alpha,
+                            int32_t criterion,
+                            struct dc_energy *energy_out);
+
+/**
+ * Samples one collision at n points, uniform in the phase of the linear image (dense near
+ * delta = 0 where p > 1 contacts move fastest), from impact (t = 0, delta = 0, v = v0) to the end
+ * event of `criterion` (last sample: t = tau, v = -e v0; delta = 0 for DC_END_OVERLAP, force = 0
+ * to rounding for DC_END_FORCE).
+ *
+ * @param mass       effective mass m > 0 [kg] (k = m omega0^2 and the damping alpha sqrt(m k)).
+ * @param criterion  DC_END_OVERLAP or DC_END_FORCE.
+ * @param level      DC_LEVEL_MIN..=DC_LEVEL_MAX, quadrature accuracy of the times.
+ * @param n          number of samples, n >= 2.
+ * @param t_out, delta_out, v_out, force_out  caller buffers of buf_len doubles each: time [s],
+ *                   overlap [m], overlap rate [m/s], total normal force [N].
+ * @param buf_len    length of each buffer; must be >= n.
+ * @return DC_OK, DC_ERR_NULL_POINTER (any buffer NULL), DC_ERR_BUFFER_TOO_SHORT (n < 2 or
+ *         buf_len < n), DC_ERR_LEVEL, and the statuses of dc_contact_duration. On error no
+ *         buffer is written.
+ *
+ * # Safety
+ * Each non-NULL buffer must be valid for writes of buf_len doubles and not overlap the others.
+ */
+int32_t dc_contact_trajectory(double p,
+                              double alpha,
+                              double v0,
+                              double omega0,
+                              double mass,
+                              int32_t criterion,
+                              int32_t level,
+                              size_t n,
+                              double *t_out,
+                              double *delta_out,
+                              double *v_out,
+                              double *force_out,
+                              size_t buf_len);
+
+/**
+ * omega0 = sqrt(k/m) from a stiffness k > 0 [N m^-p] and an effective mass m > 0 [kg], for hosts
+ * that carry k and m (with Hertz, k from dc_hertz_stiffness).
+ *
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE, DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `omega0_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_omega0(double k, double m, double *omega0_out);
+
+/**
  * A static, NUL-terminated English message for a status code; never NULL, never freed.
  * Unknown codes give "unknown demcontact status".
  */
@@ -562,6 +744,44 @@ int32_t dc_dt_for_accuracy(double p,
  * `dt_out` must be NULL or point to writable memory for one double.
  */
 int32_t dc_dt_crit(double p, double v0, double omega0, double *dt_out);
+
+/**
+ * The linearised time-step bound of a collision: 2/omega_lin, omega_lin = omega0 sqrt(p)
+ * delta0^((p-1)/2), delta0 = ((p+1) v0^2/(2 omega0^2))^(1/(p+1)) the undamped maximum overlap.
+ * For p = 1 it is 2/omega0. It is smaller than dc_dt_crit by sqrt(2p/(p+1)); velocity-Verlet
+ * experiments (docs/powerlaw.md) show how far below it one must stay for accuracy.
+ *
+ * @param p, v0, omega0  p >= 1, v0 > 0 (the largest impact speed expected), omega0 > 0.
+ * @param dt_out  receives the step [s]; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
+ *         DC_ERR_NOT_POSITIVE, DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `dt_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_dt_linearised(double p, double v0, double omega0, double *dt_out);
+
+/**
+ * The velocity-Verlet stability limit of a persistent contact pressed by a constant load
+ * (LAMMPS/LIGGGHTS scheme: dashpot evaluated with the half-step velocity):
+ * dt = (2/omega_eq)(sqrt(1 + z^2) - z), omega_eq = omega0 sqrt(p) delta_eq^((p-1)/2),
+ * delta_eq = (accel/omega0^2)^(1/p), z = alpha/(2 sqrt(p)) the linearised damping ratio.
+ * Damping lowers the limit (to 0.35 x 2/omega_eq at e = 0.1); measured limits agree within
+ * 1% (docs/powerlaw.md). Unlike dc_dt_crit, which ignores damping and grows without bound as
+ * v0 -> 0 for p > 1, it is finite for resting contacts. Stay below it with a safety margin.
+ *
+ * @param p       force-law exponent, p >= 1.
+ * @param alpha   damping coefficient, alpha >= 0.
+ * @param omega0  sqrt(k/m) > 0.
+ * @param accel   load divided by the effective mass (e.g. g for a particle resting on a wall), > 0.
+ * @param dt_out  receives the step [s]; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
+ *         DC_ERR_NOT_POSITIVE, DC_ERR_NEGATIVE, DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `dt_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_dt_static(double p, double alpha, double omega0, double accel, double *dt_out);
 
 /**
  * The library version as a static NUL-terminated string, e.g. "0.1.0"; never NULL, never freed.

@@ -13,6 +13,8 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_MODEL_POWERLAW = 1
   integer(c_int32_t), parameter :: DC_MODEL_HERTZ = 2
   integer(c_int32_t), parameter :: DC_MODEL_VISCOELASTIC = 3
+  integer(c_int32_t), parameter :: DC_LEVEL_MIN = 0
+  integer(c_int32_t), parameter :: DC_LEVEL_MAX = 4
   integer(c_int32_t), parameter :: DC_OK = 0
   integer(c_int32_t), parameter :: DC_ERR_NULL_POINTER = 6101
   integer(c_int32_t), parameter :: DC_ERR_NOT_FINITE = 6102
@@ -27,6 +29,7 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_ERR_NO_EVENT = 6111
   integer(c_int32_t), parameter :: DC_ERR_PAIR_INVALID = 6120
   integer(c_int32_t), parameter :: DC_ERR_BUFFER_LAYOUT = 6121
+  integer(c_int32_t), parameter :: DC_ERR_LEVEL = 6112
   integer(c_int32_t), parameter :: DC_ERR_INTERNAL = 6199
   integer(c_int32_t), parameter :: DC_END_OVERLAP = 0
   integer(c_int32_t), parameter :: DC_END_FORCE = 1
@@ -45,6 +48,14 @@ module demcontact_c
     real(c_double) :: c
     real(c_double) :: h
   end type dc_pair
+
+  type, bind(c) :: dc_energy
+    real(c_double) :: e
+    real(c_double) :: loading
+    real(c_double) :: unloading
+    real(c_double) :: returned
+    real(c_double) :: clamped
+  end type dc_energy
 
   interface
     function dc_alpha_from_e(e, p, criterion, alpha_out) bind(c, name='dc_alpha_from_e')
@@ -180,6 +191,81 @@ module demcontact_c
       real(c_double), intent(out) :: E_star_out
       integer(c_int32_t) :: dc_effective_modulus
     end function dc_effective_modulus
+    function dc_max_overlap(p, alpha, v0, omega0, delta_max_out) bind(c, name='dc_max_overlap')
+      import
+      real(c_double), value, intent(in) :: p
+      real(c_double), value, intent(in) :: alpha
+      real(c_double), value, intent(in) :: v0
+      real(c_double), value, intent(in) :: omega0
+      real(c_double), intent(out) :: delta_max_out
+      integer(c_int32_t) :: dc_max_overlap
+    end function dc_max_overlap
+    function dc_time_of_max_overlap(p, alpha, v0, omega0, t_out) bind(c, &
+        name='dc_time_of_max_overlap')
+      import
+      real(c_double), value, intent(in) :: p
+      real(c_double), value, intent(in) :: alpha
+      real(c_double), value, intent(in) :: v0
+      real(c_double), value, intent(in) :: omega0
+      real(c_double), intent(out) :: t_out
+      integer(c_int32_t) :: dc_time_of_max_overlap
+    end function dc_time_of_max_overlap
+    function dc_contact_duration(p, alpha, v0, omega0, criterion, tau_out) bind(c, &
+        name='dc_contact_duration')
+      import
+      real(c_double), value, intent(in) :: p
+      real(c_double), value, intent(in) :: alpha
+      real(c_double), value, intent(in) :: v0
+      real(c_double), value, intent(in) :: omega0
+      integer(c_int32_t), value, intent(in) :: criterion
+      real(c_double), intent(out) :: tau_out
+      integer(c_int32_t) :: dc_contact_duration
+    end function dc_contact_duration
+    function dc_contact_duration_level(p, alpha, v0, omega0, criterion, level, tau_out) bind(c, &
+        name='dc_contact_duration_level')
+      import
+      real(c_double), value, intent(in) :: p
+      real(c_double), value, intent(in) :: alpha
+      real(c_double), value, intent(in) :: v0
+      real(c_double), value, intent(in) :: omega0
+      integer(c_int32_t), value, intent(in) :: criterion
+      integer(c_int32_t), value, intent(in) :: level
+      real(c_double), intent(out) :: tau_out
+      integer(c_int32_t) :: dc_contact_duration_level
+    end function dc_contact_duration_level
+    function dc_energy_partition(p, alpha, criterion, energy_out) bind(c, name='dc_energy_partition')
+      import
+      real(c_double), value, intent(in) :: p
+      real(c_double), value, intent(in) :: alpha
+      integer(c_int32_t), value, intent(in) :: criterion
+      type(dc_energy), intent(out) :: energy_out
+      integer(c_int32_t) :: dc_energy_partition
+    end function dc_energy_partition
+    function dc_contact_trajectory(p, alpha, v0, omega0, mass, criterion, level, n, t_out, delta_out, &
+        v_out, force_out, buf_len) bind(c, name='dc_contact_trajectory')
+      import
+      real(c_double), value, intent(in) :: p
+      real(c_double), value, intent(in) :: alpha
+      real(c_double), value, intent(in) :: v0
+      real(c_double), value, intent(in) :: omega0
+      real(c_double), value, intent(in) :: mass
+      integer(c_int32_t), value, intent(in) :: criterion
+      integer(c_int32_t), value, intent(in) :: level
+      integer(c_size_t), value, intent(in) :: n
+      real(c_double), intent(out) :: t_out(*)
+      real(c_double), intent(out) :: delta_out(*)
+      real(c_double), intent(out) :: v_out(*)
+      real(c_double), intent(out) :: force_out(*)
+      integer(c_size_t), value, intent(in) :: buf_len
+      integer(c_int32_t) :: dc_contact_trajectory
+    end function dc_contact_trajectory
+    function dc_omega0(k, m, omega0_out) bind(c, name='dc_omega0')
+      import
+      real(c_double), value, intent(in) :: k
+      real(c_double), value, intent(in) :: m
+      real(c_double), intent(out) :: omega0_out
+      integer(c_int32_t) :: dc_omega0
+    end function dc_omega0
     function dc_status_str(status) bind(c, name='dc_status_str')
       import
       integer(c_int32_t), value, intent(in) :: status
@@ -205,6 +291,23 @@ module demcontact_c
       real(c_double), intent(out) :: dt_out
       integer(c_int32_t) :: dc_dt_crit
     end function dc_dt_crit
+    function dc_dt_linearised(p, v0, omega0, dt_out) bind(c, name='dc_dt_linearised')
+      import
+      real(c_double), value, intent(in) :: p
+      real(c_double), value, intent(in) :: v0
+      real(c_double), value, intent(in) :: omega0
+      real(c_double), intent(out) :: dt_out
+      integer(c_int32_t) :: dc_dt_linearised
+    end function dc_dt_linearised
+    function dc_dt_static(p, alpha, omega0, accel, dt_out) bind(c, name='dc_dt_static')
+      import
+      real(c_double), value, intent(in) :: p
+      real(c_double), value, intent(in) :: alpha
+      real(c_double), value, intent(in) :: omega0
+      real(c_double), value, intent(in) :: accel
+      real(c_double), intent(out) :: dt_out
+      integer(c_int32_t) :: dc_dt_static
+    end function dc_dt_static
     function dc_version() bind(c, name='dc_version')
       import
       type(c_ptr) :: dc_version
@@ -352,6 +455,90 @@ contains
     if (s /= DC_OK) E_star_out = ieee_value(E_star_out, ieee_quiet_nan)
   end subroutine effective_modulus
 
+  !> Elemental form of dc_max_overlap: on error `delta_max_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine max_overlap(p, alpha, v0, omega0, delta_max_out, stat)
+    real(c_double), intent(in) :: p
+    real(c_double), intent(in) :: alpha
+    real(c_double), intent(in) :: v0
+    real(c_double), intent(in) :: omega0
+    real(c_double), intent(out) :: delta_max_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_max_overlap(p, alpha, v0, omega0, delta_max_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) delta_max_out = ieee_value(delta_max_out, ieee_quiet_nan)
+  end subroutine max_overlap
+
+  !> Elemental form of dc_time_of_max_overlap: on error `t_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine time_of_max_overlap(p, alpha, v0, omega0, t_out, stat)
+    real(c_double), intent(in) :: p
+    real(c_double), intent(in) :: alpha
+    real(c_double), intent(in) :: v0
+    real(c_double), intent(in) :: omega0
+    real(c_double), intent(out) :: t_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_time_of_max_overlap(p, alpha, v0, omega0, t_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) t_out = ieee_value(t_out, ieee_quiet_nan)
+  end subroutine time_of_max_overlap
+
+  !> Elemental form of dc_contact_duration: on error `tau_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine contact_duration(p, alpha, v0, omega0, criterion, tau_out, stat)
+    real(c_double), intent(in) :: p
+    real(c_double), intent(in) :: alpha
+    real(c_double), intent(in) :: v0
+    real(c_double), intent(in) :: omega0
+    integer(c_int32_t), intent(in) :: criterion
+    real(c_double), intent(out) :: tau_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_contact_duration(p, alpha, v0, omega0, criterion, tau_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) tau_out = ieee_value(tau_out, ieee_quiet_nan)
+  end subroutine contact_duration
+
+  !> Elemental form of dc_contact_duration_level: on error `tau_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine contact_duration_level(p, alpha, v0, omega0, criterion, level, tau_out, &
+      stat)
+    real(c_double), intent(in) :: p
+    real(c_double), intent(in) :: alpha
+    real(c_double), intent(in) :: v0
+    real(c_double), intent(in) :: omega0
+    integer(c_int32_t), intent(in) :: criterion
+    integer(c_int32_t), intent(in) :: level
+    real(c_double), intent(out) :: tau_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_contact_duration_level(p, alpha, v0, omega0, criterion, level, tau_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) tau_out = ieee_value(tau_out, ieee_quiet_nan)
+  end subroutine contact_duration_level
+
+  !> Elemental form of dc_energy_partition: on error `energy_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine energy_partition(p, alpha, criterion, energy_out, stat)
+    real(c_double), intent(in) :: p
+    real(c_double), intent(in) :: alpha
+    integer(c_int32_t), intent(in) :: criterion
+    type(dc_energy), intent(out) :: energy_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_energy_partition(p, alpha, criterion, energy_out)
+    if (present(stat)) stat = s
+  end subroutine energy_partition
+
+  !> Elemental form of dc_omega0: on error `omega0_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine omega0(k, m, omega0_out, stat)
+    real(c_double), intent(in) :: k
+    real(c_double), intent(in) :: m
+    real(c_double), intent(out) :: omega0_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_omega0(k, m, omega0_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) omega0_out = ieee_value(omega0_out, ieee_quiet_nan)
+  end subroutine omega0
+
   !> Elemental form of dc_dt_for_accuracy: on error `dt_out` is NaN (numeric) and `stat` the status.
   impure elemental subroutine dt_for_accuracy(p, e, criterion, v0, omega0, tol, dt_out, stat)
     real(c_double), intent(in) :: p
@@ -380,6 +567,33 @@ contains
     if (present(stat)) stat = s
     if (s /= DC_OK) dt_out = ieee_value(dt_out, ieee_quiet_nan)
   end subroutine dt_crit
+
+  !> Elemental form of dc_dt_linearised: on error `dt_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine dt_linearised(p, v0, omega0, dt_out, stat)
+    real(c_double), intent(in) :: p
+    real(c_double), intent(in) :: v0
+    real(c_double), intent(in) :: omega0
+    real(c_double), intent(out) :: dt_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_dt_linearised(p, v0, omega0, dt_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) dt_out = ieee_value(dt_out, ieee_quiet_nan)
+  end subroutine dt_linearised
+
+  !> Elemental form of dc_dt_static: on error `dt_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine dt_static(p, alpha, omega0, accel, dt_out, stat)
+    real(c_double), intent(in) :: p
+    real(c_double), intent(in) :: alpha
+    real(c_double), intent(in) :: omega0
+    real(c_double), intent(in) :: accel
+    real(c_double), intent(out) :: dt_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_dt_static(p, alpha, omega0, accel, dt_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) dt_out = ieee_value(dt_out, ieee_quiet_nan)
+  end subroutine dt_static
 
   !> Elemental form of dc_normal_force (pure: arrays of contacts in one call).
   elemental function normal_force(pair, overlap, vn, r_eff, m_eff) result(r)

@@ -20,6 +20,7 @@ enum class status : std::int32_t {
     no_event = DC_ERR_NO_EVENT,
     pair_invalid = DC_ERR_PAIR_INVALID,
     buffer_layout = DC_ERR_BUFFER_LAYOUT,
+    level = DC_ERR_LEVEL,
     internal = DC_ERR_INTERNAL,
 };
 
@@ -144,6 +145,72 @@ inline status effective_modulus(double E1, double nu1, double E2, double nu2, do
     return static_cast<status>(::dc_effective_modulus(E1, nu1, E2, nu2, &out));
 }
 
+/// dc_max_overlap: throws demcontact::error on a non-OK status.
+inline double max_overlap(double p, double alpha, double v0, double omega0) {
+    double out{};
+    detail::check(::dc_max_overlap(p, alpha, v0, omega0, &out));
+    return out;
+}
+/// dc_max_overlap: returns the status; `out` is written only on status::ok.
+inline status max_overlap(double p, double alpha, double v0, double omega0, double& out) noexcept {
+    return static_cast<status>(::dc_max_overlap(p, alpha, v0, omega0, &out));
+}
+
+/// dc_time_of_max_overlap: throws demcontact::error on a non-OK status.
+inline double time_of_max_overlap(double p, double alpha, double v0, double omega0) {
+    double out{};
+    detail::check(::dc_time_of_max_overlap(p, alpha, v0, omega0, &out));
+    return out;
+}
+/// dc_time_of_max_overlap: returns the status; `out` is written only on status::ok.
+inline status time_of_max_overlap(double p, double alpha, double v0, double omega0, double& out) noexcept {
+    return static_cast<status>(::dc_time_of_max_overlap(p, alpha, v0, omega0, &out));
+}
+
+/// dc_contact_duration: throws demcontact::error on a non-OK status.
+inline double contact_duration(double p, double alpha, double v0, double omega0, criterion criterion_) {
+    double out{};
+    detail::check(::dc_contact_duration(p, alpha, v0, omega0, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_contact_duration: returns the status; `out` is written only on status::ok.
+inline status contact_duration(double p, double alpha, double v0, double omega0, criterion criterion_, double& out) noexcept {
+    return static_cast<status>(::dc_contact_duration(p, alpha, v0, omega0, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_contact_duration_level: throws demcontact::error on a non-OK status.
+inline double contact_duration_level(double p, double alpha, double v0, double omega0, criterion criterion_, std::int32_t level) {
+    double out{};
+    detail::check(::dc_contact_duration_level(p, alpha, v0, omega0, static_cast<std::int32_t>(criterion_), level, &out));
+    return out;
+}
+/// dc_contact_duration_level: returns the status; `out` is written only on status::ok.
+inline status contact_duration_level(double p, double alpha, double v0, double omega0, criterion criterion_, std::int32_t level, double& out) noexcept {
+    return static_cast<status>(::dc_contact_duration_level(p, alpha, v0, omega0, static_cast<std::int32_t>(criterion_), level, &out));
+}
+
+/// dc_energy_partition: throws demcontact::error on a non-OK status.
+inline ::dc_energy energy_partition(double p, double alpha, criterion criterion_) {
+    ::dc_energy out{};
+    detail::check(::dc_energy_partition(p, alpha, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_energy_partition: returns the status; `out` is written only on status::ok.
+inline status energy_partition(double p, double alpha, criterion criterion_, ::dc_energy& out) noexcept {
+    return static_cast<status>(::dc_energy_partition(p, alpha, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_omega0: throws demcontact::error on a non-OK status.
+inline double omega0(double k, double m) {
+    double out{};
+    detail::check(::dc_omega0(k, m, &out));
+    return out;
+}
+/// dc_omega0: returns the status; `out` is written only on status::ok.
+inline status omega0(double k, double m, double& out) noexcept {
+    return static_cast<status>(::dc_omega0(k, m, &out));
+}
+
 /// dc_dt_for_accuracy: throws demcontact::error on a non-OK status.
 inline double dt_for_accuracy(double p, double e, criterion criterion_, double v0, double omega0, double tol) {
     double out{};
@@ -164,6 +231,28 @@ inline double dt_crit(double p, double v0, double omega0) {
 /// dc_dt_crit: returns the status; `out` is written only on status::ok.
 inline status dt_crit(double p, double v0, double omega0, double& out) noexcept {
     return static_cast<status>(::dc_dt_crit(p, v0, omega0, &out));
+}
+
+/// dc_dt_linearised: throws demcontact::error on a non-OK status.
+inline double dt_linearised(double p, double v0, double omega0) {
+    double out{};
+    detail::check(::dc_dt_linearised(p, v0, omega0, &out));
+    return out;
+}
+/// dc_dt_linearised: returns the status; `out` is written only on status::ok.
+inline status dt_linearised(double p, double v0, double omega0, double& out) noexcept {
+    return static_cast<status>(::dc_dt_linearised(p, v0, omega0, &out));
+}
+
+/// dc_dt_static: throws demcontact::error on a non-OK status.
+inline double dt_static(double p, double alpha, double omega0, double accel) {
+    double out{};
+    detail::check(::dc_dt_static(p, alpha, omega0, accel, &out));
+    return out;
+}
+/// dc_dt_static: returns the status; `out` is written only on status::ok.
+inline status dt_static(double p, double alpha, double omega0, double accel, double& out) noexcept {
+    return static_cast<status>(::dc_dt_static(p, alpha, omega0, accel, &out));
 }
 
 }  // namespace demcontact

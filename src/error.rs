@@ -28,4 +28,6 @@ pub enum Error {
     PairInvalid,
     /// Caller buffers are misaligned for their type or an output overlaps an input.
     BufferLayout,
+    /// A quadrature accuracy level outside the supported range.
+    Level,
 }

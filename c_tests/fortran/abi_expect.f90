@@ -10,24 +10,27 @@ contains
     v(1) = DC_MODEL_POWERLAW
     v(2) = DC_MODEL_HERTZ
     v(3) = DC_MODEL_VISCOELASTIC
-    v(4) = DC_OK
-    v(5) = DC_ERR_NULL_POINTER
-    v(6) = DC_ERR_NOT_FINITE
-    v(7) = DC_ERR_RESTITUTION_RANGE
-    v(8) = DC_ERR_EXPONENT_RANGE
-    v(9) = DC_ERR_NOT_POSITIVE
-    v(10) = DC_ERR_NEGATIVE
-    v(11) = DC_ERR_CRITERION
-    v(12) = DC_ERR_RESULT_RANGE
-    v(13) = DC_ERR_NO_CONVERGENCE
-    v(14) = DC_ERR_BUFFER_TOO_SHORT
-    v(15) = DC_ERR_NO_EVENT
-    v(16) = DC_ERR_PAIR_INVALID
-    v(17) = DC_ERR_BUFFER_LAYOUT
-    v(18) = DC_ERR_INTERNAL
-    v(19) = DC_END_OVERLAP
-    v(20) = DC_END_FORCE
-    n = 20
+    v(4) = DC_LEVEL_MIN
+    v(5) = DC_LEVEL_MAX
+    v(6) = DC_OK
+    v(7) = DC_ERR_NULL_POINTER
+    v(8) = DC_ERR_NOT_FINITE
+    v(9) = DC_ERR_RESTITUTION_RANGE
+    v(10) = DC_ERR_EXPONENT_RANGE
+    v(11) = DC_ERR_NOT_POSITIVE
+    v(12) = DC_ERR_NEGATIVE
+    v(13) = DC_ERR_CRITERION
+    v(14) = DC_ERR_RESULT_RANGE
+    v(15) = DC_ERR_NO_CONVERGENCE
+    v(16) = DC_ERR_BUFFER_TOO_SHORT
+    v(17) = DC_ERR_NO_EVENT
+    v(18) = DC_ERR_PAIR_INVALID
+    v(19) = DC_ERR_BUFFER_LAYOUT
+    v(20) = DC_ERR_LEVEL
+    v(21) = DC_ERR_INTERNAL
+    v(22) = DC_END_OVERLAP
+    v(23) = DC_END_FORCE
+    n = 23
   end subroutine expected_consts
 
   subroutine expected_layout(v, n)
@@ -49,6 +52,15 @@ contains
       v(12) = transfer(c_loc(x_dc_pair%c), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
       v(13) = transfer(c_loc(x_dc_pair%h), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
     end block
-    n = 13
+    block
+      type(dc_energy), target :: x_dc_energy
+      v(14) = c_sizeof(x_dc_energy)
+      v(15) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(16) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(17) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(18) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(19) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+    end block
+    n = 19
   end subroutine expected_layout
 end module abi_expect

@@ -3,33 +3,36 @@
 #include <stddef.h>
 #include <stdint.h>
 
-int32_t dc_probe_n_consts(void) { return 20; }
+int32_t dc_probe_n_consts(void) { return 23; }
 int64_t dc_probe_const(int32_t i) {
   switch (i) {
   case 1: return (int64_t)(DC_MODEL_POWERLAW);
   case 2: return (int64_t)(DC_MODEL_HERTZ);
   case 3: return (int64_t)(DC_MODEL_VISCOELASTIC);
-  case 4: return (int64_t)(DC_OK);
-  case 5: return (int64_t)(DC_ERR_NULL_POINTER);
-  case 6: return (int64_t)(DC_ERR_NOT_FINITE);
-  case 7: return (int64_t)(DC_ERR_RESTITUTION_RANGE);
-  case 8: return (int64_t)(DC_ERR_EXPONENT_RANGE);
-  case 9: return (int64_t)(DC_ERR_NOT_POSITIVE);
-  case 10: return (int64_t)(DC_ERR_NEGATIVE);
-  case 11: return (int64_t)(DC_ERR_CRITERION);
-  case 12: return (int64_t)(DC_ERR_RESULT_RANGE);
-  case 13: return (int64_t)(DC_ERR_NO_CONVERGENCE);
-  case 14: return (int64_t)(DC_ERR_BUFFER_TOO_SHORT);
-  case 15: return (int64_t)(DC_ERR_NO_EVENT);
-  case 16: return (int64_t)(DC_ERR_PAIR_INVALID);
-  case 17: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
-  case 18: return (int64_t)(DC_ERR_INTERNAL);
-  case 19: return (int64_t)(DC_END_OVERLAP);
-  case 20: return (int64_t)(DC_END_FORCE);
+  case 4: return (int64_t)(DC_LEVEL_MIN);
+  case 5: return (int64_t)(DC_LEVEL_MAX);
+  case 6: return (int64_t)(DC_OK);
+  case 7: return (int64_t)(DC_ERR_NULL_POINTER);
+  case 8: return (int64_t)(DC_ERR_NOT_FINITE);
+  case 9: return (int64_t)(DC_ERR_RESTITUTION_RANGE);
+  case 10: return (int64_t)(DC_ERR_EXPONENT_RANGE);
+  case 11: return (int64_t)(DC_ERR_NOT_POSITIVE);
+  case 12: return (int64_t)(DC_ERR_NEGATIVE);
+  case 13: return (int64_t)(DC_ERR_CRITERION);
+  case 14: return (int64_t)(DC_ERR_RESULT_RANGE);
+  case 15: return (int64_t)(DC_ERR_NO_CONVERGENCE);
+  case 16: return (int64_t)(DC_ERR_BUFFER_TOO_SHORT);
+  case 17: return (int64_t)(DC_ERR_NO_EVENT);
+  case 18: return (int64_t)(DC_ERR_PAIR_INVALID);
+  case 19: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
+  case 20: return (int64_t)(DC_ERR_LEVEL);
+  case 21: return (int64_t)(DC_ERR_INTERNAL);
+  case 22: return (int64_t)(DC_END_OVERLAP);
+  case 23: return (int64_t)(DC_END_FORCE);
   default: return INT64_MIN;
   }
 }
-int32_t dc_probe_n_layout(void) { return 13; }
+int32_t dc_probe_n_layout(void) { return 19; }
 int64_t dc_probe_layout(int32_t i) {
   switch (i) {
   case 1: return (int64_t)sizeof(dc_pair);
@@ -45,6 +48,12 @@ int64_t dc_probe_layout(int32_t i) {
   case 11: return (int64_t)offsetof(dc_pair, k);
   case 12: return (int64_t)offsetof(dc_pair, c);
   case 13: return (int64_t)offsetof(dc_pair, h);
+  case 14: return (int64_t)sizeof(dc_energy);
+  case 15: return (int64_t)offsetof(dc_energy, e);
+  case 16: return (int64_t)offsetof(dc_energy, loading);
+  case 17: return (int64_t)offsetof(dc_energy, unloading);
+  case 18: return (int64_t)offsetof(dc_energy, returned);
+  case 19: return (int64_t)offsetof(dc_energy, clamped);
   default: return INT64_MIN;
   }
 }

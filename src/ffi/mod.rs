@@ -13,6 +13,7 @@
 pub mod calibration;
 pub mod force;
 pub mod material;
+pub mod powerlaw;
 pub mod status;
 pub mod step_accuracy;
 pub mod timestep;
@@ -36,6 +37,7 @@ pub(crate) const fn status_of(err: Error) -> i32 {
         Error::NoEvent => DC_ERR_NO_EVENT,
         Error::PairInvalid => DC_ERR_PAIR_INVALID,
         Error::BufferLayout => DC_ERR_BUFFER_LAYOUT,
+        Error::Level => DC_ERR_LEVEL,
     }
 }
 

@@ -3,7 +3,11 @@
 //! * [`roots`]: a bracketed Newton iteration for monotone functions.
 //! * [`ode`]: an adaptive Dormand–Prince 5(4) integrator with event location, used as the
 //!   independent reference that every closed form and quadrature in this crate is checked against.
+//! * [`gamma`]: Re ln Γ(a + ib), for the closed-form contact duration.
+//! * [`jacobi_cc`]: ∫ y^ν f(y) dy by Clenshaw–Curtis with modified moments (the contact times).
 
+pub mod gamma;
+pub mod jacobi_cc;
 pub mod ode;
 pub mod roots;
 

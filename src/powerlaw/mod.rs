@@ -7,11 +7,24 @@
 //! `ω0 x + 2ζ v = 0` (F/m = ω0² A^p x^(qp) + α ω0 A^((p-1)/2) x^(q(p-1)/2) v, and dividing by
 //! A^((p-1)/2) x^(q(p-1)/2) leaves √((p+1)/2)·(ω0² x + 2ζ ω0 v)/ω0), so both end criteria of
 //! every p reduce to [`crate::lsd`] ([`calibration`]).
+//!
+//! The observables of one collision: [`contact`] (validated inputs, the LSD image),
+//! [`overlap`] (δ_max), [`duration`] (τ for both criteria, time of δ_max), [`energy`]
+//! (energy partition), [`trajectory`] (δ, v, F, t sampled over the contact), [`timestep`].
 
 pub mod calibration;
+pub mod contact;
+pub mod duration;
+pub mod energy;
+pub mod overlap;
 pub mod timestep;
+pub mod trajectory;
 pub mod transform;
 
 pub use calibration::{alpha_from_e, e_from_alpha};
+pub use contact::Contact;
+pub use duration::{contact_duration, time_of_max_overlap};
+pub use energy::{energy_partition, EnergyPartition};
+pub use overlap::max_overlap;
 pub use timestep::dt_crit_seed;
 pub use transform::{alpha_from_zeta, check_exponent, damping_scale, transform_a, transform_q, zeta_from_alpha};

@@ -55,3 +55,52 @@ mod tests {
         }
     }
 }
+
+fn finite_positive(ln_dt: f64) -> Result<f64, Error> {
+    let dt = ln_dt.exp();
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(Error::ResultRange);
+    }
+    Ok(dt)
+}
+
+/// 2/ω_lin with ω_lin = ω0 √p δ0^((p−1)/2) the linearised frequency at the undamped maximum
+/// overlap δ0 = ((p+1) v0²/(2ω0²))^(1/(p+1)) (damping only lowers δ_max, so this is the stiffest
+/// point any collision at speed ≤ v0 reaches).
+pub fn dt_linearised(p: f64, v0: f64, omega0: f64) -> Result<f64, Error> {
+    if !v0.is_finite() || !omega0.is_finite() {
+        return Err(Error::NotFinite);
+    }
+    check_exponent(p)?;
+    if !(v0 > 0.0 && omega0 > 0.0) {
+        return Err(Error::NotPositive);
+    }
+    let ln_d0 = ((0.5 * (p + 1.0)).ln() + 2.0 * (v0.ln() - omega0.ln())) / (p + 1.0);
+    finite_positive(core::f64::consts::LN_2 - omega0.ln() - 0.5 * p.ln() - 0.5 * (p - 1.0) * ln_d0)
+}
+
+/// Velocity-Verlet stability limit of a contact pressed by a constant load (accel = load/m > 0):
+/// `(2/ω_eq)(√(1+ζ_eq²) − ζ_eq)`, with δ_eq = (accel/ω0²)^(1/p), ω_eq = ω0 √p δ_eq^((p−1)/2) and
+/// ζ_eq = α/(2√p) the damping ratio of the contact linearised at δ_eq.
+///
+/// Derivation: linearised, x'' = −ω²x − 2ζω v; velocity-Verlet with the dashpot evaluated at the
+/// half-step velocity (LAMMPS/LIGGGHTS) maps (x_{n+1}, v_{n+1/2}) by a matrix with trace
+/// 2 − h²ω² − 2ζhω and determinant 1 − 2ζhω; |λ| ≤ 1 (Jury) fails first at λ = −1, where
+/// h²ω² + 4ζhω = 4. Damping *lowers* the limit.
+pub fn dt_static(p: f64, alpha: f64, omega0: f64, accel: f64) -> Result<f64, Error> {
+    if !accel.is_finite() || !omega0.is_finite() || !alpha.is_finite() {
+        return Err(Error::NotFinite);
+    }
+    check_exponent(p)?;
+    if !(accel > 0.0 && omega0 > 0.0) {
+        return Err(Error::NotPositive);
+    }
+    if alpha < 0.0 {
+        return Err(Error::Negative);
+    }
+    let ln_deq = (accel.ln() - 2.0 * omega0.ln()) / p;
+    let z = alpha / (2.0 * p.sqrt());
+    // √(1+ζ²) − ζ = 1/(√(1+ζ²) + ζ): no cancellation for large ζ.
+    let factor = 1.0 / (z.hypot(1.0) + z);
+    finite_positive(core::f64::consts::LN_2 + factor.ln() - omega0.ln() - 0.5 * p.ln() - 0.5 * (p - 1.0) * ln_deq)
+}

@@ -1,0 +1,60 @@
+//! The power-law observable exports never allocate: every export, on valid and invalid inputs
+//! (including overdamped, NaN, null pointers, short buffers), under a counting allocator.
+
+mod alloc_counter;
+use alloc_counter::{assert_counter_works, count_allocations, Counting};
+use demcontact::ffi::{powerlaw::*, status::*, timestep::*};
+
+#[global_allocator]
+static ALLOC: Counting = Counting;
+
+const INPUTS: [f64; 10] = [-1.0, 0.0, 1e-300, 0.3, 1.0, 1.5, 4.0, 1e300, f64::NAN, f64::INFINITY];
+
+#[test]
+fn powerlaw_exports_do_not_allocate() {
+    assert_counter_works();
+    let mut calls = 0usize;
+    let (mut t, mut d, mut v, mut f) = ([0.0f64; 64], [0.0f64; 64], [0.0f64; 64], [0.0f64; 64]);
+    let n = count_allocations(|| {
+        let mut out = 0.0f64;
+        let mut en = dc_energy::default();
+        for &p in &INPUTS {
+            for &alpha in &INPUTS {
+                for &v0 in &[0.5, f64::NAN, -1.0] {
+                    for crit in [DC_END_OVERLAP, DC_END_FORCE, 9] {
+                        unsafe {
+                            std::hint::black_box(dc_max_overlap(p, alpha, v0, 3.0, &mut out));
+                            std::hint::black_box(dc_time_of_max_overlap(p, alpha, v0, 3.0, &mut out));
+                            std::hint::black_box(dc_contact_duration(p, alpha, v0, 3.0, crit, &mut out));
+                            std::hint::black_box(dc_contact_duration(p, alpha, v0, 3.0, crit, std::ptr::null_mut()));
+                            for lv in [-1, 0, 2, 4, 5] {
+                                std::hint::black_box(dc_contact_duration_level(p, alpha, v0, 3.0, crit, lv, &mut out));
+                            }
+                            std::hint::black_box(dc_energy_partition(p, alpha, crit, &mut en));
+                            for (nn, len) in [(64, 64), (0, 64), (65, 64), (2, 2), (1, 1)] {
+                                std::hint::black_box(dc_contact_trajectory(
+                                    p, alpha, v0, 3.0, 0.7, crit, 3, nn,
+                                    t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), len,
+                                ));
+                            }
+                            std::hint::black_box(dc_contact_trajectory(
+                                p, alpha, v0, 3.0, 0.7, crit, 3, 8,
+                                t.as_mut_ptr(), std::ptr::null_mut(), v.as_mut_ptr(), f.as_mut_ptr(), 8,
+                            ));
+                        }
+                        calls += 16;
+                    }
+                }
+                unsafe {
+                    std::hint::black_box(dc_omega0(p, alpha, &mut out));
+                    std::hint::black_box(dc_dt_linearised(p, alpha, 2.0, &mut out));
+                    std::hint::black_box(dc_dt_static(p, alpha, 2.0, 9.81, &mut out));
+                    std::hint::black_box(dc_dt_static(p, alpha, 2.0, 9.81, std::ptr::null_mut()));
+                }
+                calls += 4;
+            }
+        }
+    });
+    assert_eq!(n, 0, "power-law exports allocated {n} times in {calls} calls");
+    println!("no_alloc_powerlaw: {calls} calls, 0 allocations");
+}
