@@ -4,8 +4,7 @@ use crate::plot::{figure, Kind, Panel, Res, Series};
 use crate::reference;
 use crate::Report;
 use demcontact::force::powerlaw::powerlaw_from_alpha;
-use demcontact::lsd::decay_to_turning_point;
-use demcontact::powerlaw::{alpha_from_e, damping_scale, e_from_alpha, transform_a, transform_q};
+use demcontact::powerlaw::{alpha_from_e, e_from_alpha};
 use demcontact::timestep::{collide, Scheme};
 use demcontact::EndCriterion;
 use plotters::prelude::SeriesLabelPosition;
@@ -45,10 +44,7 @@ fn powerlaw_rows(rows: &mut Vec<Row>) -> Res<()> {
     let (p, e_t, crit) = (1.5, 0.5, EndCriterion::Force);
     let alpha = alpha_from_e(e_t, p, crit)?;
     let truth = reference::collide(p, alpha, 1.0, 1.0, crit, 1e-13).ok_or("reference")?;
-    let z = alpha / damping_scale(p);
-    let dmax_closed = || transform_a(p) * (-transform_q(p) * decay_to_turning_point(black_box(z))).exp();
     rows.push(Row { quantity: "e", method: "closed form e_from_alpha".into(), family: "closed form", ns: ns_per_call(|| e_from_alpha(black_box(alpha), p, crit).unwrap_or(0.0)), err: rel(e_from_alpha(alpha, p, crit)?, e_t) });
-    rows.push(Row { quantity: "δ_max", method: "closed form A·exp(−q g(ζ))".into(), family: "closed form", ns: ns_per_call(dmax_closed), err: rel(dmax_closed(), truth.delta_max) });
     for &rtol in &[1e-4, 1e-6, 1e-8, 1e-10, 1e-12] {
         let r = reference::collide(p, alpha, 1.0, 1.0, crit, rtol).ok_or("reference")?;
         let ns = ns_per_call(|| reference::collide(p, black_box(alpha), 1.0, 1.0, crit, rtol).map_or(0.0, |r| r.e));
@@ -85,8 +81,10 @@ pub fn run(rep: &mut Report) -> Res<()> {
     writeln!(md, "## 1. Cost against error\n")?;
     writeln!(
         md,
-        "Power-law rows: one Hertz-exponent collision (p = 3/2, e = 0.5, DC_END_FORCE, v0 = ω0 = 1). Truth: the \
-calibrated e itself (exact by construction), and δ_max, τ from the reference at rtol 1e-13. A velocity-Verlet row \
+        "Power-law rows: one Hertz-exponent collision (p = 3/2, e = 0.5, DC_END_FORCE unless the row says overlap end, \
+v0 = ω0 = 1). Truth: the calibrated e itself (exact by construction), and δ_max, τ from the reference at rtol 1e-13 \
+(so errors below ~1e-13 are the reference's own). Closed-form and quadrature rows include `Contact::new` (the \
+validated set-up of one collision). A velocity-Verlet row \
 costs one whole simulated collision; its error is the worst over 16 start phases.\n"
     )?;
     writeln!(md, "| quantity | method | ns per call | relative error |\n|---|---|---|---|")?;
@@ -130,7 +128,44 @@ costs one whole simulated collision; its error is the worst over 16 start phases
     Ok(())
 }
 
-/// Rows from the contact-calculus and viscoelastic modules (added when those land).
-fn extra_rows(_rows: &mut Vec<Row>) -> Res<()> {
+/// Rows from the contact calculus (issue 3): δ_max in closed form, τ under the force end by
+/// Jacobi–Clenshaw–Curtis quadrature at levels 0..=4 and under the overlap end in closed form
+/// (complex log-gamma), against the reference.
+fn calculus_rows(rows: &mut Vec<Row>) -> Res<()> {
+    use demcontact::numerics::jacobi_cc::evaluations;
+    use demcontact::powerlaw::{contact_duration, max_overlap, Contact};
+    let p = 1.5;
+    for (crit, e_t, q) in [(EndCriterion::Force, 0.5, "τ (force end)"), (EndCriterion::Overlap, 0.5, "τ (overlap end)")] {
+        let alpha = alpha_from_e(e_t, p, crit)?;
+        let truth = reference::collide(p, alpha, 1.0, 1.0, crit, 1e-13).ok_or("reference")?;
+        let c = Contact::new(p, alpha, 1.0, 1.0)?;
+        if crit == EndCriterion::Force {
+            let ns = ns_per_call(|| Contact::new(p, black_box(alpha), 1.0, 1.0).and_then(|c| max_overlap(&c)).unwrap_or(0.0));
+            rows.push(Row { quantity: "δ_max", method: "max_overlap (closed form, with Contact::new)".into(), family: "closed form", ns, err: rel(max_overlap(&c)?, truth.delta_max) });
+            for level in 0..=4u32 {
+                let ns = ns_per_call(|| Contact::new(p, black_box(alpha), 1.0, 1.0).and_then(|c| contact_duration(&c, crit, level)).unwrap_or(0.0));
+                rows.push(Row {
+                    quantity: q,
+                    method: format!("contact_duration, quadrature level {level} ({} evaluations)", evaluations(level)),
+                    family: "quadrature",
+                    ns,
+                    err: rel(contact_duration(&c, crit, level)?, truth.tau),
+                });
+            }
+        } else {
+            let ns = ns_per_call(|| Contact::new(p, black_box(alpha), 1.0, 1.0).and_then(|c| contact_duration(&c, crit, 4)).unwrap_or(0.0));
+            rows.push(Row { quantity: q, method: "contact_duration (closed form, complex log-gamma)".into(), family: "closed form", ns, err: rel(contact_duration(&c, crit, 4)?, truth.tau) });
+            for &rtol in &[1e-4, 1e-8, 1e-12] {
+                let r = reference::collide(p, alpha, 1.0, 1.0, crit, rtol).ok_or("reference")?;
+                let ns = ns_per_call(|| reference::collide(p, black_box(alpha), 1.0, 1.0, crit, rtol).map_or(0.0, |r| r.tau));
+                rows.push(Row { quantity: q, method: format!("ODE reference rtol {rtol:.0e}"), family: "ODE reference", ns, err: rel(r.tau, truth.tau) });
+            }
+        }
+    }
     Ok(())
+}
+
+/// Rows from the viscoelastic module (issue 5), added when it lands.
+fn extra_rows(rows: &mut Vec<Row>) -> Res<()> {
+    calculus_rows(rows)
 }

@@ -5,7 +5,7 @@ use crate::reference;
 use crate::Report;
 use demcontact::force::powerlaw::powerlaw_from_alpha;
 use demcontact::lsd::{decay_to_turning_point, zeta_overlap};
-use demcontact::powerlaw::{alpha_from_e, alpha_from_zeta, damping_scale, transform_q};
+use demcontact::powerlaw::{alpha_from_e, alpha_from_zeta, contact_duration, damping_scale, transform_q, Contact};
 use demcontact::timestep::{collide, Scheme};
 use demcontact::EndCriterion;
 use plotters::prelude::SeriesLabelPosition;
@@ -110,15 +110,25 @@ pub fn run(rep: &mut Report) -> Res<()> {
             let t0 = reference::collide(p, 0.0, 1.0, 1.0, crit, 1e-11).ok_or("reference")?.tau;
             let pts: Vec<(f64, f64)> = zs
                 .iter()
+                .step_by(3)
                 .map(|&z| (z, reference::collide(p, alpha_from_zeta(z, p), 1.0, 1.0, crit, 1e-11).map_or(f64::NAN, |r| r.tau / t0)))
                 .collect();
-            pn.add(Series::new(format!("p = {p}"), pts, Kind::LinePoints, i));
+            let fine = linspace(0.0, zmax, 120);
+            let lib: Vec<(f64, f64)> = fine
+                .iter()
+                .map(|&z| {
+                    let c = Contact::new(p, alpha_from_zeta(z, p), 1.0, 1.0);
+                    (z, c.and_then(|c| contact_duration(&c, crit, 4)).map_or(f64::NAN, |t| t / t0))
+                })
+                .collect();
+            pn.add(Series::new(format!("p = {p}: contact_duration"), lib, Kind::Line, i));
+            pn.add(Series::new("", pts, Kind::Points, i));
         }
         panels.push(pn);
     }
     let file = "seed_tau_vs_zeta.png";
     figure(&rep.fig_path(file), &panels, 2, (600, 440))?;
-    rep.figure(&mut md, file, "contact duration relative to the undamped one, against ζ (reference)", "read that under the overlap end τ diverges at critical damping (ζ → 1) while under the force end it shrinks with damping for all ζ, and that the ratio depends on p only weakly.")?;
+    rep.figure(&mut md, file, "contact duration relative to the undamped one, against ζ (lines: library, markers: reference)", "read that under the overlap end τ diverges at critical damping (ζ → 1) while under the force end it shrinks with damping for all ζ, and that the ratio depends on p only weakly.")?;
 
     // 3.5 Phase portrait, p = 3/2.
     let mut panels = Vec::new();
