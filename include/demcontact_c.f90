@@ -312,6 +312,92 @@ module demcontact_c
       import
       type(c_ptr) :: dc_version
     end function dc_version
+    function dc_viscoelastic_e(b, criterion, e_out) bind(c, name='dc_viscoelastic_e')
+      import
+      real(c_double), value, intent(in) :: b
+      integer(c_int32_t), value, intent(in) :: criterion
+      real(c_double), intent(out) :: e_out
+      integer(c_int32_t) :: dc_viscoelastic_e
+    end function dc_viscoelastic_e
+    function dc_viscoelastic_e_series(b, criterion, e_out) bind(c, name='dc_viscoelastic_e_series')
+      import
+      real(c_double), value, intent(in) :: b
+      integer(c_int32_t), value, intent(in) :: criterion
+      real(c_double), intent(out) :: e_out
+      integer(c_int32_t) :: dc_viscoelastic_e_series
+    end function dc_viscoelastic_e_series
+    function dc_viscoelastic_e_reference(b, criterion, e_out) bind(c, &
+        name='dc_viscoelastic_e_reference')
+      import
+      real(c_double), value, intent(in) :: b
+      integer(c_int32_t), value, intent(in) :: criterion
+      real(c_double), intent(out) :: e_out
+      integer(c_int32_t) :: dc_viscoelastic_e_reference
+    end function dc_viscoelastic_e_reference
+    function dc_viscoelastic_b(k, gamma, v, b_out) bind(c, name='dc_viscoelastic_b')
+      import
+      real(c_double), value, intent(in) :: k
+      real(c_double), value, intent(in) :: gamma
+      real(c_double), value, intent(in) :: v
+      real(c_double), intent(out) :: b_out
+      integer(c_int32_t) :: dc_viscoelastic_b
+    end function dc_viscoelastic_b
+    function dc_viscoelastic_e_of_speed(k, gamma, v, criterion, e_out) bind(c, &
+        name='dc_viscoelastic_e_of_speed')
+      import
+      real(c_double), value, intent(in) :: k
+      real(c_double), value, intent(in) :: gamma
+      real(c_double), value, intent(in) :: v
+      integer(c_int32_t), value, intent(in) :: criterion
+      real(c_double), intent(out) :: e_out
+      integer(c_int32_t) :: dc_viscoelastic_e_of_speed
+    end function dc_viscoelastic_e_of_speed
+    function dc_viscoelastic_k_gamma(rho, a, m_eff, k_out, gamma_out) bind(c, &
+        name='dc_viscoelastic_k_gamma')
+      import
+      real(c_double), value, intent(in) :: rho
+      real(c_double), value, intent(in) :: a
+      real(c_double), value, intent(in) :: m_eff
+      real(c_double), intent(out) :: k_out
+      real(c_double), intent(out) :: gamma_out
+      integer(c_int32_t) :: dc_viscoelastic_k_gamma
+    end function dc_viscoelastic_k_gamma
+    function dc_viscoelastic_b_from_e(e, criterion, b_out) bind(c, name='dc_viscoelastic_b_from_e')
+      import
+      real(c_double), value, intent(in) :: e
+      integer(c_int32_t), value, intent(in) :: criterion
+      real(c_double), intent(out) :: b_out
+      integer(c_int32_t) :: dc_viscoelastic_b_from_e
+    end function dc_viscoelastic_b_from_e
+    function dc_viscoelastic_beta_from_e(e, v_ref, criterion, beta_out) bind(c, &
+        name='dc_viscoelastic_beta_from_e')
+      import
+      real(c_double), value, intent(in) :: e
+      real(c_double), value, intent(in) :: v_ref
+      integer(c_int32_t), value, intent(in) :: criterion
+      real(c_double), intent(out) :: beta_out
+      integer(c_int32_t) :: dc_viscoelastic_beta_from_e
+    end function dc_viscoelastic_beta_from_e
+    function dc_viscoelastic_a_from_e(e, v_ref, rho, m_eff, criterion, a_out) bind(c, &
+        name='dc_viscoelastic_a_from_e')
+      import
+      real(c_double), value, intent(in) :: e
+      real(c_double), value, intent(in) :: v_ref
+      real(c_double), value, intent(in) :: rho
+      real(c_double), value, intent(in) :: m_eff
+      integer(c_int32_t), value, intent(in) :: criterion
+      real(c_double), intent(out) :: a_out
+      integer(c_int32_t) :: dc_viscoelastic_a_from_e
+    end function dc_viscoelastic_a_from_e
+    function dc_viscoelastic_speed_for_e(e, beta, criterion, v_out) bind(c, &
+        name='dc_viscoelastic_speed_for_e')
+      import
+      real(c_double), value, intent(in) :: e
+      real(c_double), value, intent(in) :: beta
+      integer(c_int32_t), value, intent(in) :: criterion
+      real(c_double), intent(out) :: v_out
+      integer(c_int32_t) :: dc_viscoelastic_speed_for_e
+    end function dc_viscoelastic_speed_for_e
   end interface
 
 contains
@@ -594,6 +680,122 @@ contains
     if (present(stat)) stat = s
     if (s /= DC_OK) dt_out = ieee_value(dt_out, ieee_quiet_nan)
   end subroutine dt_static
+
+  !> Elemental form of dc_viscoelastic_e: on error `e_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine viscoelastic_e(b, criterion, e_out, stat)
+    real(c_double), intent(in) :: b
+    integer(c_int32_t), intent(in) :: criterion
+    real(c_double), intent(out) :: e_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_viscoelastic_e(b, criterion, e_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) e_out = ieee_value(e_out, ieee_quiet_nan)
+  end subroutine viscoelastic_e
+
+  !> Elemental form of dc_viscoelastic_e_series: on error `e_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine viscoelastic_e_series(b, criterion, e_out, stat)
+    real(c_double), intent(in) :: b
+    integer(c_int32_t), intent(in) :: criterion
+    real(c_double), intent(out) :: e_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_viscoelastic_e_series(b, criterion, e_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) e_out = ieee_value(e_out, ieee_quiet_nan)
+  end subroutine viscoelastic_e_series
+
+  !> Elemental form of dc_viscoelastic_e_reference: on error `e_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine viscoelastic_e_reference(b, criterion, e_out, stat)
+    real(c_double), intent(in) :: b
+    integer(c_int32_t), intent(in) :: criterion
+    real(c_double), intent(out) :: e_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_viscoelastic_e_reference(b, criterion, e_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) e_out = ieee_value(e_out, ieee_quiet_nan)
+  end subroutine viscoelastic_e_reference
+
+  !> Elemental form of dc_viscoelastic_b: on error `b_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine viscoelastic_b(k, gamma, v, b_out, stat)
+    real(c_double), intent(in) :: k
+    real(c_double), intent(in) :: gamma
+    real(c_double), intent(in) :: v
+    real(c_double), intent(out) :: b_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_viscoelastic_b(k, gamma, v, b_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) b_out = ieee_value(b_out, ieee_quiet_nan)
+  end subroutine viscoelastic_b
+
+  !> Elemental form of dc_viscoelastic_e_of_speed: on error `e_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine viscoelastic_e_of_speed(k, gamma, v, criterion, e_out, stat)
+    real(c_double), intent(in) :: k
+    real(c_double), intent(in) :: gamma
+    real(c_double), intent(in) :: v
+    integer(c_int32_t), intent(in) :: criterion
+    real(c_double), intent(out) :: e_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_viscoelastic_e_of_speed(k, gamma, v, criterion, e_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) e_out = ieee_value(e_out, ieee_quiet_nan)
+  end subroutine viscoelastic_e_of_speed
+
+  !> Elemental form of dc_viscoelastic_b_from_e: on error `b_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine viscoelastic_b_from_e(e, criterion, b_out, stat)
+    real(c_double), intent(in) :: e
+    integer(c_int32_t), intent(in) :: criterion
+    real(c_double), intent(out) :: b_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_viscoelastic_b_from_e(e, criterion, b_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) b_out = ieee_value(b_out, ieee_quiet_nan)
+  end subroutine viscoelastic_b_from_e
+
+  !> Elemental form of dc_viscoelastic_beta_from_e: on error `beta_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine viscoelastic_beta_from_e(e, v_ref, criterion, beta_out, stat)
+    real(c_double), intent(in) :: e
+    real(c_double), intent(in) :: v_ref
+    integer(c_int32_t), intent(in) :: criterion
+    real(c_double), intent(out) :: beta_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_viscoelastic_beta_from_e(e, v_ref, criterion, beta_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) beta_out = ieee_value(beta_out, ieee_quiet_nan)
+  end subroutine viscoelastic_beta_from_e
+
+  !> Elemental form of dc_viscoelastic_a_from_e: on error `a_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine viscoelastic_a_from_e(e, v_ref, rho, m_eff, criterion, a_out, stat)
+    real(c_double), intent(in) :: e
+    real(c_double), intent(in) :: v_ref
+    real(c_double), intent(in) :: rho
+    real(c_double), intent(in) :: m_eff
+    integer(c_int32_t), intent(in) :: criterion
+    real(c_double), intent(out) :: a_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_viscoelastic_a_from_e(e, v_ref, rho, m_eff, criterion, a_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) a_out = ieee_value(a_out, ieee_quiet_nan)
+  end subroutine viscoelastic_a_from_e
+
+  !> Elemental form of dc_viscoelastic_speed_for_e: on error `v_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine viscoelastic_speed_for_e(e, beta, criterion, v_out, stat)
+    real(c_double), intent(in) :: e
+    real(c_double), intent(in) :: beta
+    integer(c_int32_t), intent(in) :: criterion
+    real(c_double), intent(out) :: v_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_viscoelastic_speed_for_e(e, beta, criterion, v_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) v_out = ieee_value(v_out, ieee_quiet_nan)
+  end subroutine viscoelastic_speed_for_e
 
   !> Elemental form of dc_normal_force (pure: arrays of contacts in one call).
   elemental function normal_force(pair, overlap, vn, r_eff, m_eff) result(r)

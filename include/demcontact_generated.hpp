@@ -255,4 +255,103 @@ inline status dt_static(double p, double alpha, double omega0, double accel, dou
     return static_cast<status>(::dc_dt_static(p, alpha, omega0, accel, &out));
 }
 
+/// dc_viscoelastic_e: throws demcontact::error on a non-OK status.
+inline double viscoelastic_e(double b, criterion criterion_) {
+    double out{};
+    detail::check(::dc_viscoelastic_e(b, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_viscoelastic_e: returns the status; `out` is written only on status::ok.
+inline status viscoelastic_e(double b, criterion criterion_, double& out) noexcept {
+    return static_cast<status>(::dc_viscoelastic_e(b, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_viscoelastic_e_series: throws demcontact::error on a non-OK status.
+inline double viscoelastic_e_series(double b, criterion criterion_) {
+    double out{};
+    detail::check(::dc_viscoelastic_e_series(b, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_viscoelastic_e_series: returns the status; `out` is written only on status::ok.
+inline status viscoelastic_e_series(double b, criterion criterion_, double& out) noexcept {
+    return static_cast<status>(::dc_viscoelastic_e_series(b, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_viscoelastic_e_reference: throws demcontact::error on a non-OK status.
+inline double viscoelastic_e_reference(double b, criterion criterion_) {
+    double out{};
+    detail::check(::dc_viscoelastic_e_reference(b, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_viscoelastic_e_reference: returns the status; `out` is written only on status::ok.
+inline status viscoelastic_e_reference(double b, criterion criterion_, double& out) noexcept {
+    return static_cast<status>(::dc_viscoelastic_e_reference(b, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_viscoelastic_b: throws demcontact::error on a non-OK status.
+inline double viscoelastic_b(double k, double gamma, double v) {
+    double out{};
+    detail::check(::dc_viscoelastic_b(k, gamma, v, &out));
+    return out;
+}
+/// dc_viscoelastic_b: returns the status; `out` is written only on status::ok.
+inline status viscoelastic_b(double k, double gamma, double v, double& out) noexcept {
+    return static_cast<status>(::dc_viscoelastic_b(k, gamma, v, &out));
+}
+
+/// dc_viscoelastic_e_of_speed: throws demcontact::error on a non-OK status.
+inline double viscoelastic_e_of_speed(double k, double gamma, double v, criterion criterion_) {
+    double out{};
+    detail::check(::dc_viscoelastic_e_of_speed(k, gamma, v, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_viscoelastic_e_of_speed: returns the status; `out` is written only on status::ok.
+inline status viscoelastic_e_of_speed(double k, double gamma, double v, criterion criterion_, double& out) noexcept {
+    return static_cast<status>(::dc_viscoelastic_e_of_speed(k, gamma, v, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_viscoelastic_b_from_e: throws demcontact::error on a non-OK status.
+inline double viscoelastic_b_from_e(double e, criterion criterion_) {
+    double out{};
+    detail::check(::dc_viscoelastic_b_from_e(e, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_viscoelastic_b_from_e: returns the status; `out` is written only on status::ok.
+inline status viscoelastic_b_from_e(double e, criterion criterion_, double& out) noexcept {
+    return static_cast<status>(::dc_viscoelastic_b_from_e(e, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_viscoelastic_beta_from_e: throws demcontact::error on a non-OK status.
+inline double viscoelastic_beta_from_e(double e, double v_ref, criterion criterion_) {
+    double out{};
+    detail::check(::dc_viscoelastic_beta_from_e(e, v_ref, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_viscoelastic_beta_from_e: returns the status; `out` is written only on status::ok.
+inline status viscoelastic_beta_from_e(double e, double v_ref, criterion criterion_, double& out) noexcept {
+    return static_cast<status>(::dc_viscoelastic_beta_from_e(e, v_ref, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_viscoelastic_a_from_e: throws demcontact::error on a non-OK status.
+inline double viscoelastic_a_from_e(double e, double v_ref, double rho, double m_eff, criterion criterion_) {
+    double out{};
+    detail::check(::dc_viscoelastic_a_from_e(e, v_ref, rho, m_eff, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_viscoelastic_a_from_e: returns the status; `out` is written only on status::ok.
+inline status viscoelastic_a_from_e(double e, double v_ref, double rho, double m_eff, criterion criterion_, double& out) noexcept {
+    return static_cast<status>(::dc_viscoelastic_a_from_e(e, v_ref, rho, m_eff, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_viscoelastic_speed_for_e: throws demcontact::error on a non-OK status.
+inline double viscoelastic_speed_for_e(double e, double beta, criterion criterion_) {
+    double out{};
+    detail::check(::dc_viscoelastic_speed_for_e(e, beta, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_viscoelastic_speed_for_e: returns the status; `out` is written only on status::ok.
+inline status viscoelastic_speed_for_e(double e, double beta, criterion criterion_, double& out) noexcept {
+    return static_cast<status>(::dc_viscoelastic_speed_for_e(e, beta, static_cast<std::int32_t>(criterion_), &out));
+}
+
 }  // namespace demcontact

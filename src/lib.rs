@@ -11,6 +11,8 @@
 //! * [`material`]: Hertz stiffness from two spheres' E, ν, R.
 //! * [`timestep`]: a contact integrated as DEM hosts do (velocity-Verlet, symplectic Euler) with
 //!   the library's kernels, and the largest step for a tolerance on the realised restitution.
+//! * [`viscoelastic`]: speed-dependent restitution of viscoelastic Hertz spheres, e(β v^{1/5}),
+//!   in three tiers (published series, full-range tables, reference integration), and calibration.
 //! * [`numerics`]: root finding and the reference ODE integrator used to check everything else.
 //! * [`ffi`]: the `extern "C"` functions exported as `include/demcontact.h`.
 
@@ -23,6 +25,7 @@ pub mod material;
 pub mod numerics;
 pub mod powerlaw;
 pub mod timestep;
+pub mod viscoelastic;
 
 pub use criterion::EndCriterion;
 pub use error::Error;

@@ -1,7 +1,7 @@
 //! The speed/accuracy report: `cargo run --release --example report` writes docs/report.md and
-#![allow(missing_docs)]
 //! docs/figures/*.png (run from the repository root). Everything is recomputed by the library;
 //! timings use std::time::Instant over many repetitions on the machine that runs it.
+#![allow(missing_docs)]
 
 mod costs;
 mod dtstudy;

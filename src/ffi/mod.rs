@@ -18,6 +18,7 @@ pub mod status;
 pub mod step_accuracy;
 pub mod timestep;
 pub mod version;
+pub mod viscoelastic;
 
 use crate::{EndCriterion, Error};
 use status::*;

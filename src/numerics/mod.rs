@@ -5,10 +5,13 @@
 //!   independent reference that every closed form and quadrature in this crate is checked against.
 //! * [`gamma`]: Re ln Γ(a + ib), for the closed-form contact duration.
 //! * [`jacobi_cc`]: ∫ y^ν f(y) dy by Clenshaw–Curtis with modified moments (the contact times).
+//! * [`taylor`]: Taylor-series (automatic differentiation) building blocks over real or complex
+//!   numbers, for the viscoelastic reference integrator.
 
 pub mod gamma;
 pub mod jacobi_cc;
 pub mod ode;
 pub mod roots;
+pub mod taylor;
 
 pub use roots::newton_bracketed;
