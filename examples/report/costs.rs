@@ -165,7 +165,32 @@ fn calculus_rows(rows: &mut Vec<Row>) -> Res<()> {
     Ok(())
 }
 
-/// Rows from the viscoelastic module (issue 5), added when it lands.
+/// Rows from the viscoelastic module (issue 5): e(b) by the published series, the full-range
+/// Chebyshev tables and the reference integrator at several tolerances; truth = the reference at
+/// its default tolerance.
+fn viscoelastic_rows(rows: &mut Vec<Row>) -> Res<()> {
+    use demcontact::viscoelastic::full_range::e_full;
+    use demcontact::viscoelastic::reference::{e_reference, e_reference_tol};
+    use demcontact::viscoelastic::series::e_series;
+    let crit = EndCriterion::Force;
+    for (b, q) in [(0.1, "viscoelastic e(b = 0.1), force end"), (0.6, "viscoelastic e(b = 0.6), force end")] {
+        let truth = e_reference(b, crit)?;
+        rows.push(Row { quantity: q, method: "published series (Schwager & Pöschel)".into(), family: "series", ns: ns_per_call(|| e_series(black_box(b), crit).unwrap_or(0.0)), err: rel(e_series(b, crit)?, truth) });
+        rows.push(Row { quantity: q, method: "full-range Chebyshev tables".into(), family: "tables", ns: ns_per_call(|| e_full(black_box(b), crit).unwrap_or(0.0)), err: rel(e_full(b, crit)?, truth) });
+        for &tol in &[1e-6, 1e-10, 1e-14] {
+            rows.push(Row {
+                quantity: q,
+                method: format!("reference integrator, tol {tol:.0e}"),
+                family: "reference integrator",
+                ns: ns_per_call(|| e_reference_tol(black_box(b), crit, tol).unwrap_or(0.0)),
+                err: rel(e_reference_tol(b, crit, tol)?, truth),
+            });
+        }
+    }
+    Ok(())
+}
+
 fn extra_rows(rows: &mut Vec<Row>) -> Res<()> {
-    calculus_rows(rows)
+    calculus_rows(rows)?;
+    viscoelastic_rows(rows)
 }

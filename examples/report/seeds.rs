@@ -180,6 +180,29 @@ pub fn run(rep: &mut Report) -> Res<()> {
     figure(&rep.fig_path(file), &[pn], 1, (640, 440))?;
     rep.figure(&mut md, file, "the universal factor f(p)", "read f(p) to convert an LSD damping ratio into α for any p; markers are α found by shooting the reference to e = 0.5, divided by the LSD's ζ.")?;
 
+    // 3.7 Viscoelastic e(v): the published series beside the full-range evaluation.
+    {
+        use demcontact::viscoelastic::full_range::e_full;
+        use demcontact::viscoelastic::reference::e_reference;
+        use demcontact::viscoelastic::series::e_series;
+        let mut panels = Vec::new();
+        for (crit, name) in CRITS {
+            let mut pn = Panel::new(format!("viscoelastic spheres, {name}"), "b = β v^(1/5) (dimensionless; v impact speed)", "restitution e (dimensionless)")
+                .log(true, false)
+                .yrange(0.0, 1.05)
+                .legend(SeriesLabelPosition::LowerLeft);
+            let bs: Vec<f64> = (0..=120).map(|i| 10f64.powf(-3.0 + 5.0 * i as f64 / 120.0)).collect();
+            pn.add(Series::new("full range (Chebyshev tables)", bs.iter().map(|&b| (b, e_full(b, crit).unwrap_or(f64::NAN))).collect(), Kind::Line, 0));
+            pn.add(Series::new("published series", bs.iter().filter(|&&b| b <= 1.6).map(|&b| (b, e_series(b, crit).unwrap_or(f64::NAN))).collect(), Kind::Dashed, 1));
+            let marks: Vec<(f64, f64)> = [1e-3, 1e-2, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0].iter().map(|&b| (b, e_reference(b, crit).unwrap_or(f64::NAN))).collect();
+            pn.add(Series::new("reference integrator", marks, Kind::Points, 2));
+            panels.push(pn);
+        }
+        let file = "seed_viscoelastic_e.png";
+        figure(&rep.fig_path(file), &panels, 2, (620, 460))?;
+        rep.figure(&mut md, file, "viscoelastic restitution against b = β v^(1/5): series beside full range", "read where the published series stops being usable (it leaves the full-range curve near b ≈ 0.8 and diverges beyond b ≈ 1), and that the full-range tables follow the reference to the largest b.")?;
+    }
+
     // 3.8 Realised e against target e in a clamping solver.
     let mut pn = Panel::new("clamping solver (attractive force clamped), velocity-Verlet dt = τ/2000", "target restitution e (dimensionless)", "realised restitution (dimensionless)")
         .legend(SeriesLabelPosition::UpperLeft);

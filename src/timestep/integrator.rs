@@ -131,9 +131,11 @@ pub fn collide(
 }
 
 /// A resting contact under a constant load: the body is pressed with acceleration `g` > 0 (load
-/// per effective mass) and starts at rest at `start` × the overlap where F = m g (found by the
-/// caller; a value slightly off 1 perturbs it). Returns `true` when the overlap stays within
-/// (0, 3·start·δ_eq) for `steps` steps, i.e. the integration is stable at this `dt`.
+/// per effective mass) and starts at rest at `start` × `delta_eq`, the overlap where F = m g
+/// (found by the caller; a value slightly off 1 perturbs it). Returns `true` when the integration
+/// is stable at this `dt`: over the second half of `steps` steps the deviation |δ − δ_eq| never
+/// exceeds 10 × the initial one (a growing mode would; a clamped pair can otherwise hide the
+/// instability in a bounded but large limit cycle), and δ stays positive throughout.
 #[allow(clippy::too_many_arguments)] // the contact's parameters, each used once
 pub fn resting_contact_stable(
     pair: &PairModel,
@@ -149,8 +151,8 @@ pub fn resting_contact_stable(
     let force = |d: f64, v: f64| normal_force_raw(pair.kernel, pair.consts, d, v, r, m);
     let (mut d, mut v) = (start * delta_eq, 0.0);
     let mut a = g - force(d, v) / m;
-    let bound = 3.0 * start * delta_eq;
-    for _ in 0..steps {
+    let bound = 10.0 * ((start - 1.0) * delta_eq).abs();
+    for n in 0..steps {
         match scheme {
             Scheme::VelocityVerlet => {
                 d += v * dt + 0.5 * a * dt * dt;
@@ -164,7 +166,7 @@ pub fn resting_contact_stable(
                 a = g - force(d, v) / m;
             }
         }
-        if !(d > 0.0 && d < bound) {
+        if !(d > 0.0) || (n >= steps / 2 && !((d - delta_eq).abs() <= bound)) {
             return false;
         }
     }
@@ -185,5 +187,18 @@ mod tests {
         assert!((c.duration - core::f64::consts::FRAC_PI_2).abs() < 1e-4, "{}", c.duration);
         assert!((c.e - 1.0).abs() < 1e-6, "{}", c.e);
         assert!((c.delta_max - 0.15).abs() < 1e-6, "{}", c.delta_max);
+    }
+
+    #[test]
+    fn resting_contact_limit_matches_linear_theory() {
+        // Independent: the linear analysis of velocity-Verlet with half-step damping
+        // (powerlaw::timestep::dt_static). Load g = 1, k = 1: δ_eq = 1.
+        for &(p, e) in &[(1.0, 0.3), (1.5, 0.1), (1.5, 0.8), (3.0, 0.5)] {
+            let pair = powerlaw(p, 1.0, e, EndCriterion::Force).unwrap_or_else(|_| unreachable!());
+            let lim = crate::powerlaw::timestep::dt_static(p, pair.alpha, 1.0, 1.0).unwrap_or(f64::NAN);
+            let stable = |dt: f64| resting_contact_stable(&pair, 1.0, 1.0, 1.0, 1.0, 1.001, dt, Scheme::VelocityVerlet, 20_000);
+            assert!(stable(0.99 * lim), "p={p} e={e}: unstable below the limit");
+            assert!(!stable(1.01 * lim), "p={p} e={e}: stable above the limit");
+        }
     }
 }
