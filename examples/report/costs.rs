@@ -83,7 +83,7 @@ pub fn run(rep: &mut Report) -> Res<()> {
         md,
         "Power-law rows: one Hertz-exponent collision (p = 3/2, e = 0.5, DC_END_FORCE unless the row says overlap end, \
 v0 = ω0 = 1). Truth: the calibrated e itself (exact by construction), and δ_max, τ from the reference at rtol 1e-13 \
-(so errors below ~1e-13 are the reference's own). Closed-form and quadrature rows include `Contact::new` (the \
+(so errors below ~1e-12 are the reference's own). Closed-form and quadrature rows include `Contact::new` (the \
 validated set-up of one collision). A velocity-Verlet row \
 costs one whole simulated collision; its error is the worst over 16 start phases.\n"
     )?;

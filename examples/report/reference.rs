@@ -10,7 +10,6 @@ pub struct RefCollision {
     pub e: f64,
     pub delta_max: f64,
     pub tau: f64,
-    pub evals: u32,
 }
 
 /// One collision at relative tolerance `rtol`; `observe(t, δ, v)` sees accepted points.
@@ -48,7 +47,6 @@ pub fn collide_observed(
         e: -unload.y[1] / v0,
         delta_max: load.y[0],
         tau: unload.t,
-        evals: load.stats.evals + unload.stats.evals,
     })
 }
 
