@@ -133,7 +133,7 @@ forces (their kernel), so the realised e is that of a clamping solver.\n"
                 &file,
                 &format!("{}: worst relative error of {} against dt/τ", scheme_name(scheme), quantities[q]),
                 &match q {
-                    0 => format!("read the dt/τ at which your tolerance on e is crossed; {} errors in e grow linearly in dt (first order: the dashpot force jumps at impact), so halving dt halves the error.", scheme_name(scheme)),
+                    0 => format!("read the dt/τ at which your tolerance on e is crossed; {} errors in e grow linearly in dt (first order: the dashpot term switches on non-smoothly at impact and, for the overlap end, off while attractive), so halving dt halves the error.", scheme_name(scheme)),
                     1 => "read the δ_max error (largest overlap seen at a step): first order too for damped contacts, of the same size as the e error, because the first contact step already mis-applies the dashpot force; only at e = 0.9 and large steps does the second-order sampling of the peak dominate.".into(),
                     _ => "read the τ error: first order (the end of contact is located only to within a step), similar for both criteria.".into(),
                 },

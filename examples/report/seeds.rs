@@ -128,7 +128,7 @@ pub fn run(rep: &mut Report) -> Res<()> {
     }
     let file = "seed_tau_vs_zeta.png";
     figure(&rep.fig_path(file), &panels, 2, (600, 440))?;
-    rep.figure(&mut md, file, "contact duration relative to the undamped one, against ζ (lines: library, markers: reference)", "read that under the overlap end τ diverges at critical damping (ζ → 1) while under the force end it shrinks with damping for all ζ, and that the ratio depends on p only weakly.")?;
+    rep.figure(&mut md, file, "contact duration relative to the undamped one, against ζ (lines: library, markers: reference)", "read that under the overlap end τ grows without bound as ζ → 1 (critical damping), the faster the larger p, while under the force end it shrinks with damping for every ζ, most for p = 1.")?;
 
     // 3.5 Phase portrait, p = 3/2.
     let mut panels = Vec::new();
