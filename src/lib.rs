@@ -9,6 +9,8 @@
 //! * [`powerlaw`]: the power-law Tsuji contact `m δ'' + α √(m k) δ^((p-1)/2) δ' + k δ^p = 0`.
 //! * [`force`]: per-contact normal-force kernels (scalar, batch, 3D), monomorphised per model.
 //! * [`material`]: Hertz stiffness from two spheres' E, ν, R.
+//! * [`timestep`]: a contact integrated as DEM hosts do (velocity-Verlet, symplectic Euler) with
+//!   the library's kernels, and the largest step for a tolerance on the realised restitution.
 //! * [`viscoelastic`]: speed-dependent restitution of viscoelastic Hertz spheres, e(β v^{1/5}),
 //!   in three tiers (published series, full-range tables, reference integration), and calibration.
 //! * [`numerics`]: root finding and the reference ODE integrator used to check everything else.
@@ -22,6 +24,7 @@ pub mod lsd;
 pub mod material;
 pub mod numerics;
 pub mod powerlaw;
+pub mod timestep;
 pub mod viscoelastic;
 
 pub use criterion::EndCriterion;

@@ -15,6 +15,7 @@ pub mod force;
 pub mod material;
 pub mod powerlaw;
 pub mod status;
+pub mod step_accuracy;
 pub mod timestep;
 pub mod version;
 pub mod viscoelastic;

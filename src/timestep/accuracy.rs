@@ -1,0 +1,140 @@
+//! The largest velocity-Verlet step that keeps the realised restitution within a tolerance.
+//!
+//! Scaling: with δ* = (v0/ω0)^(2/(p+1)) and t* = δ*/v0 the power-law contact
+//! `δ'' + α ω0 δ^((p−1)/2) δ' + ω0² δ^p = 0` becomes `x'' + α x^((p−1)/2) x' + x^p = 0` with
+//! x'(0) = 1: the realised restitution at step dt depends only on (p, e, criterion, dt/t*, phase).
+//! So the step is t* × h(p, e, criterion, tol), and h is measured here, by simulating that
+//! dimensionless collision with the library's own kernels ([`super::integrator::collide`]).
+//!
+//! Error measure: `E(h) = max over N_PHASE start phases |e_realised − e|/e`, the phases evenly
+//! spaced over [0, 1) with both ends included. The measurements (`docs/timestep.md`) show E ≈ C·h
+//! for damped contacts (the dashpot force jumps at first contact, and at the end for the overlap
+//! criterion, so velocity-Verlet is only first order in e), with a phase dependence that is often
+//! a jump between two branches (N or N + 1 contact steps): hence many phases, including the ends.
+//!
+//! Search, aiming at SAFETY·tol: τ from one fine run; then h = τ/8, τ/16, … down to τ/8192 until
+//! E(h) passes, then 5 bisections in log h between the last failing and the first passing step,
+//! returning the passing end (so the returned step passed at all sampled phases, and is within a
+//! factor 2^(1/32) of the largest passing step on that bracket). Below τ/8192 (tol below ~1e-4
+//! for strongly damped contacts) the last two measurements fix the local order k of E ∝ h^k
+//! (clamped to [0.5, 2]) and h is extrapolated: that regime is not verified by simulation.
+//! Cost: at most ~6·10⁶ force evaluations (tens of ms; up to a few hundred ms on a loaded
+//! machine for e ≤ 0.1 and tol ≤ 1e-3), no allocation. Call it at set-up, once per pair.
+
+use super::integrator::{collide, Scheme};
+use crate::force::powerlaw::powerlaw_from_alpha;
+use crate::force::PairModel;
+use crate::powerlaw::{alpha_from_e, check_exponent};
+use crate::{EndCriterion, Error};
+
+/// Start phases sampled per step size.
+pub(crate) const N_PHASE: u32 = 64;
+/// The search aims at SAFETY·tol: the worst phase can fall between the sampled ones.
+const SAFETY: f64 = 0.9;
+/// Searched steps lie in [τ/FLOOR_DIV, τ/8]; below, the error law is extrapolated.
+const FLOOR_DIV: f64 = 8192.0;
+const TOP_DIV: f64 = 8.0;
+const BISECTIONS: u32 = 5;
+/// A run that has not separated after this many contact durations failed (e.g. a step so large
+/// that the bodies stick numerically).
+const MAX_DURATIONS: f64 = 64.0;
+
+/// The dimensionless pair: k = 1, m = 1, v0 = 1, so ω0 = 1 and t* = δ* = 1.
+fn unit_pair(p: f64, e: f64, criterion: EndCriterion) -> Result<PairModel, Error> {
+    let alpha = alpha_from_e(e, p, criterion)?;
+    powerlaw_from_alpha(p, 1.0, alpha, criterion)
+}
+
+fn max_steps(tau: f64, h: f64) -> u32 {
+    let n = MAX_DURATIONS * tau / h + 64.0;
+    if n < 4.0e9 { n as u32 } else { u32::MAX }
+}
+
+/// Worst relative restitution error over `n_phase` evenly spaced start phases from 0 to 1⁻ (both ends),
+/// for the dimensionless collision (v0 = ω0 = 1) at step h, velocity-Verlet. `f64::INFINITY`
+/// when a run does not separate within its step budget. `tau` is the contact duration (for the
+/// budget).
+pub fn worst_restitution_error(pair: &PairModel, e: f64, tau: f64, h: f64, n_phase: u32) -> f64 {
+    let mut worst: f64 = 0.0;
+    let steps = max_steps(tau, h);
+    // Both ends of [0, 1) are included: the error is often piecewise smooth in the phase with a
+    // jump where the number of contact steps changes, and one branch can be a sliver at an end.
+    let last = f64::from(n_phase.max(2) - 1);
+    for i in 0..n_phase {
+        let phase = f64::from(i) / last * (1.0 - f64::EPSILON * 1024.0);
+        match collide(pair, 1.0, 1.0, 1.0, h, phase, Scheme::VelocityVerlet, steps) {
+            Ok(c) => worst = worst.max(((c.e - e) / e).abs()),
+            Err(_) => return f64::INFINITY,
+        }
+    }
+    if worst.is_nan() { f64::INFINITY } else { worst }
+}
+
+/// Dimensionless step h = dt/t* (see the module docs) and the contact duration τ/t*.
+pub(crate) fn unit_step(p: f64, e: f64, criterion: EndCriterion, tol: f64) -> Result<(f64, f64), Error> {
+    let pair = unit_pair(p, e, criterion)?;
+    // Reference duration from a fine run (1% is plenty: τ only scales the search grid).
+    let tau = collide(&pair, 1.0, 1.0, 1.0, 1e-3, 0.5, Scheme::VelocityVerlet, 10_000_000)?.duration;
+    if !(tau > 0.0 && tau.is_finite()) {
+        return Err(Error::NoConvergence);
+    }
+    let err = |h: f64| worst_restitution_error(&pair, e, tau, h, N_PHASE);
+    let tol = SAFETY * tol;
+    let mut h = tau / TOP_DIV;
+    let mut e_h = err(h);
+    if e_h <= tol {
+        // Coarser steps do not resolve the contact at all: the top of the range is the answer.
+        return Ok((h, tau));
+    }
+    let (mut h_fail, mut e_fail) = (h, e_h);
+    let floor = tau / FLOOR_DIV;
+    loop {
+        h *= 0.5;
+        e_h = err(h);
+        if e_h <= tol {
+            break;
+        }
+        if h <= floor * 1.000001 {
+            // Extrapolate E ∝ h^k from the two finest measurements.
+            let k = if e_fail.is_finite() && e_h > 0.0 { (e_fail / e_h).log2().clamp(0.5, 2.0) } else { 1.0 };
+            let h_ex = h * (tol / e_h).powf(1.0 / k);
+            return Ok((h_ex, tau));
+        }
+        h_fail = h;
+        e_fail = e_h;
+    }
+    let mut h_ok = h;
+    for _ in 0..BISECTIONS {
+        let mid = (h_ok * h_fail).sqrt();
+        if err(mid) <= tol {
+            h_ok = mid;
+        } else {
+            h_fail = mid;
+        }
+    }
+    Ok((h_ok, tau))
+}
+
+/// The largest velocity-Verlet step [s] for which a power-law collision (exponent p, restitution
+/// e calibrated exactly for `criterion`, impact speed v0, ω0 = √(k/m)) realises e within relative
+/// tolerance `tol`, whatever the phase of first contact within a step. See the module docs.
+pub fn dt_for_accuracy(p: f64, e: f64, criterion: EndCriterion, v0: f64, omega0: f64, tol: f64) -> Result<f64, Error> {
+    if !(p.is_finite() && e.is_finite() && v0.is_finite() && omega0.is_finite() && tol.is_finite()) {
+        return Err(Error::NotFinite);
+    }
+    check_exponent(p)?;
+    if !(e > 0.0 && e <= 1.0) {
+        return Err(Error::RestitutionRange);
+    }
+    if !(v0 > 0.0 && omega0 > 0.0 && tol > 0.0) {
+        return Err(Error::NotPositive);
+    }
+    // t* = δ*/v0 with δ* = (v0/ω0)^(2/(p+1)), in logs (the ratio alone may overflow).
+    let ln_t = 2.0 / (p + 1.0) * (v0.ln() - omega0.ln()) - v0.ln();
+    let (h, _) = unit_step(p, e, criterion, tol)?;
+    let dt = (ln_t + h.ln()).exp();
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(Error::ResultRange);
+    }
+    Ok(dt)
+}

@@ -1,0 +1,43 @@
+//! Proves that `dc_dt_for_accuracy` never allocates, on valid and invalid input.
+
+mod alloc_counter;
+use alloc_counter::{assert_counter_works, count_allocations, Counting};
+use demcontact::ffi::{status::*, step_accuracy::*};
+
+#[global_allocator]
+static ALLOC: Counting = Counting;
+
+#[test]
+fn dt_for_accuracy_does_not_allocate() {
+    assert_counter_works();
+    let mut calls = 0usize;
+    let n = count_allocations(|| {
+        let mut out = 0.0f64;
+        // Under Miri (scripts/miri.sh) only the cheap cases: a loose tolerance is answered after
+        // the reference run and one trial step; the others cost up to millions of force calls.
+        let cases: &[(f64, f64, f64, f64, f64)] = if cfg!(miri) {
+            &[(3.0, 0.9, 0.5, 3.0, 0.5), (f64::NAN, 0.5, 1.0, 1.0, 1e-2), (1.5, 0.0, 1.0, 1.0, 1e-2), (1.5, 0.5, -1.0, 1.0, 1e-2)]
+        } else {
+            &[
+                (1.5, 0.5, 1.0, 1.0, 1e-2),
+                (1.0, 0.9, 2.0, 10.0, 1e-3),
+                (3.0, 0.1, 0.5, 3.0, 0.5),
+                (2.0, 1.0, 1.0, 1.0, 1e-5),
+                (f64::NAN, 0.5, 1.0, 1.0, 1e-2),
+                (1.5, 0.0, 1.0, 1.0, 1e-2),
+                (1.5, 0.5, -1.0, 1.0, 1e-2),
+            ]
+        };
+        for &(p, e, v0, w0, tol) in cases {
+            for crit in [DC_END_OVERLAP, DC_END_FORCE, 9] {
+                unsafe {
+                    std::hint::black_box(dc_dt_for_accuracy(p, e, crit, v0, w0, tol, &mut out));
+                    std::hint::black_box(dc_dt_for_accuracy(p, e, crit, v0, w0, tol, std::ptr::null_mut()));
+                }
+                calls += 2;
+            }
+        }
+    });
+    assert_eq!(n, 0, "dc_dt_for_accuracy allocated {n} times in {calls} calls");
+    println!("no_alloc_step_accuracy: {calls} calls, 0 allocations");
+}

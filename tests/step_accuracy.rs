@@ -1,0 +1,107 @@
+//! `dc_dt_for_accuracy` checked by simulation, with an integrator written here (not the library's
+//! `timestep::collide`): velocity-Verlet in the LAMMPS/LIGGGHTS order, the power-law force
+//! evaluated from its formula with `powf`, attractive force clamped for DC_END_FORCE, physical
+//! units (v0 = 0.7 m/s, ω0 = 13). At the returned step the worst relative error of the realised
+//! e over 61 start phases (none of them the 16 the function samples) must be ≤ tol; at twice the
+//! step it must exceed tol. Grid: p ∈ {1, 1.5, 2, 3}, e ∈ {0.1, 0.5, 0.9}, both criteria,
+//! tol ∈ {1e-2, 1e-3}. Run: `cargo test --release --test step_accuracy -- --nocapture`.
+#![allow(clippy::unwrap_used, clippy::indexing_slicing)]
+
+use demcontact::ffi::{calibration::*, status::*, step_accuracy::*};
+
+const V0: f64 = 0.7;
+const W0: f64 = 13.0;
+
+/// Realised e of one collision, contact starting at `phase` of a step.
+fn realised_e(p: f64, alpha: f64, clamp: bool, dt: f64, phase: f64) -> f64 {
+    let acc = |d: f64, v: f64| {
+        if d <= 0.0 {
+            return 0.0;
+        }
+        let f = W0 * W0 * d.powf(p) + alpha * W0 * d.powf(0.5 * (p - 1.0)) * v;
+        -(if clamp { f.max(0.0) } else { f })
+    };
+    let (mut d, mut v, mut a) = (-phase * V0 * dt, V0, 0.0);
+    let mut touched = false;
+    for _ in 0..50_000_000u64 {
+        d += v * dt + 0.5 * a * dt * dt;
+        let vh = v + 0.5 * a * dt;
+        a = acc(d, vh);
+        v = vh + 0.5 * a * dt;
+        if d > 0.0 {
+            touched = true;
+        } else if touched {
+            return -v / V0;
+        }
+    }
+    f64::NAN
+}
+
+fn worst(p: f64, e: f64, crit: i32, dt: f64) -> f64 {
+    let mut alpha = 0.0;
+    assert_eq!(unsafe { dc_alpha_from_e(e, p, crit, &mut alpha) }, DC_OK);
+    (0..61)
+        .map(|i| {
+            let er = realised_e(p, alpha, crit == DC_END_FORCE, dt, (i as f64 + 0.3) / 61.0);
+            ((er - e) / e).abs()
+        })
+        .fold(0.0, |a: f64, b| if b.is_nan() { f64::INFINITY } else { a.max(b) })
+}
+
+#[test]
+fn returned_step_meets_tolerance_and_twice_it_does_not() {
+    let mut lines = Vec::new();
+    let mut failures = Vec::new();
+    for crit in [DC_END_OVERLAP, DC_END_FORCE] {
+        for &p in &[1.0, 1.5, 2.0, 3.0] {
+            for &e in &[0.1, 0.5, 0.9] {
+                for &tol in &[1e-2, 1e-3] {
+                    let mut dt = f64::NAN;
+                    assert_eq!(unsafe { dc_dt_for_accuracy(p, e, crit, V0, W0, tol, &mut dt) }, DC_OK);
+                    let at = worst(p, e, crit, dt) / tol;
+                    let twice = worst(p, e, crit, 2.0 * dt) / tol;
+                    lines.push(format!("crit {crit} p {p} e {e} tol {tol:.0e}: dt {dt:.4e}  E(dt)/tol {at:.3}  E(2dt)/tol {twice:.3}"));
+                    if !(at <= 1.0 && twice > 1.0) {
+                        failures.push(lines.last().unwrap().clone());
+                    }
+                }
+            }
+        }
+    }
+    for l in &lines {
+        println!("{l}");
+    }
+    assert!(failures.is_empty(), "failed:\n{}", failures.join("\n"));
+}
+
+#[test]
+fn scaling_with_speed_and_stiffness() {
+    // dt = t* h with t* = (v0/ω0)^(2/(p+1))/v0: changing v0 and ω0 only rescales the step.
+    let (p, e, tol) = (1.5, 0.5, 1e-2);
+    let mut a = 0.0;
+    let mut b = 0.0;
+    unsafe {
+        assert_eq!(dc_dt_for_accuracy(p, e, DC_END_FORCE, 1.0, 1.0, tol, &mut a), DC_OK);
+        assert_eq!(dc_dt_for_accuracy(p, e, DC_END_FORCE, 3.0, 50.0, tol, &mut b), DC_OK);
+    }
+    let t_star = (3.0f64 / 50.0).powf(2.0 / (p + 1.0)) / 3.0;
+    assert!((b / (a * t_star) - 1.0).abs() < 1e-12, "{a} {b}");
+}
+
+#[test]
+fn bad_input() {
+    let mut out = 42.0;
+    unsafe {
+        assert_eq!(dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 1.0, 1.0, 1e-2, std::ptr::null_mut()), DC_ERR_NULL_POINTER);
+        assert_eq!(dc_dt_for_accuracy(f64::NAN, 0.5, DC_END_FORCE, 1.0, 1.0, 1e-2, &mut out), DC_ERR_NOT_FINITE);
+        assert_eq!(dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 1.0, f64::INFINITY, 1e-2, &mut out), DC_ERR_NOT_FINITE);
+        assert_eq!(dc_dt_for_accuracy(0.5, 0.5, DC_END_FORCE, 1.0, 1.0, 1e-2, &mut out), DC_ERR_EXPONENT_RANGE);
+        assert_eq!(dc_dt_for_accuracy(1.5, 0.0, DC_END_FORCE, 1.0, 1.0, 1e-2, &mut out), DC_ERR_RESTITUTION_RANGE);
+        assert_eq!(dc_dt_for_accuracy(1.5, 1.1, DC_END_FORCE, 1.0, 1.0, 1e-2, &mut out), DC_ERR_RESTITUTION_RANGE);
+        assert_eq!(dc_dt_for_accuracy(1.5, 0.5, 2, 1.0, 1.0, 1e-2, &mut out), DC_ERR_CRITERION);
+        assert_eq!(dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 0.0, 1.0, 1e-2, &mut out), DC_ERR_NOT_POSITIVE);
+        assert_eq!(dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 1.0, -1.0, 1e-2, &mut out), DC_ERR_NOT_POSITIVE);
+        assert_eq!(dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 1.0, 1.0, 0.0, &mut out), DC_ERR_NOT_POSITIVE);
+    }
+    assert_eq!(out, 42.0, "output touched on error");
+}
