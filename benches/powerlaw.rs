@@ -92,6 +92,34 @@ fn duration_force_end_level(b: Bencher, level: i32) {
     });
 }
 
+/// Force-end duration with a plan built once for p (dc_duration_plan_init); level 2 (7 Gauss
+/// nodes) reaches 1e-10 (tests/powerlaw_plan.rs, tests/powerlaw_vs_ode.rs `accuracy_levels`).
+#[divan::bench(args = [0, 1, 2, 3, 4])]
+fn duration_force_end_planned(b: Bencher, level: i32) {
+    let a = alphas(DC_END_FORCE);
+    let mut plan = dc_duration_plan::default();
+    assert_eq!(unsafe { dc_duration_plan_init(P, level, &mut plan) }, DC_OK);
+    b.counter(ItemsCount::new(a.len())).bench(|| {
+        let mut s = 0.0;
+        for &al in &a {
+            let mut t = 0.0;
+            unsafe { dc_contact_duration_planned(black_box(&plan), black_box(al), 1.0, 1.0, DC_END_FORCE, &mut t) };
+            s += t;
+        }
+        s
+    });
+}
+
+/// Building a plan (once per exponent).
+#[divan::bench]
+fn duration_plan_init(b: Bencher) {
+    b.bench(|| {
+        let mut plan = dc_duration_plan::default();
+        unsafe { dc_duration_plan_init(black_box(P), 2, &mut plan) };
+        plan.weights[0]
+    });
+}
+
 /// The reference for the same 8 durations at rtol 1e-9 (error ≤ 6.4e-11 on this case).
 #[divan::bench]
 fn duration_force_end_ode_reference(b: Bencher) {
