@@ -22,7 +22,7 @@ use crate::Error;
 /// radius of convergence π. Used only for small |y| (≤ 0.35, where sin y / y loses relative
 /// digits to cancellation in ln): twelve terms leave < 1e−25 there. With y² → −y² the same
 /// series is ln(sinh y / y). The table keeps 30 terms for the test over |y| ≤ 1.7.
-const LN_SINC: [f64; 30] = [
+pub(crate) const LN_SINC: [f64; 30] = [
     -0.16666666666666666,
     -0.005555555555555556,
     -0.0003527336860670194,

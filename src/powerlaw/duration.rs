@@ -53,7 +53,7 @@ fn singular_integral(c: &Contact, kappa: f64, big_w: f64, level: u32) -> f64 {
 }
 
 /// ln T(π/ω), the full underdamped integral, in closed form (Gradshteyn 3.892).
-fn ln_full_integral(c: &Contact, w: f64) -> f64 {
+pub(crate) fn ln_full_integral(c: &Contact, w: f64) -> f64 {
     ln_full_integral_with(c, w, libm::lgamma(c.q))
 }
 
