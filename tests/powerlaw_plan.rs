@@ -66,3 +66,57 @@ fn planned_equals_unplanned() {
         assert!(*x <= 1e-13, "{w:?}");
     }
 }
+
+#[test]
+fn plan_statuses() {
+    let mut pl = dc_duration_plan::default();
+    // Init: bad p, bad level, NULL; output untouched on error.
+    for (p, lv, want) in [
+        (f64::NAN, 2, DC_ERR_NOT_FINITE),
+        (f64::INFINITY, 2, DC_ERR_NOT_FINITE),
+        (0.5, 2, DC_ERR_EXPONENT_RANGE),
+        (1.5, -1, DC_ERR_LEVEL),
+        (1.5, 5, DC_ERR_LEVEL),
+    ] {
+        assert_eq!(unsafe { dc_duration_plan_init(p, lv, &mut pl) }, want, "p={p} lv={lv}");
+        assert_eq!(pl, dc_duration_plan::default());
+    }
+    assert_eq!(unsafe { dc_duration_plan_init(1.5, 2, std::ptr::null_mut()) }, DC_ERR_NULL_POINTER);
+    // Planned call: NULL plan / output, zero-filled or modified plan, and the input statuses of
+    // dc_contact_duration (same codes as the unplanned call, output untouched).
+    let mut tau = -1.0;
+    let zero = dc_duration_plan::default();
+    assert_eq!(unsafe { dc_contact_duration_planned(std::ptr::null(), 0.3, 1.0, 1.0, DC_END_FORCE, &mut tau) }, DC_ERR_NULL_POINTER);
+    let good = plan(1.5, 2);
+    assert_eq!(unsafe { dc_contact_duration_planned(&good, 0.3, 1.0, 1.0, DC_END_FORCE, std::ptr::null_mut()) }, DC_ERR_NULL_POINTER);
+    assert_eq!(unsafe { dc_contact_duration_planned(&zero, 0.3, 1.0, 1.0, DC_END_FORCE, &mut tau) }, DC_ERR_PLAN);
+    for edit in 0..4 {
+        let mut bad = good;
+        match edit {
+            0 => bad.tag ^= 1,
+            1 => bad.level = 3,
+            2 => bad.p = 2.0,
+            _ => bad.n = 16,
+        }
+        assert_eq!(unsafe { dc_contact_duration_planned(&bad, 0.3, 1.0, 1.0, DC_END_FORCE, &mut tau) }, DC_ERR_PLAN, "edit {edit}");
+    }
+    assert_eq!(tau, -1.0);
+    for (alpha, v0, w0, crit) in [
+        (f64::NAN, 1.0, 1.0, DC_END_FORCE),
+        (0.3, f64::INFINITY, 1.0, DC_END_FORCE),
+        (0.3, 0.0, 1.0, DC_END_FORCE),
+        (0.3, 1.0, -1.0, DC_END_FORCE),
+        (-0.1, 1.0, 1.0, DC_END_FORCE),
+        (0.3, 1.0, 1.0, 7),
+        (10.0, 1.0, 1.0, DC_END_OVERLAP),
+    ] {
+        let mut want_tau = -1.0;
+        let want = unsafe { dc_contact_duration(1.5, alpha, v0, w0, crit, &mut want_tau) };
+        assert_ne!(want, DC_OK);
+        assert_eq!(unsafe { dc_contact_duration_planned(&good, alpha, v0, w0, crit, &mut tau) }, want);
+        assert_eq!(tau, -1.0);
+    }
+    let mut s = 0.0;
+    assert_eq!(unsafe { dc_contact_duration_planned(&good, 0.3, 1.0, 1.0, DC_END_FORCE, &mut s) }, DC_OK);
+    assert!(s > 0.0);
+}
