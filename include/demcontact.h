@@ -269,11 +269,11 @@ typedef struct dc_duration_plan {
     /**
      * Gauss-Legendre nodes in (0, 1) (strongly overdamped contacts, beyond the first panel).
      */
-    double nodes_regular[16];
+    double nodes_reg[16];
     /**
      * Their weights.
      */
-    double weights_regular[16];
+    double weights_reg[16];
 } dc_duration_plan;
 
 /**

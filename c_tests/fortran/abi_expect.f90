@@ -66,8 +66,8 @@ contains
       v(22) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
       v(23) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
       v(24) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(25) = transfer(c_loc(x_dc_duration_plan%nodes_regular(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(26) = transfer(c_loc(x_dc_duration_plan%weights_regular(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(25) = transfer(c_loc(x_dc_duration_plan%nodes_reg(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(26) = transfer(c_loc(x_dc_duration_plan%weights_reg(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
     end block
     block
       type(dc_energy), target :: x_dc_energy

@@ -60,8 +60,8 @@ int64_t dc_probe_layout(int32_t i) {
   case 22: return (int64_t)offsetof(dc_duration_plan, n);
   case 23: return (int64_t)offsetof(dc_duration_plan, nodes);
   case 24: return (int64_t)offsetof(dc_duration_plan, weights);
-  case 25: return (int64_t)offsetof(dc_duration_plan, nodes_regular);
-  case 26: return (int64_t)offsetof(dc_duration_plan, weights_regular);
+  case 25: return (int64_t)offsetof(dc_duration_plan, nodes_reg);
+  case 26: return (int64_t)offsetof(dc_duration_plan, weights_reg);
   case 27: return (int64_t)sizeof(dc_energy);
   case 28: return (int64_t)offsetof(dc_energy, e);
   case 29: return (int64_t)offsetof(dc_energy, loading);

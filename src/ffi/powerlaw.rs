@@ -174,9 +174,9 @@ pub struct dc_duration_plan {
     /// Their weights.
     pub weights: [f64; 16],
     /// Gauss-Legendre nodes in (0, 1) (strongly overdamped contacts, beyond the first panel).
-    pub nodes_regular: [f64; 16],
+    pub nodes_reg: [f64; 16],
     /// Their weights.
-    pub weights_regular: [f64; 16],
+    pub weights_reg: [f64; 16],
 }
 
 fn plan_nodes(level: i32) -> Result<usize, Error> {
@@ -203,7 +203,7 @@ fn build_plan(p: f64, level: i32) -> Result<dc_duration_plan, Error> {
         return Err(Error::Level);
     };
     crate::numerics::gauss_jacobi::gauss_jacobi(q - 1.0, x, w)?;
-    let (Some(x), Some(w)) = (plan.nodes_regular.get_mut(..n), plan.weights_regular.get_mut(..n)) else {
+    let (Some(x), Some(w)) = (plan.nodes_reg.get_mut(..n), plan.weights_reg.get_mut(..n)) else {
         return Err(Error::Level);
     };
     crate::numerics::gauss_jacobi::gauss_jacobi(0.0, x, w)?;
@@ -229,7 +229,7 @@ fn duration_planned(plan: &dc_duration_plan, alpha: f64, v0: f64, omega0: f64, c
     let c = Contact::with_constants(p, alpha, v0, omega0, Some((plan.q, plan.amp)))?;
     let crit = parse_criterion(criterion)?;
     let (Some(x), Some(w), Some(x0), Some(w0)) =
-        (plan.nodes.get(..n), plan.weights.get(..n), plan.nodes_regular.get(..n), plan.weights_regular.get(..n))
+        (plan.nodes.get(..n), plan.weights.get(..n), plan.nodes_reg.get(..n), plan.weights_reg.get(..n))
     else {
         return Err(Error::Plan);
     };
