@@ -30,6 +30,7 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_ERR_PAIR_INVALID = 6120
   integer(c_int32_t), parameter :: DC_ERR_BUFFER_LAYOUT = 6121
   integer(c_int32_t), parameter :: DC_ERR_LEVEL = 6112
+  integer(c_int32_t), parameter :: DC_ERR_PLAN = 6113
   integer(c_int32_t), parameter :: DC_ERR_INTERNAL = 6199
   integer(c_int32_t), parameter :: DC_END_OVERLAP = 0
   integer(c_int32_t), parameter :: DC_END_FORCE = 1
@@ -48,6 +49,21 @@ module demcontact_c
     real(c_double) :: c
     real(c_double) :: h
   end type dc_pair
+
+  type, bind(c) :: dc_duration_plan
+    integer(c_int64_t) :: tag
+    real(c_double) :: p
+    real(c_double) :: q
+    real(c_double) :: amp
+    real(c_double) :: lgamma_q
+    real(c_double) :: ln_aq
+    integer(c_int32_t) :: level
+    integer(c_int32_t) :: n
+    real(c_double) :: nodes(16)
+    real(c_double) :: weights(16)
+    real(c_double) :: nodes_reg(16)
+    real(c_double) :: weights_reg(16)
+  end type dc_duration_plan
 
   type, bind(c) :: dc_energy
     real(c_double) :: e
@@ -233,6 +249,24 @@ module demcontact_c
       real(c_double), intent(out) :: tau_out
       integer(c_int32_t) :: dc_contact_duration_level
     end function dc_contact_duration_level
+    function dc_duration_plan_init(p, level, plan_out) bind(c, name='dc_duration_plan_init')
+      import
+      real(c_double), value, intent(in) :: p
+      integer(c_int32_t), value, intent(in) :: level
+      type(dc_duration_plan), intent(out) :: plan_out
+      integer(c_int32_t) :: dc_duration_plan_init
+    end function dc_duration_plan_init
+    function dc_contact_duration_planned(plan, alpha, v0, omega0, criterion, tau_out) bind(c, &
+        name='dc_contact_duration_planned')
+      import
+      type(dc_duration_plan), intent(in) :: plan
+      real(c_double), value, intent(in) :: alpha
+      real(c_double), value, intent(in) :: v0
+      real(c_double), value, intent(in) :: omega0
+      integer(c_int32_t), value, intent(in) :: criterion
+      real(c_double), intent(out) :: tau_out
+      integer(c_int32_t) :: dc_contact_duration_planned
+    end function dc_contact_duration_planned
     function dc_energy_partition(p, alpha, criterion, energy_out) bind(c, name='dc_energy_partition')
       import
       real(c_double), value, intent(in) :: p
@@ -600,6 +634,33 @@ contains
     if (present(stat)) stat = s
     if (s /= DC_OK) tau_out = ieee_value(tau_out, ieee_quiet_nan)
   end subroutine contact_duration_level
+
+  !> Elemental form of dc_duration_plan_init: on error `plan_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine duration_plan_init(p, level, plan_out, stat)
+    real(c_double), intent(in) :: p
+    integer(c_int32_t), intent(in) :: level
+    type(dc_duration_plan), intent(out) :: plan_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_duration_plan_init(p, level, plan_out)
+    if (present(stat)) stat = s
+  end subroutine duration_plan_init
+
+  !> Elemental form of dc_contact_duration_planned: on error `tau_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine contact_duration_planned(plan, alpha, v0, omega0, criterion, tau_out, &
+      stat)
+    type(dc_duration_plan), intent(in) :: plan
+    real(c_double), intent(in) :: alpha
+    real(c_double), intent(in) :: v0
+    real(c_double), intent(in) :: omega0
+    integer(c_int32_t), intent(in) :: criterion
+    real(c_double), intent(out) :: tau_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_contact_duration_planned(plan, alpha, v0, omega0, criterion, tau_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) tau_out = ieee_value(tau_out, ieee_quiet_nan)
+  end subroutine contact_duration_planned
 
   !> Elemental form of dc_energy_partition: on error `energy_out` is NaN (numeric) and `stat` the status.
   impure elemental subroutine energy_partition(p, alpha, criterion, energy_out, stat)

@@ -21,6 +21,7 @@ enum class status : std::int32_t {
     pair_invalid = DC_ERR_PAIR_INVALID,
     buffer_layout = DC_ERR_BUFFER_LAYOUT,
     level = DC_ERR_LEVEL,
+    plan = DC_ERR_PLAN,
     internal = DC_ERR_INTERNAL,
 };
 
@@ -187,6 +188,28 @@ inline double contact_duration_level(double p, double alpha, double v0, double o
 /// dc_contact_duration_level: returns the status; `out` is written only on status::ok.
 inline status contact_duration_level(double p, double alpha, double v0, double omega0, criterion criterion_, std::int32_t level, double& out) noexcept {
     return static_cast<status>(::dc_contact_duration_level(p, alpha, v0, omega0, static_cast<std::int32_t>(criterion_), level, &out));
+}
+
+/// dc_duration_plan_init: throws demcontact::error on a non-OK status.
+inline ::dc_duration_plan duration_plan_init(double p, std::int32_t level) {
+    ::dc_duration_plan out{};
+    detail::check(::dc_duration_plan_init(p, level, &out));
+    return out;
+}
+/// dc_duration_plan_init: returns the status; `out` is written only on status::ok.
+inline status duration_plan_init(double p, std::int32_t level, ::dc_duration_plan& out) noexcept {
+    return static_cast<status>(::dc_duration_plan_init(p, level, &out));
+}
+
+/// dc_contact_duration_planned: throws demcontact::error on a non-OK status.
+inline double contact_duration_planned(const ::dc_duration_plan& plan, double alpha, double v0, double omega0, criterion criterion_) {
+    double out{};
+    detail::check(::dc_contact_duration_planned(&plan, alpha, v0, omega0, static_cast<std::int32_t>(criterion_), &out));
+    return out;
+}
+/// dc_contact_duration_planned: returns the status; `out` is written only on status::ok.
+inline status contact_duration_planned(const ::dc_duration_plan& plan, double alpha, double v0, double omega0, criterion criterion_, double& out) noexcept {
+    return static_cast<status>(::dc_contact_duration_planned(&plan, alpha, v0, omega0, static_cast<std::int32_t>(criterion_), &out));
 }
 
 /// dc_energy_partition: throws demcontact::error on a non-OK status.

@@ -30,4 +30,6 @@ pub enum Error {
     BufferLayout,
     /// A quadrature accuracy level outside the supported range.
     Level,
+    /// A duration plan was not made by `dc_duration_plan_init` (or was modified afterwards).
+    Plan,
 }

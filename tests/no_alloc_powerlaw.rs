@@ -18,7 +18,16 @@ fn powerlaw_exports_do_not_allocate() {
     let n = count_allocations(|| {
         let mut out = 0.0f64;
         let mut en = dc_energy::default();
+        let mut plan = dc_duration_plan::default();
+        let zero = dc_duration_plan::default();
         for &p in &INPUTS {
+            for lv in [-1, 0, 2, 4, 5] {
+                unsafe {
+                    std::hint::black_box(dc_duration_plan_init(p, lv, &mut plan));
+                    std::hint::black_box(dc_duration_plan_init(p, lv, std::ptr::null_mut()));
+                }
+                calls += 2;
+            }
             for &alpha in &INPUTS {
                 for &v0 in &[0.5, f64::NAN, -1.0] {
                     for crit in [DC_END_OVERLAP, DC_END_FORCE, 9] {
@@ -31,6 +40,9 @@ fn powerlaw_exports_do_not_allocate() {
                                 std::hint::black_box(dc_contact_duration_level(p, alpha, v0, 3.0, crit, lv, &mut out));
                             }
                             std::hint::black_box(dc_energy_partition(p, alpha, crit, &mut en));
+                            std::hint::black_box(dc_contact_duration_planned(&plan, alpha, v0, 3.0, crit, &mut out));
+                            std::hint::black_box(dc_contact_duration_planned(&zero, alpha, v0, 3.0, crit, &mut out));
+                            std::hint::black_box(dc_contact_duration_planned(std::ptr::null(), alpha, v0, 3.0, crit, &mut out));
                             for (nn, len) in [(64, 64), (0, 64), (65, 64), (2, 2), (1, 1)] {
                                 std::hint::black_box(dc_contact_trajectory(
                                     p, alpha, v0, 3.0, 0.7, crit, 3, nn,
@@ -42,7 +54,7 @@ fn powerlaw_exports_do_not_allocate() {
                                 t.as_mut_ptr(), std::ptr::null_mut(), v.as_mut_ptr(), f.as_mut_ptr(), 8,
                             ));
                         }
-                        calls += 16;
+                        calls += 19;
                     }
                 }
                 unsafe {

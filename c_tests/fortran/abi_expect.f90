@@ -27,10 +27,11 @@ contains
     v(18) = DC_ERR_PAIR_INVALID
     v(19) = DC_ERR_BUFFER_LAYOUT
     v(20) = DC_ERR_LEVEL
-    v(21) = DC_ERR_INTERNAL
-    v(22) = DC_END_OVERLAP
-    v(23) = DC_END_FORCE
-    n = 23
+    v(21) = DC_ERR_PLAN
+    v(22) = DC_ERR_INTERNAL
+    v(23) = DC_END_OVERLAP
+    v(24) = DC_END_FORCE
+    n = 24
   end subroutine expected_consts
 
   subroutine expected_layout(v, n)
@@ -53,14 +54,30 @@ contains
       v(13) = transfer(c_loc(x_dc_pair%h), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
     end block
     block
-      type(dc_energy), target :: x_dc_energy
-      v(14) = c_sizeof(x_dc_energy)
-      v(15) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(16) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(17) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(18) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(19) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      type(dc_duration_plan), target :: x_dc_duration_plan
+      v(14) = c_sizeof(x_dc_duration_plan)
+      v(15) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(16) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(17) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(18) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(19) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(20) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(21) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(22) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(23) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(24) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(25) = transfer(c_loc(x_dc_duration_plan%nodes_reg(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(26) = transfer(c_loc(x_dc_duration_plan%weights_reg(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
     end block
-    n = 19
+    block
+      type(dc_energy), target :: x_dc_energy
+      v(27) = c_sizeof(x_dc_energy)
+      v(28) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(29) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(30) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(31) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(32) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+    end block
+    n = 32
   end subroutine expected_layout
 end module abi_expect

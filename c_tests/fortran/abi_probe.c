@@ -3,7 +3,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-int32_t dc_probe_n_consts(void) { return 23; }
+int32_t dc_probe_n_consts(void) { return 24; }
 int64_t dc_probe_const(int32_t i) {
   switch (i) {
   case 1: return (int64_t)(DC_MODEL_POWERLAW);
@@ -26,13 +26,14 @@ int64_t dc_probe_const(int32_t i) {
   case 18: return (int64_t)(DC_ERR_PAIR_INVALID);
   case 19: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
   case 20: return (int64_t)(DC_ERR_LEVEL);
-  case 21: return (int64_t)(DC_ERR_INTERNAL);
-  case 22: return (int64_t)(DC_END_OVERLAP);
-  case 23: return (int64_t)(DC_END_FORCE);
+  case 21: return (int64_t)(DC_ERR_PLAN);
+  case 22: return (int64_t)(DC_ERR_INTERNAL);
+  case 23: return (int64_t)(DC_END_OVERLAP);
+  case 24: return (int64_t)(DC_END_FORCE);
   default: return INT64_MIN;
   }
 }
-int32_t dc_probe_n_layout(void) { return 19; }
+int32_t dc_probe_n_layout(void) { return 32; }
 int64_t dc_probe_layout(int32_t i) {
   switch (i) {
   case 1: return (int64_t)sizeof(dc_pair);
@@ -48,12 +49,25 @@ int64_t dc_probe_layout(int32_t i) {
   case 11: return (int64_t)offsetof(dc_pair, k);
   case 12: return (int64_t)offsetof(dc_pair, c);
   case 13: return (int64_t)offsetof(dc_pair, h);
-  case 14: return (int64_t)sizeof(dc_energy);
-  case 15: return (int64_t)offsetof(dc_energy, e);
-  case 16: return (int64_t)offsetof(dc_energy, loading);
-  case 17: return (int64_t)offsetof(dc_energy, unloading);
-  case 18: return (int64_t)offsetof(dc_energy, returned);
-  case 19: return (int64_t)offsetof(dc_energy, clamped);
+  case 14: return (int64_t)sizeof(dc_duration_plan);
+  case 15: return (int64_t)offsetof(dc_duration_plan, tag);
+  case 16: return (int64_t)offsetof(dc_duration_plan, p);
+  case 17: return (int64_t)offsetof(dc_duration_plan, q);
+  case 18: return (int64_t)offsetof(dc_duration_plan, amp);
+  case 19: return (int64_t)offsetof(dc_duration_plan, lgamma_q);
+  case 20: return (int64_t)offsetof(dc_duration_plan, ln_aq);
+  case 21: return (int64_t)offsetof(dc_duration_plan, level);
+  case 22: return (int64_t)offsetof(dc_duration_plan, n);
+  case 23: return (int64_t)offsetof(dc_duration_plan, nodes);
+  case 24: return (int64_t)offsetof(dc_duration_plan, weights);
+  case 25: return (int64_t)offsetof(dc_duration_plan, nodes_reg);
+  case 26: return (int64_t)offsetof(dc_duration_plan, weights_reg);
+  case 27: return (int64_t)sizeof(dc_energy);
+  case 28: return (int64_t)offsetof(dc_energy, e);
+  case 29: return (int64_t)offsetof(dc_energy, loading);
+  case 30: return (int64_t)offsetof(dc_energy, unloading);
+  case 31: return (int64_t)offsetof(dc_energy, returned);
+  case 32: return (int64_t)offsetof(dc_energy, clamped);
   default: return INT64_MIN;
   }
 }

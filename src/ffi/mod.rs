@@ -39,6 +39,7 @@ pub(crate) const fn status_of(err: Error) -> i32 {
         Error::PairInvalid => DC_ERR_PAIR_INVALID,
         Error::BufferLayout => DC_ERR_BUFFER_LAYOUT,
         Error::Level => DC_ERR_LEVEL,
+        Error::Plan => DC_ERR_PLAN,
     }
 }
 

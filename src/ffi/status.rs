@@ -38,6 +38,9 @@ pub const DC_ERR_PAIR_INVALID: i32 = 6120;
 pub const DC_ERR_BUFFER_LAYOUT: i32 = 6121;
 /// A quadrature accuracy level is outside DC_LEVEL_MIN..=DC_LEVEL_MAX.
 pub const DC_ERR_LEVEL: i32 = 6112;
+/// A dc_duration_plan was not initialised by dc_duration_plan_init (or was modified afterwards),
+/// e.g. a zero-filled struct.
+pub const DC_ERR_PLAN: i32 = 6113;
 /// An internal error was caught at the boundary (not expected; please report).
 pub const DC_ERR_INTERNAL: i32 = 6199;
 
@@ -64,6 +67,7 @@ const fn message(status: i32) -> &'static str {
         DC_ERR_PAIR_INVALID => "the dc_pair was not initialised by a dc_pair_* constructor\0",
         DC_ERR_BUFFER_LAYOUT => "a buffer is misaligned or an output overlaps an input\0",
         DC_ERR_LEVEL => "quadrature accuracy level out of range\0",
+        DC_ERR_PLAN => "the dc_duration_plan was not initialised by dc_duration_plan_init\0",
         DC_ERR_INTERNAL => "internal error caught at the C boundary (please report)\0",
         _ => "unknown demcontact status\0",
     }
@@ -98,6 +102,7 @@ mod tests {
             DC_ERR_PAIR_INVALID,
             DC_ERR_BUFFER_LAYOUT,
             DC_ERR_LEVEL,
+            DC_ERR_PLAN,
             DC_ERR_INTERNAL,
         ];
         let unknown = message(-1);

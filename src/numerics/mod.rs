@@ -4,11 +4,13 @@
 //! * [`ode`]: an adaptive Dormand–Prince 5(4) integrator with event location, used as the
 //!   independent reference that every closed form and quadrature in this crate is checked against.
 //! * [`gamma`]: Re ln Γ(a + ib), for the closed-form contact duration.
+//! * [`gauss_jacobi`]: Gauss rules for the weight y^ν (the planned contact duration).
 //! * [`jacobi_cc`]: ∫ y^ν f(y) dy by Clenshaw–Curtis with modified moments (the contact times).
 //! * [`taylor`]: Taylor-series (automatic differentiation) building blocks over real or complex
 //!   numbers, for the viscoelastic reference integrator.
 
 pub mod gamma;
+pub mod gauss_jacobi;
 pub mod jacobi_cc;
 pub mod ode;
 pub mod roots;

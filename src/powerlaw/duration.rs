@@ -53,10 +53,15 @@ fn singular_integral(c: &Contact, kappa: f64, big_w: f64, level: u32) -> f64 {
 }
 
 /// ln T(π/ω), the full underdamped integral, in closed form (Gradshteyn 3.892).
-fn ln_full_integral(c: &Contact, w: f64) -> f64 {
+pub(crate) fn ln_full_integral(c: &Contact, w: f64) -> f64 {
+    ln_full_integral_with(c, w, libm::lgamma(c.q))
+}
+
+/// [`ln_full_integral`] with ln Γ(q) supplied (cached by a plan).
+fn ln_full_integral_with(c: &Contact, w: f64, lgamma_q: f64) -> f64 {
     let q = c.q;
     let cc = (1.0 - q) * c.zeta / w;
-    -q * w.ln() + PI.ln() + 0.5 * PI * cc + libm::lgamma(q) - (q - 1.0) * LN_2
+    -q * w.ln() + PI.ln() + 0.5 * PI * cc + lgamma_q - (q - 1.0) * LN_2
         - 2.0 * ln_gamma_re(0.5 * (q + 1.0), 0.5 * cc)
 }
 
@@ -120,6 +125,141 @@ pub fn contact_duration(c: &Contact, criterion: EndCriterion, level: u32) -> Res
                 _ => None,
             };
             finish(c.ln_time_scale(), time_integral(c, u, tail, level))
+        }
+    }
+}
+
+/// A quadrature rule for ∫_0^1 y^ν f(y) dy, borrowed from a plan.
+#[derive(Clone, Copy, Debug)]
+pub struct Rule<'a> {
+    /// Nodes in (0, 1).
+    pub nodes: &'a [f64],
+    /// Weights, same length.
+    pub weights: &'a [f64],
+}
+
+/// What a duration plan caches for one exponent p: the constants of the transform, ln Γ(q), and
+/// Gauss rules for the weight y^{q−1} (the singular first panel) and for the weight 1 (the further
+/// panels of strongly overdamped contacts).
+#[derive(Clone, Copy, Debug)]
+pub struct Plan<'a> {
+    /// q = 2/(p+1).
+    pub q: f64,
+    /// A = ((p+1)/2)^(1/(p+1)).
+    pub amp: f64,
+    /// ln Γ(q).
+    pub lgamma_q: f64,
+    /// ln(A q).
+    pub ln_aq: f64,
+    /// Gauss–Jacobi rule for y^{q−1}.
+    pub singular: Rule<'a>,
+    /// Gauss–Legendre rule (weight 1).
+    pub regular: Rule<'a>,
+}
+
+/// Gauss nodes of a plan per accuracy level (a rule of n nodes is exact to degree 2n − 1, like
+/// Clenshaw–Curtis with 2n − 1 intervals).
+pub(crate) const PLAN_NODES: [usize; 5] = [5, 6, 7, 9, 12];
+
+/// Largest rule a plan holds.
+pub(crate) const PLAN_MAX_NODES: usize = crate::numerics::gauss_jacobi::MAX_NODES;
+
+/// ∫_0^1 y^ν h(W y) dy (h = e^{κw}(S(w)/w)^ν) by the plan's Gauss–Jacobi rule, for a first
+/// panel W (|1 − ζ²| W² ≤ π²/4): the ln-sinc polynomial for all nodes at once, one exp per node.
+fn first_panel_planned(c: &Contact, kappa: f64, first: f64, pl: &Plan<'_>) -> f64 {
+    let nu = c.q - 1.0;
+    // z = (1 − ζ²) w², signed: ln(sin(ωw)/(ωw)) below, ln(sinh(ω₂w)/(ω₂w)) above critical.
+    let lam = (1.0 - c.zeta) * (1.0 + c.zeta);
+    let mut zs = [0.0f64; PLAN_MAX_NODES];
+    let mut ls = [0.0f64; PLAN_MAX_NODES];
+    let n = pl.singular.nodes.len().min(PLAN_MAX_NODES);
+    for (z, &y) in zs.iter_mut().zip(pl.singular.nodes) {
+        let w = first * y;
+        *z = lam * w * w;
+    }
+    let terms = crate::powerlaw::contact::ln_sinc_terms(lam * first * first);
+    crate::powerlaw::contact::ln_sinc_many(zs.get(..n).unwrap_or(&[]), ls.get_mut(..n).unwrap_or(&mut []), terms);
+    let kf = kappa * first;
+    pl.singular
+        .nodes
+        .iter()
+        .zip(pl.singular.weights)
+        .zip(ls.iter())
+        .map(|((&y, &wt), &l)| wt * (kf * y + nu * l).exp())
+        .sum()
+}
+
+/// [`singular_integral`] with a plan's rules (overdamped contacts beyond π/(2ω₂): further panels
+/// [a, 2a] by the plan's Gauss–Legendre rule).
+fn singular_integral_planned(c: &Contact, kappa: f64, big_w: f64, pl: &Plan<'_>) -> f64 {
+    let nu = c.q - 1.0;
+    if big_w <= 0.0 {
+        return 0.0;
+    }
+    let first = match c.regime {
+        Regime::Over(w2) => big_w.min(FRAC_PI_2 / w2),
+        _ => big_w,
+    };
+    let mut total = (c.q * first.ln()).exp() * first_panel_planned(c, kappa, first, pl);
+    let mut a = first;
+    while a < big_w {
+        let b = (2.0 * a).min(big_w);
+        let len = b - a;
+        let s: f64 = pl
+            .regular
+            .nodes
+            .iter()
+            .zip(pl.regular.weights)
+            .map(|(&y, &wt)| wt * (kappa * (a + len * y) + nu * c.ln_s(a + len * y)).exp())
+            .sum();
+        total += len * s;
+        a = b;
+    }
+    total
+}
+
+fn positive_finite(t: f64) -> Result<f64, Error> {
+    if t.is_finite() && t > 0.0 {
+        Ok(t)
+    } else {
+        Err(Error::ResultRange)
+    }
+}
+
+/// [`contact_duration`] with a plan: same branches and formulas, the plan's Gauss rules and cached
+/// constants, and the scale factors merged in logarithms (one exp per term instead of three).
+pub fn contact_duration_planned(pl: &Plan<'_>, c: &Contact, criterion: EndCriterion) -> Result<f64, Error> {
+    let ln_scale = pl.ln_aq + (c.q - 1.0) * c.ln_x0 - c.omega0.ln();
+    match criterion {
+        EndCriterion::Overlap => {
+            let Regime::Under(w) = c.regime else {
+                return Err(Error::NoEvent);
+            };
+            if c.q == 1.0 {
+                return finish(ln_scale, PI / w);
+            }
+            positive_finite((ln_scale + ln_full_integral_with(c, w, pl.lgamma_q)).exp())
+        }
+        EndCriterion::Force => {
+            let u = c.u_force();
+            if c.q == 1.0 {
+                return finish(ln_scale, u);
+            }
+            let kappa = (1.0 - c.q) * c.zeta;
+            match c.regime {
+                Regime::Under(w) if w * u > FRAC_PI_2 => {
+                    // τ = P T(π/ω) − P e^{κπ/ω} rest^q ∫_0^1 y^ν h₋(rest·y) dy
+                    let rest = 2.0 * c.zeta.asin() / w;
+                    let full = (ln_scale + ln_full_integral_with(c, w, pl.lgamma_q)).exp();
+                    if rest <= 0.0 {
+                        return positive_finite(full);
+                    }
+                    let tail = (ln_scale + kappa * PI / w + c.q * rest.ln()).exp() * first_panel_planned(c, -kappa, rest, pl);
+                    positive_finite(full - tail)
+                }
+                Regime::Over(w2) if u > FRAC_PI_2 / w2 => finish(ln_scale, singular_integral_planned(c, kappa, u, pl)),
+                _ => positive_finite((ln_scale + c.q * u.ln()).exp() * first_panel_planned(c, kappa, u, pl)),
+            }
         }
     }
 }
