@@ -16,6 +16,7 @@
 //!
 //! Every difference is formed with expm1/ln_1p, so small damping keeps full relative precision.
 
+use super::calibration;
 use super::contact::{Contact, Regime};
 use crate::criterion::EndCriterion;
 use core::f64::consts::PI;
@@ -45,7 +46,9 @@ pub fn energy_partition(c: &Contact, criterion: EndCriterion) -> EnergyPartition
             Regime::Under(w) => {
                 let theta = if c.zeta < 0.5 { c.zeta.acos() } else { g * w / c.zeta };
                 let unloading = e_f * -(-2.0 * c.zeta * (PI - theta) / w).exp_m1();
-                let e_o = (-PI * c.zeta / w).exp();
+                // From α directly (as dc_e_from_alpha): near critical damping e_O is so steep in ζ
+                // that rounding ζ = α/√(2(p+1)) first cost 2.3e-13 at e = 1e-12 (tests/extremes.rs).
+                let e_o = calibration::e_from_alpha(c.alpha, c.p, EndCriterion::Overlap).unwrap_or((-PI * c.zeta / w).exp());
                 EnergyPartition { e: e_o, loading, unloading, returned: e_o * e_o, clamped: 0.0 }
             }
             _ => EnergyPartition { e: 0.0, loading, unloading: e_f, returned: 0.0, clamped: 0.0 },
