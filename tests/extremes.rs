@@ -359,7 +359,7 @@ fn trajectory_extremes() {
     let mut s_f = Stat::new("dc_contact_trajectory", "force vs law from (d, v)", 1e-12);
     const N: usize = 33;
     for p in [1.0, 1.5, 2.0, 5.0, 20.0] {
-        for z in [0.0, 1e-6, 0.5, 0.99, 1.0 - 1e-12, 1.0, 1.0 + 1e-12, 10.0] {
+        for z in [0.0, 1e-6, 0.5, 0.99, 1.0 - 1e-12, 1.0, 1.0 + 1e-12, 10.0, 100.0, 1e4] {
             let alpha = z * scale(p);
             for c in [DC_END_OVERLAP, DC_END_FORCE] {
                 for (v0, w0, m) in [(1e-9, 1e-1, 1e3), (1.0, 1e3, 1e-6), (1e4, 1e6, 1e-12), (1e-3, 1e9, 1.0)] {

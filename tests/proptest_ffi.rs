@@ -284,9 +284,10 @@ proptest! {
     #[test]
     fn durations_monotone_in_damping(p in 1.0f64..20.0, z1 in 0.0f64..0.999, z2 in 0.0f64..0.999,
                                       lv in -6.0f64..3.0, lw in -2.0f64..6.0) {
-        // Verified numerically first (tests/extremes.rs scans): the overlap-end duration grows
-        // with alpha (diverging at critical damping), the force-end duration and the time of
-        // maximum overlap fall as alpha grows, for every p in [1, 20].
+        // Verified numerically first (scan of zeta in [0, 5] step 0.0025, p = 1..20): the
+        // overlap-end duration grows with alpha for every p (diverging at critical damping);
+        // the force-end duration and the time of maximum overlap fall as alpha grows only for
+        // p <= 4 — from p = 5 on both first *grow* with alpha (docs/robustness.md).
         let s = std::f64::consts::SQRT_2 * (p + 1.0).sqrt();
         let (a1, a2) = (s * z1.min(z2), s * z1.max(z2));
         let (v0, w) = (10f64.powf(lv), 10f64.powf(lw));
@@ -295,12 +296,15 @@ proptest! {
         prop_assert!(to2 >= to1 * (1.0 - 1e-13), "overlap-end tau fell with alpha: {} -> {}", to1, to2);
         let (_, tf1) = contract(|o| unsafe { dc_contact_duration(p, a1, v0, w, DC_END_FORCE, o) })?;
         let (_, tf2) = contract(|o| unsafe { dc_contact_duration(p, a2, v0, w, DC_END_FORCE, o) })?;
-        prop_assert!(tf2 <= tf1 * (1.0 + 1e-12), "force-end tau grew with alpha: {} -> {}", tf1, tf2);
         let (_, tm1) = contract(|o| unsafe { dc_time_of_max_overlap(p, a1, v0, w, o) })?;
         let (_, tm2) = contract(|o| unsafe { dc_time_of_max_overlap(p, a2, v0, w, o) })?;
-        prop_assert!(tm2 <= tm1 * (1.0 + 1e-12), "t_max grew with alpha: {} -> {}", tm1, tm2);
-        // Force end comes before overlap end; maximum overlap before both.
-        prop_assert!(tm1 < tf1 && tf1 < to1);
+        if p <= 4.0 {
+            prop_assert!(tf2 <= tf1 * (1.0 + 1e-12), "force-end tau grew with alpha: {} -> {}", tf1, tf2);
+            prop_assert!(tm2 <= tm1 * (1.0 + 1e-12), "t_max grew with alpha: {} -> {}", tm1, tm2);
+        }
+        // Maximum overlap comes before the force end, which comes before the overlap end (at it
+        // when undamped: the force and the overlap vanish together).
+        prop_assert!(tm1 < tf1 && tf1 <= to1, "t_max {} tau_F {} tau_O {}", tm1, tf1, to1);
     }
 
     #[test]
@@ -328,7 +332,9 @@ proptest! {
         let [t, d, v, f] = &mut b;
         let s = unsafe { dc_contact_trajectory(p, a, 0.5, 300.0, 0.01, c, 4, 5, t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), 5) };
         prop_assert_eq!(s, DC_OK);
-        prop_assert!(((-b[2][4] / 0.5 - e) / e).abs() <= 1e-12, "exit speed {} vs e {}", -b[2][4] / 0.5, e);
+        // 1e-10: the exit speed is summed from the trajectory's own formulas (measured worst in
+        // tests/extremes.rs); e itself round-trips to 1e-13 above.
+        prop_assert!(((-b[2][4] / 0.5 - e) / e).abs() <= 1e-10, "exit speed {} vs e {}", -b[2][4] / 0.5, e);
         prop_assert!(b[0].windows(2).all(|w| w[0] < w[1]), "times not increasing {:?}", b[0]);
     }
 

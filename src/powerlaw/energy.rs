@@ -55,8 +55,16 @@ pub fn energy_partition(c: &Contact, criterion: EndCriterion) -> EnergyPartition
         },
         EndCriterion::Force => {
             let z2 = 4.0 * c.zeta * c.zeta;
-            let unloading = e_f * -(-2.0 * g + z2.ln_1p()).exp_m1();
-            EnergyPartition { e: e_f, loading, unloading, returned: e_f * e_f, clamped: z2 * e_f * e_f }
+            // For huge ζ (α beyond ~1e154) 4ζ² overflows while e_F underflows: form both in
+            // logarithms there, ln(1 + 4ζ²) = 2 ln 2ζ to rounding (found by tests/proptest_ffi.rs).
+            let (ln_1p_z2, clamped) = if z2.is_finite() {
+                (z2.ln_1p(), z2 * e_f * e_f)
+            } else {
+                let l = 2.0 * (2.0 * c.zeta).ln();
+                (l, (l - 4.0 * g).exp())
+            };
+            let unloading = e_f * -(-2.0 * g + ln_1p_z2).exp_m1();
+            EnergyPartition { e: e_f, loading, unloading, returned: e_f * e_f, clamped }
         }
     }
 }
