@@ -2,6 +2,9 @@
  * doubles (raw bit patterns, so NaN, inf, subnormals and huge values all occur) and an integer.
  * Every call must return a known status (never DC_ERR_INTERNAL), leave its output untouched on
  * error and produce a finite output on success; any violation aborts, which libFuzzer reports.
+ * Cases 0-11: calibration, material, pair constructors and force kernels; 12-20: the power-law
+ * calculus (durations at every level, energy partition, trajectories with fuzzed n, buf_len and
+ * NULL buffers, time steps, omega0); 21-23: the viscoelastic exports.
  * Built and run by scripts/fuzz.sh (Rust code instrumented for coverage, ASan+UBSan on the C side). */
 #include <demcontact.h>
 #include <math.h>
