@@ -58,7 +58,8 @@ fn binade_piece(pieces: &[[f64; DEG]], sub: usize, binades: usize, b: f64) -> Op
 /// Below this b the series around b = 0 replaces the first Chebyshev piece. That piece is accurate
 /// to ~1.5e-15 *absolute*, which is all of 1 − e for tiny b: it gave e(0) = 1 − 1.7e-15 and a
 /// non-monotone e below b ~ 1e-14 (tests/extremes.rs). The series gives e(0) = 1 exactly and keeps
-/// 1 − e (the dissipated fraction) to full relative precision; at the switch both agree to 1.3e-15.
+/// 1 − e (the dissipated fraction) to full relative precision; at the switch e steps up by 1.0e-15
+/// (overlap) / 1.1e-16 (force), the table's own absolute error there.
 const SMALL_B: f64 = 1e-5;
 /// C1 = (4/5) B(3/5, 3/2) (5/4)^{3/5} = 1.15344885809528…: to first order in the damping the loss
 /// is ∫ γ ξ^{1/2} ξ'² dt along the elastic Hertz trajectory, 1 − e = ΔE/v² = C1 b (derived in
