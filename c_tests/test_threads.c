@@ -75,6 +75,92 @@ static void compute(table *t) {
         double x1[3] = {0, 0, 0}, v1[3] = {0.1, 0, 0}, x2[3] = {1.9e-3, 0, 0}, v2[3] = {-0.1, 0, 0}, f3[3] = {0, 0, 0};
         put(t, dc_normal_force_3d(&pair, x1, v1, 1e-3, 1e-5, x2, v2, 1e-3, 1e-5, f3), f3[0]);
     }
+    /* Power-law calculus over a grid covering under-, critically and overdamped contacts,
+     * invalid values and every criterion and level. */
+    static const double ps[] = {1.0, 1.5, 2.0, 3.7, 20.0, 0.5, 0.0 / 0.0};
+    static const double as[] = {0.0, 0.3, 2.0, 5.0, -1.0, 1.0 / 0.0};
+    static const double vs[] = {1e-9, 1.0, 1e4, 0.0};
+    static const double ws[] = {1e-3, 1e3, 1e9};
+    for (size_t i = 0; i < sizeof ps / sizeof ps[0]; i++)
+        for (size_t j = 0; j < sizeof as / sizeof as[0]; j++) {
+            for (int32_t c = -1; c <= 2; c++) {
+                dc_energy en = {-1, -1, -1, -1, -1};
+                put(t, dc_energy_partition(ps[i], as[j], c, &en), en.e);
+                put(t, 0, en.loading + 2.0 * en.unloading + 3.0 * en.returned + 4.0 * en.clamped);
+            }
+            for (size_t k = 0; k < sizeof vs / sizeof vs[0]; k++)
+                for (size_t l = 0; l < sizeof ws / sizeof ws[0]; l++) {
+                    double o = -1.0;
+                    put(t, dc_max_overlap(ps[i], as[j], vs[k], ws[l], &o), o);
+                    o = -1.0;
+                    put(t, dc_time_of_max_overlap(ps[i], as[j], vs[k], ws[l], &o), o);
+                    for (int32_t c = -1; c <= 2; c++) {
+                        o = -1.0;
+                        put(t, dc_contact_duration(ps[i], as[j], vs[k], ws[l], c, &o), o);
+                        o = -1.0;
+                        put(t, dc_contact_duration_level(ps[i], as[j], vs[k], ws[l], c, (c + 1) * 2 - 1, &o), o);
+                    }
+                    o = -1.0;
+                    put(t, dc_dt_linearised(ps[i], vs[k], ws[l], &o), o);
+                    o = -1.0;
+                    put(t, dc_dt_static(ps[i], as[j], ws[l], vs[k], &o), o);
+                    o = -1.0;
+                    put(t, dc_omega0(vs[k], ws[l], &o), o);
+                }
+        }
+    /* Trajectories: good and bad buffers. */
+    for (size_t i = 0; i < sizeof ps / sizeof ps[0]; i++)
+        for (size_t j = 0; j < sizeof as / sizeof as[0]; j++)
+            for (int32_t c = 0; c <= 1; c++) {
+                double tt[9], dd[9], vv[9], ff[9];
+                for (int q = 0; q < 9; q++) tt[q] = dd[q] = vv[q] = ff[q] = -1.0;
+                put(t, dc_contact_trajectory(ps[i], as[j], 0.7, 400.0, 0.02, c, 3, 9, tt, dd, vv, ff, 9), 0.0);
+                for (int q = 0; q < 9; q++) {
+                    put(t, 0, tt[q]);
+                    put(t, 0, dd[q]);
+                    put(t, 0, vv[q]);
+                    put(t, 0, ff[q]);
+                }
+                put(t, dc_contact_trajectory(ps[i], as[j], 0.7, 400.0, 0.02, c, 3, 9, tt, dd, vv, ff, 8), 0.0);
+                put(t, dc_contact_trajectory(ps[i], as[j], 0.7, 400.0, 0.02, c, 3, 0, tt, dd, vv, ff, 9), 0.0);
+                put(t, dc_contact_trajectory(ps[i], as[j], 0.7, 400.0, 0.02, c, 3, 9, tt, NULL, vv, ff, 9), 0.0);
+            }
+    /* Viscoelastic exports. */
+    static const double bs[] = {-1.0, 0.0, 1e-300, 1e-6, 0.1, 0.5, 1.0, 3.0, 8.0, 100.0, 1e6, 1e30, 1.0 / 0.0};
+    static const double es[] = {-0.5, 0.0, 1e-12, 1e-3, 0.3, 0.9, 1.0 - 1e-12, 1.0, 1.5};
+    for (size_t i = 0; i < sizeof bs / sizeof bs[0]; i++)
+        for (int32_t c = -1; c <= 2; c++) {
+            double o = -1.0;
+            put(t, dc_viscoelastic_e(bs[i], c, &o), o);
+            o = -1.0;
+            put(t, dc_viscoelastic_e_series(bs[i], c, &o), o);
+            if (!(bs[i] > 3.0)) { /* the reference integrator is slow for large b */
+                o = -1.0;
+                put(t, dc_viscoelastic_e_reference(bs[i], c, &o), o);
+            }
+            for (size_t j = 0; j < sizeof bs / sizeof bs[0]; j++) {
+                o = -1.0;
+                put(t, dc_viscoelastic_b(bs[i] * 1e5, bs[j], 0.5, &o), o);
+                o = -1.0;
+                put(t, dc_viscoelastic_e_of_speed(1e5, bs[i], bs[j], c, &o), o);
+                double k = -1.0, g = -1.0;
+                put(t, dc_viscoelastic_k_gamma(bs[i], bs[j], 0.01, &k, &g), k);
+                put(t, 0, g);
+            }
+        }
+    for (size_t i = 0; i < sizeof es / sizeof es[0]; i++)
+        for (int32_t c = -1; c <= 2; c++) {
+            double o = -1.0;
+            put(t, dc_viscoelastic_b_from_e(es[i], c, &o), o);
+            for (size_t j = 0; j < sizeof bs / sizeof bs[0]; j++) {
+                o = -1.0;
+                put(t, dc_viscoelastic_beta_from_e(es[i], bs[j], c, &o), o);
+                o = -1.0;
+                put(t, dc_viscoelastic_a_from_e(es[i], bs[j], 1e8, 1e-3, c, &o), o);
+                o = -1.0;
+                put(t, dc_viscoelastic_speed_for_e(es[i], bs[j], c, &o), o);
+            }
+        }
     put(t, (int32_t)strlen(dc_status_str(DC_ERR_NOT_FINITE)), 0.0);
     put(t, (int32_t)strlen(dc_version()), 0.0);
 }

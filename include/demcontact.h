@@ -634,7 +634,10 @@ int32_t dc_time_of_max_overlap(double p, double alpha, double v0, double omega0,
  * @param tau_out    receives tau; untouched on error.
  * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
  *         DC_ERR_NOT_POSITIVE, DC_ERR_NEGATIVE, DC_ERR_CRITERION, DC_ERR_NO_EVENT,
- *         DC_ERR_RESULT_RANGE (tau overflows, e.g. zeta within ~1e-300 of 1).
+ *         DC_ERR_RESULT_RANGE (tau overflows). Near critical damping a p > 1 contact creeps
+ *         back: ln tau ~ pi (1-q) zeta/sqrt(1-zeta^2), q = 2/(p+1), so the overlap-end tau
+ *         exceeds DBL_MAX once sqrt(1-zeta^2) < ~pi (1-q)/709, e.g. zeta > 1 - 4e-7 at p = 1.5
+ *         (v0 = omega0 = 1); for p = 1 only within ~1e-300 of 1.
  *
  * Precision: 1e-12 relative (closed forms) and 1e-10 (quadrature) against an adaptive
  * integration of the equation of motion; see docs/powerlaw.md.
@@ -905,7 +908,9 @@ const char *dc_version(void);
  * Precision: relative error below 1e-10 for every b >= 0: measured max 6e-14 against the
  * reference integration on [0, 1e6] (force) and 4e-15 on [0, 3e3] (overlap;
  * beyond b = 8 the overlap law is exact to 1e-16); beyond 2^20 the force law
- * 1.3103707 b^(-5/3) (1 - 12.7 b^-1.59), 7e-12 on [2^20, 2^21.5].
+ * 1.3103707 b^(-5/3) (1 - 12.7 b^-1.59), 7e-12 on [2^20, 2^21.5]. Below b = 1e-5 the series
+ * 1 - 1.15344885809528 b + ..., so e(0) = 1 exactly, 1 - e keeps full relative precision and e is
+ * non-increasing on [0, 1e300] (tests/extremes.rs).
  * Cost: one Chebyshev sum of 20 terms, about 40 ns (overlap) / 60 ns (force) per call.
  *
  * @param b          dimensionless damping-speed parameter, b >= 0, finite.
@@ -929,7 +934,8 @@ int32_t dc_viscoelastic_e(double b, int32_t criterion, double *e_out);
  * @param b          b >= 0, finite.
  * @param criterion  DC_END_OVERLAP or DC_END_FORCE.
  * @param e_out      receives the series value; untouched on error.
- * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_NEGATIVE, DC_ERR_CRITERION.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_NEGATIVE, DC_ERR_CRITERION,
+ *         DC_ERR_RESULT_RANGE (the polynomial overflows, b beyond ~1e30).
  *
  * # Safety
  * `e_out` must be NULL or point to writable memory for one double.

@@ -2,7 +2,7 @@
 //! returns DC_ERR_INTERNAL, errors leave the output untouched, successes are finite; and the
 //! physics' monotonicity and round trips hold on the valid domain.
 
-use demcontact::ffi::{calibration::*, force::*, material::*, status::*, timestep::*};
+use demcontact::ffi::{calibration::*, force::*, material::*, powerlaw::*, status::*, timestep::*, viscoelastic::*};
 use proptest::prelude::*;
 
 const SENTINEL: f64 = -9.87654321e123;
@@ -138,5 +138,229 @@ proptest! {
         let g_hi = unsafe { dc_normal_force(&pair, lo, vhi, 1e-3, 1e-3) };
         prop_assert!(g_lo <= g_hi);
         prop_assert!(g_lo.is_finite() && g_hi.is_finite());
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Power-law calculus and viscoelastic exports (issue 8).
+
+/// Any bit pattern, or a value in a physically meaningful range (so that the valid branches are
+/// reached as often as the rejections).
+fn mixed(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
+    prop_oneof![any_f64(), (lo.ln()..hi.ln()).prop_map(f64::exp)]
+}
+
+/// Damping coefficient: any bits, or α spanning underdamped, critical and overdamped contacts.
+fn mixed_alpha() -> impl Strategy<Value = f64> {
+    prop_oneof![any_f64(), 0.0f64..20.0, Just(2.0), Just(0.0)]
+}
+
+/// dc_energy contract: known status, untouched on error, finite and summing to 1 on success.
+fn energy_contract(f: impl Fn(*mut dc_energy) -> i32) -> Result<(i32, dc_energy), TestCaseError> {
+    let sentinel = dc_energy { e: SENTINEL, loading: SENTINEL, unloading: SENTINEL, returned: SENTINEL, clamped: SENTINEL };
+    let mut out = sentinel;
+    let s = f(&mut out);
+    prop_assert!(known(s), "unknown or internal status {}", s);
+    if s == DC_OK {
+        let parts = [out.e, out.loading, out.unloading, out.returned, out.clamped];
+        prop_assert!(parts.iter().all(|x| x.is_finite()), "non-finite partition {:?}", out);
+        // Each fraction in [0, 1] up to rounding, and the four energies sum to 1.
+        prop_assert!(parts.iter().all(|x| (-1e-15..=1.0 + 1e-15).contains(x)), "fraction out of [0,1]: {:?}", out);
+        let sum = out.loading + out.unloading + out.returned + out.clamped;
+        prop_assert!((sum - 1.0).abs() <= 4e-15, "fractions sum to {}", sum);
+        prop_assert!((out.returned - out.e * out.e).abs() <= 4e-16, "returned != e^2: {:?}", out);
+    } else {
+        prop_assert_eq!(out, sentinel, "dc_energy touched on error");
+    }
+    Ok((s, out))
+}
+
+/// A two-output export (dc_viscoelastic_k_gamma): both untouched on error, both finite on success.
+fn contract2(f: impl Fn(*mut f64, *mut f64) -> i32) -> Result<(i32, f64, f64), TestCaseError> {
+    let (mut a, mut b) = (SENTINEL, SENTINEL);
+    let s = f(&mut a, &mut b);
+    prop_assert!(known(s), "unknown or internal status {}", s);
+    if s == DC_OK {
+        prop_assert!(a.is_finite() && b.is_finite());
+    } else {
+        prop_assert_eq!((a.to_bits(), b.to_bits()), (SENTINEL.to_bits(), SENTINEL.to_bits()), "output touched on error");
+    }
+    Ok((s, a, b))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 5_000, failure_persistence: None, ..ProptestConfig::default() })]
+
+    #[test]
+    fn powerlaw_any_bits(p in mixed(1.0, 20.0), a in mixed_alpha(), v0 in mixed(1e-9, 1e4),
+                         w in mixed(1e-3, 1e9), crit in -1i32..3, level in -1i32..6) {
+        contract(|o| unsafe { dc_max_overlap(p, a, v0, w, o) })?;
+        contract(|o| unsafe { dc_time_of_max_overlap(p, a, v0, w, o) })?;
+        let (s, tau) = contract(|o| unsafe { dc_contact_duration(p, a, v0, w, crit, o) })?;
+        let (sl, tau_l) = contract(|o| unsafe { dc_contact_duration_level(p, a, v0, w, crit, level, o) })?;
+        // At the highest level the knob is the same computation as the level-free export.
+        if level == 4 {
+            prop_assert_eq!((s, tau.to_bits()), (sl, tau_l.to_bits()));
+        }
+        energy_contract(|o| unsafe { dc_energy_partition(p, a, crit, o) })?;
+        contract(|o| unsafe { dc_dt_linearised(p, v0, w, o) })?;
+        contract(|o| unsafe { dc_dt_static(p, a, w, v0, o) })?;
+        contract(|o| unsafe { dc_omega0(v0, w, o) })?;
+        prop_assert_eq!(unsafe { dc_max_overlap(p, a, v0, w, std::ptr::null_mut()) }, DC_ERR_NULL_POINTER);
+    }
+
+    #[test]
+    fn trajectory_buffers(p in mixed(1.0, 20.0), a in mixed_alpha(), v0 in mixed(1e-3, 1e3),
+                          w in mixed(1e-1, 1e5), m in mixed(1e-6, 1e3), crit in -1i32..3, level in -1i32..6,
+                          n in prop_oneof![0usize..10, Just(usize::MAX)], buf_len in 0usize..=8, nulls in 0u8..16) {
+        // Four buffers of 8 doubles; any of them may be passed as NULL; buf_len never exceeds 8.
+        let mut bufs = [[SENTINEL; 8]; 4];
+        let ptr = |b: &mut [f64; 8], k: u8| if nulls & (1 << k) != 0 { std::ptr::null_mut() } else { b.as_mut_ptr() };
+        let [b0, b1, b2, b3] = &mut bufs;
+        let (t, d, v, f) = (ptr(b0, 0), ptr(b1, 1), ptr(b2, 2), ptr(b3, 3));
+        let s = unsafe { dc_contact_trajectory(p, a, v0, w, m, crit, level, n, t, d, v, f, buf_len) };
+        prop_assert!(known(s), "unknown or internal status {}", s);
+        if nulls != 0 {
+            prop_assert_eq!(s, DC_ERR_NULL_POINTER);
+        } else if n < 2 || buf_len < n {
+            prop_assert_eq!(s, DC_ERR_BUFFER_TOO_SHORT);
+        }
+        for b in &bufs {
+            for (i, x) in b.iter().enumerate() {
+                if s == DC_OK && i < n {
+                    prop_assert!(x.is_finite(), "non-finite sample {} on success", i);
+                } else {
+                    prop_assert_eq!(x.to_bits(), SENTINEL.to_bits(), "buffer written at {} (status {})", i, s);
+                }
+            }
+        }
+        if s == DC_OK {
+            // First sample is the impact: t = 0, delta = 0, v = v0.
+            prop_assert_eq!((bufs[0][0], bufs[1][0], bufs[2][0]), (0.0, 0.0, v0));
+        }
+    }
+
+    #[test]
+    fn viscoelastic_any_bits(x in mixed(1e-6, 1e3), y in mixed(1e-6, 1e3), z in mixed(1e-6, 1e3),
+                             u in mixed(1e-6, 1.0), crit in -1i32..3) {
+        contract(|o| unsafe { dc_viscoelastic_e(x, crit, o) })?;
+        contract(|o| unsafe { dc_viscoelastic_e_series(x, crit, o) })?;
+        contract(|o| unsafe { dc_viscoelastic_b(x, y, z, o) })?;
+        contract(|o| unsafe { dc_viscoelastic_e_of_speed(x, y, z, crit, o) })?;
+        contract2(|k, g| unsafe { dc_viscoelastic_k_gamma(x, y, z, k, g) })?;
+        contract(|o| unsafe { dc_viscoelastic_b_from_e(u, crit, o) })?;
+        contract(|o| unsafe { dc_viscoelastic_beta_from_e(u, x, crit, o) })?;
+        contract(|o| unsafe { dc_viscoelastic_a_from_e(u, x, y, z, crit, o) })?;
+        contract(|o| unsafe { dc_viscoelastic_speed_for_e(u, x, crit, o) })?;
+        let (mut k, mut g) = (SENTINEL, SENTINEL);
+        prop_assert_eq!(unsafe { dc_viscoelastic_k_gamma(x, y, z, &mut k, std::ptr::null_mut()) }, DC_ERR_NULL_POINTER);
+        prop_assert_eq!(unsafe { dc_viscoelastic_k_gamma(x, y, z, std::ptr::null_mut(), &mut g) }, DC_ERR_NULL_POINTER);
+        prop_assert_eq!((k.to_bits(), g.to_bits()), (SENTINEL.to_bits(), SENTINEL.to_bits()));
+    }
+
+    #[test]
+    fn viscoelastic_reference_any_bits(bits in any::<u64>(), b in 0.0f64..10.0, crit in -1i32..3) {
+        // The reference integrator's cost grows with b (0.8 s at 3e3): any bit pattern whose value
+        // would be a valid b above 10 is replaced by a b in [0, 10].
+        let raw = f64::from_bits(bits);
+        let x = if raw.is_finite() && raw > 10.0 { b } else { raw };
+        contract(|o| unsafe { dc_viscoelastic_e_reference(x, crit, o) })?;
+        contract(|o| unsafe { dc_viscoelastic_e_reference(b, crit, o) })?;
+    }
+
+    #[test]
+    fn max_overlap_falls_with_damping_and_grows_with_speed(p in 1.0f64..20.0, a1 in 0.0f64..30.0, a2 in 0.0f64..30.0,
+                                                            lv1 in -9.0f64..4.0, lv2 in -9.0f64..4.0, lw in -3.0f64..9.0) {
+        let (a1, a2) = (a1.min(a2), a1.max(a2));
+        let (v1, v2) = (10f64.powf(lv1.min(lv2)), 10f64.powf(lv1.max(lv2)));
+        let w = 10f64.powf(lw);
+        let (_, d1) = contract(|o| unsafe { dc_max_overlap(p, a1, v1, w, o) })?;
+        let (_, d2) = contract(|o| unsafe { dc_max_overlap(p, a2, v1, w, o) })?;
+        let (_, d3) = contract(|o| unsafe { dc_max_overlap(p, a1, v2, w, o) })?;
+        prop_assert!(d1 >= d2, "delta_max grew with alpha: {} -> {}", d1, d2);
+        prop_assert!(d3 >= d1, "delta_max fell with v0: {} -> {}", d1, d3);
+    }
+
+    #[test]
+    fn durations_monotone_in_damping(p in 1.0f64..20.0, z1 in 0.0f64..0.999, z2 in 0.0f64..0.999,
+                                      lv in -6.0f64..3.0, lw in -2.0f64..6.0) {
+        // Verified numerically first (scan of zeta in [0, 5] step 0.0025, p = 1..20): the
+        // overlap-end duration grows with alpha for every p (diverging at critical damping);
+        // the force-end duration and the time of maximum overlap fall as alpha grows only for
+        // p <= 4 — from p = 5 on both first *grow* with alpha (docs/robustness.md).
+        let s = std::f64::consts::SQRT_2 * (p + 1.0).sqrt();
+        let (a1, a2) = (s * z1.min(z2), s * z1.max(z2));
+        let (v0, w) = (10f64.powf(lv), 10f64.powf(lw));
+        let (_, to1) = contract(|o| unsafe { dc_contact_duration(p, a1, v0, w, DC_END_OVERLAP, o) })?;
+        let (_, to2) = contract(|o| unsafe { dc_contact_duration(p, a2, v0, w, DC_END_OVERLAP, o) })?;
+        prop_assert!(to2 >= to1 * (1.0 - 1e-13), "overlap-end tau fell with alpha: {} -> {}", to1, to2);
+        let (_, tf1) = contract(|o| unsafe { dc_contact_duration(p, a1, v0, w, DC_END_FORCE, o) })?;
+        let (_, tf2) = contract(|o| unsafe { dc_contact_duration(p, a2, v0, w, DC_END_FORCE, o) })?;
+        let (_, tm1) = contract(|o| unsafe { dc_time_of_max_overlap(p, a1, v0, w, o) })?;
+        let (_, tm2) = contract(|o| unsafe { dc_time_of_max_overlap(p, a2, v0, w, o) })?;
+        if p <= 4.0 {
+            prop_assert!(tf2 <= tf1 * (1.0 + 1e-12), "force-end tau grew with alpha: {} -> {}", tf1, tf2);
+            prop_assert!(tm2 <= tm1 * (1.0 + 1e-12), "t_max grew with alpha: {} -> {}", tm1, tm2);
+        }
+        // Maximum overlap comes before the force end, which comes before the overlap end (at it
+        // when undamped: the force and the overlap vanish together).
+        prop_assert!(tm1 < tf1 && tf1 <= to1, "t_max {} tau_F {} tau_O {}", tm1, tf1, to1);
+    }
+
+    #[test]
+    fn timesteps_monotone(p in 1.0f64..20.0, a1 in 0.0f64..30.0, a2 in 0.0f64..30.0, lv1 in -9.0f64..4.0, lv2 in -9.0f64..4.0) {
+        let (a1, a2) = (a1.min(a2), a1.max(a2));
+        let (v1, v2) = (10f64.powf(lv1.min(lv2)), 10f64.powf(lv1.max(lv2)));
+        // Faster impacts overlap more, stiffen the contact and shorten the linearised step;
+        // more damping shortens the static step.
+        let (_, d1) = contract(|o| unsafe { dc_dt_linearised(p, v1, 1e3, o) })?;
+        let (_, d2) = contract(|o| unsafe { dc_dt_linearised(p, v2, 1e3, o) })?;
+        prop_assert!(d2 <= d1 * (1.0 + 1e-15));
+        let (_, s1) = contract(|o| unsafe { dc_dt_static(p, a1, 1e3, 9.81, o) })?;
+        let (_, s2) = contract(|o| unsafe { dc_dt_static(p, a2, 1e3, 9.81, o) })?;
+        prop_assert!(s2 <= s1 * (1.0 + 1e-15));
+    }
+
+    #[test]
+    fn energy_and_trajectory_agree_with_calibration(le in -6.0f64..-1e-9, p in 1.0f64..20.0, c in 0i32..2) {
+        // e -> alpha, then the energy partition and the sampled trajectory realise that e.
+        let e = 10f64.powf(le);
+        let (_, a) = contract(|o| unsafe { dc_alpha_from_e(e, p, c, o) })?;
+        let (_, en) = energy_contract(|o| unsafe { dc_energy_partition(p, a, c, o) })?;
+        prop_assert!(((en.e - e) / e).abs() <= 1e-13, "partition e {} vs {}", en.e, e);
+        let mut b = [[0.0f64; 5]; 4];
+        let [t, d, v, f] = &mut b;
+        let s = unsafe { dc_contact_trajectory(p, a, 0.5, 300.0, 0.01, c, 4, 5, t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), 5) };
+        prop_assert_eq!(s, DC_OK);
+        // 1e-10: the exit speed is summed from the trajectory's own formulas (measured worst in
+        // tests/extremes.rs); e itself round-trips to 1e-13 above.
+        prop_assert!(((-b[2][4] / 0.5 - e) / e).abs() <= 1e-10, "exit speed {} vs e {}", -b[2][4] / 0.5, e);
+        prop_assert!(b[0].windows(2).all(|w| w[0] < w[1]), "times not increasing {:?}", b[0]);
+    }
+
+    #[test]
+    fn viscoelastic_e_falls_as_b_grows(lb1 in -6.0f64..6.0, lb2 in -6.0f64..6.0, c in 0i32..2) {
+        let (b1, b2) = (10f64.powf(lb1.min(lb2)), 10f64.powf(lb1.max(lb2)));
+        let (_, e1) = contract(|o| unsafe { dc_viscoelastic_e(b1, c, o) })?;
+        let (_, e2) = contract(|o| unsafe { dc_viscoelastic_e(b2, c, o) })?;
+        prop_assert!(e1 >= e2, "e({}) = {} < e({}) = {}", b1, e1, b2, e2);
+        prop_assert!(e2 > 0.0 && e1 <= 1.0);
+    }
+
+    #[test]
+    fn viscoelastic_round_trips(le in -12.0f64..-1e-9, c in 0i32..2, lv in -6.0f64..3.0, lk in 0.0f64..12.0) {
+        // e -> b -> e within the contract's 1e-12 relative, over e in [1e-12, 1).
+        let e = 10f64.powf(le);
+        let (_, b) = contract(|o| unsafe { dc_viscoelastic_b_from_e(e, c, o) })?;
+        let (_, back) = contract(|o| unsafe { dc_viscoelastic_e(b, c, o) })?;
+        prop_assert!(((back - e) / e).abs() <= 1e-12, "e={} b={} back={}", e, b, back);
+        // Calibration in physical units: beta at v_ref, then e of that speed for a stiffness k.
+        let (v, k) = (10f64.powf(lv), 10f64.powf(lk));
+        let (_, beta) = contract(|o| unsafe { dc_viscoelastic_beta_from_e(e, v, c, o) })?;
+        let gamma = beta * k.powf(0.6);
+        let (_, e2) = contract(|o| unsafe { dc_viscoelastic_e_of_speed(k, gamma, v, c, o) })?;
+        prop_assert!(((e2 - e) / e).abs() <= 1e-11, "physical round trip e={} -> {}", e, e2);
+        let (_, vs) = contract(|o| unsafe { dc_viscoelastic_speed_for_e(e, beta, c, o) })?;
+        prop_assert!(((vs - v) / v).abs() <= 1e-11, "speed_for_e {} vs {}", vs, v);
     }
 }

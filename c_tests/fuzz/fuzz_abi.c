@@ -2,6 +2,9 @@
  * doubles (raw bit patterns, so NaN, inf, subnormals and huge values all occur) and an integer.
  * Every call must return a known status (never DC_ERR_INTERNAL), leave its output untouched on
  * error and produce a finite output on success; any violation aborts, which libFuzzer reports.
+ * Cases 0-11: calibration, material, pair constructors and force kernels; 12-20: the power-law
+ * calculus (durations at every level, energy partition, trajectories with fuzzed n, buf_len and
+ * NULL buffers, time steps, omega0); 21-23: the viscoelastic exports.
  * Built and run by scripts/fuzz.sh (Rust code instrumented for coverage, ASan+UBSan on the C side). */
 #include <demcontact.h>
 #include <math.h>
@@ -30,7 +33,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     double out = SENTINEL;
     dc_pair pair;
     double v3[3] = {SENTINEL, SENTINEL, SENTINEL};
-    switch (data[0] % 12) {
+    switch (data[0] % 24) {
     case 0: verdict(dc_alpha_from_e(x[0], x[1], c, &out), out); break;
     case 1: verdict(dc_e_from_alpha(x[0], x[1], c, &out), out); break;
     case 2: verdict(dc_dt_crit(x[0], x[1], x[2], &out), out); break;
@@ -44,8 +47,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     case 7:
     case 8: {
         int32_t s;
-        if (data[0] % 12 == 6) s = dc_pair_powerlaw(x[0], x[1], x[2], c, &pair);
-        else if (data[0] % 12 == 7) s = dc_pair_hertz(x[0], x[1], x[0], x[1], x[2], c, &pair);
+        if (data[0] % 24 == 6) s = dc_pair_powerlaw(x[0], x[1], x[2], c, &pair);
+        else if (data[0] % 24 == 7) s = dc_pair_hertz(x[0], x[1], x[0], x[1], x[2], c, &pair);
         else s = dc_pair_viscoelastic(x[0], x[1], x[0], x[1], x[2], c, &pair);
         verdict(s == DC_OK ? DC_OK : s, s == DC_OK ? 0.0 : SENTINEL);
         if (s == DC_OK) {
@@ -75,6 +78,74 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     case 11: /* 3D helper with fuzzed geometry */
         if (dc_pair_hertz(1e9, 0.3, 1e9, 0.3, 0.5, c & 1, &pair) != DC_OK) break;
         verdict(dc_normal_force_3d(&pair, x, x + 3, x[6], x[7], x + 1, x + 4, x[7], x[6], v3), v3[0]);
+        break;
+    /* Power-law calculus. */
+    case 12: verdict(dc_max_overlap(x[0], x[1], x[2], x[3], &out), out); break;
+    case 13: verdict(dc_time_of_max_overlap(x[0], x[1], x[2], x[3], &out), out); break;
+    case 14: verdict(dc_contact_duration(x[0], x[1], x[2], x[3], c, &out), out); break;
+    case 15: verdict(dc_contact_duration_level(x[0], x[1], x[2], x[3], c, (int32_t)(data[0] / 24) % 7 - 1, &out), out); break;
+    case 16: {
+        dc_energy en = {SENTINEL, SENTINEL, SENTINEL, SENTINEL, SENTINEL};
+        int32_t s = dc_energy_partition(x[0], x[1], c, &en);
+        verdict(s, en.e);
+        verdict(s, en.loading);
+        verdict(s, en.unloading);
+        verdict(s, en.returned);
+        verdict(s, en.clamped);
+        if (s == DC_OK && fabs(en.loading + en.unloading + en.returned + en.clamped - 1.0) > 1e-14) abort();
+        break;
+    }
+    case 17: { /* trajectory: n, buf_len and the NULL mask come from the input */
+        double bufs[4][8];
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 8; j++) bufs[i][j] = SENTINEL;
+        uint8_t ctl = size > 1 ? data[size - 1] : 0;
+        size_t n = ctl & 7u, len = (ctl >> 3) & 7u;
+        if (ctl & 0x40u) n = (size_t)-1;
+        double *pt[4];
+        for (int i = 0; i < 4; i++) pt[i] = (ctl & 0x80u) && i == (ctl & 3u) ? NULL : bufs[i];
+        int32_t s = dc_contact_trajectory(x[0], x[1], x[2], x[3], x[4], c, (int32_t)(data[0] / 24) % 7 - 1, n, pt[0],
+                                          pt[1], pt[2], pt[3], len);
+        if (!(s == DC_OK || (s >= 6101 && s <= 6139))) abort();
+        for (int i = 0; i < 4; i++)
+            for (size_t j = 0; j < 8; j++) {
+                int written = memcmp(&bufs[i][j], &(double){SENTINEL}, sizeof(double)) != 0;
+                if (s == DC_OK && j < n && !isfinite(bufs[i][j])) abort();
+                if ((s != DC_OK || j >= n) && written) abort();
+            }
+        break;
+    }
+    case 18: verdict(dc_dt_linearised(x[0], x[1], x[2], &out), out); break;
+    case 19: verdict(dc_dt_static(x[0], x[1], x[2], x[3], &out), out); break;
+    case 20: verdict(dc_omega0(x[0], x[1], &out), out); break;
+    /* Viscoelastic exports (the reference integrator only for b <= 10: its cost grows with b). */
+    case 21:
+        verdict(dc_viscoelastic_e(x[0], c, &out), out);
+        out = SENTINEL;
+        verdict(dc_viscoelastic_e_series(x[0], c, &out), out);
+        out = SENTINEL;
+        verdict(dc_viscoelastic_b_from_e(x[1], c, &out), out);
+        if (!(isfinite(x[0]) && x[0] > 10.0)) {
+            out = SENTINEL;
+            verdict(dc_viscoelastic_e_reference(x[0], c, &out), out);
+        }
+        break;
+    case 22: {
+        verdict(dc_viscoelastic_b(x[0], x[1], x[2], &out), out);
+        out = SENTINEL;
+        verdict(dc_viscoelastic_e_of_speed(x[0], x[1], x[2], c, &out), out);
+        double k = SENTINEL, g = SENTINEL;
+        int32_t s = dc_viscoelastic_k_gamma(x[3], x[4], x[5], &k, &g);
+        verdict(s, k);
+        verdict(s, g);
+        break;
+    }
+    case 23:
+        verdict(dc_viscoelastic_beta_from_e(x[0], x[1], c, &out), out);
+        out = SENTINEL;
+        verdict(dc_viscoelastic_a_from_e(x[0], x[1], x[2], x[3], c, &out), out);
+        out = SENTINEL;
+        verdict(dc_viscoelastic_speed_for_e(x[0], x[1], c, &out), out);
         break;
     }
     return 0;

@@ -92,7 +92,10 @@ pub unsafe extern "C" fn dc_time_of_max_overlap(p: f64, alpha: f64, v0: f64, ome
 /// @param tau_out    receives tau; untouched on error.
 /// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
 ///         DC_ERR_NOT_POSITIVE, DC_ERR_NEGATIVE, DC_ERR_CRITERION, DC_ERR_NO_EVENT,
-///         DC_ERR_RESULT_RANGE (tau overflows, e.g. zeta within ~1e-300 of 1).
+///         DC_ERR_RESULT_RANGE (tau overflows). Near critical damping a p > 1 contact creeps
+///         back: ln tau ~ pi (1-q) zeta/sqrt(1-zeta^2), q = 2/(p+1), so the overlap-end tau
+///         exceeds DBL_MAX once sqrt(1-zeta^2) < ~pi (1-q)/709, e.g. zeta > 1 - 4e-7 at p = 1.5
+///         (v0 = omega0 = 1); for p = 1 only within ~1e-300 of 1.
 ///
 /// Precision: 1e-12 relative (closed forms) and 1e-10 (quadrature) against an adaptive
 /// integration of the equation of motion; see docs/powerlaw.md.

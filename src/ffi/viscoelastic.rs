@@ -18,7 +18,9 @@ use crate::viscoelastic::{calibration, full_range, reference, scaling, series};
 /// Precision: relative error below 1e-10 for every b >= 0: measured max 6e-14 against the
 /// reference integration on [0, 1e6] (force) and 4e-15 on [0, 3e3] (overlap;
 /// beyond b = 8 the overlap law is exact to 1e-16); beyond 2^20 the force law
-/// 1.3103707 b^(-5/3) (1 - 12.7 b^-1.59), 7e-12 on [2^20, 2^21.5].
+/// 1.3103707 b^(-5/3) (1 - 12.7 b^-1.59), 7e-12 on [2^20, 2^21.5]. Below b = 1e-5 the series
+/// 1 - 1.15344885809528 b + ..., so e(0) = 1 exactly, 1 - e keeps full relative precision and e is
+/// non-increasing on [0, 1e300] (tests/extremes.rs).
 /// Cost: one Chebyshev sum of 20 terms, about 40 ns (overlap) / 60 ns (force) per call.
 ///
 /// @param b          dimensionless damping-speed parameter, b >= 0, finite.
@@ -44,7 +46,8 @@ pub unsafe extern "C" fn dc_viscoelastic_e(b: f64, criterion: i32, e_out: *mut f
 /// @param b          b >= 0, finite.
 /// @param criterion  DC_END_OVERLAP or DC_END_FORCE.
 /// @param e_out      receives the series value; untouched on error.
-/// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_NEGATIVE, DC_ERR_CRITERION.
+/// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_NEGATIVE, DC_ERR_CRITERION,
+///         DC_ERR_RESULT_RANGE (the polynomial overflows, b beyond ~1e30).
 ///
 /// # Safety
 /// `e_out` must be NULL or point to writable memory for one double.

@@ -16,6 +16,7 @@
 //!
 //! Every difference is formed with expm1/ln_1p, so small damping keeps full relative precision.
 
+use super::calibration;
 use super::contact::{Contact, Regime};
 use crate::criterion::EndCriterion;
 use core::f64::consts::PI;
@@ -45,15 +46,25 @@ pub fn energy_partition(c: &Contact, criterion: EndCriterion) -> EnergyPartition
             Regime::Under(w) => {
                 let theta = if c.zeta < 0.5 { c.zeta.acos() } else { g * w / c.zeta };
                 let unloading = e_f * -(-2.0 * c.zeta * (PI - theta) / w).exp_m1();
-                let e_o = (-PI * c.zeta / w).exp();
+                // From α directly (as dc_e_from_alpha): near critical damping e_O is so steep in ζ
+                // that rounding ζ = α/√(2(p+1)) first cost 2.3e-13 at e = 1e-12 (tests/extremes.rs).
+                let e_o = calibration::e_from_alpha(c.alpha, c.p, EndCriterion::Overlap).unwrap_or((-PI * c.zeta / w).exp());
                 EnergyPartition { e: e_o, loading, unloading, returned: e_o * e_o, clamped: 0.0 }
             }
             _ => EnergyPartition { e: 0.0, loading, unloading: e_f, returned: 0.0, clamped: 0.0 },
         },
         EndCriterion::Force => {
             let z2 = 4.0 * c.zeta * c.zeta;
-            let unloading = e_f * -(-2.0 * g + z2.ln_1p()).exp_m1();
-            EnergyPartition { e: e_f, loading, unloading, returned: e_f * e_f, clamped: z2 * e_f * e_f }
+            // For huge ζ (α beyond ~1e154) 4ζ² overflows while e_F underflows: form both in
+            // logarithms there, ln(1 + 4ζ²) = 2 ln 2ζ to rounding (found by tests/proptest_ffi.rs).
+            let (ln_1p_z2, clamped) = if z2.is_finite() {
+                (z2.ln_1p(), z2 * e_f * e_f)
+            } else {
+                let l = 2.0 * (2.0 * c.zeta).ln();
+                (l, (l - 4.0 * g).exp())
+            };
+            let unloading = e_f * -(-2.0 * g + ln_1p_z2).exp_m1();
+            EnergyPartition { e: e_f, loading, unloading, returned: e_f * e_f, clamped }
         }
     }
 }

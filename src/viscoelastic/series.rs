@@ -94,10 +94,15 @@ pub fn e_series(b: f64, criterion: EndCriterion) -> Result<f64, Error> {
     if b < 0.0 {
         return Err(Error::Negative);
     }
-    Ok(match criterion {
+    let e = match criterion {
         EndCriterion::Force => horner(&H, b.sqrt()),
         EndCriterion::Overlap => 1.0 + b * horner(&C, b),
-    })
+    };
+    // b^10 overflows beyond b ~ 1e30: report it instead of handing out ±inf (tests/proptest_ffi.rs).
+    if !e.is_finite() {
+        return Err(Error::ResultRange);
+    }
+    Ok(e)
 }
 
 /// The paper's coefficient tables as printed: (h_0..h_20, c_1..c_10, a_1..a_10, b_0..b_10).
