@@ -151,6 +151,21 @@ fn trajectory_1000(b: Bencher) {
     });
 }
 
+/// Baseline for the trajectory: 1000 libm powers x^q = exp(q ln x), the one transcendental pair
+/// each sample needs (δ = A x^q), over the same samples' x.
+#[divan::bench]
+fn baseline_pow_1000(b: Bencher) {
+    let xs: Vec<f64> = (1..=N).map(|j| (j as f64 / N as f64 * 3.0).sin() * 0.7 + 1e-3).collect();
+    let mut out = vec![0.0; N];
+    let q = 2.0 / (P + 1.0);
+    b.bench_local(|| {
+        for (o, &x) in out.iter_mut().zip(black_box(&xs)) {
+            *o = (q * x.ln()).exp();
+        }
+        out[N / 2]
+    });
+}
+
 /// The same 1000 samples by the reference: one integration chained through events at the
 /// samples' overlaps, at rtol 1e-12 (the loosest reaching 1e-10 on the sample times).
 #[divan::bench]

@@ -266,14 +266,6 @@ typedef struct dc_duration_plan {
      * Their weights.
      */
     double weights[16];
-    /**
-     * Gauss-Legendre nodes in (0, 1) (strongly overdamped contacts, beyond the first panel).
-     */
-    double nodes_reg[16];
-    /**
-     * Their weights.
-     */
-    double weights_reg[16];
 } dc_duration_plan;
 
 /**

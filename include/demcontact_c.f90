@@ -61,8 +61,6 @@ module demcontact_c
     integer(c_int32_t) :: n
     real(c_double) :: nodes(16)
     real(c_double) :: weights(16)
-    real(c_double) :: nodes_reg(16)
-    real(c_double) :: weights_reg(16)
   end type dc_duration_plan
 
   type, bind(c) :: dc_energy

@@ -66,18 +66,16 @@ contains
       v(22) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
       v(23) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
       v(24) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(25) = transfer(c_loc(x_dc_duration_plan%nodes_reg(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(26) = transfer(c_loc(x_dc_duration_plan%weights_reg(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
     end block
     block
       type(dc_energy), target :: x_dc_energy
-      v(27) = c_sizeof(x_dc_energy)
-      v(28) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(29) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(30) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(31) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(32) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(25) = c_sizeof(x_dc_energy)
+      v(26) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(27) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(28) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(29) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(30) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
     end block
-    n = 32
+    n = 30
   end subroutine expected_layout
 end module abi_expect

@@ -33,7 +33,7 @@ int64_t dc_probe_const(int32_t i) {
   default: return INT64_MIN;
   }
 }
-int32_t dc_probe_n_layout(void) { return 32; }
+int32_t dc_probe_n_layout(void) { return 30; }
 int64_t dc_probe_layout(int32_t i) {
   switch (i) {
   case 1: return (int64_t)sizeof(dc_pair);
@@ -60,14 +60,12 @@ int64_t dc_probe_layout(int32_t i) {
   case 22: return (int64_t)offsetof(dc_duration_plan, n);
   case 23: return (int64_t)offsetof(dc_duration_plan, nodes);
   case 24: return (int64_t)offsetof(dc_duration_plan, weights);
-  case 25: return (int64_t)offsetof(dc_duration_plan, nodes_reg);
-  case 26: return (int64_t)offsetof(dc_duration_plan, weights_reg);
-  case 27: return (int64_t)sizeof(dc_energy);
-  case 28: return (int64_t)offsetof(dc_energy, e);
-  case 29: return (int64_t)offsetof(dc_energy, loading);
-  case 30: return (int64_t)offsetof(dc_energy, unloading);
-  case 31: return (int64_t)offsetof(dc_energy, returned);
-  case 32: return (int64_t)offsetof(dc_energy, clamped);
+  case 25: return (int64_t)sizeof(dc_energy);
+  case 26: return (int64_t)offsetof(dc_energy, e);
+  case 27: return (int64_t)offsetof(dc_energy, loading);
+  case 28: return (int64_t)offsetof(dc_energy, unloading);
+  case 29: return (int64_t)offsetof(dc_energy, returned);
+  case 30: return (int64_t)offsetof(dc_energy, clamped);
   default: return INT64_MIN;
   }
 }

@@ -176,10 +176,6 @@ pub struct dc_duration_plan {
     pub nodes: [f64; 16],
     /// Their weights.
     pub weights: [f64; 16],
-    /// Gauss-Legendre nodes in (0, 1) (strongly overdamped contacts, beyond the first panel).
-    pub nodes_reg: [f64; 16],
-    /// Their weights.
-    pub weights_reg: [f64; 16],
 }
 
 fn plan_nodes(level: i32) -> Result<usize, Error> {
@@ -206,10 +202,6 @@ fn build_plan(p: f64, level: i32) -> Result<dc_duration_plan, Error> {
         return Err(Error::Level);
     };
     crate::numerics::gauss_jacobi::gauss_jacobi(q - 1.0, x, w)?;
-    let (Some(x), Some(w)) = (plan.nodes_reg.get_mut(..n), plan.weights_reg.get_mut(..n)) else {
-        return Err(Error::Level);
-    };
-    crate::numerics::gauss_jacobi::gauss_jacobi(0.0, x, w)?;
     if !(plan.amp.is_finite() && plan.lgamma_q.is_finite() && plan.ln_aq.is_finite()) {
         return Err(Error::ResultRange);
     }
@@ -231,9 +223,7 @@ fn duration_planned(plan: &dc_duration_plan, alpha: f64, v0: f64, omega0: f64, c
     }
     let c = Contact::with_constants(p, alpha, v0, omega0, Some((plan.q, plan.amp)))?;
     let crit = parse_criterion(criterion)?;
-    let (Some(x), Some(w), Some(x0), Some(w0)) =
-        (plan.nodes.get(..n), plan.weights.get(..n), plan.nodes_reg.get(..n), plan.weights_reg.get(..n))
-    else {
+    let (Some(x), Some(w)) = (plan.nodes.get(..n), plan.weights.get(..n)) else {
         return Err(Error::Plan);
     };
     let pl = powerlaw::duration::Plan {
@@ -242,7 +232,6 @@ fn duration_planned(plan: &dc_duration_plan, alpha: f64, v0: f64, omega0: f64, c
         lgamma_q: plan.lgamma_q,
         ln_aq: plan.ln_aq,
         singular: powerlaw::duration::Rule { nodes: x, weights: w },
-        regular: powerlaw::duration::Rule { nodes: x0, weights: w0 },
     };
     powerlaw::duration::contact_duration_planned(&pl, &c, crit)
 }

@@ -13,6 +13,7 @@ pub mod gamma;
 pub mod gauss_jacobi;
 pub mod jacobi_cc;
 pub mod ode;
+pub(crate) mod pow;
 pub mod roots;
 pub mod taylor;
 

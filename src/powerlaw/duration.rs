@@ -17,10 +17,11 @@
 //!   and y^{q−1} is integrated exactly by Clenshaw–Curtis with modified moments
 //!   ([`crate::numerics::jacobi_cc`]): the only error is the Chebyshev interpolation of h, whose
 //!   nearest singularities (zeros of S at ±π/ω) lie ≥ 4 interval lengths away: ρ ≈ 9.9.
-//!   Overdamped, S has complex zeros at w = ikπ/ω₂ only: panels [a, 2a] beyond π/(2ω₂) keep
-//!   each panel's length at most its distance to those zeros.
+//!   Overdamped, the first panel ends at π/(2ω₂) (S has complex zeros at w = ikπ/ω₂ only);
+//!   beyond it the integral is an exact, positive series ([`super::overdamped_tail`]).
 
 use super::contact::{Contact, Regime};
+use super::overdamped_tail::overdamped_tail;
 use crate::criterion::EndCriterion;
 use crate::numerics::gamma::ln_gamma_re;
 use crate::numerics::jacobi_cc::integrate_weighted;
@@ -40,16 +41,16 @@ fn singular_integral(c: &Contact, kappa: f64, big_w: f64, level: u32) -> f64 {
     // First panel: W1^{ν+1} ∫_0^1 y^ν h(W1 y) dy, h = e^{κw}(S(w)/w)^ν analytic; the weight y^ν
     // is integrated exactly by the modified moments.
     let h = |w: f64| (kappa * w + nu * c.ln_sinc(w)).exp();
-    let mut total = (c.q * first.ln()).exp() * integrate_weighted(|y| h(first * y), nu, level);
-    // Further panels (overdamped only): regular integrand, same rule with ν = 0.
-    let mut a = first;
-    while a < big_w {
-        let b = (2.0 * a).min(big_w);
-        let len = b - a;
-        total += len * integrate_weighted(|y| (kappa * (a + len * y) + nu * c.ln_s(a + len * y)).exp(), 0.0, level);
-        a = b;
+    (c.q * first.ln()).exp() * integrate_weighted(|y| h(first * y), nu, level) + beyond_first_panel(c, first, big_w)
+}
+
+/// The rest of an overdamped integral beyond its first panel, [π/(2ω₂), W]: exact series
+/// ([`super::overdamped_tail`]); 0 otherwise.
+fn beyond_first_panel(c: &Contact, first: f64, big_w: f64) -> f64 {
+    match c.regime {
+        Regime::Over(w2) if big_w > first => overdamped_tail(c.q - 1.0, c.zeta, w2, first, big_w),
+        _ => 0.0,
     }
-    total
 }
 
 /// ln T(π/ω), the full underdamped integral, in closed form (Gradshteyn 3.892).
@@ -139,8 +140,7 @@ pub struct Rule<'a> {
 }
 
 /// What a duration plan caches for one exponent p: the constants of the transform, ln Γ(q), and
-/// Gauss rules for the weight y^{q−1} (the singular first panel) and for the weight 1 (the further
-/// panels of strongly overdamped contacts).
+/// the Gauss rule for the weight y^{q−1} (the singular first panel).
 #[derive(Clone, Copy, Debug)]
 pub struct Plan<'a> {
     /// q = 2/(p+1).
@@ -153,8 +153,6 @@ pub struct Plan<'a> {
     pub ln_aq: f64,
     /// Gauss–Jacobi rule for y^{q−1}.
     pub singular: Rule<'a>,
-    /// Gauss–Legendre rule (weight 1).
-    pub regular: Rule<'a>,
 }
 
 /// Gauss nodes of a plan per accuracy level (a rule of n nodes is exact to degree 2n − 1, like
@@ -189,10 +187,8 @@ fn first_panel_planned(c: &Contact, kappa: f64, first: f64, pl: &Plan<'_>) -> f6
         .sum()
 }
 
-/// [`singular_integral`] with a plan's rules (overdamped contacts beyond π/(2ω₂): further panels
-/// [a, 2a] by the plan's Gauss–Legendre rule).
+/// [`singular_integral`] with a plan's rule for the first panel.
 fn singular_integral_planned(c: &Contact, kappa: f64, big_w: f64, pl: &Plan<'_>) -> f64 {
-    let nu = c.q - 1.0;
     if big_w <= 0.0 {
         return 0.0;
     }
@@ -200,22 +196,7 @@ fn singular_integral_planned(c: &Contact, kappa: f64, big_w: f64, pl: &Plan<'_>)
         Regime::Over(w2) => big_w.min(FRAC_PI_2 / w2),
         _ => big_w,
     };
-    let mut total = (c.q * first.ln()).exp() * first_panel_planned(c, kappa, first, pl);
-    let mut a = first;
-    while a < big_w {
-        let b = (2.0 * a).min(big_w);
-        let len = b - a;
-        let s: f64 = pl
-            .regular
-            .nodes
-            .iter()
-            .zip(pl.regular.weights)
-            .map(|(&y, &wt)| wt * (kappa * (a + len * y) + nu * c.ln_s(a + len * y)).exp())
-            .sum();
-        total += len * s;
-        a = b;
-    }
-    total
+    (c.q * first.ln()).exp() * first_panel_planned(c, kappa, first, pl) + beyond_first_panel(c, first, big_w)
 }
 
 fn positive_finite(t: f64) -> Result<f64, Error> {

@@ -16,6 +16,7 @@ pub mod calibration;
 pub mod contact;
 pub mod duration;
 pub mod energy;
+mod overdamped_tail;
 pub mod overlap;
 pub mod timestep;
 pub mod trajectory;

@@ -23,6 +23,7 @@
 use super::contact::{Contact, Regime, LN_SINC};
 use super::duration::{contact_duration, ln_full_integral, time_at_phase};
 use crate::criterion::EndCriterion;
+use crate::numerics::pow;
 use crate::Error;
 use core::f64::consts::PI;
 
@@ -52,7 +53,8 @@ const STENCIL: [[f64; 8]; 7] = [
 
 /// Taylor coefficients g_k of G(u) = Σ g_k u^k (module docs) for h = exp(φ),
 /// φ(w) = κw + ν Σ_m a_m (λw²)^m, λ = 1 − ζ².
-fn g_series(nu: f64, kappa: f64, lam: f64) -> [f64; TAYLOR_K] {
+/// Only the first `kk` (≤ TAYLOR_K) are computed: the cost is O(kk²).
+fn g_series(nu: f64, kappa: f64, lam: f64, kk: usize) -> [f64; TAYLOR_K] {
     let mut phi = [0.0f64; TAYLOR_K];
     if let Some(x) = phi.get_mut(1) {
         *x = kappa;
@@ -68,7 +70,7 @@ fn g_series(nu: f64, kappa: f64, lam: f64) -> [f64; TAYLOR_K] {
     if let Some(x) = h.get_mut(0) {
         *x = 1.0;
     }
-    for k in 1..TAYLOR_K {
+    for k in 1..kk.min(TAYLOR_K) {
         let s: f64 = phi.iter().enumerate().skip(1).take(k).zip(h.iter().take(k).rev()).map(|((i, &f), &hh)| i as f64 * f * hh).sum();
         if let Some(x) = h.get_mut(k) {
             *x = s / k as f64;
@@ -81,8 +83,8 @@ fn g_series(nu: f64, kappa: f64, lam: f64) -> [f64; TAYLOR_K] {
     g
 }
 
-fn horner(g: &[f64; TAYLOR_K], u: f64) -> f64 {
-    g.iter().rev().fold(0.0, |acc, &c| acc * u + c)
+fn horner(g: &[f64; TAYLOR_K], u: f64, kk: usize) -> f64 {
+    g.iter().take(kk).rev().fold(0.0, |acc, &c| acc * u + c)
 }
 
 /// Output buffers of [`sample_trajectory`]; all four must have the same length n ≥ 2.
@@ -95,6 +97,118 @@ pub struct TrajectoryOut<'a> {
     pub v: &'a mut [f64],
     /// Total normal force F = k δ^p + α √(m k) δ^((p−1)/2) v [N].
     pub force: &'a mut [f64],
+}
+
+/// (S, S') one phase step h further on, as a matrix acting on (S, S'): the rotation by ωh
+/// (hyperbolic by ω₂h above critical damping, a shear at ζ = 1).
+fn step_matrix(c: &Contact, h: f64) -> [f64; 4] {
+    match c.regime {
+        Regime::Under(w) => {
+            let (s, co) = (w * h).sin_cos();
+            [co, s / w, -w * s, co]
+        }
+        Regime::Critical => [1.0, h, 0.0, 1.0],
+        Regime::Over(w2) => {
+            let (s, co) = ((w2 * h).sinh(), (w2 * h).cosh());
+            [co, s / w2, w2 * s, co]
+        }
+    }
+}
+
+/// X(u_j) = e^{−ζu}S(u) into `x` and v(u_j) into `v`, u_j = j·h (the last at u_end exactly). The
+/// state advances by [`step_matrix`] and e^{−ζu} by a factor, reseeded exactly every `RESEED`
+/// samples (a recurrence's rounding grows with its number of steps): no transcendental per sample.
+fn fill_states(c: &Contact, h: f64, u_end: f64, x: &mut [f64], v: &mut [f64]) {
+    let zeta = c.zeta;
+    let [m11, m12, m21, m22] = step_matrix(c, h);
+    let decay_step = (-zeta * h).exp();
+    // LANES chunks advance side by side: four independent recurrence chains instead of one,
+    // so the loop runs at the CPU's throughput rather than at one chain's latency.
+    const LANES: usize = 4;
+    let chunks = x.len().div_ceil(RESEED);
+    for group in (0..chunks).step_by(LANES) {
+        let mut st = [(0.0f64, 0.0f64, 0.0f64); LANES];
+        for (l, st) in st.iter_mut().enumerate() {
+            let u0 = ((group + l) * RESEED) as f64 * h;
+            let (s, ds) = c.s_and_slope(u0);
+            *st = (s, ds, (-zeta * u0).exp());
+        }
+        for i in 0..RESEED {
+            for (l, (s, ds, decay)) in st.iter_mut().enumerate() {
+                let j = (group + l) * RESEED + i;
+                if let (Some(xj), Some(vj)) = (x.get_mut(j), v.get_mut(j)) {
+                    *xj = *decay * *s;
+                    *vj = c.v0 * *decay * (*ds - zeta * *s);
+                }
+                (*s, *ds) = (m11 * *s + m12 * *ds, m21 * *s + m22 * *ds);
+                *decay *= decay_step;
+            }
+        }
+    }
+    let last = x.len().saturating_sub(1);
+    let at = |j: usize| if j == last { u_end } else { j as f64 * h };
+    if let (Some(xl), Some(vl)) = (x.last_mut(), v.last_mut()) {
+        let (s, ds) = c.s_and_slope(u_end);
+        let decay = (-zeta * u_end).exp();
+        *xl = decay * s;
+        *vl = c.v0 * decay * (ds - zeta * s);
+    }
+    // Strongly overdamped: e^{−ζu}(cosh ω₂u − ζ sinh(ω₂u)/ω₂) as two decaying exponentials,
+    // λ₂ = ζ + ω₂ and λ₁ = 1/λ₂ = ζ − ω₂. The cosh/sinh form cancels to ~4ζ²ε at the force end
+    // (1.2e-10 relative exit speed at ζ = 400, tests/proptest_ffi.rs); this one only near critical
+    // damping, hence the switch at ζ = 2 (both ≤ 16ε there).
+    if let Regime::Over(w2) = c.regime {
+        if zeta >= 2.0 {
+            let l2 = zeta + w2;
+            for (j, vj) in v.iter_mut().enumerate().skip(1) {
+                let u = at(j);
+                *vj = c.v0 * 0.5 * ((1.0 + zeta / w2) * (-l2 * u).exp() - (-u / l2).exp() / (w2 * l2));
+            }
+        }
+    }
+}
+
+/// Constant factors from X to δ, δ^((p−1)/2) and F.
+struct Scales {
+    c_delta: f64,
+    c_dh: f64,
+    k: f64,
+    damp: f64,
+}
+
+impl Scales {
+    /// X (in `d`) → δ, F and dt/du (into `t`), given X^q = pow(X); generic so that `pow` inlines
+    /// and the loop vectorises.
+    #[inline(always)]
+    fn fill<P: Fn(f64) -> f64>(&self, t: &mut [f64], d: &mut [f64], v: &[f64], f: &mut [f64], pow: P) {
+        for (((t, d), &vj), f) in t.iter_mut().zip(d.iter_mut()).zip(v).zip(f.iter_mut()) {
+            let x = *d;
+            let xq = pow(x);
+            let dj = self.c_delta * xq;
+            let dh = self.c_dh * x / xq;
+            *d = dj;
+            *f = self.k * dj * dh * dh + self.damp * dh * vj;
+            *t = xq / x;
+        }
+    }
+}
+
+/// [`Scales::fill`] with the branch-free power kernel, as a loop for [`pow::vectorised`].
+struct KernelFill<'a> {
+    scales: &'a Scales,
+    q: f64,
+    t: &'a mut [f64],
+    d: &'a mut [f64],
+    v: &'a [f64],
+    f: &'a mut [f64],
+}
+
+impl pow::SimdLoop for KernelFill<'_> {
+    #[inline(always)]
+    fn run(self) {
+        let q = self.q;
+        self.scales.fill(self.t, self.d, self.v, self.f, |x| pow::pow_kernel(x, q));
+    }
 }
 
 /// Fills `out` with n samples over the contact ending by `criterion`; `mass` > 0 scales the force.
@@ -137,64 +251,38 @@ pub fn sample_trajectory(
     let c_delta = (ln_amp + q * c.ln_x0).exp();
     let c_dh = (0.5 * (c.p - 1.0) * ln_amp + (1.0 - q) * c.ln_x0).exp();
 
-    // Pass 1: states, and dt/du (per unit P) parked in out.t.
-    let (step_a, step_b) = match c.regime {
-        Regime::Under(w) => (w * h).sin_cos(),
-        Regime::Critical => (0.0, 1.0),
-        Regime::Over(w2) => ((w2 * h).sinh(), (w2 * h).cosh()),
+    // Pass 1: X(u) parked in out.delta and v in out.v; then δ, F and dt/du (per unit P, parked in
+    // out.t) from X^q, the one transcendental pair per sample: a branch-free kernel in a loop
+    // compiled for SIMD ([`pow`]), or libm where some X lies outside the kernel's range.
+    fill_states(c, h, u_end, out.delta, out.v);
+    let scales = Scales { c_delta, c_dh, k, damp };
+    // Samples not overwritten below as δ = 0 ends.
+    let kept = match criterion {
+        EndCriterion::Overlap => out.delta.get(1..last),
+        EndCriterion::Force => out.delta.get(1..),
     };
-    let decay_step = (-zeta * h).exp();
-    // (a, b) = (sin, cos)(ωu), (sinh, cosh)(ω₂u), or (u, 1); decay = e^{−ζu}.
-    let (mut a, mut b, mut decay) = (0.0f64, 1.0f64, 1.0f64);
-    let iter = out.t.iter_mut().zip(out.delta.iter_mut()).zip(out.v.iter_mut()).zip(out.force.iter_mut());
-    for (j, (((t, d), v), f)) in iter.enumerate() {
-        let u = if j == last { u_end } else { j as f64 * h };
-        if j % RESEED == 0 || j == last {
-            (a, b) = match c.regime {
-                Regime::Under(w) => (w * u).sin_cos(),
-                Regime::Critical => (u, 1.0),
-                Regime::Over(w2) => ((w2 * u).sinh(), (w2 * u).cosh()),
-            };
-            decay = (-zeta * u).exp();
-        } else {
-            (a, b) = match c.regime {
-                Regime::Under(_) => (a * step_b + b * step_a, b * step_b - a * step_a),
-                Regime::Critical => (u, 1.0),
-                Regime::Over(_) => (a * step_b + b * step_a, b * step_b + a * step_a),
-            };
-            decay *= decay_step;
-        }
-        let (s, ds) = match c.regime {
-            Regime::Under(w) | Regime::Over(w) => (a / w, b),
-            Regime::Critical => (a, b),
-        };
-        let vj = match c.regime {
-            // Strongly overdamped: e^{−ζu}(cosh ω₂u − ζ sinh(ω₂u)/ω₂) as two decaying
-            // exponentials, λ₂ = ζ + ω₂ and λ₁ = 1/λ₂ = ζ − ω₂. The cosh/sinh form cancels to
-            // ~4ζ²ε at the force end (1.2e-10 relative exit speed at ζ = 400, tests/proptest_ffi.rs);
-            // this one only near critical damping, hence the switch at ζ = 2 (both ≤ 16ε there).
-            Regime::Over(w2) if zeta >= 2.0 && u > 0.0 => {
-                let l2 = zeta + w2;
-                c.v0 * 0.5 * ((1.0 + zeta / w2) * (-l2 * u).exp() - (-u / l2).exp() / (w2 * l2))
-            }
-            _ => c.v0 * decay * (ds - zeta * s),
-        };
-        *v = vj;
-        *t = 0.0;
-        if (j == last && criterion == EndCriterion::Overlap) || j == 0 {
-            *d = 0.0;
-            // At δ = 0 only the linear dashpot (p = 1) still acts.
-            *f = if c.p == 1.0 { damp * vj } else { 0.0 };
-        } else {
-            let x = decay * s;
-            let xq = (q * x.ln()).exp();
-            let dj = c_delta * xq;
-            // p = 1 (q = 1): x^(1-q) = 1 exactly, also where e^{-ζu} has underflowed to x = 0
-            // (near-critical damping, u_end ~ π/ω huge), which x/xq would turn into 0/0.
-            let (dh, dtdu) = if q == 1.0 { (c_dh, 1.0) } else { (c_dh * x / xq, xq / x) };
+    if q == 1.0 {
+        // p = 1: x^(1−q) = 1 exactly, also where e^{−ζu} has underflowed to x = 0 (near-critical
+        // damping, u_end ~ π/ω huge), which x/xq would turn into 0/0.
+        for (((t, d), &vj), f) in out.t.iter_mut().zip(out.delta.iter_mut()).zip(out.v.iter()).zip(out.force.iter_mut()) {
+            let dj = c_delta * *d;
             *d = dj;
-            *f = k * dj * dh * dh + damp * dh * vj;
-            *t = dtdu;
+            *f = k * dj * c_dh * c_dh + damp * c_dh * vj;
+            *t = 1.0;
+        }
+    } else if kept.unwrap_or(&[]).iter().all(|&x| pow::in_kernel_range(x)) {
+        pow::vectorised(KernelFill { scales: &scales, q, t: out.t, d: out.delta, v: out.v, f: out.force });
+    } else {
+        scales.fill(out.t, out.delta, out.v, out.force, |x| (q * x.ln()).exp());
+    }
+    // δ = 0 at impact (and at the end under the overlap criterion): only the linear dashpot
+    // (p = 1) still acts there.
+    for j in [Some(0), (criterion == EndCriterion::Overlap).then_some(last)].into_iter().flatten() {
+        let vj = out.v.get(j).copied().unwrap_or(0.0);
+        if let (Some(d), Some(f), Some(t)) = (out.delta.get_mut(j), out.force.get_mut(j), out.t.get_mut(j)) {
+            *d = 0.0;
+            *f = if c.p == 1.0 { damp * vj } else { 0.0 };
+            *t = 0.0;
         }
     }
 
@@ -209,7 +297,19 @@ pub fn sample_trajectory(
     let radius = if lam == 0.0 { f64::INFINITY } else { PI / lam.abs().sqrt() };
     let edge_u = EDGE as f64 * h;
     let taylor_ok = edge_u <= TAYLOR_RATIO * radius && kappa.abs() * edge_u <= 10.0 * TAYLOR_RATIO;
-    let g_left = if taylor_ok { g_series(nu, kappa, lam) } else { [0.0; TAYLOR_K] };
+    // Terms for the edge: the series' terms fall like (u/radius)^k (the zeros of S) and
+    // (|κ|u)^k/k! (the exponential); stop where both are below 1e−18 at u = edge_u.
+    let kk = {
+        let (t, ku) = (edge_u / radius, kappa.abs() * edge_u);
+        let (mut a, mut b, mut k) = (1.0f64, 1.0f64, 0usize);
+        while k < TAYLOR_K && (a > 1e-18 || b > 1e-18) {
+            k += 1;
+            a *= t;
+            b *= ku / k as f64;
+        }
+        k
+    };
+    let g_left = if taylor_ok { g_series(nu, kappa, lam, kk) } else { [0.0; TAYLOR_K] };
     // Right singular end (underdamped): π/ω, and the phase left from the last sample to it.
     let right = match c.regime {
         Regime::Under(w) => {
@@ -223,33 +323,44 @@ pub fn sample_trajectory(
     };
     let right_near = right.is_some_and(|(_, r_end)| r_end <= edge_u);
     let (g_right, full) = match right {
-        Some((w, _)) if right_near && taylor_ok => (g_series(nu, -kappa, lam), ln_full_integral(c, w).exp()),
+        Some((w, _)) if right_near && taylor_ok => (g_series(nu, -kappa, lam, kk), ln_full_integral(c, w).exp()),
         _ => ([0.0; TAYLOR_K], 0.0),
     };
     // The stencil interpolates the smooth factor e^{κu}(S(u)/u)^ν too: its 8th-order error is
     // ~7e−4 (rate·h)^8 per step, rate = |κ| + |ω|; keep rate·h ≤ 0.05 (≤ 3e−14), else (extreme
     // ζ → 1 with few samples) every time is computed directly.
     let stencil = n >= MIN_STENCIL && (kappa.abs() + lam.abs().sqrt()) * h <= STENCIL_RATE_H;
-    let mut hist = [0.0f64; 8];
-    let mut t_prev = 0.0;
-    for j in 0..n {
+    let r_of = |j: usize| right.map(|(_, r_end)| r_end + (last - j) as f64 * h);
+    let in_right_edge = |j: usize| r_of(j).is_some_and(|r| r <= edge_u);
+    // Samples whose interval [j−1, j] takes the centred stencil row (nodes j−4..j+3, none in an
+    // edge): a loop with no per-sample branching. The rest go through `general`.
+    let fast = if stencil {
+        let lo = EDGE + 1;
+        let mut hi = (n - 4).min(last - 1);
+        while hi >= lo && in_right_edge(hi) {
+            hi -= 1;
+        }
+        lo..hi + 1
+    } else {
+        0..0
+    };
+    let general = |j: usize, f_here: f64, hist: &[f64; 8], t: &[f64], t_prev: f64| -> f64 {
         let u = if j == last { u_end } else { j as f64 * h };
-        let r = right.map(|(_, r_end)| r_end + (last - j) as f64 * h);
-        let f_here = out.t.get(j).copied().unwrap_or(f64::NAN);
-        let tj = if j == 0 {
+        let r = r_of(j);
+        if j == 0 {
             0.0
         } else if j == last {
             tau
-        } else if !stencil || j <= EDGE || r.is_some_and(|r| r <= edge_u) {
+        } else if !stencil || j <= EDGE || in_right_edge(j) {
             match (r, right) {
                 (Some(r), Some((w, _))) if r <= edge_u && u * w > 0.5 * PI => {
                     if taylor_ok {
-                        scale * (full - (kappa * PI / w).exp() * (q * r.ln()).exp() * horner(&g_right, r))
+                        scale * (full - (kappa * PI / w).exp() * (q * r.ln()).exp() * horner(&g_right, r, kk))
                     } else {
                         time_at_phase(c, u, level)
                     }
                 }
-                _ if j <= EDGE && taylor_ok => scale * (q * u.ln()).exp() * horner(&g_left, u),
+                _ if j <= EDGE && taylor_ok => scale * (q * u.ln()).exp() * horner(&g_left, u, kk),
                 _ => time_at_phase(c, u, level),
             }
         } else {
@@ -260,11 +371,42 @@ pub fn sample_trajectory(
             let mut acc = 0.0;
             for (i, &cw) in row.iter().enumerate() {
                 let idx = start + i;
-                let fv = if idx < j { hist.get(idx % 8).copied().unwrap_or(f64::NAN) } else { out.t.get(idx).copied().unwrap_or(f64::NAN) };
+                let fv = if idx < j { hist.get(idx % 8).copied().unwrap_or(f64::NAN) } else { t.get(idx).copied().unwrap_or(f_here) };
                 acc += cw * fv;
             }
             t_prev + scale * h * acc
-        };
+        }
+    };
+    // out.t holds dt/du on entry; each sample's value is overwritten by its time once used, so
+    // the last 8 values of dt/du are kept in `hist` (index mod 8).
+    let mut hist = [0.0f64; 8];
+    let mut t_prev = 0.0;
+    let mut j = 0;
+    while j < n {
+        if j == fast.start && !fast.is_empty() {
+            let [c0, c1, c2, c3, ..] = STENCIL[3];
+            let sh = scale * h;
+            let at = |t: &[f64], i: usize| t.get(i).copied().unwrap_or(f64::NAN);
+            let hs = |i: usize| hist.get(i % 8).copied().unwrap_or(f64::NAN);
+            let t = &mut *out.t;
+            let mut win = [hs(j - 4), hs(j - 3), hs(j - 2), hs(j - 1), at(t, j), at(t, j + 1), at(t, j + 2), at(t, j + 3)];
+            for jj in fast.clone() {
+                // The centred row is symmetric: pair the nodes.
+                let acc = c0 * (win[0] + win[7]) + c1 * (win[1] + win[6]) + c2 * (win[2] + win[5]) + c3 * (win[3] + win[4]);
+                t_prev += sh * acc;
+                if let Some(slot) = hist.get_mut(jj % 8) {
+                    *slot = win[4];
+                }
+                if let Some(slot) = t.get_mut(jj) {
+                    *slot = t_prev;
+                }
+                win = [win[1], win[2], win[3], win[4], win[5], win[6], win[7], at(t, jj + 4)];
+            }
+            j = fast.end;
+            continue;
+        }
+        let f_here = out.t.get(j).copied().unwrap_or(f64::NAN);
+        let tj = general(j, f_here, &hist, out.t, t_prev);
         if let Some(slot) = hist.get_mut(j % 8) {
             *slot = f_here;
         }
@@ -272,6 +414,7 @@ pub fn sample_trajectory(
             *slot = tj;
         }
         t_prev = tj;
+        j += 1;
     }
     Ok(())
 }
