@@ -9,6 +9,7 @@
 //! * [`taylor`]: Taylor-series (automatic differentiation) building blocks over real or complex
 //!   numbers, for the viscoelastic reference integrator.
 
+pub(crate) mod estrin;
 pub mod gamma;
 pub mod gauss_jacobi;
 pub mod jacobi_cc;

@@ -14,7 +14,8 @@
 //!   low bits: no float→int conversion), |r| ≤ ln2/2, e^r by its Taylor series to r^13
 //!   (remainder < 5e−18), times 2^k built from its exponent bits. Error ≈ 1 ulp + |y|·ε (the
 //!   rounding of y itself).
-//! * Polynomials by Estrin's scheme: by Horner the loop is bound by the latency of its chain.
+//! * Polynomials by Estrin's scheme ([`super::estrin`]): by Horner the loop is bound by the
+//!   latency of its chain.
 //! * Outside x ∈ [2^−1000, 2^1000] (zero, subnormal, huge, non-finite) the caller uses libm
 //!   ([`in_kernel_range`]); inside, |q ln x| ≤ 694 stays in exp's kernel range for q ≤ 1.
 
@@ -22,6 +23,8 @@
 const LN2_HI: f64 = f64::from_bits(core::f64::consts::LN_2.to_bits() & !((1u64 << 21) - 1));
 /// ln 2 − LN2_HI to double precision (from ln 2 to 60 digits, 0.693147180559945309417232121458…).
 const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
+use super::estrin::estrin;
+
 const LOG2_E: f64 = core::f64::consts::LOG2_E;
 /// 1.5·2^52: adding it rounds to an integer and leaves that integer in the low mantissa bits.
 const SHIFTER: f64 = 6_755_399_441_055_744.0;
@@ -63,21 +66,6 @@ const EXP_TAIL: [f64; 12] = [
     1.0 / 6_227_020_800.0,
 ];
 
-/// Σ c_k z^k, k < 12, by Estrin's scheme: pairs, then pairs of pairs with z², z⁴, z⁸. A dependency
-/// depth of 8 operations against Horner's 22: the loop over elements is bound by latency, not by
-/// arithmetic, so this more than doubles its speed. The terms fall fast (|z| ≤ 0.35 here, and
-/// the sum is a correction added to a leading term last), so the order costs no accuracy.
-#[inline(always)]
-fn estrin12(z: f64, c: &[f64; 12]) -> f64 {
-    let z2 = z * z;
-    let z4 = z2 * z2;
-    let z8 = z4 * z4;
-    let q0 = (c[0] + c[1] * z) + (c[2] + c[3] * z) * z2;
-    let q1 = (c[4] + c[5] * z) + (c[6] + c[7] * z) * z2;
-    let q2 = (c[8] + c[9] * z) + (c[10] + c[11] * z) * z2;
-    (q0 + q1 * z4) + q2 * z8
-}
-
 /// ln x for normal x in [X_MIN, X_MAX]; branch-free.
 #[inline(always)]
 fn ln_kernel(x: f64) -> f64 {
@@ -94,17 +82,20 @@ fn ln_kernel(x: f64) -> f64 {
     // ln m = 2s + 2s·z·T(z): the small correction added last, to the leading 2s.
     let z = s * s;
     let two_s = 2.0 * s;
-    let ln_m = two_s + two_s * (z * estrin12(z, &ATANH_TAIL));
+    let ln_m = two_s + two_s * (z * estrin(z, &ATANH_TAIL));
     e * LN2_HI + (e * LN2_LO + ln_m)
 }
 
-/// e^y for y in [−700, 700]; branch-free.
+/// Largest |y| for [`exp_kernel`].
+pub(crate) const EXP_KERNEL_MAX: f64 = 700.0;
+
+/// e^y for |y| ≤ [`EXP_KERNEL_MAX`]; branch-free (about 1 ulp).
 #[inline(always)]
-fn exp_kernel(y: f64) -> f64 {
+pub(crate) fn exp_kernel(y: f64) -> f64 {
     let kf = (y * LOG2_E + SHIFTER) - SHIFTER;
     let r = (y - kf * LN2_HI) - kf * LN2_LO;
     // e^r = 1 + (r + r²·T(r)): the exact 1 added last.
-    let p = 1.0 + (r + r * r * estrin12(r, &EXP_TAIL));
+    let p = 1.0 + (r + r * r * estrin(r, &EXP_TAIL));
     // k + 1023 sits in the low bits of kf + SHIFTER + 1023 (an integer below 2^52 in magnitude
     // offset): shift it into the exponent field.
     let biased = (kf + (SHIFTER + 1023.0)).to_bits().wrapping_sub(SHIFTER.to_bits()) << 52;

@@ -68,40 +68,12 @@ fn ln_sinc_series_n(z: f64, terms: usize) -> f64 {
     acc * z
 }
 
-/// Terms of the ln-sinc series for |z| ≤ `z_max` ≤ (π/2)² to < 1e−17 absolute: the terms fall
-/// like (|z|/π²)^n/n, so 27 suffice at |z| = π²/4 and fewer below.
-#[inline]
-pub(crate) fn ln_sinc_terms(z_max: f64) -> usize {
-    let r = z_max.abs();
-    if r <= 0.01 * 9.869_604_401_089_358 {
-        8
-    } else if r <= 0.0625 * 9.869_604_401_089_358 {
-        14
-    } else {
-        27
-    }
-}
-
-/// ln(sin y / y) for z = y² (ln(sinh y / y) for z = −y²), |z| ≤ (π/2)², to < 1e−17 absolute.
-#[cfg(test)]
-fn ln_sinc_poly(z: f64) -> f64 {
-    ln_sinc_series_n(z, ln_sinc_terms(z))
-}
-
-/// `out[i] = ln_sinc_poly(zs[i])` with `terms` terms for all i at once: pure multiply–adds in
-/// lockstep over the nodes, which the compiler vectorises and the CPU pipelines (one sin and one
-/// ln per node cost several times more).
-#[inline]
-pub(crate) fn ln_sinc_many(zs: &[f64], out: &mut [f64], terms: usize) {
-    out.iter_mut().for_each(|o| *o = 0.0);
-    for &a in LN_SINC.iter().take(terms).rev() {
-        for (o, &z) in out.iter_mut().zip(zs) {
-            *o = *o * z + a;
-        }
-    }
-    for (o, &z) in out.iter_mut().zip(zs) {
-        *o *= z;
-    }
+/// ln(sin y / y) for z = y² (ln(sinh y / y) for z = −y²), |z| ≤ (π/2)², to < 1e−17 absolute: all
+/// 30 terms (they fall like (|z|/π²)^n/n) by Estrin's scheme, branch-free, for loops over
+/// quadrature nodes that run in SIMD lanes.
+#[inline(always)]
+pub(crate) fn ln_sinc_poly(z: f64) -> f64 {
+    z * crate::numerics::estrin::estrin(z, &LN_SINC)
 }
 
 #[inline]

@@ -21,7 +21,9 @@
 //!   beyond it the integral is an exact, positive series ([`super::overdamped_tail`]).
 
 use super::contact::{Contact, Regime};
+use super::contact::ln_sinc_poly;
 use super::overdamped_tail::overdamped_tail;
+use crate::numerics::pow::{exp_kernel, EXP_KERNEL_MAX};
 use crate::criterion::EndCriterion;
 use crate::numerics::gamma::ln_gamma_re;
 use crate::numerics::jacobi_cc::integrate_weighted;
@@ -163,28 +165,28 @@ pub(crate) const PLAN_NODES: [usize; 5] = [5, 6, 7, 9, 12];
 pub(crate) const PLAN_MAX_NODES: usize = crate::numerics::gauss_jacobi::MAX_NODES;
 
 /// ∫_0^1 y^ν h(W y) dy (h = e^{κw}(S(w)/w)^ν) by the plan's Gauss–Jacobi rule, for a first
-/// panel W (|1 − ζ²| W² ≤ π²/4): the ln-sinc polynomial for all nodes at once, one exp per node.
+/// panel W (|1 − ζ²| W² ≤ π²/4). Per node the exponent κw + ν ln(S(w)/w) takes the ln-sinc
+/// series in z = (1 − ζ²)w² by Estrin's scheme and the exponential the branch-free kernel: no
+/// libm call and no branch, so the nodes run side by side in SIMD lanes.
 fn first_panel_planned(c: &Contact, kappa: f64, first: f64, pl: &Plan<'_>) -> f64 {
     let nu = c.q - 1.0;
-    // z = (1 − ζ²) w², signed: ln(sin(ωw)/(ωw)) below, ln(sinh(ω₂w)/(ω₂w)) above critical.
-    let lam = (1.0 - c.zeta) * (1.0 + c.zeta);
-    let mut zs = [0.0f64; PLAN_MAX_NODES];
-    let mut ls = [0.0f64; PLAN_MAX_NODES];
-    let n = pl.singular.nodes.len().min(PLAN_MAX_NODES);
-    for (z, &y) in zs.iter_mut().zip(pl.singular.nodes) {
-        let w = first * y;
-        *z = lam * w * w;
-    }
-    let terms = crate::powerlaw::contact::ln_sinc_terms(lam * first * first);
-    crate::powerlaw::contact::ln_sinc_many(zs.get(..n).unwrap_or(&[]), ls.get_mut(..n).unwrap_or(&mut []), terms);
+    // z signed: ln(sin(ωw)/(ωw)) below critical damping, ln(sinh(ω₂w)/(ω₂w)) above.
+    let lf2 = (1.0 - c.zeta) * (1.0 + c.zeta) * first * first;
     let kf = kappa * first;
-    pl.singular
-        .nodes
-        .iter()
-        .zip(pl.singular.weights)
-        .zip(ls.iter())
-        .map(|((&y, &wt), &l)| wt * (kf * y + nu * l).exp())
-        .sum()
+    let mut args = [0.0f64; PLAN_MAX_NODES];
+    for (a, &y) in args.iter_mut().zip(pl.singular.nodes) {
+        let z = lf2 * y * y;
+        *a = kf * y + nu * ln_sinc_poly(z);
+    }
+    let n = pl.singular.nodes.len().min(PLAN_MAX_NODES);
+    let in_range = args.iter().take(n).all(|a| a.abs() <= EXP_KERNEL_MAX);
+    // Exponentials in place first (an element-wise loop vectorises; an ordered sum would not).
+    if in_range {
+        args.iter_mut().for_each(|a| *a = exp_kernel(*a));
+    } else {
+        args.iter_mut().for_each(|a| *a = a.exp());
+    }
+    args.iter().zip(pl.singular.weights).map(|(&e, &wt)| wt * e).sum()
 }
 
 /// [`singular_integral`] with a plan's rule for the first panel.

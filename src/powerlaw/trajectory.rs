@@ -386,21 +386,40 @@ pub fn sample_trajectory(
         if j == fast.start && !fast.is_empty() {
             let [c0, c1, c2, c3, ..] = STENCIL[3];
             let sh = scale * h;
-            let at = |t: &[f64], i: usize| t.get(i).copied().unwrap_or(f64::NAN);
-            let hs = |i: usize| hist.get(i % 8).copied().unwrap_or(f64::NAN);
             let t = &mut *out.t;
-            let mut win = [hs(j - 4), hs(j - 3), hs(j - 2), hs(j - 1), at(t, j), at(t, j + 1), at(t, j + 2), at(t, j + 3)];
-            for jj in fast.clone() {
-                // The centred row is symmetric: pair the nodes.
-                let acc = c0 * (win[0] + win[7]) + c1 * (win[1] + win[6]) + c2 * (win[2] + win[5]) + c3 * (win[3] + win[4]);
-                t_prev += sh * acc;
-                if let Some(slot) = hist.get_mut(jj % 8) {
-                    *slot = win[4];
+            // Blocks of up to BLOCK intervals: the block's nodes j−4..j+len+2 copied into `w`
+            // (the four before j from `hist`: t holds their times already), every increment at
+            // once (independent of each other: the loop vectorises), then the running sum.
+            const BLOCK: usize = 64;
+            let mut w = [0.0f64; BLOCK + 8];
+            let mut inc = [0.0f64; BLOCK];
+            let mut jb = j;
+            while jb < fast.end {
+                let len = (fast.end - jb).min(BLOCK);
+                for (i, wi) in w.iter_mut().enumerate().take(4) {
+                    *wi = hist.get((jb + i - 4) % 8).copied().unwrap_or(f64::NAN);
                 }
-                if let Some(slot) = t.get_mut(jj) {
-                    *slot = t_prev;
+                if let (Some(dst), Some(src)) = (w.get_mut(4..len + 7), t.get(jb..jb + len + 3)) {
+                    dst.copy_from_slice(src);
                 }
-                win = [win[1], win[2], win[3], win[4], win[5], win[6], win[7], at(t, jj + 4)];
+                for (x, win) in inc.iter_mut().zip(w.windows(8)).take(len) {
+                    // The centred row is symmetric: pair the nodes.
+                    if let [a0, a1, a2, a3, a4, a5, a6, a7] = *win {
+                        *x = c0 * (a0 + a7) + c1 * (a1 + a6) + c2 * (a2 + a5) + c3 * (a3 + a4);
+                    }
+                }
+                for (i, &wi) in w.iter().enumerate().skip(4).take(len) {
+                    if let Some(slot) = hist.get_mut((jb + i - 4) % 8) {
+                        *slot = wi;
+                    }
+                }
+                if let Some(ts) = t.get_mut(jb..jb + len) {
+                    for (ti, &x) in ts.iter_mut().zip(inc.iter()) {
+                        t_prev += sh * x;
+                        *ti = t_prev;
+                    }
+                }
+                jb += len;
             }
             j = fast.end;
             continue;
