@@ -6,7 +6,8 @@
 //! Case: p = 1.5 (Hertz), α from the force-end calibration, v0 = ω0 = 1. The planned duration
 //! (`duration_force_end_planned`, plan built once outside the timed loop) and `trajectory_1000`
 //! are the two figures the issue asks to be 100× the reference (docs/powerlaw.md).
-//! Run: `cargo bench --bench powerlaw`.
+//! Run: `cargo bench --bench powerlaw`; `scripts/bench_powerlaw_ratios.sh [runs]` prints the two
+//! ratios from repeated runs.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::indexing_slicing)]
 
 #[path = "../tests/common/mod.rs"]
