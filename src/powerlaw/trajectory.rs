@@ -402,14 +402,20 @@ pub fn sample_trajectory(
                 if let (Some(dst), Some(src)) = (w.get_mut(4..len + 7), t.get(jb..jb + len + 3)) {
                     dst.copy_from_slice(src);
                 }
-                for (x, win) in inc.iter_mut().zip(w.windows(8)).take(len) {
-                    // The centred row is symmetric: pair the nodes.
-                    if let [a0, a1, a2, a3, a4, a5, a6, a7] = *win {
+                // inc[i] from w[i..i+8], as eight shifted slices zipped (vectorises; a window
+                // per element does not). The centred row is symmetric: pair the nodes.
+                let shifted = |k: usize| w.get(k..k + len).unwrap_or(&[]);
+                inc.iter_mut()
+                    .zip(shifted(0).iter().zip(shifted(7)))
+                    .zip(shifted(1).iter().zip(shifted(6)))
+                    .zip(shifted(2).iter().zip(shifted(5)))
+                    .zip(shifted(3).iter().zip(shifted(4)))
+                    .for_each(|((((x, (a0, a7)), (a1, a6)), (a2, a5)), (a3, a4))| {
                         *x = c0 * (a0 + a7) + c1 * (a1 + a6) + c2 * (a2 + a5) + c3 * (a3 + a4);
-                    }
-                }
-                for (i, &wi) in w.iter().enumerate().skip(4).take(len) {
-                    if let Some(slot) = hist.get_mut((jb + i - 4) % 8) {
+                    });
+                // The block's last 8 nodes' dt/du (older ones in `hist` stay valid).
+                for node in (jb + len).saturating_sub(8).max(jb)..jb + len {
+                    if let (Some(slot), Some(&wi)) = (hist.get_mut(node % 8), w.get(node + 4 - jb)) {
                         *slot = wi;
                     }
                 }
