@@ -2,40 +2,16 @@
  * computations (closed forms evaluated here, and a fine RK4 integration of the equation of
  * motion for the force-zero criterion), and every class of bad input. */
 #include "check.h"
+#include "rk4.h"
 #include <demcontact.h>
 #include <stdint.h>
 #include <string.h>
 
 static const double PI = 3.14159265358979323846;
 
-/* Velocity-Verlet-free reference: classical RK4, m = k = 1, tiny fixed step, end event located
- * by linear interpolation between steps. Returns realised e. */
+/* Realised restitution of the reference collision (rk4.h) with m = k = 1 and v0 = 1. */
 static double rk4_restitution(double p, double alpha, int force_end) {
-    double d = 0.0, v = 1.0, h = 2e-5;
-    double dexp = 0.5 * (p - 1.0);
-#define ACC(dd, vv) (-(alpha) * pow(fabs(dd), dexp) * (vv) - copysign(pow(fabs(dd), p), (dd)))
-#define FORCE(dd, vv) (copysign(pow(fabs(dd), p), (dd)) + (alpha) * pow(fabs(dd), dexp) * (vv))
-    for (long i = 0; i < 100000000L; i++) {
-        double k1d = v, k1v = ACC(d, v);
-        double k2d = v + 0.5 * h * k1v, k2v = ACC(d + 0.5 * h * k1d, v + 0.5 * h * k1v);
-        double k3d = v + 0.5 * h * k2v, k3v = ACC(d + 0.5 * h * k2d, v + 0.5 * h * k2v);
-        double k4d = v + h * k3v, k4v = ACC(d + h * k3d, v + h * k3v);
-        double nd = d + h / 6.0 * (k1d + 2 * k2d + 2 * k3d + k4d);
-        double nv = v + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v);
-        if (v < 0.0) { /* unloading: look for the end event */
-            double g0 = force_end ? FORCE(d, v) : d;
-            double g1 = force_end ? FORCE(nd, nv) : nd;
-            if (g1 <= 0.0) {
-                double s = g0 / (g0 - g1);
-                return -(v + s * (nv - v));
-            }
-        }
-        d = nd;
-        v = nv;
-    }
-    return NAN;
-#undef ACC
-#undef FORCE
+    return dc_rk4_collide(p, alpha, 1.0, 1.0, force_end).v_exit;
 }
 
 int main(void) {

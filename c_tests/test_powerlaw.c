@@ -2,50 +2,9 @@
  * (energy balance and the Beta function for undamped contacts, a fine RK4 integration of the
  * equation of motion for damped ones), the trajectory's buffer rules, and every class of bad input. */
 #include "check.h"
+#include "rk4.h"
 #include <demcontact.h>
 #include <stdint.h>
-
-/* RK4 with m = 1, k = omega0^2, fixed small step: delta_max, t_max, tau (end event located by
- * linear interpolation) for the given criterion. Accuracy ~1e-7 relative at this step. */
-static void rk4_collision(double p, double alpha, double v0, double w0, int force_end,
-                          double *dmax, double *tmax, double *tau) {
-    double d = 0.0, v = v0, t = 0.0, h = 2e-5 / w0;
-    *tmax = NAN;
-    *tau = NAN;
-    double dexp = 0.5 * (p - 1.0);
-#define ACC(dd, vv) (-(alpha) * w0 * pow(fabs(dd), dexp) * (vv) - w0 * w0 * copysign(pow(fabs(dd), p), (dd)))
-#define FORCE(dd, vv) (w0 * w0 * copysign(pow(fabs(dd), p), (dd)) + (alpha) * w0 * pow(fabs(dd), dexp) * (vv))
-    *dmax = 0.0;
-    for (long i = 0; i < 200000000L; i++) {
-        double k1d = v, k1v = ACC(d, v);
-        double k2d = v + 0.5 * h * k1v, k2v = ACC(d + 0.5 * h * k1d, v + 0.5 * h * k1v);
-        double k3d = v + 0.5 * h * k2v, k3v = ACC(d + 0.5 * h * k2d, v + 0.5 * h * k2v);
-        double k4d = v + h * k3v, k4v = ACC(d + h * k3d, v + h * k3v);
-        double nd = d + h / 6.0 * (k1d + 2 * k2d + 2 * k3d + k4d);
-        double nv = v + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v);
-        if (v > 0.0 && nv <= 0.0) { /* turning point: quadratic peak from the two samples */
-            double s = v / (v - nv);
-            *tmax = t + s * h;
-            *dmax = nd > d ? nd : d;
-            double a = 0.5 * (v - nv) / h; /* d(t) ~ d + v tau - a tau^2 */
-            double peak = d + v * v / (4.0 * a);
-            if (peak > *dmax) *dmax = peak;
-        }
-        if (v < 0.0) {
-            double g0 = force_end ? FORCE(d, v) : d;
-            double g1 = force_end ? FORCE(nd, nv) : nd;
-            if (g1 <= 0.0) {
-                *tau = t + h * g0 / (g0 - g1);
-                return;
-            }
-        }
-        d = nd;
-        v = nv;
-        t += h;
-    }
-#undef ACC
-#undef FORCE
-}
 
 int main(void) {
     const double ps[] = {1.0, 1.5, 2.0, 3.0};
@@ -75,8 +34,8 @@ int main(void) {
             double alpha = 0.0;
             if (c < 2) CHECK_STATUS(dc_alpha_from_e(0.3, p, crit, &alpha), DC_OK);
             else alpha = 2.5 * sqrt(2.0 * (p + 1.0)); /* zeta = 2.5 */
-            double rd = NAN, rt = NAN, rtau = NAN;
-            rk4_collision(p, alpha, v0, w0, crit == DC_END_FORCE, &rd, &rt, &rtau);
+            dc_rk4_collision ref = dc_rk4_collide(p, alpha, v0, w0, crit == DC_END_FORCE);
+            double rd = ref.dmax, rt = ref.tmax, rtau = ref.tau;
             CHECK_STATUS(dc_max_overlap(p, alpha, v0, w0, &dmax), DC_OK);
             CHECK_STATUS(dc_time_of_max_overlap(p, alpha, v0, w0, &tmax), DC_OK);
             CHECK_STATUS(dc_contact_duration(p, alpha, v0, w0, crit, &tau), DC_OK);

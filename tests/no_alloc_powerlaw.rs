@@ -10,6 +10,21 @@ static ALLOC: Counting = Counting;
 
 const INPUTS: [f64; 10] = [-1.0, 0.0, 1e-300, 0.3, 1.0, 1.5, 4.0, 1e300, f64::NAN, f64::INFINITY];
 
+/// Under Miri (scripts/miri.sh) a call costs 10^4 to 10^6 times more than natively, so there the
+/// costly inner block runs on a subset of the grid that still reaches every region of src/ the full
+/// grid reaches (scripts/miri_coverage.sh): the valid p = 1 (closed forms), 1.5 and 1e300 with
+/// every class of alpha (0.3 takes the same code as 1.0; alpha = 1e300 is kept at p = 1 and 1e300),
+/// the invalid p with one alpha, and the bad v0 with one criterion. Native runs keep the full grid.
+fn in_miri_subset(p: f64, alpha: f64, v0: f64, crit: i32) -> bool {
+    let one_of = |x: f64, set: &[f64]| set.iter().any(|s| s.to_bits() == x.to_bits());
+    let valid_p = p >= 1.0 && p.is_finite();
+    let alphas: &[f64] = if valid_p { &[0.0, 1e-300, 1.0, 1.5, 4.0, 1e300, -1.0, f64::NAN, f64::INFINITY] } else { &[0.3] };
+    (!valid_p || one_of(p, &[1.0, 1.5, 1e300]))
+        && one_of(alpha, alphas)
+        && (p, alpha) != (1.5, 1e300)
+        && (v0 == 0.5 || crit == DC_END_OVERLAP)
+}
+
 #[test]
 fn powerlaw_exports_do_not_allocate() {
     assert_counter_works();
@@ -31,6 +46,12 @@ fn powerlaw_exports_do_not_allocate() {
             for &alpha in &INPUTS {
                 for &v0 in &[0.5, f64::NAN, -1.0] {
                     for crit in [DC_END_OVERLAP, DC_END_FORCE, 9] {
+                        if cfg!(miri) && !in_miri_subset(p, alpha, v0, crit) {
+                            continue;
+                        }
+                        // Trajectory samples: 64 reach the stencil of the time integral. Its cost
+                        // grows with n, so under Miri one contact takes 64 and the others 8.
+                        let n_max = if cfg!(miri) && (p, alpha, crit) != (1.5, 1.0, DC_END_FORCE) { 8 } else { 64 };
                         unsafe {
                             std::hint::black_box(dc_max_overlap(p, alpha, v0, 3.0, &mut out));
                             std::hint::black_box(dc_time_of_max_overlap(p, alpha, v0, 3.0, &mut out));
@@ -43,7 +64,7 @@ fn powerlaw_exports_do_not_allocate() {
                             std::hint::black_box(dc_contact_duration_planned(&plan, alpha, v0, 3.0, crit, &mut out));
                             std::hint::black_box(dc_contact_duration_planned(&zero, alpha, v0, 3.0, crit, &mut out));
                             std::hint::black_box(dc_contact_duration_planned(std::ptr::null(), alpha, v0, 3.0, crit, &mut out));
-                            for (nn, len) in [(64, 64), (0, 64), (65, 64), (2, 2), (1, 1)] {
+                            for (nn, len) in [(n_max, n_max), (0, n_max), (n_max + 1, n_max), (2, 2), (1, 1)] {
                                 std::hint::black_box(dc_contact_trajectory(
                                     p, alpha, v0, 3.0, 0.7, crit, 3, nn,
                                     t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), len,

@@ -36,6 +36,25 @@ def setup(n, steps):
     return per_layer, layers, dt, steps
 
 
+def deck_head(model, dt, box):
+    """The input deck up to the particles, shared by the settling and the timing runs: settings,
+    the `box` lines (create it, or read a data file), materials, contact model, time step, gravity
+    and the five frictional walls (floor and sides) with the same model."""
+    L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
+         "communicate single vel yes", "units si"] + box + [
+         "neighbor 0.0004 bin", "neigh_modify delay 0",
+         "fix m1 all property/global youngsModulus peratomtype %g" % E_BED,
+         "fix m2 all property/global poissonsRatio peratomtype %g" % H.NU,
+         "fix m3 all property/global coefficientRestitution peratomtypepair 1 %g" % E_REST,
+         "fix m4 all property/global coefficientFriction peratomtypepair 1 %g" % MU,
+         "pair_style gran " + model, "pair_coeff * *", "timestep %.17g" % dt,
+         "fix gravi all gravity 9.81 vector 0.0 0.0 -1.0"]
+    for i, (kind, pos) in enumerate([("zplane", 0.0), ("xplane", -HALF), ("xplane", HALF),
+                                     ("yplane", -HALF), ("yplane", HALF)]):
+        L.append("fix w%d all wall/gran %s primitive type 1 %s %g" % (i, model, kind, pos))
+    return L
+
+
 def liggghts_deck(model, n, dt, steps):
     per_layer, layers, _, _ = setup(n, steps)
     side = int(math.sqrt(per_layer))
@@ -46,19 +65,9 @@ def liggghts_deck(model, n, dt, steps):
     thermo = max(steps // 10, 1)
     vwin = (WIN[1] - WIN[0]) * (WIN[3] - WIN[2]) * (WIN[5] - WIN[4])
     vp = 4.0 / 3.0 * math.pi * H.R ** 3
-    L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
-         "communicate single vel yes", "units si",
-         "region box block %g %g %g %g 0 %g units box" % (-HALF, HALF, -HALF, HALF, z0 + layers * SPACING + 0.005),
-         "create_box 1 box", "neighbor 0.0004 bin", "neigh_modify delay 0",
-         "fix m1 all property/global youngsModulus peratomtype %g" % E_BED,
-         "fix m2 all property/global poissonsRatio peratomtype %g" % H.NU,
-         "fix m3 all property/global coefficientRestitution peratomtypepair 1 %g" % E_REST,
-         "fix m4 all property/global coefficientFriction peratomtypepair 1 %g" % MU,
-         "pair_style gran " + model, "pair_coeff * *", "timestep %.17g" % dt,
-         "fix gravi all gravity 9.81 vector 0.0 0.0 -1.0"]
-    for i, (kind, pos) in enumerate([("zplane", 0.0), ("xplane", -HALF), ("xplane", HALF),
-                                     ("yplane", -HALF), ("yplane", HALF)]):
-        L.append("fix w%d all wall/gran %s primitive type 1 %s %g" % (i, model, kind, pos))
+    L = deck_head(model, dt, ["region box block %g %g %g %g 0 %g units box"
+                              % (-HALF, HALF, -HALF, HALF, z0 + layers * SPACING + 0.005),
+                              "create_box 1 box"])
     L += ["lattice sc %g" % SPACING,
           "region fill block %g %g %g %g %g %g units box"
           % (lo, lo + side * SPACING, lo, lo + side * SPACING, z0, z0 + layers * SPACING),
@@ -84,18 +93,7 @@ def liggghts_deck(model, n, dt, steps):
 def timing_deck(model, data, dt, steps):
     """The settled bed (every sphere in contact) run on for `steps` with the given model: the
     timing comparison, free of the settling transient. Contact history starts from zero for both."""
-    L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
-         "communicate single vel yes", "units si", "read_data %s" % data,
-         "neighbor 0.0004 bin", "neigh_modify delay 0",
-         "fix m1 all property/global youngsModulus peratomtype %g" % E_BED,
-         "fix m2 all property/global poissonsRatio peratomtype %g" % H.NU,
-         "fix m3 all property/global coefficientRestitution peratomtypepair 1 %g" % E_REST,
-         "fix m4 all property/global coefficientFriction peratomtypepair 1 %g" % MU,
-         "pair_style gran " + model, "pair_coeff * *", "timestep %.17g" % dt,
-         "fix gravi all gravity 9.81 vector 0.0 0.0 -1.0"]
-    for i, (kind, pos) in enumerate([("zplane", 0.0), ("xplane", -HALF), ("xplane", HALF),
-                                     ("yplane", -HALF), ("yplane", HALF)]):
-        L.append("fix w%d all wall/gran %s primitive type 1 %s %g" % (i, model, kind, pos))
+    L = deck_head(model, dt, ["read_data %s" % data])
     L += ["fix integr all nve/sphere", "thermo %d" % steps, "run %d" % steps]
     return "\n".join(L) + "\n"
 
@@ -114,9 +112,7 @@ def timing(exe, env, workdir, dt, nps, reps, steps):
             for label, _ in MODELS:
                 log = "log.%s.np%d.%d" % (label, np_, r)
                 H.run(H.mpi_prefix(np_) + [exe, "-in", "in.%s" % label, "-log", log], d, env)
-                text = open(os.path.join(d, log)).read()
-                loop = float(re.search(r"Loop time of ([0-9.eE+-]+)", text).group(1))
-                pair = float(re.search(r"Pair  time \(%\) = ([0-9.eE+-]+)", text).group(1))
+                loop, _, pair = log_times(open(os.path.join(d, log)).read())
                 old = best.get((label, np_), (float("inf"), float("inf")))
                 best[(label, np_)] = (min(old[0], loop), min(old[1], pair))
     return best
@@ -134,10 +130,15 @@ def parse_log(text):
             cols = ["step", "Atoms", "KinEng", "c_rke", "c_mcn", "v_zm", "v_ztop", "v_phi"]
         elif cols and len(f) == len(cols) and re.match(r"^\d+$", f[0]):
             last = dict(zip(cols, map(float, f)))
+    loop, procs, last["pair_time"] = log_times(text)
+    return last, loop, procs
+
+
+def log_times(text):
+    """Loop wall time [s], rank count and pair time [s] from the simulator's own log."""
     loop = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", text)
     pair = re.search(r"Pair  time \(%\) = ([0-9.eE+-]+)", text)
-    last["pair_time"] = float(pair.group(1))
-    return last, float(loop.group(1)), int(loop.group(2))
+    return float(loop.group(1)), int(loop.group(2)), float(pair.group(1))
 
 
 def main(a, workdir):
