@@ -734,7 +734,9 @@ int32_t dc_energy_partition(double p,
  * @param buf_len    length of each buffer; must be >= n.
  * @return DC_OK, DC_ERR_NULL_POINTER (any buffer NULL), DC_ERR_BUFFER_TOO_SHORT (n < 2 or
  *         buf_len < n), DC_ERR_LEVEL, and the statuses of dc_contact_duration. On error no
- *         buffer is written.
+ *         buffer is written, with one exception: DC_ERR_RESULT_RANGE because a sample overflowed
+ *         (extreme inputs, e.g. a force beyond 1.8e308 N), found after sampling; the first n
+ *         doubles of each buffer then hold no valid data. DC_OK guarantees every sample finite.
  *
  * # Safety
  * Each non-NULL buffer must be valid for writes of buf_len doubles and not overlap the others.

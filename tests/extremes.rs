@@ -406,6 +406,34 @@ fn trajectory_extremes() {
 }
 
 #[test]
+fn trajectory_huge_exponent() {
+    // p → ∞ (q = 2/(p+1) → 0, where q − 1 rounds to −1 from p ≈ 2e16 on): an undamped contact is
+    // time-symmetric, so the middle sample of an odd n lies at exactly τ/2 (independent of any
+    // quadrature). Found by proptest_ffi at p = 7.58e195, v0 = 1.1e-308: the middle time was NaN
+    // with DC_OK (the weight's leading moment 1/(ν+1) with ν + 1 recomputed as 0).
+    let mut s_t = Stat::new("dc_contact_trajectory", "middle time vs tau/2 (undamped, huge p)", 1e-12);
+    for p in [1e10, 1e17, 1e50, 1e195, 7.5784214180818e195, 1e300] {
+        for v0 in [1.0, 1e-300, 1.1125369292536293e-308] {
+            for n in [3usize, 65, 1001] {
+                let mut b = vec![vec![0.0f64; n]; 4];
+                let (t, rest) = b.split_at_mut(1);
+                let (d, rest) = rest.split_at_mut(1);
+                let (v, f) = rest.split_at_mut(1);
+                let (t, d, v, f) = (&mut t[0], &mut d[0], &mut v[0], &mut f[0]);
+                let at = || format!("p={p:e} v0={v0:e} n={n}");
+                for crit in [DC_END_OVERLAP, DC_END_FORCE] {
+                    let s = unsafe { dc_contact_trajectory(p, 0.0, v0, 1.0, 1.0, crit, 2, n, t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), n) };
+                    assert_eq!(s, DC_OK, "{}", at());
+                    assert!(t.iter().chain(d.iter()).chain(v.iter()).chain(f.iter()).all(|x| x.is_finite()), "{}", at());
+                    s_t.add(t[n / 2], 0.5 * t[n - 1], at);
+                }
+            }
+        }
+    }
+    print_table("Trajectories at huge p", &[s_t]);
+}
+
+#[test]
 fn viscoelastic_extremes() {
     let mut s_rt = Stat::new("dc_viscoelastic_b_from_e + _e", "e -> b -> e", 1e-12);
     let mut s_ref = Stat::new("dc_viscoelastic_e", "dc_viscoelastic_e_reference", 1e-10);

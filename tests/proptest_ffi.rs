@@ -44,6 +44,17 @@ fn contract(f: impl Fn(*mut f64) -> i32) -> Result<(i32, f64), TestCaseError> {
     Ok((s, out))
 }
 
+/// `cases` cases from a fixed seed, so that `cargo test` (and CI) is reproducible; set
+/// PROPTEST_RNG_SEED (a number) to explore other inputs, e.g.
+/// `for s in $(seq 1 50); do PROPTEST_RNG_SEED=$s cargo test --release --test proptest_ffi || break; done`.
+fn config(cases: u32) -> ProptestConfig {
+    let mut c = ProptestConfig { cases, failure_persistence: None, ..ProptestConfig::default() };
+    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
+        c.rng_seed = proptest::test_runner::RngSeed::Fixed(20_261_121);
+    }
+    c
+}
+
 fn any_f64() -> impl Strategy<Value = f64> {
     prop_oneof![
         any::<u64>().prop_map(f64::from_bits),
@@ -57,7 +68,7 @@ fn any_f64() -> impl Strategy<Value = f64> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 20_000, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(20_000))]
 
     #[test]
     fn calibration_any_bits(a in any_f64(), b in any_f64(), c in -2i32..4) {
@@ -189,7 +200,7 @@ fn contract2(f: impl Fn(*mut f64, *mut f64) -> i32) -> Result<(i32, f64, f64), T
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 5_000, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(5_000))]
 
     #[test]
     fn powerlaw_any_bits(p in mixed(1.0, 20.0), a in mixed_alpha(), v0 in mixed(1e-9, 1e4),
@@ -229,6 +240,9 @@ proptest! {
             for (i, x) in b.iter().enumerate() {
                 if s == DC_OK && i < n {
                     prop_assert!(x.is_finite(), "non-finite sample {} on success", i);
+                } else if s == DC_ERR_RESULT_RANGE && i < n {
+                    // The one documented exception: an overflowing sample is found after
+                    // sampling, so the first n doubles may have been written.
                 } else {
                     prop_assert_eq!(x.to_bits(), SENTINEL.to_bits(), "buffer written at {} (status {})", i, s);
                 }

@@ -170,8 +170,12 @@ fn cos_jk(j: usize, k: usize, n: usize) -> f64 {
     COS48.get(m).copied().unwrap_or(f64::NAN)
 }
 
-/// ∫_0^1 y^ν f(y) dy at `level` (N = 6, 8, 12, 16, 24), for ν > −1 and f analytic on [0, 1].
-pub fn integrate_weighted<F: FnMut(f64) -> f64>(mut f: F, nu: f64, level: u32) -> f64 {
+/// ∫_0^1 y^ν f(y) dy at `level` (N = 6, 8, 12, 16, 24), for f analytic on [0, 1], given
+/// `nu1` = ν + 1 > 0 rather than ν: the leading moment is 1/(ν+1), and for a weight close to
+/// y^{−1} (the contact time of p → ∞, ν + 1 = 2/(p+1)) ν + 1 recomputed from ν would lose its
+/// digits (and be 0 once ν + 1 < ε/2).
+pub fn integrate_weighted<F: FnMut(f64) -> f64>(mut f: F, nu1: f64, level: u32) -> f64 {
+    let nu = nu1 - 1.0;
     let n = n_of(level);
     // Function values at the Lobatto points, j = 0 is y = 1, j = n is y = 0.
     let mut fv = [0.0f64; MAX_N + 1];
@@ -180,7 +184,7 @@ pub fn integrate_weighted<F: FnMut(f64) -> f64>(mut f: F, nu: f64, level: u32) -
     }
     // Modified moments of (1+x)^ν, scaled by 2^{−(ν+1)} for the map y = (1+x)/2.
     let mut mom = [0.0f64; MAX_N + 1];
-    let i0 = 1.0 / (nu + 1.0);
+    let i0 = 1.0 / nu1;
     let mut prev = i0;
     let mut cur = nu * i0 / (nu + 2.0);
     if let Some(m) = mom.get_mut(0) {
@@ -235,11 +239,27 @@ mod tests {
         for &nu in &[-0.9, -0.5, -1.0 / 3.0, -0.2, 0.0, 0.5] {
             for level in 0..=MAX_LEVEL {
                 for m in 0..=LEVEL_N[level as usize] {
-                    let got = integrate_weighted(|y| y.powi(m as i32), nu, level);
+                    let got = integrate_weighted(|y| y.powi(m as i32), nu + 1.0, level);
                     let want = 1.0 / (nu + m as f64 + 1.0);
                     assert!((got - want).abs() < 5e-15 * want.max(1.0), "ν={nu} level={level} m={m}: {got} vs {want}");
                 }
             }
+        }
+    }
+
+    #[test]
+    fn weight_near_one_over_y() {
+        // ν + 1 = q tiny (p → ∞): ∫_0^1 y^{q−1} e^y dy = 1/q + Σ_{k≥1} 1/(k!(q+k)), finite for
+        // every q > 0 even where q − 1 rounds to −1.
+        for &q in &[1e-3, 1e-8, 1e-15, 1e-17, 2.6e-196] {
+            let mut want = 1.0 / q;
+            let mut fact = 1.0;
+            for k in 1..40 {
+                fact *= k as f64;
+                want += 1.0 / (fact * (q + k as f64));
+            }
+            let got = integrate_weighted(|y| y.exp(), q, MAX_LEVEL);
+            assert!(((got - want) / want).abs() < 1e-15, "q={q}: {got} vs {want}");
         }
     }
 
@@ -255,7 +275,7 @@ mod tests {
                 }
                 want += 1.0 / (fact * (nu + k as f64 + 1.0));
             }
-            let got = integrate_weighted(|y| y.exp(), nu, MAX_LEVEL);
+            let got = integrate_weighted(|y| y.exp(), nu + 1.0, MAX_LEVEL);
             assert!(((got - want) / want).abs() < 1e-15, "ν={nu}: {got} vs {want}");
         }
     }

@@ -54,7 +54,8 @@ const STENCIL: [[f64; 8]; 7] = [
 /// Taylor coefficients g_k of G(u) = Σ g_k u^k (module docs) for h = exp(φ),
 /// φ(w) = κw + ν Σ_m a_m (λw²)^m, λ = 1 − ζ².
 /// Only the first `kk` (≤ TAYLOR_K) are computed: the cost is O(kk²).
-fn g_series(nu: f64, kappa: f64, lam: f64, kk: usize) -> [f64; TAYLOR_K] {
+fn g_series(q: f64, kappa: f64, lam: f64, kk: usize) -> [f64; TAYLOR_K] {
+    let nu = q - 1.0;
     let mut phi = [0.0f64; TAYLOR_K];
     if let Some(x) = phi.get_mut(1) {
         *x = kappa;
@@ -78,7 +79,8 @@ fn g_series(nu: f64, kappa: f64, lam: f64, kk: usize) -> [f64; TAYLOR_K] {
     }
     let mut g = [0.0f64; TAYLOR_K];
     for (k, (gk, &hk)) in g.iter_mut().zip(h.iter()).enumerate() {
-        *gk = hk / (nu + k as f64 + 1.0);
+        // q + k, not ν + k + 1: exact for k = 0 however small q is (p → ∞).
+        *gk = hk / (q + k as f64);
     }
     g
 }
@@ -212,7 +214,8 @@ impl pow::SimdLoop for KernelFill<'_> {
 }
 
 /// Fills `out` with n samples over the contact ending by `criterion`; `mass` > 0 scales the force.
-/// Errors are all detected before anything is written.
+/// Errors are detected before anything is written, except `ResultRange` from a sample that
+/// overflowed (found after sampling; the buffers then hold no valid data).
 pub fn sample_trajectory(
     c: &Contact,
     criterion: EndCriterion,
@@ -241,7 +244,6 @@ pub fn sample_trajectory(
         return Err(Error::ResultRange);
     }
     let (q, zeta) = (c.q, c.zeta);
-    let nu = q - 1.0;
     let kappa = (1.0 - q) * zeta;
     let last = n - 1;
     let h = u_end / last as f64;
@@ -291,7 +293,7 @@ pub fn sample_trajectory(
         for (j, t) in out.t.iter_mut().enumerate() {
             *t = if j == last { tau } else { scale * (j as f64 * h) };
         }
-        return Ok(());
+        return all_finite(&out);
     }
     let lam = (1.0 - zeta) * (1.0 + zeta);
     let radius = if lam == 0.0 { f64::INFINITY } else { PI / lam.abs().sqrt() };
@@ -309,7 +311,7 @@ pub fn sample_trajectory(
         }
         k
     };
-    let g_left = if taylor_ok { g_series(nu, kappa, lam, kk) } else { [0.0; TAYLOR_K] };
+    let g_left = if taylor_ok { g_series(q, kappa, lam, kk) } else { [0.0; TAYLOR_K] };
     // Right singular end (underdamped): π/ω, and the phase left from the last sample to it.
     let right = match c.regime {
         Regime::Under(w) => {
@@ -323,7 +325,7 @@ pub fn sample_trajectory(
     };
     let right_near = right.is_some_and(|(_, r_end)| r_end <= edge_u);
     let (g_right, full) = match right {
-        Some((w, _)) if right_near && taylor_ok => (g_series(nu, -kappa, lam, kk), ln_full_integral(c, w).exp()),
+        Some((w, _)) if right_near && taylor_ok => (g_series(q, -kappa, lam, kk), ln_full_integral(c, w).exp()),
         _ => ([0.0; TAYLOR_K], 0.0),
     };
     // The stencil interpolates the smooth factor e^{κu}(S(u)/u)^ν too: its 8th-order error is
@@ -441,7 +443,19 @@ pub fn sample_trajectory(
         t_prev = tj;
         j += 1;
     }
-    Ok(())
+    all_finite(&out)
+}
+
+/// The last line of defence: a sample that overflowed or could not be computed (extreme inputs
+/// beyond what the checks before sampling catch) turns the call into `ResultRange` rather than
+/// a NaN or an infinity handed back as success.
+fn all_finite(out: &TrajectoryOut<'_>) -> Result<(), Error> {
+    let finite = |s: &[f64]| s.iter().fold(true, |ok, x| ok & x.is_finite());
+    if finite(out.t) && finite(out.delta) && finite(out.v) && finite(out.force) {
+        Ok(())
+    } else {
+        Err(Error::ResultRange)
+    }
 }
 
 #[cfg(test)]
