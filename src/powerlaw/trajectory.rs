@@ -127,13 +127,21 @@ fn fill_states(c: &Contact, h: f64, u_end: f64, x: &mut [f64], v: &mut [f64]) {
     // LANES chunks advance side by side: four independent recurrence chains instead of one,
     // so the loop runs at the CPU's throughput rather than at one chain's latency.
     const LANES: usize = 4;
+    // Only the group's first chunk is seeded exactly (a sin/cos and an exp); the other lanes
+    // start from it by one exact step of l·RESEED phases each (computed once per call), so a
+    // sample is at most 3 + 15 recurrence steps from an exact value instead of 15.
     let chunks = x.len().div_ceil(RESEED);
+    let big: [([f64; 4], f64); LANES] = core::array::from_fn(|l| {
+        let hl = (l * RESEED) as f64 * h;
+        (step_matrix(c, hl), (-zeta * hl).exp())
+    });
     for group in (0..chunks).step_by(LANES) {
         let mut st = [(0.0f64, 0.0f64, 0.0f64); LANES];
-        for (l, st) in st.iter_mut().enumerate() {
-            let u0 = ((group + l) * RESEED) as f64 * h;
-            let (s, ds) = c.s_and_slope(u0);
-            *st = (s, ds, (-zeta * u0).exp());
+        let u0 = (group * RESEED) as f64 * h;
+        let (s0, ds0) = c.s_and_slope(u0);
+        let d0 = (-zeta * u0).exp();
+        for (st, &([b11, b12, b21, b22], dl)) in st.iter_mut().zip(big.iter()) {
+            *st = (b11 * s0 + b12 * ds0, b21 * s0 + b22 * ds0, d0 * dl);
         }
         for i in 0..RESEED {
             for (l, (s, ds, decay)) in st.iter_mut().enumerate() {
@@ -159,15 +167,24 @@ fn fill_states(c: &Contact, h: f64, u_end: f64, x: &mut [f64], v: &mut [f64]) {
     // λ₂ = ζ + ω₂ and λ₁ = 1/λ₂ = ζ − ω₂. The cosh/sinh form cancels to ~4ζ²ε at the force end
     // (1.2e-10 relative exit speed at ζ = 400, tests/proptest_ffi.rs); this one only near critical
     // damping, hence the switch at ζ = 2 (both ≤ 16ε there).
+    // X likewise: e^{−u/λ₂}(1 − e^{−2ω₂u})/(2ω₂), by expm1 (no cancellation at small u), which
+    // also never forms sinh(ω₂u) (it overflows for ω₂u > 710 while e^{−ζu} underflows: NaN).
     if let Regime::Over(w2) = c.regime {
         if zeta >= 2.0 {
             let l2 = zeta + w2;
-            for (j, vj) in v.iter_mut().enumerate().skip(1) {
+            for (j, (xj, vj)) in x.iter_mut().zip(v.iter_mut()).enumerate().skip(1) {
                 let u = at(j);
+                *xj = -(-u / l2).exp() * (-2.0 * w2 * u).exp_m1() / (2.0 * w2);
                 *vj = c.v0 * 0.5 * ((1.0 + zeta / w2) * (-l2 * u).exp() - (-u / l2).exp() / (w2 * l2));
             }
         }
     }
+}
+
+/// x^q for one x: the branch-free kernel where it applies (no libm call), else libm.
+#[inline]
+fn pow_one(x: f64, q: f64) -> f64 {
+    if pow::in_kernel_range(x) { pow::pow_kernel(x, q) } else { (q * x.ln()).exp() }
 }
 
 /// Constant factors from X to δ, δ^((p−1)/2) and F.
@@ -357,12 +374,12 @@ pub fn sample_trajectory(
             match (r, right) {
                 (Some(r), Some((w, _))) if r <= edge_u && u * w > 0.5 * PI => {
                     if taylor_ok {
-                        scale * (full - (kappa * PI / w).exp() * (q * r.ln()).exp() * horner(&g_right, r, kk))
+                        scale * (full - (kappa * PI / w).exp() * pow_one(r, q) * horner(&g_right, r, kk))
                     } else {
                         time_at_phase(c, u, level)
                     }
                 }
-                _ if j <= EDGE && taylor_ok => scale * (q * u.ln()).exp() * horner(&g_left, u, kk),
+                _ if j <= EDGE && taylor_ok => scale * pow_one(u, q) * horner(&g_left, u, kk),
                 _ => time_at_phase(c, u, level),
             }
         } else {
@@ -421,8 +438,18 @@ pub fn sample_trajectory(
                         *slot = wi;
                     }
                 }
-                if let Some(ts) = t.get_mut(jb..jb + len) {
-                    for (ti, &x) in ts.iter_mut().zip(inc.iter()) {
+                // The running sum two samples a step: one dependent addition per pair.
+                if let (Some(ts), Some(is)) = (t.get_mut(jb..jb + len), inc.get(..len)) {
+                    let mut tc = ts.chunks_exact_mut(2);
+                    let mut ic = is.chunks_exact(2);
+                    for (tp, ip) in (&mut tc).zip(&mut ic) {
+                        if let ([t0, t1], [i0, i1]) = (tp, ip) {
+                            *t0 = t_prev + sh * i0;
+                            t_prev += sh * (i0 + i1);
+                            *t1 = t_prev;
+                        }
+                    }
+                    for (ti, &x) in tc.into_remainder().iter_mut().zip(ic.remainder()) {
                         t_prev += sh * x;
                         *ti = t_prev;
                     }
@@ -450,7 +477,10 @@ pub fn sample_trajectory(
 /// beyond what the checks before sampling catch) turns the call into `ResultRange` rather than
 /// a NaN or an infinity handed back as success.
 fn all_finite(out: &TrajectoryOut<'_>) -> Result<(), Error> {
-    let finite = |s: &[f64]| s.iter().fold(true, |ok, x| ok & x.is_finite());
+    // An integer OR over the exponent fields (all ones only for ±inf and NaN): a reduction the
+    // compiler vectorises, unlike a chain of is_finite.
+    const EXP: u64 = 0x7ff0_0000_0000_0000;
+    let finite = |s: &[f64]| s.iter().fold(0u64, |acc, x| acc | u64::from(x.to_bits() & EXP == EXP)) == 0;
     if finite(out.t) && finite(out.delta) && finite(out.v) && finite(out.force) {
         Ok(())
     } else {
@@ -461,6 +491,26 @@ fn all_finite(out: &TrajectoryOut<'_>) -> Result<(), Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn all_finite_flags_every_non_finite_value() {
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, -f64::NAN] {
+            for buf in 0..4 {
+                for pos in [0usize, 3, 6] {
+                    let mut b = [[1.0f64, -0.0, 5e-324, f64::MAX, -f64::MAX, 1e-300, 2.0]; 4];
+                    if let Some(x) = b.get_mut(buf).and_then(|r| r.get_mut(pos)) {
+                        *x = bad;
+                    }
+                    let [t, d, v, f] = &mut b;
+                    let out = TrajectoryOut { t, delta: d, v, force: f };
+                    assert!(all_finite(&out).is_err(), "{bad} in buffer {buf} at {pos}");
+                }
+            }
+        }
+        let mut b = [[1.0f64, -0.0, 5e-324, f64::MAX, -f64::MAX, 1e-300, 2.0]; 4];
+        let [t, d, v, f] = &mut b;
+        assert!(all_finite(&TrajectoryOut { t, delta: d, v, force: f }).is_ok());
+    }
     use crate::numerics::jacobi_cc::MAX_LEVEL;
 
     /// Every sample time against the direct singularity-free quadrature of t(u) at the highest
@@ -473,6 +523,7 @@ mod tests {
         let mut worst_d: f64 = 0.0;
         let mut worst_v: f64 = 0.0;
         let mut at = String::new();
+        let mut at_d = String::new();
         for &p in &[1.0f64, 1.25, 1.5, 2.0, 3.0, 5.0] {
             for &z in &[0.0, 1e-3, 0.05, 0.2, 0.5, 0.7, 0.72, 0.9, 0.999, 1.0, 1.2, 4.0, 30.0] {
                 let alpha = z * crate::powerlaw::damping_scale(p);
@@ -510,7 +561,18 @@ mod tests {
                             let (s, ds) = c.s_and_slope(u);
                             let x = c.ln_x0.exp() * (-c.zeta * u).exp() * s;
                             let dd = c.amp * x.powf(c.q);
-                            worst_d = worst_d.max(((d[j] - dd) / dd).abs());
+                            // δ ∝ S(u)^q near the zero of S at π/ω (the overlap end) inherits the
+                            // rounding of the phase: relative error ~ε·(π/ω)/(π/ω − u) in both
+                            // values compared. Measured in units of that conditioning.
+                            let cond = match c.regime {
+                                Regime::Under(w) if u * w > 0.5 * PI => (PI / w) / (PI / w - u),
+                                _ => 1.0,
+                            };
+                            let ed = ((d[j] - dd) / dd).abs() / cond;
+                            if ed > worst_d {
+                                worst_d = ed;
+                                at_d = format!("p={p} ζ={z} {crit:?} n={n} j={j}");
+                            }
                             let vv = c.v0 * (-c.zeta * u).exp() * (ds - c.zeta * s);
                             worst_v = worst_v.max((v[j] - vv).abs() / c.v0);
                         }
@@ -518,7 +580,7 @@ mod tests {
                 }
             }
         }
-        println!("trajectory vs direct: worst rel t {worst_t:.1e} ({at}), rel δ {worst_d:.1e}, |Δv|/v0 {worst_v:.1e}");
-        assert!(worst_t < 2e-11 && worst_d < 1e-12 && worst_v < 1e-13);
+        println!("trajectory vs direct: worst rel t {worst_t:.1e} ({at}), rel δ per conditioning {worst_d:.1e} ({at_d}), |Δv|/v0 {worst_v:.1e}");
+        assert!(worst_t < 2e-11 && worst_d < 1e-13 && worst_v < 1e-13);
     }
 }
