@@ -289,7 +289,8 @@ pub fn sample_trajectory(
             *f = k * dj * c_dh * c_dh + damp * c_dh * vj;
             *t = 1.0;
         }
-    } else if kept.unwrap_or(&[]).iter().all(|&x| pow::in_kernel_range(x)) {
+    } else if kept.unwrap_or(&[]).iter().fold(0u64, |acc, &x| acc | u64::from(!pow::in_kernel_range(x))) == 0 {
+        // (An OR over the slice vectorises; a short-circuiting `all` does not.)
         pow::vectorised(KernelFill { scales: &scales, q, t: out.t, d: out.delta, v: out.v, f: out.force });
     } else {
         scales.fill(out.t, out.delta, out.v, out.force, |x| (q * x.ln()).exp());
