@@ -735,8 +735,10 @@ int32_t dc_energy_partition(double p,
  * @return DC_OK, DC_ERR_NULL_POINTER (any buffer NULL), DC_ERR_BUFFER_TOO_SHORT (n < 2 or
  *         buf_len < n), DC_ERR_LEVEL, and the statuses of dc_contact_duration. On error no
  *         buffer is written, with one exception: DC_ERR_RESULT_RANGE because a sample overflowed
- *         (extreme inputs, e.g. a force beyond 1.8e308 N), found after sampling; the first n
- *         doubles of each buffer then hold no valid data. DC_OK guarantees every sample finite.
+ *         or its state underflowed (extreme inputs: a force beyond 1.8e308 N; the overlap end
+ *         within ~1e-6 of critical damping for p > 1, where e^(-zeta u) underflows mid-contact
+ *         and tau is ~1e193 time scales), found after sampling; the first n doubles of each
+ *         buffer then hold no valid data. DC_OK guarantees every sample finite.
  *
  * # Safety
  * Each non-NULL buffer must be valid for writes of buf_len doubles and not overlap the others.

@@ -144,8 +144,9 @@ pub unsafe extern "C" fn dc_contact_duration_level(
     }
 }
 
-/// Marks a dc_duration_plan filled by dc_duration_plan_init ("DCPLAN01").
-const PLAN_TAG: u64 = 0x4443_504C_414E_3031;
+/// Marks a dc_duration_plan filled by dc_duration_plan_init ("DCPLAN02": the layout without the
+/// Gauss-Legendre rule; a plan made by a library with the older layout is rejected).
+const PLAN_TAG: u64 = 0x4443_504C_414E_3032;
 
 /// A contact-duration plan: everything dc_contact_duration_level computes from the exponent p and
 /// the accuracy level alone (transform constants, ln Gamma(q), Gauss-Jacobi nodes and weights for
@@ -326,8 +327,10 @@ pub unsafe extern "C" fn dc_energy_partition(p: f64, alpha: f64, criterion: i32,
 /// @return DC_OK, DC_ERR_NULL_POINTER (any buffer NULL), DC_ERR_BUFFER_TOO_SHORT (n < 2 or
 ///         buf_len < n), DC_ERR_LEVEL, and the statuses of dc_contact_duration. On error no
 ///         buffer is written, with one exception: DC_ERR_RESULT_RANGE because a sample overflowed
-///         (extreme inputs, e.g. a force beyond 1.8e308 N), found after sampling; the first n
-///         doubles of each buffer then hold no valid data. DC_OK guarantees every sample finite.
+///         or its state underflowed (extreme inputs: a force beyond 1.8e308 N; the overlap end
+///         within ~1e-6 of critical damping for p > 1, where e^(-zeta u) underflows mid-contact
+///         and tau is ~1e193 time scales), found after sampling; the first n doubles of each
+///         buffer then hold no valid data. DC_OK guarantees every sample finite.
 ///
 /// # Safety
 /// Each non-NULL buffer must be valid for writes of buf_len doubles and not overlap the others.

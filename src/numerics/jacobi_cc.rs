@@ -174,7 +174,7 @@ fn cos_jk(j: usize, k: usize, n: usize) -> f64 {
 /// `nu1` = ν + 1 > 0 rather than ν: the leading moment is 1/(ν+1), and for a weight close to
 /// y^{−1} (the contact time of p → ∞, ν + 1 = 2/(p+1)) ν + 1 recomputed from ν would lose its
 /// digits (and be 0 once ν + 1 < ε/2).
-pub fn integrate_weighted<F: FnMut(f64) -> f64>(mut f: F, nu1: f64, level: u32) -> f64 {
+pub fn integrate_weighted_nu1<F: FnMut(f64) -> f64>(mut f: F, nu1: f64, level: u32) -> f64 {
     let nu = nu1 - 1.0;
     let n = n_of(level);
     // Function values at the Lobatto points, j = 0 is y = 1, j = n is y = 0.
@@ -239,7 +239,7 @@ mod tests {
         for &nu in &[-0.9, -0.5, -1.0 / 3.0, -0.2, 0.0, 0.5] {
             for level in 0..=MAX_LEVEL {
                 for m in 0..=LEVEL_N[level as usize] {
-                    let got = integrate_weighted(|y| y.powi(m as i32), nu + 1.0, level);
+                    let got = integrate_weighted_nu1(|y| y.powi(m as i32), nu + 1.0, level);
                     let want = 1.0 / (nu + m as f64 + 1.0);
                     assert!((got - want).abs() < 5e-15 * want.max(1.0), "ν={nu} level={level} m={m}: {got} vs {want}");
                 }
@@ -258,7 +258,7 @@ mod tests {
                 fact *= k as f64;
                 want += 1.0 / (fact * (q + k as f64));
             }
-            let got = integrate_weighted(|y| y.exp(), q, MAX_LEVEL);
+            let got = integrate_weighted_nu1(|y| y.exp(), q, MAX_LEVEL);
             assert!(((got - want) / want).abs() < 1e-15, "q={q}: {got} vs {want}");
         }
     }
@@ -275,7 +275,7 @@ mod tests {
                 }
                 want += 1.0 / (fact * (nu + k as f64 + 1.0));
             }
-            let got = integrate_weighted(|y| y.exp(), nu + 1.0, MAX_LEVEL);
+            let got = integrate_weighted_nu1(|y| y.exp(), nu + 1.0, MAX_LEVEL);
             assert!(((got - want) / want).abs() < 1e-15, "ν={nu}: {got} vs {want}");
         }
     }

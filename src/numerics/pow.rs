@@ -125,9 +125,11 @@ pub(crate) trait SimdLoop {
     fn run(self);
 }
 
+/// # Safety
+/// The CPU must support AVX2 ([`vectorised`] checks it before the call).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn run_avx2<L: SimdLoop>(l: L) {
+unsafe fn run_avx2<L: SimdLoop>(l: L) {
     l.run();
 }
 

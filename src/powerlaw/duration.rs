@@ -26,7 +26,7 @@ use super::overdamped_tail::overdamped_tail;
 use crate::numerics::pow::{exp_kernel, EXP_KERNEL_MAX};
 use crate::criterion::EndCriterion;
 use crate::numerics::gamma::ln_gamma_re;
-use crate::numerics::jacobi_cc::integrate_weighted;
+use crate::numerics::jacobi_cc::integrate_weighted_nu1;
 use crate::Error;
 use core::f64::consts::{FRAC_PI_2, LN_2, PI};
 
@@ -43,7 +43,7 @@ fn singular_integral(c: &Contact, kappa: f64, big_w: f64, level: u32) -> f64 {
     // First panel: W1^{ν+1} ∫_0^1 y^ν h(W1 y) dy, h = e^{κw}(S(w)/w)^ν analytic; the weight y^ν
     // is integrated exactly by the modified moments.
     let h = |w: f64| (kappa * w + nu * c.ln_sinc(w)).exp();
-    (c.q * first.ln()).exp() * integrate_weighted(|y| h(first * y), c.q, level) + beyond_first_panel(c, first, big_w)
+    (c.q * first.ln()).exp() * integrate_weighted_nu1(|y| h(first * y), c.q, level) + beyond_first_panel(c, first, big_w)
 }
 
 /// The rest of an overdamped integral beyond its first panel, [π/(2ω₂), W]: exact series

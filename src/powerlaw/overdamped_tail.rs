@@ -13,7 +13,8 @@
 //! exprel(x) = (e^x − 1)/x. Every b_k lies in [0, 1] (ν ≤ 0) and every term is positive: the sum
 //! has no cancellation. From a = π/(2ω₂) on, r ≤ e^{−π} ≈ 0.043, so the terms fall at least by
 //! that factor: 13 terms leave < 1e−17. Where the quadrature needed one panel per doubling of w
-//! and a sinh, a ln and an exp per node, this costs four exps and a ln.
+//! and a sinh, a ln and an exp per node, this costs five exps and a ln (plus an expm1 for a term
+//! whose exponent over the interval is below 0.5 in magnitude).
 //!
 //! Why c_0 is written −ν/(ζ+ω₂): κ + νω₂ = −ν(ζ − ω₂) cancels for large ζ.
 

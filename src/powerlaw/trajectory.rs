@@ -129,7 +129,7 @@ fn fill_states(c: &Contact, h: f64, u_end: f64, x: &mut [f64], v: &mut [f64]) {
     const LANES: usize = 4;
     // Only the group's first chunk is seeded exactly (a sin/cos and an exp); the other lanes
     // start from it by one exact step of l·RESEED phases each (computed once per call), so a
-    // sample is at most 3 + 15 recurrence steps from an exact value instead of 15.
+    // sample is at most 1 + 15 recurrence steps from an exact value instead of 15.
     let chunks = x.len().div_ceil(RESEED);
     let big: [([f64; 4], f64); LANES] = core::array::from_fn(|l| {
         let hl = (l * RESEED) as f64 * h;
@@ -169,14 +169,14 @@ fn fill_states(c: &Contact, h: f64, u_end: f64, x: &mut [f64], v: &mut [f64]) {
     // damping, hence the switch at ζ = 2 (both ≤ 16ε there).
     // X likewise: e^{−u/λ₂}(1 − e^{−2ω₂u})/(2ω₂), by expm1 (no cancellation at small u), which
     // also never forms sinh(ω₂u) (it overflows for ω₂u > 710 while e^{−ζu} underflows: NaN).
-    if let Regime::Over(w2) = c.regime {
-        if zeta >= 2.0 {
-            let l2 = zeta + w2;
-            for (j, (xj, vj)) in x.iter_mut().zip(v.iter_mut()).enumerate().skip(1) {
-                let u = at(j);
-                *xj = -(-u / l2).exp() * (-2.0 * w2 * u).exp_m1() / (2.0 * w2);
-                *vj = c.v0 * 0.5 * ((1.0 + zeta / w2) * (-l2 * u).exp() - (-u / l2).exp() / (w2 * l2));
-            }
+    if let Regime::Over(w2) = c.regime
+        && zeta >= 2.0
+    {
+        let l2 = zeta + w2;
+        for (j, (xj, vj)) in x.iter_mut().zip(v.iter_mut()).enumerate().skip(1) {
+            let u = at(j);
+            *xj = -(-u / l2).exp() * (-2.0 * w2 * u).exp_m1() / (2.0 * w2);
+            *vj = c.v0 * 0.5 * ((1.0 + zeta / w2) * (-l2 * u).exp() - (-u / l2).exp() / (w2 * l2));
         }
     }
 }
@@ -232,7 +232,8 @@ impl pow::SimdLoop for KernelFill<'_> {
 
 /// Fills `out` with n samples over the contact ending by `criterion`; `mass` > 0 scales the force.
 /// Errors are detected before anything is written, except `ResultRange` from a sample that
-/// overflowed (found after sampling; the buffers then hold no valid data).
+/// overflowed or whose state underflowed (found after sampling; the buffers then hold no valid
+/// data).
 pub fn sample_trajectory(
     c: &Contact,
     criterion: EndCriterion,
