@@ -33,26 +33,28 @@ use core::f64::consts::{FRAC_PI_2, LN_2, PI};
 /// ∫_0^W e^{κw} S(w)^{q−1} dw for W ≥ 0 (ωW ≤ π/2 when underdamped).
 fn singular_integral(c: &Contact, kappa: f64, big_w: f64, level: u32) -> f64 {
     let nu = c.q - 1.0;
-    if big_w <= 0.0 {
-        return 0.0;
-    }
-    let first = match c.regime {
-        Regime::Over(w2) => big_w.min(FRAC_PI_2 / w2),
-        _ => big_w,
-    };
     // First panel: W1^{ν+1} ∫_0^1 y^ν h(W1 y) dy, h = e^{κw}(S(w)/w)^ν analytic; the weight y^ν
     // is integrated exactly by the modified moments.
     let h = |w: f64| (kappa * w + nu * c.ln_sinc(w)).exp();
-    (c.q * first.ln()).exp() * integrate_weighted_nu1(|y| h(first * y), c.q, level) + beyond_first_panel(c, first, big_w)
+    by_panels(c, big_w, |first| integrate_weighted_nu1(|y| h(first * y), c.q, level))
 }
 
-/// The rest of an overdamped integral beyond its first panel, [π/(2ω₂), W]: exact series
-/// ([`super::overdamped_tail`]); 0 otherwise.
-fn beyond_first_panel(c: &Contact, first: f64, big_w: f64) -> f64 {
-    match c.regime {
-        Regime::Over(w2) if big_w > first => overdamped_tail(c.q - 1.0, c.zeta, w2, first, big_w),
-        _ => 0.0,
+/// ∫_0^W e^{κw} S(w)^{q−1} dw split where its rules apply: a first panel [0, W1] holding the
+/// singularity, W1 = W but at most π/(2ω₂) when overdamped (S has complex zeros at ikπ/ω₂), which
+/// contributes W1^q·`first_panel(W1)` (the rule's ∫_0^1 y^{q−1} h(W1 y) dy); beyond it, overdamped
+/// only, the exact series of [`super::overdamped_tail`].
+fn by_panels(c: &Contact, big_w: f64, first_panel: impl FnOnce(f64) -> f64) -> f64 {
+    if big_w <= 0.0 {
+        return 0.0;
     }
+    let (first, tail) = match c.regime {
+        Regime::Over(w2) if big_w > FRAC_PI_2 / w2 => {
+            let first = FRAC_PI_2 / w2;
+            (first, overdamped_tail(c.q - 1.0, c.zeta, w2, first, big_w))
+        }
+        _ => (big_w, 0.0),
+    };
+    (c.q * first.ln()).exp() * first_panel(first) + tail
 }
 
 /// ln T(π/ω), the full underdamped integral, in closed form (Gradshteyn 3.892).
@@ -191,14 +193,7 @@ fn first_panel_planned(c: &Contact, kappa: f64, first: f64, pl: &Plan<'_>) -> f6
 
 /// [`singular_integral`] with a plan's rule for the first panel.
 fn singular_integral_planned(c: &Contact, kappa: f64, big_w: f64, pl: &Plan<'_>) -> f64 {
-    if big_w <= 0.0 {
-        return 0.0;
-    }
-    let first = match c.regime {
-        Regime::Over(w2) => big_w.min(FRAC_PI_2 / w2),
-        _ => big_w,
-    };
-    (c.q * first.ln()).exp() * first_panel_planned(c, kappa, first, pl) + beyond_first_panel(c, first, big_w)
+    by_panels(c, big_w, |first| first_panel_planned(c, kappa, first, pl))
 }
 
 fn positive_finite(t: f64) -> Result<f64, Error> {
