@@ -220,16 +220,6 @@ impl Contact {
         }
     }
 
-    /// ln S(u) for u > 0.
-    pub fn ln_s(&self, u: f64) -> f64 {
-        match self.regime {
-            // sin(ωu)/ω keeps full relative precision down to tiny u: one sin and one ln.
-            Regime::Under(w) => ((w * u).sin() / w).ln(),
-            Regime::Critical => u.ln(),
-            Regime::Over(_) => u.ln() + self.ln_sinc(u),
-        }
-    }
-
     /// ln of the time scale (A q/ω0)(v0/ω0)^{q−1}: dt = exp(this)·X(u)^{q−1} du.
     pub fn ln_time_scale(&self) -> f64 {
         (self.amp * self.q).ln() + (self.q - 1.0) * self.ln_x0 - self.omega0.ln()
