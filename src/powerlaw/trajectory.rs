@@ -343,9 +343,12 @@ pub fn sample_trajectory(
         _ => None,
     };
     let right_near = right.is_some_and(|(_, r_end)| r_end <= edge_u);
-    let (g_right, full) = match right {
-        Some((w, _)) if right_near && taylor_ok => (g_series(q, -kappa, lam, kk), ln_full_integral(c, w).exp()),
-        _ => ([0.0; TAYLOR_K], 0.0),
+    // Right edge: t = P (T(π/ω) − e^{κπ/ω} r^q G₋(r)), r the phase left to π/ω; both factors once.
+    let (g_right, full, right_factor) = match right {
+        Some((w, _)) if right_near && taylor_ok => {
+            (g_series(q, -kappa, lam, kk), ln_full_integral(c, w).exp(), (kappa * PI / w).exp())
+        }
+        _ => ([0.0; TAYLOR_K], 0.0, 0.0),
     };
     // The stencil interpolates the smooth factor e^{κu}(S(u)/u)^ν too: its 8th-order error is
     // ~7e−4 (rate·h)^8 per step, rate = |κ| + |ω|; keep rate·h ≤ 0.05 (≤ 3e−14), else (extreme
@@ -376,7 +379,7 @@ pub fn sample_trajectory(
             match (r, right) {
                 (Some(r), Some((w, _))) if r <= edge_u && u * w > 0.5 * PI => {
                     if taylor_ok {
-                        scale * (full - (kappa * PI / w).exp() * pow_one(r, q) * horner(&g_right, r, kk))
+                        scale * (full - right_factor * pow_one(r, q) * horner(&g_right, r, kk))
                     } else {
                         time_at_phase(c, u, level)
                     }
