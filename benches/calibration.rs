@@ -4,7 +4,7 @@
 //! survive a noisy shared machine. Run: `cargo bench --bench calibration`.
 
 use demcontact::ffi::{calibration::*, status::*};
-use divan::{black_box, counter::ItemsCount, Bencher};
+use divan::{Bencher, black_box, counter::ItemsCount};
 
 fn main() {
     divan::main();
@@ -42,7 +42,14 @@ fn e_from_alpha(b: Bencher, criterion: i32) {
         let mut s = 0.0;
         for &e in &ES {
             let mut out = 0.0;
-            unsafe { dc_e_from_alpha(black_box(2.0 * (1.0 - e)), black_box(1.5), criterion, &mut out) };
+            unsafe {
+                dc_e_from_alpha(
+                    black_box(2.0 * (1.0 - e)),
+                    black_box(1.5),
+                    criterion,
+                    &mut out,
+                )
+            };
             s += out;
         }
         s

@@ -5,7 +5,7 @@
 //! Run: `cargo bench --bench force`.
 
 use demcontact::ffi::{force::*, status::*};
-use divan::{black_box, counter::ItemsCount, Bencher};
+use divan::{Bencher, black_box, counter::ItemsCount};
 
 fn main() {
     divan::main();
@@ -28,7 +28,12 @@ fn data() -> Data {
         s ^= s << 17;
         (s >> 11) as f64 / (1u64 << 53) as f64
     };
-    let mut x = Data { d: vec![], vn: vec![], r: vec![], m: vec![] };
+    let mut x = Data {
+        d: vec![],
+        vn: vec![],
+        r: vec![],
+        m: vec![],
+    };
     for _ in 0..N {
         let r = 1e-4 * (1.0 + 9.0 * u());
         x.r.push(r);
@@ -75,7 +80,15 @@ fn batch(b: Bencher, p: f64) {
     let mut out = vec![0.0; N];
     b.counter(ItemsCount::new(N)).bench_local(|| {
         let s = unsafe {
-            dc_normal_force_batch(black_box(&pair), N, x.d.as_ptr(), x.vn.as_ptr(), x.r.as_ptr(), x.m.as_ptr(), out.as_mut_ptr())
+            dc_normal_force_batch(
+                black_box(&pair),
+                N,
+                x.d.as_ptr(),
+                x.vn.as_ptr(),
+                x.r.as_ptr(),
+                x.m.as_ptr(),
+                out.as_mut_ptr(),
+            )
         };
         black_box(s);
         black_box(&mut out);

@@ -13,9 +13,9 @@
 #[path = "../tests/common/mod.rs"]
 mod common;
 
-use demcontact::ffi::{calibration::*, powerlaw::*, status::*};
 use demcontact::EndCriterion;
-use divan::{black_box, counter::ItemsCount, Bencher};
+use demcontact::ffi::{calibration::*, powerlaw::*, status::*};
+use divan::{Bencher, black_box, counter::ItemsCount};
 
 fn main() {
     divan::main();
@@ -34,7 +34,8 @@ fn alphas(crit: i32) -> [f64; 8] {
 
 #[divan::bench]
 fn baseline_ln(b: Bencher) {
-    b.counter(ItemsCount::new(ES.len())).bench(|| ES.iter().map(|&e| black_box(e).ln()).sum::<f64>());
+    b.counter(ItemsCount::new(ES.len()))
+        .bench(|| ES.iter().map(|&e| black_box(e).ln()).sum::<f64>());
 }
 
 #[divan::bench]
@@ -44,7 +45,15 @@ fn max_overlap(b: Bencher) {
         let mut s = 0.0;
         for &al in &a {
             let mut d = 0.0;
-            unsafe { dc_max_overlap(black_box(P), black_box(al), black_box(1.0), black_box(1.0), &mut d) };
+            unsafe {
+                dc_max_overlap(
+                    black_box(P),
+                    black_box(al),
+                    black_box(1.0),
+                    black_box(1.0),
+                    &mut d,
+                )
+            };
             s += d;
         }
         s
@@ -72,7 +81,16 @@ fn duration_overlap_end_closed_form(b: Bencher) {
         let mut s = 0.0;
         for &al in &a {
             let mut t = 0.0;
-            unsafe { dc_contact_duration(black_box(P), black_box(al), black_box(1.0), black_box(1.0), DC_END_OVERLAP, &mut t) };
+            unsafe {
+                dc_contact_duration(
+                    black_box(P),
+                    black_box(al),
+                    black_box(1.0),
+                    black_box(1.0),
+                    DC_END_OVERLAP,
+                    &mut t,
+                )
+            };
             s += t;
         }
         s
@@ -88,7 +106,17 @@ fn duration_force_end_level(b: Bencher, level: i32) {
         let mut s = 0.0;
         for &al in &a {
             let mut t = 0.0;
-            unsafe { dc_contact_duration_level(black_box(P), black_box(al), 1.0, 1.0, DC_END_FORCE, level, &mut t) };
+            unsafe {
+                dc_contact_duration_level(
+                    black_box(P),
+                    black_box(al),
+                    1.0,
+                    1.0,
+                    DC_END_FORCE,
+                    level,
+                    &mut t,
+                )
+            };
             s += t;
         }
         s
@@ -106,7 +134,16 @@ fn duration_force_end_planned(b: Bencher, level: i32) {
         let mut s = 0.0;
         for &al in &a {
             let mut t = 0.0;
-            unsafe { dc_contact_duration_planned(black_box(&plan), black_box(al), 1.0, 1.0, DC_END_FORCE, &mut t) };
+            unsafe {
+                dc_contact_duration_planned(
+                    black_box(&plan),
+                    black_box(al),
+                    1.0,
+                    1.0,
+                    DC_END_FORCE,
+                    &mut t,
+                )
+            };
             s += t;
         }
         s
@@ -130,7 +167,15 @@ fn duration_force_end_ode_reference(b: Bencher) {
     b.counter(ItemsCount::new(a.len())).bench(|| {
         let mut s = 0.0;
         for &al in &a {
-            s += common::collide(black_box(P), black_box(al), 1.0, 1.0, EndCriterion::Force, 1e-9).tau;
+            s += common::collide(
+                black_box(P),
+                black_box(al),
+                1.0,
+                1.0,
+                EndCriterion::Force,
+                1e-9,
+            )
+            .tau;
         }
         s
     });
@@ -145,7 +190,21 @@ fn trajectory_1000(b: Bencher) {
     let (mut t, mut d, mut v, mut f) = (vec![0.0; N], vec![0.0; N], vec![0.0; N], vec![0.0; N]);
     b.bench_local(|| {
         let st = unsafe {
-            dc_contact_trajectory(black_box(P), black_box(al), 1.0, 1.0, 1.0, DC_END_FORCE, 2, N, t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), N)
+            dc_contact_trajectory(
+                black_box(P),
+                black_box(al),
+                1.0,
+                1.0,
+                1.0,
+                DC_END_FORCE,
+                2,
+                N,
+                t.as_mut_ptr(),
+                d.as_mut_ptr(),
+                v.as_mut_ptr(),
+                f.as_mut_ptr(),
+                N,
+            )
         };
         assert_eq!(st, DC_OK);
         t[N / 2]
@@ -156,7 +215,9 @@ fn trajectory_1000(b: Bencher) {
 /// each sample needs (δ = A x^q), over the same samples' x.
 #[divan::bench]
 fn baseline_pow_1000(b: Bencher) {
-    let xs: Vec<f64> = (1..=N).map(|j| (j as f64 / N as f64 * 3.0).sin() * 0.7 + 1e-3).collect();
+    let xs: Vec<f64> = (1..=N)
+        .map(|j| (j as f64 / N as f64 * 3.0).sin() * 0.7 + 1e-3)
+        .collect();
     let mut out = vec![0.0; N];
     let q = 2.0 / (P + 1.0);
     b.bench_local(|| {
@@ -173,11 +234,39 @@ fn baseline_pow_1000(b: Bencher) {
 fn trajectory_1000_ode_reference(b: Bencher) {
     let al = alphas(DC_END_FORCE)[3];
     let (mut t, mut d, mut v, mut f) = (vec![0.0; N], vec![0.0; N], vec![0.0; N], vec![0.0; N]);
-    unsafe { dc_contact_trajectory(P, al, 1.0, 1.0, 1.0, DC_END_FORCE, 2, N, t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), N) };
+    unsafe {
+        dc_contact_trajectory(
+            P,
+            al,
+            1.0,
+            1.0,
+            1.0,
+            DC_END_FORCE,
+            2,
+            N,
+            t.as_mut_ptr(),
+            d.as_mut_ptr(),
+            v.as_mut_ptr(),
+            f.as_mut_ptr(),
+            N,
+        )
+    };
     let targets = d[1..N - 1].to_vec();
     let ups: Vec<bool> = v[1..N - 1].iter().map(|&x| x > 0.0).collect();
     let mut tr = vec![0.0; N - 2];
-    b.bench_local(|| common::chained_reference(P, black_box(al), 1.0, 1.0, EndCriterion::Force, &targets, &ups, 1e-12, &mut tr));
+    b.bench_local(|| {
+        common::chained_reference(
+            P,
+            black_box(al),
+            1.0,
+            1.0,
+            EndCriterion::Force,
+            &targets,
+            &ups,
+            1e-12,
+            &mut tr,
+        )
+    });
 }
 
 /// Per-restitution cost of the force-end duration at level 2 (one call per sample).
@@ -186,7 +275,17 @@ fn duration_force_end_by_e(b: Bencher, i: usize) {
     let al = alphas(DC_END_FORCE)[i];
     b.bench(|| {
         let mut t = 0.0;
-        unsafe { dc_contact_duration_level(black_box(P), black_box(al), 1.0, 1.0, DC_END_FORCE, 2, &mut t) };
+        unsafe {
+            dc_contact_duration_level(
+                black_box(P),
+                black_box(al),
+                1.0,
+                1.0,
+                DC_END_FORCE,
+                2,
+                &mut t,
+            )
+        };
         t
     });
 }

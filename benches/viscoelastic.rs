@@ -5,7 +5,7 @@
 //! Run: `cargo bench --bench viscoelastic`.
 
 use demcontact::ffi::{status::*, viscoelastic::*};
-use divan::{black_box, counter::ItemsCount, Bencher};
+use divan::{Bencher, black_box, counter::ItemsCount};
 
 fn main() {
     divan::main();

@@ -85,11 +85,23 @@ mod tests {
     #[test]
     fn wall_and_bad_input() {
         assert_eq!(effective_radius(f64::INFINITY, 2e-3), Ok(2e-3));
-        assert_eq!(effective_radius(f64::INFINITY, f64::INFINITY), Err(Error::NotFinite));
+        assert_eq!(
+            effective_radius(f64::INFINITY, f64::INFINITY),
+            Err(Error::NotFinite)
+        );
         assert_eq!(effective_radius(-1.0, 1.0), Err(Error::NotPositive));
-        assert_eq!(effective_modulus(1e9, 0.6, 1e9, 0.3), Err(Error::NotPositive));
-        assert_eq!(effective_modulus(0.0, 0.3, 1e9, 0.3), Err(Error::NotPositive));
-        assert_eq!(effective_modulus(f64::NAN, 0.3, 1e9, 0.3), Err(Error::NotFinite));
+        assert_eq!(
+            effective_modulus(1e9, 0.6, 1e9, 0.3),
+            Err(Error::NotPositive)
+        );
+        assert_eq!(
+            effective_modulus(0.0, 0.3, 1e9, 0.3),
+            Err(Error::NotPositive)
+        );
+        assert_eq!(
+            effective_modulus(f64::NAN, 0.3, 1e9, 0.3),
+            Err(Error::NotFinite)
+        );
         assert!(effective_modulus(f64::MAX, 0.3, f64::MAX, 0.3).is_ok());
     }
 }

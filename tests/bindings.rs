@@ -80,7 +80,10 @@ fn strip_comments(src: &str) -> String {
         };
     }
     out.push_str(rest);
-    out.lines().map(|l| l.split("//").next().unwrap_or("")).collect::<Vec<_>>().join("\n")
+    out.lines()
+        .map(|l| l.split("//").next().unwrap_or(""))
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 fn parse_base(s: &str, api_types: &[String]) -> Base {
@@ -107,8 +110,20 @@ fn parse_decl(decl: &str, api_types: &[String]) -> (Ty, String) {
     let name = toks.last().expect("declaration has a name").to_string();
     let is_const = toks.contains(&"const");
     let ptr = toks.contains(&"*");
-    let base = toks.iter().rev().skip(1).find(|t| **t != "*" && **t != "const").expect("type");
-    (Ty { base: parse_base(base, api_types), is_const, ptr }, name)
+    let base = toks
+        .iter()
+        .rev()
+        .skip(1)
+        .find(|t| **t != "*" && **t != "const")
+        .expect("type");
+    (
+        Ty {
+            base: parse_base(base, api_types),
+            is_const,
+            ptr,
+        },
+        name,
+    )
 }
 
 fn parse(header: &str) -> Api {
@@ -175,13 +190,29 @@ fn parse(header: &str) -> Api {
             let close = rest.rfind('}').expect("struct end");
             let name = rest[close + 1..].trim().to_string();
             let mut fields = Vec::new();
-            for f in rest[open + 1..close].split(';').map(str::trim).filter(|f| !f.is_empty()) {
+            for f in rest[open + 1..close]
+                .split(';')
+                .map(str::trim)
+                .filter(|f| !f.is_empty())
+            {
                 let (decl, len) = match f.find('[') {
-                    Some(i) => (&f[..i], Some(f[i + 1..f.len() - 1].trim().parse::<usize>().expect("array length"))),
+                    Some(i) => (
+                        &f[..i],
+                        Some(
+                            f[i + 1..f.len() - 1]
+                                .trim()
+                                .parse::<usize>()
+                                .expect("array length"),
+                        ),
+                    ),
                     None => (f, None),
                 };
                 let (ty, fname) = parse_decl(decl, &types);
-                fields.push(Field { ty, name: fname, len });
+                fields.push(Field {
+                    ty,
+                    name: fname,
+                    len,
+                });
             }
             api.structs.push((name, fields));
         } else if let Some(rest) = s.strip_prefix("typedef enum ") {
@@ -190,7 +221,11 @@ fn parse(header: &str) -> Api {
             let name = rest[close + 1..].trim().to_string();
             let mut next = 0i64;
             let mut items = Vec::new();
-            for item in rest[open + 1..close].split(',').map(str::trim).filter(|f| !f.is_empty()) {
+            for item in rest[open + 1..close]
+                .split(',')
+                .map(str::trim)
+                .filter(|f| !f.is_empty())
+            {
                 let (n, v) = match item.split_once('=') {
                     Some((n, v)) => (n.trim(), v.trim().parse::<i64>().expect("enum value")),
                     None => (item, next),
@@ -259,11 +294,16 @@ fn is_array_param(f: &Func, p: &Param) -> bool {
     if !p.ty.ptr || matches!(p.ty.base, Base::Char | Base::Void) {
         return false;
     }
-    let counted = f.params.iter().any(|q| q.ty.base == Base::Usize && !q.ty.ptr);
+    let counted = f
+        .params
+        .iter()
+        .any(|q| q.ty.base == Base::Usize && !q.ty.ptr);
     if matches!(p.ty.base, Base::Named(_)) {
         return p.name.ends_with('s') && counted;
     }
-    let reads_array = f.params.iter().any(|q| q.ty.ptr && q.ty.is_const && !matches!(q.ty.base, Base::Named(_) | Base::Char | Base::Void));
+    let reads_array = f.params.iter().any(|q| {
+        q.ty.ptr && q.ty.is_const && !matches!(q.ty.base, Base::Named(_) | Base::Char | Base::Void)
+    });
     counted || reads_array || !p.name.ends_with("_out")
 }
 
@@ -293,7 +333,8 @@ fn f_names(f: &Func) -> Vec<String> {
         .iter()
         .map(|p| {
             let mut n = p.name.clone();
-            while seen.iter().any(|s| s.eq_ignore_ascii_case(&n)) || n.eq_ignore_ascii_case(&f.name) {
+            while seen.iter().any(|s| s.eq_ignore_ascii_case(&n)) || n.eq_ignore_ascii_case(&f.name)
+            {
                 n.push('_');
             }
             seen.push(n.clone());
@@ -337,14 +378,18 @@ fn scalar_out(f: &Func) -> Option<&Param> {
     let (last, rest) = f.params.split_last()?;
     let named_out = last.name == "out" || last.name.ends_with("_out");
     let ok_last = last.ty.ptr && !last.ty.is_const && named_out && !is_array_param(f, last);
-    let ok_rest = rest.iter().all(|p| !p.ty.ptr || (p.ty.is_const && matches!(p.ty.base, Base::Named(_))));
+    let ok_rest = rest
+        .iter()
+        .all(|p| !p.ty.ptr || (p.ty.is_const && matches!(p.ty.base, Base::Named(_))));
     let no_count = !f.params.iter().any(|p| p.ty.base == Base::Usize);
     (ok_last && ok_rest && no_count).then_some(last)
 }
 
 fn fortran(api: &Api) -> String {
     let mut o = String::new();
-    o.push_str("! Generated by tests/bindings.rs from include/demcontact.h: do not edit by hand.\n");
+    o.push_str(
+        "! Generated by tests/bindings.rs from include/demcontact.h: do not edit by hand.\n",
+    );
     o.push_str("! Regenerate: DC_BLESS=1 cargo test --test bindings\n");
     o.push_str("!\n! bind(c) interfaces to every demcontact function, the constants as named parameters, the\n");
     o.push_str("! structs as bind(c) derived types, and impure elemental wrappers (status in `stat`) for\n");
@@ -367,7 +412,11 @@ fn fortran(api: &Api) -> String {
         let _ = writeln!(o, "\n  type, bind(c) :: {name}");
         for f in fields {
             let dims = f.len.map(|l| format!("({l})")).unwrap_or_default();
-            let t = if f.ty.ptr { "type(c_ptr)".to_string() } else { f_type(api, &f.ty.base) };
+            let t = if f.ty.ptr {
+                "type(c_ptr)".to_string()
+            } else {
+                f_type(api, &f.ty.base)
+            };
             let _ = writeln!(o, "    {t} :: {}{dims}", f.name);
         }
         let _ = writeln!(o, "  end type {name}");
@@ -378,14 +427,30 @@ fn fortran(api: &Api) -> String {
         let pure = if is_pure(f) { "pure " } else { "" };
         let is_fn = f.ret.base != Base::Void || f.ret.ptr;
         let kind = if is_fn { "function" } else { "subroutine" };
-        f_line(&mut o, "    ", &format!("{pure}{kind} {}({}) bind(c, name='{}')", f.name, wrap_args(&names), f.name));
+        f_line(
+            &mut o,
+            "    ",
+            &format!(
+                "{pure}{kind} {}({}) bind(c, name='{}')",
+                f.name,
+                wrap_args(&names),
+                f.name
+            ),
+        );
         o.push_str("      import\n");
         for (p, n) in f.params.iter().zip(&names) {
-            let renamed = Param { ty: p.ty.clone(), name: n.clone() };
+            let renamed = Param {
+                ty: p.ty.clone(),
+                name: n.clone(),
+            };
             let _ = writeln!(o, "      {}", f_dummy(api, f, &renamed));
         }
         if is_fn {
-            let rt = if f.ret.ptr { "type(c_ptr)".to_string() } else { f_type(api, &f.ret.base) };
+            let rt = if f.ret.ptr {
+                "type(c_ptr)".to_string()
+            } else {
+                f_type(api, &f.ret.base)
+            };
             let _ = writeln!(o, "      {rt} :: {}", f.name);
         }
         let _ = writeln!(o, "    end {kind} {}", f.name);
@@ -395,9 +460,21 @@ fn fortran(api: &Api) -> String {
         let Some(out) = scalar_out(f) else { continue };
         let names = f_names(f);
         let short = f.name.trim_start_matches("dc_");
-        let args: Vec<String> = names.iter().cloned().chain(std::iter::once("stat".to_string())).collect();
-        let _ = writeln!(o, "\n  !> Elemental form of {}: on error `{}` is NaN (numeric) and `stat` the status.", f.name, out.name);
-        f_line(&mut o, "  ", &format!("impure elemental subroutine {short}({})", wrap_args(&args)));
+        let args: Vec<String> = names
+            .iter()
+            .cloned()
+            .chain(std::iter::once("stat".to_string()))
+            .collect();
+        let _ = writeln!(
+            o,
+            "\n  !> Elemental form of {}: on error `{}` is NaN (numeric) and `stat` the status.",
+            f.name, out.name
+        );
+        f_line(
+            &mut o,
+            "  ",
+            &format!("impure elemental subroutine {short}({})", wrap_args(&args)),
+        );
         let (last_name, in_names) = names.split_last().expect("has out");
         for (p, n) in f.params.iter().zip(&names) {
             let t = f_type(api, &p.ty.base);
@@ -407,11 +484,20 @@ fn fortran(api: &Api) -> String {
                 let _ = writeln!(o, "    {t}, intent(in) :: {n}");
             }
         }
-        o.push_str("    integer(c_int32_t), intent(out), optional :: stat\n    integer(c_int32_t) :: s\n");
-        f_line(&mut o, "    ", &format!("s = {}({}, {last_name})", f.name, wrap_args(in_names)));
+        o.push_str(
+            "    integer(c_int32_t), intent(out), optional :: stat\n    integer(c_int32_t) :: s\n",
+        );
+        f_line(
+            &mut o,
+            "    ",
+            &format!("s = {}({}, {last_name})", f.name, wrap_args(in_names)),
+        );
         o.push_str("    if (present(stat)) stat = s\n");
         if matches!(out.ty.base, Base::F64) {
-            let _ = writeln!(o, "    if (s /= DC_OK) {last_name} = ieee_value({last_name}, ieee_quiet_nan)");
+            let _ = writeln!(
+                o,
+                "    if (s /= DC_OK) {last_name} = ieee_value({last_name}, ieee_quiet_nan)"
+            );
         }
         let _ = writeln!(o, "  end subroutine {short}");
     }
@@ -421,13 +507,28 @@ fn fortran(api: &Api) -> String {
         }
         let names = f_names(f);
         let short = f.name.trim_start_matches("dc_");
-        let _ = writeln!(o, "\n  !> Elemental form of {} (pure: arrays of contacts in one call).", f.name);
-        f_line(&mut o, "  ", &format!("elemental function {short}({}) result(r)", wrap_args(&names)));
+        let _ = writeln!(
+            o,
+            "\n  !> Elemental form of {} (pure: arrays of contacts in one call).",
+            f.name
+        );
+        f_line(
+            &mut o,
+            "  ",
+            &format!(
+                "elemental function {short}({}) result(r)",
+                wrap_args(&names)
+            ),
+        );
         for (p, n) in f.params.iter().zip(&names) {
             let _ = writeln!(o, "    {}, intent(in) :: {n}", f_type(api, &p.ty.base));
         }
         o.push_str("    real(c_double) :: r\n");
-        f_line(&mut o, "    ", &format!("r = {}({})", f.name, wrap_args(&names)));
+        f_line(
+            &mut o,
+            "    ",
+            &format!("r = {}({})", f.name, wrap_args(&names)),
+        );
         let _ = writeln!(o, "  end function {short}");
     }
     o.push_str("end module demcontact_c\n");
@@ -438,10 +539,20 @@ fn fortran(api: &Api) -> String {
 
 fn probe_c(api: &Api) -> String {
     let mut o = String::new();
-    o.push_str("/* Generated by tests/bindings.rs: do not edit. What the C compiler sees of the ABI. */\n");
+    o.push_str(
+        "/* Generated by tests/bindings.rs: do not edit. What the C compiler sees of the ABI. */\n",
+    );
     o.push_str("#include <demcontact.h>\n#include <stddef.h>\n#include <stdint.h>\n\n");
-    let ints: Vec<&(String, String)> = api.consts.iter().filter(|(_, v)| !(v.contains('.') || v.contains('e'))).collect();
-    let _ = writeln!(o, "int32_t dc_probe_n_consts(void) {{ return {}; }}", ints.len());
+    let ints: Vec<&(String, String)> = api
+        .consts
+        .iter()
+        .filter(|(_, v)| !(v.contains('.') || v.contains('e')))
+        .collect();
+    let _ = writeln!(
+        o,
+        "int32_t dc_probe_n_consts(void) {{ return {}; }}",
+        ints.len()
+    );
     o.push_str("int64_t dc_probe_const(int32_t i) {\n  switch (i) {\n");
     for (i, (n, _)) in ints.iter().enumerate() {
         let _ = writeln!(o, "  case {}: return (int64_t)({n});", i + 1);
@@ -454,7 +565,11 @@ fn probe_c(api: &Api) -> String {
             layout.push(format!("offsetof({s}, {})", f.name));
         }
     }
-    let _ = writeln!(o, "int32_t dc_probe_n_layout(void) {{ return {}; }}", layout.len());
+    let _ = writeln!(
+        o,
+        "int32_t dc_probe_n_layout(void) {{ return {}; }}",
+        layout.len()
+    );
     o.push_str("int64_t dc_probe_layout(int32_t i) {\n  switch (i) {\n");
     for (i, l) in layout.iter().enumerate() {
         let _ = writeln!(o, "  case {}: return (int64_t){l};", i + 1);
@@ -466,14 +581,24 @@ fn probe_c(api: &Api) -> String {
 fn probe_f90(api: &Api) -> String {
     let mut o = String::new();
     o.push_str("! Generated by tests/bindings.rs: do not edit. The module's view of the ABI, in the same\n");
-    o.push_str("! order as c_tests/fortran/abi_probe.c; c_tests/fortran/test_fortran.f90 compares them.\n");
+    o.push_str(
+        "! order as c_tests/fortran/abi_probe.c; c_tests/fortran/test_fortran.f90 compares them.\n",
+    );
     o.push_str("module abi_expect\n  use demcontact\n  implicit none\ncontains\n");
     o.push_str("  subroutine expected_consts(v, n)\n    integer(c_int64_t), intent(out) :: v(:)\n    integer, intent(out) :: n\n");
-    let ints: Vec<&(String, String)> = api.consts.iter().filter(|(_, v)| !(v.contains('.') || v.contains('e'))).collect();
+    let ints: Vec<&(String, String)> = api
+        .consts
+        .iter()
+        .filter(|(_, v)| !(v.contains('.') || v.contains('e')))
+        .collect();
     for (i, (n, _)) in ints.iter().enumerate() {
         let _ = writeln!(o, "    v({}) = {n}", i + 1);
     }
-    let _ = writeln!(o, "    n = {}\n  end subroutine expected_consts\n", ints.len());
+    let _ = writeln!(
+        o,
+        "    n = {}\n  end subroutine expected_consts\n",
+        ints.len()
+    );
     o.push_str("  subroutine expected_layout(v, n)\n    integer(c_int64_t), intent(out) :: v(:)\n    integer, intent(out) :: n\n");
     let mut i = 0;
     for (s, fields) in &api.structs {
@@ -492,7 +617,10 @@ fn probe_f90(api: &Api) -> String {
         }
         o.push_str("    end block\n");
     }
-    let _ = writeln!(o, "    n = {i}\n  end subroutine expected_layout\nend module abi_expect");
+    let _ = writeln!(
+        o,
+        "    n = {i}\n  end subroutine expected_layout\nend module abi_expect"
+    );
     o
 }
 
@@ -515,32 +643,53 @@ fn cpp_type(b: &Base) -> String {
 }
 
 fn snake_from_err(name: &str) -> String {
-    name.trim_start_matches("DC_ERR_").trim_start_matches("DC_").to_ascii_lowercase()
+    name.trim_start_matches("DC_ERR_")
+        .trim_start_matches("DC_")
+        .to_ascii_lowercase()
 }
 
 fn cpp(api: &Api) -> String {
     let mut o = String::new();
-    o.push_str("// Generated by tests/bindings.rs from include/demcontact.h: do not edit by hand.\n");
+    o.push_str(
+        "// Generated by tests/bindings.rs from include/demcontact.h: do not edit by hand.\n",
+    );
     o.push_str("// Included by include/demcontact.hpp, which defines demcontact::error and detail::check.\n");
     o.push_str("#pragma once\n\nnamespace demcontact {\n\n");
     o.push_str("/// Every status of the C API (DC_OK and the DC_ERR_* codes).\nenum class status : std::int32_t {\n");
-    for (n, _) in api.consts.iter().filter(|(n, _)| n == "DC_OK" || n.starts_with("DC_ERR_")) {
+    for (n, _) in api
+        .consts
+        .iter()
+        .filter(|(n, _)| n == "DC_OK" || n.starts_with("DC_ERR_"))
+    {
         let _ = writeln!(o, "    {} = {n},", snake_from_err(n));
     }
     o.push_str("};\n\n/// End-of-contact criterion.\nenum class criterion : std::int32_t {\n");
     for (n, _) in api.consts.iter().filter(|(n, _)| n.starts_with("DC_END_")) {
-        let _ = writeln!(o, "    {} = {n},", n.trim_start_matches("DC_END_").to_ascii_lowercase());
+        let _ = writeln!(
+            o,
+            "    {} = {n},",
+            n.trim_start_matches("DC_END_").to_ascii_lowercase()
+        );
     }
     o.push_str("};\n");
     let param_cpp = |p: &Param| -> (String, String) {
         // (declaration in the wrapper, expression passed to C)
         if p.name == "criterion" && p.ty.base == Base::I32 && !p.ty.ptr {
-            return ("criterion criterion_".into(), "static_cast<std::int32_t>(criterion_)".into());
+            return (
+                "criterion criterion_".into(),
+                "static_cast<std::int32_t>(criterion_)".into(),
+            );
         }
         if p.ty.ptr && p.ty.is_const && matches!(p.ty.base, Base::Named(_)) {
-            return (format!("const {}& {}", cpp_type(&p.ty.base), p.name), format!("&{}", p.name));
+            return (
+                format!("const {}& {}", cpp_type(&p.ty.base), p.name),
+                format!("&{}", p.name),
+            );
         }
-        (format!("{} {}", cpp_type(&p.ty.base), p.name), p.name.clone())
+        (
+            format!("{} {}", cpp_type(&p.ty.base), p.name),
+            p.name.clone(),
+        )
     };
     for f in &api.funcs {
         let short = f.name.trim_start_matches("dc_");
@@ -551,7 +700,11 @@ fn cpp(api: &Api) -> String {
             let ot = cpp_type(&out.ty.base);
             let mut call_args = exprs.clone();
             call_args.push("&out".into());
-            let _ = writeln!(o, "\n/// {}: throws demcontact::error on a non-OK status.", f.name);
+            let _ = writeln!(
+                o,
+                "\n/// {}: throws demcontact::error on a non-OK status.",
+                f.name
+            );
             let _ = writeln!(
                 o,
                 "inline {ot} {short}({}) {{\n    {ot} out{{}};\n    detail::check(::{}({}));\n    return out;\n}}",
@@ -561,7 +714,11 @@ fn cpp(api: &Api) -> String {
             );
             let mut decls2 = decls.clone();
             decls2.push(format!("{ot}& out"));
-            let _ = writeln!(o, "/// {}: returns the status; `out` is written only on status::ok.", f.name);
+            let _ = writeln!(
+                o,
+                "/// {}: returns the status; `out` is written only on status::ok.",
+                f.name
+            );
             let _ = writeln!(
                 o,
                 "inline status {short}({}) noexcept {{\n    return static_cast<status>(::{}({}));\n}}",
@@ -592,9 +749,13 @@ fn cpp(api: &Api) -> String {
 fn api_doc(header: &str) -> String {
     let mut o = String::new();
     o.push_str("# C API reference\n\n");
-    o.push_str("Generated by `tests/bindings.rs` from the doc comments of `include/demcontact.h` (which\n");
+    o.push_str(
+        "Generated by `tests/bindings.rs` from the doc comments of `include/demcontact.h` (which\n",
+    );
     o.push_str("cbindgen generates from the Rust sources); checked fresh by `cargo test --test bindings`.\n");
-    o.push_str("Conventions shared by all functions are in the header's opening comment and the README.\n");
+    o.push_str(
+        "Conventions shared by all functions are in the header's opening comment and the README.\n",
+    );
     let mut doc: Vec<String> = Vec::new();
     let mut in_doc = false;
     let mut in_plain = false;
@@ -641,24 +802,49 @@ fn api_doc(header: &str) -> String {
         if let Some(rest) = t.strip_prefix("#define ") {
             let mut it = rest.split_whitespace();
             if let (Some(n), Some(v)) = (it.next(), it.next()) {
-                let _ = writeln!(consts, "| `{n}` | `{v}` | {} |", doc.join(" ").replace('|', "\\|"));
+                let _ = writeln!(
+                    consts,
+                    "| `{n}` | `{v}` | {} |",
+                    doc.join(" ").replace('|', "\\|")
+                );
             }
             doc.clear();
             continue;
         }
         if t.starts_with("typedef struct") {
-            let name = t.trim_start_matches("typedef struct").trim().trim_end_matches('{').trim();
+            let name = t
+                .trim_start_matches("typedef struct")
+                .trim()
+                .trim_end_matches('{')
+                .trim();
             let _ = writeln!(structs, "\n### `{name}`\n\n{}\n", doc.join("\n"));
             doc.clear();
             continue;
         }
-        if !decl.is_empty() || (t.contains("dc_") && t.contains('(') && !t.starts_with('#') && !t.starts_with("//")) {
+        if !decl.is_empty()
+            || (t.contains("dc_") && t.contains('(') && !t.starts_with('#') && !t.starts_with("//"))
+        {
             decl.push_str(t);
             decl.push(' ');
             if t.ends_with(';') {
-                let sig = decl.split_whitespace().collect::<Vec<_>>().join(" ").replace("( ", "(");
-                let name = sig.split('(').next().unwrap_or("").rsplit(' ').next().unwrap_or("").trim_start_matches('*');
-                let _ = writeln!(funcs, "\n### `{name}`\n\n```c\n{sig}\n```\n\n{}", doc.join("\n"));
+                let sig = decl
+                    .split_whitespace()
+                    .collect::<Vec<_>>()
+                    .join(" ")
+                    .replace("( ", "(");
+                let name = sig
+                    .split('(')
+                    .next()
+                    .unwrap_or("")
+                    .rsplit(' ')
+                    .next()
+                    .unwrap_or("")
+                    .trim_start_matches('*');
+                let _ = writeln!(
+                    funcs,
+                    "\n### `{name}`\n\n```c\n{sig}\n```\n\n{}",
+                    doc.join("\n")
+                );
                 decl.clear();
                 doc.clear();
             }
@@ -692,7 +878,10 @@ fn generated_bindings_are_fresh() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let header = std::fs::read_to_string(root.join("include/demcontact.h")).expect("header");
     let api = parse(&header);
-    assert!(api.funcs.iter().any(|f| f.name == "dc_alpha_from_e"), "parser found no functions");
+    assert!(
+        api.funcs.iter().any(|f| f.name == "dc_alpha_from_e"),
+        "parser found no functions"
+    );
     let stale: Vec<String> = [
         (root.join("include/demcontact_c.f90"), fortran(&api)),
         (root.join("include/demcontact_generated.hpp"), cpp(&api)),
@@ -703,7 +892,10 @@ fn generated_bindings_are_fresh() {
     .iter()
     .filter_map(|(p, s)| check_or_bless(p, s))
     .collect();
-    assert!(stale.is_empty(), "stale generated bindings {stale:?}: run `DC_BLESS=1 cargo test --test bindings` and commit");
+    assert!(
+        stale.is_empty(),
+        "stale generated bindings {stale:?}: run `DC_BLESS=1 cargo test --test bindings` and commit"
+    );
 }
 
 #[test]
@@ -712,8 +904,16 @@ fn every_function_has_a_fortran_interface() {
     let header = std::fs::read_to_string(root.join("include/demcontact.h")).expect("header");
     let api = parse(&header);
     // Long interfaces are continued with `&`: join continuation lines before searching.
-    let f90 = fortran(&api).replace("&\n", " ").split_whitespace().collect::<Vec<_>>().join(" ");
+    let f90 = fortran(&api)
+        .replace("&\n", " ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
     for f in &api.funcs {
-        assert!(f90.contains(&format!("name='{}')", f.name)), "{} missing", f.name);
+        assert!(
+            f90.contains(&format!("name='{}')", f.name)),
+            "{} missing",
+            f.name
+        );
     }
 }

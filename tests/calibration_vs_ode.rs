@@ -4,8 +4,8 @@
 
 mod common;
 use common::collide;
-use demcontact::ffi::{calibration::*, status::*};
 use demcontact::EndCriterion;
+use demcontact::ffi::{calibration::*, status::*};
 
 const PS: [f64; 6] = [1.0, 1.25, 1.5, 2.0, 3.0, 5.0];
 const ES: [f64; 10] = [0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999];
@@ -32,11 +32,18 @@ fn check(criterion: EndCriterion, code: i32) {
                     worst = worst.max(rel);
                     spread = (spread.0.min(c.e), spread.1.max(c.e));
                     count += 1;
-                    assert!(rel <= 1e-9, "{criterion:?} p={p} e={e} v0={v0} ω0={omega0}: realised {} (rel {rel:e})", c.e);
+                    assert!(
+                        rel <= 1e-9,
+                        "{criterion:?} p={p} e={e} v0={v0} ω0={omega0}: realised {} (rel {rel:e})",
+                        c.e
+                    );
                 }
             }
             // Velocity independence: the realised e over six decades of v0 agrees to the same bound.
-            assert!((spread.1 - spread.0) / e <= 2e-9, "{criterion:?} p={p} e={e}: spread {spread:?}");
+            assert!(
+                (spread.1 - spread.0) / e <= 2e-9,
+                "{criterion:?} p={p} e={e}: spread {spread:?}"
+            );
         }
     }
     println!("{criterion:?}: {count} collisions, worst |e_realised - e|/e = {worst:.2e}");
@@ -86,9 +93,17 @@ fn e_from_alpha_matches_integration_overdamped_overlap() {
     let p: f64 = 1.5;
     let a = 1.2 * (2.0 * (p + 1.0)).sqrt();
     let mut e = f64::NAN;
-    assert_eq!(unsafe { dc_e_from_alpha(a, p, DC_END_OVERLAP, &mut e) }, DC_OK);
+    assert_eq!(
+        unsafe { dc_e_from_alpha(a, p, DC_END_OVERLAP, &mut e) },
+        DC_OK
+    );
     assert_eq!(e, 0.0);
-    let f = |y: [f64; 2]| [y[1], -a * y[0].abs().powf(0.25) * y[1] - y[0].abs().powf(p) * y[0].signum()];
+    let f = |y: [f64; 2]| {
+        [
+            y[1],
+            -a * y[0].abs().powf(0.25) * y[1] - y[0].abs().powf(p) * y[0].signum(),
+        ]
+    };
     let (mut y, h) = ([0.0f64, 1.0f64], 1e-4);
     let mut peak_speed_after_turn: f64 = 0.0;
     let mut turned = false;
@@ -107,5 +122,9 @@ fn e_from_alpha_matches_integration_overdamped_overlap() {
             peak_speed_after_turn = peak_speed_after_turn.max(-y[1]);
         }
     }
-    assert!(turned && -y[1] < 1e-2 * peak_speed_after_turn, "speed did not decay: {}", y[1]);
+    assert!(
+        turned && -y[1] < 1e-2 * peak_speed_after_turn,
+        "speed did not decay: {}",
+        y[1]
+    );
 }

@@ -16,7 +16,9 @@
 mod common;
 use common::collide;
 use demcontact::EndCriterion;
-use demcontact::ffi::{calibration::*, force::*, powerlaw::*, status::*, timestep::*, viscoelastic::*};
+use demcontact::ffi::{
+    calibration::*, force::*, powerlaw::*, status::*, timestep::*, viscoelastic::*,
+};
 use std::f64::consts::{PI, SQRT_2};
 
 /// Worst-case bookkeeping for one export (or one export × reference).
@@ -32,7 +34,15 @@ struct Stat {
 
 impl Stat {
     fn new(name: &'static str, reference: &'static str, tol: f64) -> Self {
-        Self { name, reference, tol, points: 0, worst: 0.0, at: String::new(), nonfinite: 0 }
+        Self {
+            name,
+            reference,
+            tol,
+            points: 0,
+            worst: 0.0,
+            at: String::new(),
+            nonfinite: 0,
+        }
     }
     /// Records one comparison; `got` must be finite (a non-finite value is counted, not compared).
     fn add(&mut self, got: f64, want: f64, at: impl FnOnce() -> String) {
@@ -44,7 +54,11 @@ impl Stat {
             }
             return;
         }
-        let rel = if want == got { 0.0 } else { ((got - want) / want).abs() };
+        let rel = if want == got {
+            0.0
+        } else {
+            ((got - want) / want).abs()
+        };
         if rel > self.worst || rel.is_nan() {
             self.worst = if rel.is_nan() { f64::INFINITY } else { rel };
             self.at = at();
@@ -60,15 +74,33 @@ fn print_table(title: &str, stats: &[Stat]) {
     println!("| function | reference | points | non-finite | worst rel. error | bound | where |");
     println!("|---|---|---:|---:|---:|---:|---|");
     for s in stats {
-        println!("| {} | {} | {} | {} | {:.1e} | {:.0e} | {} |", s.name, s.reference, s.points, s.nonfinite, s.worst, s.tol, s.at);
+        println!(
+            "| {} | {} | {} | {} | {:.1e} | {:.0e} | {} |",
+            s.name, s.reference, s.points, s.nonfinite, s.worst, s.tol, s.at
+        );
     }
     let bad: Vec<_> = stats.iter().filter(|s| !s.ok()).map(|s| s.name).collect();
     assert!(bad.is_empty(), "failing: {bad:?}");
 }
 
 const PS: [f64; 10] = [1.0, 1.1, 1.5, 2.0, 2.5, 3.0, 5.0, 8.0, 12.0, 20.0];
-const ES: [f64; 15] =
-    [1e-12, 1e-9, 1e-6, 1e-3, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999, 1.0 - 1e-6, 1.0 - 1e-9, 1.0 - 1e-12];
+const ES: [f64; 15] = [
+    1e-12,
+    1e-9,
+    1e-6,
+    1e-3,
+    0.01,
+    0.1,
+    0.3,
+    0.5,
+    0.7,
+    0.9,
+    0.99,
+    0.999,
+    1.0 - 1e-6,
+    1.0 - 1e-9,
+    1.0 - 1e-12,
+];
 const ZETAS: [f64; 9] = [0.0, 0.5, 1.0 - 1e-12, 1.0, 1.0 + 1e-12, 1.5, 3.0, 10.0, 1e3];
 const V0S: [f64; 6] = [1e-9, 1e-6, 1e-3, 1.0, 1e2, 1e4];
 const KS: [f64; 4] = [1e-2, 1e3, 1e8, 1e12];
@@ -117,7 +149,11 @@ fn g_ref(z: f64) -> f64 {
     if z == 1.0 {
         1.0
     } else if z < 1.0 {
-        if z == 0.0 { 0.0 } else { z * libm::acos(z) / ((1.0 - z) * (1.0 + z)).sqrt() }
+        if z == 0.0 {
+            0.0
+        } else {
+            z * libm::acos(z) / ((1.0 - z) * (1.0 + z)).sqrt()
+        }
     } else {
         z * libm::acosh(z) / ((z - 1.0) * (z + 1.0)).sqrt()
     }
@@ -144,17 +180,37 @@ fn powerlaw_calculus_extremes() {
     let ws = omegas(&mut s_omega);
     let mut s_alpha = Stat::new("dc_alpha_from_e", "e -> alpha -> e round trip", 5e-13);
     let mut s_alpha_cf = Stat::new("dc_alpha_from_e (overlap)", "closed form via ln e", 4e-16);
-    let mut s_e = Stat::new("dc_e_from_alpha", "exp(-2g), exp(-pi zeta/omega) here", 1e-13);
+    let mut s_e = Stat::new(
+        "dc_e_from_alpha",
+        "exp(-2g), exp(-pi zeta/omega) here",
+        1e-13,
+    );
     let mut s_dmax = Stat::new("dc_max_overlap", "A (v0/w0)^q e^(-q g), powf", 2e-14);
-    let mut s_tmax = Stat::new("dc_time_of_max_overlap", "p=1: u_m/w0; alpha=0: Beta fn", 1e-12);
+    let mut s_tmax = Stat::new(
+        "dc_time_of_max_overlap",
+        "p=1: u_m/w0; alpha=0: Beta fn",
+        1e-12,
+    );
     let mut s_tmax_sc = Stat::new("dc_time_of_max_overlap", "scaling (v0/w0)^(q-1)/w0", 1e-13);
-    let mut s_to = Stat::new("dc_contact_duration (overlap)", "p=1: pi/(w w0); alpha=0: Beta", 1e-12);
+    let mut s_to = Stat::new(
+        "dc_contact_duration (overlap)",
+        "p=1: pi/(w w0); alpha=0: Beta",
+        1e-12,
+    );
     let mut s_to_sc = Stat::new("dc_contact_duration (overlap)", "scaling", 1e-13);
-    let mut s_tf = Stat::new("dc_contact_duration (force)", "p=1: 2u_m/w0; alpha=0: Beta", 1e-12);
+    let mut s_tf = Stat::new(
+        "dc_contact_duration (force)",
+        "p=1: 2u_m/w0; alpha=0: Beta",
+        1e-12,
+    );
     let mut s_tf_sc = Stat::new("dc_contact_duration (force)", "scaling", 1e-13);
     let mut s_lvl = Stat::new("dc_contact_duration_level 0", "level 4", 1e-5);
     let mut s_en = Stat::new("dc_energy_partition", "closed forms via g here", 1e-13);
-    let mut s_dtl = Stat::new("dc_dt_linearised", "2/(w0 sqrt(p) d0^((p-1)/2)), powf", 2e-14);
+    let mut s_dtl = Stat::new(
+        "dc_dt_linearised",
+        "2/(w0 sqrt(p) d0^((p-1)/2)), powf",
+        2e-14,
+    );
     let mut s_dtl_crit = Stat::new("dc_dt_linearised", "dc_dt_crit / sqrt(2p/(p+1))", 2e-14);
     let mut s_dts = Stat::new("dc_dt_static", "(2/w_eq)/(sqrt(1+z^2)+z), powf", 2e-14);
     let mut no_event = 0usize;
@@ -191,7 +247,9 @@ fn powerlaw_calculus_extremes() {
                     s_alpha.add(e2, e, || format!("p={p} e={e:e} crit={c}"));
                     if c == DC_END_OVERLAP {
                         let l = -e.ln();
-                        s_alpha_cf.add(a2, scale(p) * l / (PI * PI + l * l).sqrt(), || format!("p={p} e={e:e}"));
+                        s_alpha_cf.add(a2, scale(p) * l / (PI * PI + l * l).sqrt(), || {
+                            format!("p={p} e={e:e}")
+                        });
                     }
                 } else {
                     assert_eq!(e, 0.0, "overdamped overlap end must give e = 0");
@@ -234,13 +292,19 @@ fn powerlaw_calculus_extremes() {
                     let tscale = x.powf(q - 1.0) / w0;
                     let (s, tm) = call(|o| unsafe { dc_time_of_max_overlap(p, alpha, v0, w0, o) });
                     assert_eq!(s, DC_OK);
-                    let (_, tm1) = call(|o| unsafe { dc_time_of_max_overlap(p, alpha, 1.0, 1.0, o) });
+                    let (_, tm1) =
+                        call(|o| unsafe { dc_time_of_max_overlap(p, alpha, 1.0, 1.0, o) });
                     s_tmax_sc.add(tm, tm1 * tscale, at);
-                    let (sf, tf) = call(|o| unsafe { dc_contact_duration(p, alpha, v0, w0, DC_END_FORCE, o) });
+                    let (sf, tf) =
+                        call(|o| unsafe { dc_contact_duration(p, alpha, v0, w0, DC_END_FORCE, o) });
                     assert_eq!(sf, DC_OK);
-                    let (_, tf1) = call(|o| unsafe { dc_contact_duration(p, alpha, 1.0, 1.0, DC_END_FORCE, o) });
+                    let (_, tf1) = call(|o| unsafe {
+                        dc_contact_duration(p, alpha, 1.0, 1.0, DC_END_FORCE, o)
+                    });
                     s_tf_sc.add(tf, tf1 * tscale, at);
-                    let (so, to) = call(|o| unsafe { dc_contact_duration(p, alpha, v0, w0, DC_END_OVERLAP, o) });
+                    let (so, to) = call(|o| unsafe {
+                        dc_contact_duration(p, alpha, v0, w0, DC_END_OVERLAP, o)
+                    });
                     if z >= 1.0 {
                         assert_eq!(so, DC_ERR_NO_EVENT, "{}", at());
                         no_event += 1;
@@ -252,16 +316,27 @@ fn powerlaw_calculus_extremes() {
                         // report DC_ERR_RESULT_RANGE exactly when τ overflows.
                         let om = ((1.0 - z) * (1.0 + z)).sqrt();
                         let cc = (1.0 - q) * z / om;
-                        let ln_tau = (amp * q).ln() + (q - 1.0) * x.ln() - w0.ln() - q * om.ln() + PI * cc
+                        let ln_tau = (amp * q).ln() + (q - 1.0) * x.ln() - w0.ln() - q * om.ln()
+                            + PI * cc
                             + libm::lgamma(q)
                             - q * cc.ln();
                         if so == DC_ERR_RESULT_RANGE {
-                            assert!(cc > 100.0 && ln_tau > 709.0, "RESULT_RANGE at ln tau ~ {ln_tau}: {}", at());
+                            assert!(
+                                cc > 100.0 && ln_tau > 709.0,
+                                "RESULT_RANGE at ln tau ~ {ln_tau}: {}",
+                                at()
+                            );
                             overflow += 1;
                         } else {
                             assert_eq!(so, DC_OK, "{}", at());
-                            assert!(!(cc > 100.0 && ln_tau > 711.0), "finite tau at ln tau ~ {ln_tau}: {}", at());
-                            let (s1, to1) = call(|o| unsafe { dc_contact_duration(p, alpha, 1.0, 1.0, DC_END_OVERLAP, o) });
+                            assert!(
+                                !(cc > 100.0 && ln_tau > 711.0),
+                                "finite tau at ln tau ~ {ln_tau}: {}",
+                                at()
+                            );
+                            let (s1, to1) = call(|o| unsafe {
+                                dc_contact_duration(p, alpha, 1.0, 1.0, DC_END_OVERLAP, o)
+                            });
                             if s1 == DC_OK && (to1 * tscale).is_finite() {
                                 s_to_sc.add(to, to1 * tscale, at);
                             }
@@ -288,7 +363,9 @@ fn powerlaw_calculus_extremes() {
                         s_tf.add(tf, 2.0 * t_half, at);
                     }
                     // Accuracy levels: the cheapest against the most accurate.
-                    let (_, t0) = call(|o| unsafe { dc_contact_duration_level(p, alpha, v0, w0, DC_END_FORCE, 0, o) });
+                    let (_, t0) = call(|o| unsafe {
+                        dc_contact_duration_level(p, alpha, v0, w0, DC_END_FORCE, 0, o)
+                    });
                     s_lvl.add(t0, tf, at);
                     // Time steps.
                     let (s, dtl) = call(|o| unsafe { dc_dt_linearised(p, v0, w0, o) });
@@ -311,12 +388,14 @@ fn powerlaw_calculus_extremes() {
         }
     }
     println!("overdamped/critical overlap-end durations rejected with DC_ERR_NO_EVENT: {no_event}");
-    println!("near-critical overlap-end durations beyond DBL_MAX, DC_ERR_RESULT_RANGE as predicted: {overflow}");
+    println!(
+        "near-critical overlap-end durations beyond DBL_MAX, DC_ERR_RESULT_RANGE as predicted: {overflow}"
+    );
     print_table(
         "Power-law calculus and time steps (cargo test --release --test extremes -- --nocapture)",
         &[
-            s_omega, s_alpha, s_alpha_cf, s_e, s_dmax, s_tmax, s_tmax_sc, s_to, s_to_sc, s_tf, s_tf_sc, s_lvl, s_en, s_dtl,
-            s_dtl_crit, s_dts,
+            s_omega, s_alpha, s_alpha_cf, s_e, s_dmax, s_tmax, s_tmax_sc, s_to, s_to_sc, s_tf,
+            s_tf_sc, s_lvl, s_en, s_dtl, s_dtl_crit, s_dts,
         ],
     );
 }
@@ -336,17 +415,40 @@ fn powerlaw_vs_ode_reference_near_critical_damping() {
             let (v0, w0) = (0.7, 300.0);
             let r = collide(p, alpha, v0, w0, EndCriterion::Force, 1e-12);
             let at = || format!("p={p} zeta={z:e}");
-            s_d.add(call(|o| unsafe { dc_max_overlap(p, alpha, v0, w0, o) }).1, r.delta_max, at);
-            s_t.add(call(|o| unsafe { dc_time_of_max_overlap(p, alpha, v0, w0, o) }).1, r.t_max, at);
-            s_f.add(call(|o| unsafe { dc_contact_duration(p, alpha, v0, w0, DC_END_FORCE, o) }).1, r.tau, at);
-            s_e.add(call(|o| unsafe { dc_e_from_alpha(alpha, p, DC_END_FORCE, o) }).1, r.e, at);
+            s_d.add(
+                call(|o| unsafe { dc_max_overlap(p, alpha, v0, w0, o) }).1,
+                r.delta_max,
+                at,
+            );
+            s_t.add(
+                call(|o| unsafe { dc_time_of_max_overlap(p, alpha, v0, w0, o) }).1,
+                r.t_max,
+                at,
+            );
+            s_f.add(
+                call(|o| unsafe { dc_contact_duration(p, alpha, v0, w0, DC_END_FORCE, o) }).1,
+                r.tau,
+                at,
+            );
+            s_e.add(
+                call(|o| unsafe { dc_e_from_alpha(alpha, p, DC_END_FORCE, o) }).1,
+                r.e,
+                at,
+            );
             if z < 0.95 {
                 let r = collide(p, alpha, v0, w0, EndCriterion::Overlap, 1e-12);
-                s_o.add(call(|o| unsafe { dc_contact_duration(p, alpha, v0, w0, DC_END_OVERLAP, o) }).1, r.tau, at);
+                s_o.add(
+                    call(|o| unsafe { dc_contact_duration(p, alpha, v0, w0, DC_END_OVERLAP, o) }).1,
+                    r.tau,
+                    at,
+                );
             }
         }
     }
-    print_table("Power-law calculus vs the ODE reference (rtol 1e-12)", &[s_d, s_t, s_f, s_e, s_o]);
+    print_table(
+        "Power-law calculus vs the ODE reference (rtol 1e-12)",
+        &[s_d, s_t, s_f, s_e, s_o],
+    );
 }
 
 #[test]
@@ -355,18 +457,52 @@ fn trajectory_extremes() {
     // end event with exit speed e·v0 (e from dc_e_from_alpha), the end time equal to
     // dc_contact_duration, and each force equal to the law recomputed here from (δ, v).
     let mut s_e = Stat::new("dc_contact_trajectory", "exit speed vs e v0", 1e-11);
-    let mut s_t = Stat::new("dc_contact_trajectory", "end time vs duration (level 4)", 1e-13);
+    let mut s_t = Stat::new(
+        "dc_contact_trajectory",
+        "end time vs duration (level 4)",
+        1e-13,
+    );
     let mut s_f = Stat::new("dc_contact_trajectory", "force vs law from (d, v)", 1e-12);
     const N: usize = 33;
     for p in [1.0, 1.5, 2.0, 5.0, 20.0] {
-        for z in [0.0, 1e-6, 0.5, 0.99, 1.0 - 1e-12, 1.0, 1.0 + 1e-12, 10.0, 100.0, 1e4] {
+        for z in [
+            0.0,
+            1e-6,
+            0.5,
+            0.99,
+            1.0 - 1e-12,
+            1.0,
+            1.0 + 1e-12,
+            10.0,
+            100.0,
+            1e4,
+        ] {
             let alpha = z * scale(p);
             for c in [DC_END_OVERLAP, DC_END_FORCE] {
-                for (v0, w0, m) in [(1e-9, 1e-1, 1e3), (1.0, 1e3, 1e-6), (1e4, 1e6, 1e-12), (1e-3, 1e9, 1.0)] {
+                for (v0, w0, m) in [
+                    (1e-9, 1e-1, 1e3),
+                    (1.0, 1e3, 1e-6),
+                    (1e4, 1e6, 1e-12),
+                    (1e-3, 1e9, 1.0),
+                ] {
                     let mut b = [[0.0f64; N]; 4];
                     let [t, d, v, f] = &mut b;
                     let s = unsafe {
-                        dc_contact_trajectory(p, alpha, v0, w0, m, c, 4, N, t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), N)
+                        dc_contact_trajectory(
+                            p,
+                            alpha,
+                            v0,
+                            w0,
+                            m,
+                            c,
+                            4,
+                            N,
+                            t.as_mut_ptr(),
+                            d.as_mut_ptr(),
+                            v.as_mut_ptr(),
+                            f.as_mut_ptr(),
+                            N,
+                        )
                     };
                     let at = || format!("p={p} zeta={z:e} v0={v0:e} w0={w0:e} crit={c}");
                     if c == DC_END_OVERLAP && z >= 1.0 {
@@ -395,7 +531,11 @@ fn trajectory_extremes() {
                         // Near critical damping at p = 1 the interior samples underflow to 0
                         // (x ~ e^{−ζu} at phases u ~ 1e5): then the force must be exactly 0.
                         let big = el.abs().max(da.abs());
-                        let err = if big == 0.0 { got.abs() } else { (got - (el + da)).abs() / big };
+                        let err = if big == 0.0 {
+                            got.abs()
+                        } else {
+                            (got - (el + da)).abs() / big
+                        };
                         s_f.add(1.0 + err, 1.0, || format!("{} sample {i}", at()));
                     }
                 }
@@ -411,7 +551,11 @@ fn trajectory_huge_exponent() {
     // time-symmetric, so the middle sample of an odd n lies at exactly τ/2 (independent of any
     // quadrature). Found by proptest_ffi at p = 7.58e195, v0 = 1.1e-308: the middle time was NaN
     // with DC_OK (the weight's leading moment 1/(ν+1) with ν + 1 recomputed as 0).
-    let mut s_t = Stat::new("dc_contact_trajectory", "middle time vs tau/2 (undamped, huge p)", 1e-12);
+    let mut s_t = Stat::new(
+        "dc_contact_trajectory",
+        "middle time vs tau/2 (undamped, huge p)",
+        1e-12,
+    );
     for p in [1e10, 1e17, 1e50, 1e195, 7.5784214180818e195, 1e300] {
         for v0 in [1.0, 1e-300, 1.1125369292536293e-308] {
             for n in [3usize, 65, 1001] {
@@ -422,9 +566,33 @@ fn trajectory_huge_exponent() {
                 let (t, d, v, f) = (&mut t[0], &mut d[0], &mut v[0], &mut f[0]);
                 let at = || format!("p={p:e} v0={v0:e} n={n}");
                 for crit in [DC_END_OVERLAP, DC_END_FORCE] {
-                    let s = unsafe { dc_contact_trajectory(p, 0.0, v0, 1.0, 1.0, crit, 2, n, t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), n) };
+                    let s = unsafe {
+                        dc_contact_trajectory(
+                            p,
+                            0.0,
+                            v0,
+                            1.0,
+                            1.0,
+                            crit,
+                            2,
+                            n,
+                            t.as_mut_ptr(),
+                            d.as_mut_ptr(),
+                            v.as_mut_ptr(),
+                            f.as_mut_ptr(),
+                            n,
+                        )
+                    };
                     assert_eq!(s, DC_OK, "{}", at());
-                    assert!(t.iter().chain(d.iter()).chain(v.iter()).chain(f.iter()).all(|x| x.is_finite()), "{}", at());
+                    assert!(
+                        t.iter()
+                            .chain(d.iter())
+                            .chain(v.iter())
+                            .chain(f.iter())
+                            .all(|x| x.is_finite()),
+                        "{}",
+                        at()
+                    );
                     s_t.add(t[n / 2], 0.5 * t[n - 1], at);
                 }
             }
@@ -437,17 +605,31 @@ fn trajectory_huge_exponent() {
 fn viscoelastic_extremes() {
     let mut s_rt = Stat::new("dc_viscoelastic_b_from_e + _e", "e -> b -> e", 1e-12);
     let mut s_ref = Stat::new("dc_viscoelastic_e", "dc_viscoelastic_e_reference", 1e-10);
-    let mut s_ser = Stat::new("dc_viscoelastic_e_series", "reference, b <= 0.4 (abs.)", 1e-6);
+    let mut s_ser = Stat::new(
+        "dc_viscoelastic_e_series",
+        "reference, b <= 0.4 (abs.)",
+        1e-6,
+    );
     let mut s_b = Stat::new("dc_viscoelastic_b", "gamma k^-0.6 v^0.2, powf", 2e-15);
     let mut s_kg = Stat::new("dc_viscoelastic_k_gamma", "rho/m, 1.5 A rho/m", 4e-16);
-    let mut s_es = Stat::new("dc_viscoelastic_e_of_speed", "e(b) with b computed here", 2e-14);
+    let mut s_es = Stat::new(
+        "dc_viscoelastic_e_of_speed",
+        "e(b) with b computed here",
+        2e-14,
+    );
     let mut s_beta = Stat::new("dc_viscoelastic_beta_from_e", "b(e)/v^0.2", 2e-15);
-    let mut s_a = Stat::new("dc_viscoelastic_a_from_e", "beta/(1.5 rho^0.4 m^-0.4)", 4e-15);
+    let mut s_a = Stat::new(
+        "dc_viscoelastic_a_from_e",
+        "beta/(1.5 rho^0.4 m^-0.4)",
+        4e-15,
+    );
     let mut s_v = Stat::new("dc_viscoelastic_speed_for_e", "(b(e)/beta)^5", 4e-15);
     let mut s_mono = Stat::new("dc_viscoelastic_e", "monotone in b (violations)", 0.0);
     for c in [DC_END_OVERLAP, DC_END_FORCE] {
         // Round trip over e from 1e-12 to 1 − 1e-12 (log-spaced in e and in 1 − e).
-        let mut es: Vec<f64> = (0..=240).map(|i| 10f64.powf(-12.0 + 12.0 * i as f64 / 240.0)).collect();
+        let mut es: Vec<f64> = (0..=240)
+            .map(|i| 10f64.powf(-12.0 + 12.0 * i as f64 / 240.0))
+            .collect();
         es.extend((1..=240).map(|i| 1.0 - 10f64.powf(-12.0 + 11.0 * i as f64 / 240.0)));
         for &e in &es {
             if e >= 1.0 {
@@ -464,14 +646,20 @@ fn viscoelastic_extremes() {
                 s_v.add(vv, (b / beta).powf(5.0), || format!("e={e:e} v={v:e}"));
                 for (rho, m) in [(1e2, 1e-12), (1e8, 1e-3), (1e12, 1e3)] {
                     let (_, a) = call(|o| unsafe { dc_viscoelastic_a_from_e(e, v, rho, m, c, o) });
-                    s_a.add(a, beta / (1.5 * rho.powf(0.4) * m.powf(-0.4)), || format!("e={e:e} rho={rho:e} m={m:e}"));
+                    s_a.add(a, beta / (1.5 * rho.powf(0.4) * m.powf(-0.4)), || {
+                        format!("e={e:e} rho={rho:e} m={m:e}")
+                    });
                 }
             }
         }
         // Full-range tier against the reference integrator where the latter is affordable.
         let bmax: f64 = if c == DC_END_OVERLAP { 30.0 } else { 300.0 };
         for i in 0..=60 {
-            let b = if i == 0 { 0.0 } else { 1e-6 * (bmax / 1e-6).powf(i as f64 / 60.0) };
+            let b = if i == 0 {
+                0.0
+            } else {
+                1e-6 * (bmax / 1e-6).powf(i as f64 / 60.0)
+            };
             let (_, e) = call(|o| unsafe { dc_viscoelastic_e(b, c, o) });
             let (s, r) = call(|o| unsafe { dc_viscoelastic_e_reference(b, c, o) });
             assert_eq!(s, DC_OK);
@@ -487,7 +675,9 @@ fn viscoelastic_extremes() {
             let b = 10f64.powf(-300.0 + i as f64);
             let (s, e) = call(|o| unsafe { dc_viscoelastic_e(b, c, o) });
             assert_eq!(s, DC_OK);
-            s_mono.add(1.0 + if e > prev { 1.0 } else { 0.0 }, 1.0, || format!("b={b:e}"));
+            s_mono.add(1.0 + if e > prev { 1.0 } else { 0.0 }, 1.0, || {
+                format!("b={b:e}")
+            });
             assert!((0.0..=1.0).contains(&e));
             prev = e;
         }
@@ -515,15 +705,25 @@ fn viscoelastic_extremes() {
         for &a in &[0.0, 1e-9, 1e-3] {
             for &m in &[1e-12, 1e-3, 1e3] {
                 let (mut k, mut g) = (f64::NAN, f64::NAN);
-                assert_eq!(unsafe { dc_viscoelastic_k_gamma(rho, a, m, &mut k, &mut g) }, DC_OK);
+                assert_eq!(
+                    unsafe { dc_viscoelastic_k_gamma(rho, a, m, &mut k, &mut g) },
+                    DC_OK
+                );
                 s_kg.add(k, rho / m, || format!("rho={rho:e} m={m:e}"));
                 if a > 0.0 {
-                    s_kg.add(g, 1.5 * a * rho / m, || format!("rho={rho:e} a={a:e} m={m:e}"));
+                    s_kg.add(g, 1.5 * a * rho / m, || {
+                        format!("rho={rho:e} a={a:e} m={m:e}")
+                    });
                 }
             }
         }
     }
-    print_table("Viscoelastic exports", &[s_rt, s_ref, s_ser, s_b, s_kg, s_es, s_beta, s_a, s_v, s_mono]);
+    print_table(
+        "Viscoelastic exports",
+        &[
+            s_rt, s_ref, s_ser, s_b, s_kg, s_es, s_beta, s_a, s_v, s_mono,
+        ],
+    );
 }
 
 #[test]
@@ -532,8 +732,20 @@ fn force_kernels_near_underflow() {
     // evaluated here with powf (relative to the larger of its two terms; terms that underflow in
     // both are 0).
     let mut stats = Vec::new();
-    let ds = [1e-3, 1e-30, 1e-150, 1e-300, f64::MIN_POSITIVE, 1e-310, 5e-324];
-    let mut sub = Stat::new("dc_normal_force_checked p=2, m d < 2.2e-308", "same (documented loss)", 1.0);
+    let ds = [
+        1e-3,
+        1e-30,
+        1e-150,
+        1e-300,
+        f64::MIN_POSITIVE,
+        1e-310,
+        5e-324,
+    ];
+    let mut sub = Stat::new(
+        "dc_normal_force_checked p=2, m d < 2.2e-308",
+        "same (documented loss)",
+        1.0,
+    );
     for p in [1.0, 1.5, 2.0, 3.7, 20.0] {
         let name: &'static str = match p {
             x if x == 1.0 => "dc_normal_force_checked p=1",
@@ -550,7 +762,8 @@ fn force_kernels_near_underflow() {
                 for &d in &ds {
                     for &vn in &[-1e3, -1.0, 0.0, 1e-6, 1.0, 1e3] {
                         let m = 1e-3;
-                        let (s, f) = call(|o| unsafe { dc_normal_force_checked(&pair, d, vn, 1e-3, m, o) });
+                        let (s, f) =
+                            call(|o| unsafe { dc_normal_force_checked(&pair, d, vn, 1e-3, m, o) });
                         assert_eq!(s, DC_OK);
                         let g = unsafe { dc_normal_force(&pair, d, vn, 1e-3, m) };
                         assert_eq!(f.to_bits(), g.to_bits());
@@ -561,10 +774,18 @@ fn force_kernels_near_underflow() {
                             want = want.max(0.0);
                         }
                         let big = el.abs().max(da.abs());
-                        let err = if big == 0.0 { f.abs() } else { (f - want).abs() / big };
+                        let err = if big == 0.0 {
+                            f.abs()
+                        } else {
+                            (f - want).abs() / big
+                        };
                         // Subnormal terms carry absolute rounding ~5e-324: measured relative to
                         // the smallest normal number there.
-                        let err = if big < f64::MIN_POSITIVE { (f - want).abs() / f64::MIN_POSITIVE } else { err };
+                        let err = if big < f64::MIN_POSITIVE {
+                            (f - want).abs() / f64::MIN_POSITIVE
+                        } else {
+                            err
+                        };
                         let at = || format!("k={k:e} d={d:e} vn={vn:e} crit={c}");
                         if p == 2.0 && m * d < f64::MIN_POSITIVE && vn != 0.0 {
                             // The p = 2 kernel forms √(m d) with one square root: the product
@@ -582,18 +803,31 @@ fn force_kernels_near_underflow() {
     stats.push(sub);
     // Hertz and viscoelastic pairs: forces at subnormal overlaps are finite and non-negative
     // when compressing.
-    let mut st = Stat::new("Hertz/viscoelastic kernels", "finite, >= 0 when compressing", 0.0);
+    let mut st = Stat::new(
+        "Hertz/viscoelastic kernels",
+        "finite, >= 0 when compressing",
+        0.0,
+    );
     for c in [DC_END_OVERLAP, DC_END_FORCE] {
         let mut h: dc_pair = unsafe { std::mem::zeroed() };
         let mut ve: dc_pair = unsafe { std::mem::zeroed() };
-        assert_eq!(unsafe { dc_pair_hertz(70e9, 0.3, 70e9, 0.3, 0.5, c, &mut h) }, DC_OK);
-        assert_eq!(unsafe { dc_pair_viscoelastic(70e9, 0.3, 70e9, 0.3, 1e-6, c, &mut ve) }, DC_OK);
+        assert_eq!(
+            unsafe { dc_pair_hertz(70e9, 0.3, 70e9, 0.3, 0.5, c, &mut h) },
+            DC_OK
+        );
+        assert_eq!(
+            unsafe { dc_pair_viscoelastic(70e9, 0.3, 70e9, 0.3, 1e-6, c, &mut ve) },
+            DC_OK
+        );
         for pr in [&h, &ve] {
             for &d in &ds {
                 for &r in &[1e-300, 1e-6, 1.0] {
-                    let (s, f) = call(|o| unsafe { dc_normal_force_checked(pr, d, 1.0, r, 1e-3, o) });
+                    let (s, f) =
+                        call(|o| unsafe { dc_normal_force_checked(pr, d, 1.0, r, 1e-3, o) });
                     assert_eq!(s, DC_OK);
-                    st.add(1.0 + if f >= 0.0 { 0.0 } else { 1.0 }, 1.0, || format!("d={d:e} r={r:e}"));
+                    st.add(1.0 + if f >= 0.0 { 0.0 } else { 1.0 }, 1.0, || {
+                        format!("d={d:e} r={r:e}")
+                    });
                 }
             }
         }

@@ -10,7 +10,11 @@ fn call(f: impl Fn(*mut f64) -> i32) -> (i32, f64) {
     let mut out = SENTINEL;
     let s = f(&mut out);
     if s != DC_OK {
-        assert_eq!(out.to_bits(), SENTINEL.to_bits(), "output touched on error {s}");
+        assert_eq!(
+            out.to_bits(),
+            SENTINEL.to_bits(),
+            "output touched on error {s}"
+        );
     } else {
         assert!(out.is_finite(), "non-finite output on success");
     }
@@ -37,9 +41,15 @@ fn alpha_from_e_statuses() {
         let (s, _) = call(|o| unsafe { dc_alpha_from_e(e, p, c, o) });
         assert_eq!(s, want, "e={e} p={p} c={c}");
     }
-    assert_eq!(unsafe { dc_alpha_from_e(0.5, 1.5, DC_END_FORCE, std::ptr::null_mut()) }, DC_ERR_NULL_POINTER);
+    assert_eq!(
+        unsafe { dc_alpha_from_e(0.5, 1.5, DC_END_FORCE, std::ptr::null_mut()) },
+        DC_ERR_NULL_POINTER
+    );
     // Null is reported before invalid input.
-    assert_eq!(unsafe { dc_alpha_from_e(f64::NAN, 0.0, 9, std::ptr::null_mut()) }, DC_ERR_NULL_POINTER);
+    assert_eq!(
+        unsafe { dc_alpha_from_e(f64::NAN, 0.0, 9, std::ptr::null_mut()) },
+        DC_ERR_NULL_POINTER
+    );
     // Subnormal e: α stays finite under both criteria.
     for c in [DC_END_OVERLAP, DC_END_FORCE] {
         let (s, a) = call(|o| unsafe { dc_alpha_from_e(5e-324, 1.5, c, o) });
@@ -70,7 +80,10 @@ fn e_from_alpha_statuses() {
             assert!((0.0..=1.0).contains(&e));
         }
     }
-    assert_eq!(unsafe { dc_e_from_alpha(0.3, 1.5, DC_END_FORCE, std::ptr::null_mut()) }, DC_ERR_NULL_POINTER);
+    assert_eq!(
+        unsafe { dc_e_from_alpha(0.3, 1.5, DC_END_FORCE, std::ptr::null_mut()) },
+        DC_ERR_NULL_POINTER
+    );
 }
 
 #[test]
@@ -90,15 +103,29 @@ fn dt_crit_statuses() {
         let (s, _) = call(|o| unsafe { dc_dt_crit(p, v0, w0, o) });
         assert_eq!(s, want, "p={p} v0={v0} ω0={w0}");
     }
-    assert_eq!(unsafe { dc_dt_crit(1.5, 1.0, 1.0, std::ptr::null_mut()) }, DC_ERR_NULL_POINTER);
+    assert_eq!(
+        unsafe { dc_dt_crit(1.5, 1.0, 1.0, std::ptr::null_mut()) },
+        DC_ERR_NULL_POINTER
+    );
 }
 
 #[test]
 fn strings() {
-    let v = unsafe { CStr::from_ptr(dc_version()) }.to_str().unwrap_or("");
+    let v = unsafe { CStr::from_ptr(dc_version()) }
+        .to_str()
+        .unwrap_or("");
     assert_eq!(v, env!("CARGO_PKG_VERSION"));
-    for s in [DC_OK, DC_ERR_NULL_POINTER, DC_ERR_INTERNAL, 42, i32::MIN, i32::MAX] {
-        let m = unsafe { CStr::from_ptr(dc_status_str(s)) }.to_str().unwrap_or("");
+    for s in [
+        DC_OK,
+        DC_ERR_NULL_POINTER,
+        DC_ERR_INTERNAL,
+        42,
+        i32::MIN,
+        i32::MAX,
+    ] {
+        let m = unsafe { CStr::from_ptr(dc_status_str(s)) }
+            .to_str()
+            .unwrap_or("");
         assert!(!m.is_empty());
     }
 }
@@ -108,7 +135,10 @@ fn unaligned_output_is_written() {
     // The boundary writes unaligned, so a packed host struct field works.
     let mut buf = [0u8; 16];
     let ptr = unsafe { buf.as_mut_ptr().add(1) }.cast::<f64>();
-    assert_eq!(unsafe { dc_alpha_from_e(0.5, 1.5, DC_END_OVERLAP, ptr) }, DC_OK);
+    assert_eq!(
+        unsafe { dc_alpha_from_e(0.5, 1.5, DC_END_OVERLAP, ptr) },
+        DC_OK
+    );
     let a = unsafe { ptr.read_unaligned() };
     assert!(a > 0.0);
 }

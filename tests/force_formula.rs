@@ -15,7 +15,9 @@ use demcontact::ffi::status::*;
 const TOL: f64 = 1e-14;
 
 fn logspace(a: f64, b: f64, n: usize) -> Vec<f64> {
-    (0..n).map(|i| a * (b / a).powf(i as f64 / (n - 1) as f64)).collect()
+    (0..n)
+        .map(|i| a * (b / a).powf(i as f64 / (n - 1) as f64))
+        .collect()
 }
 
 fn alpha(e: f64, p: f64, crit: i32) -> f64 {
@@ -32,10 +34,16 @@ fn check(got: f64, el: f64, damp: f64, clamp: bool, what: &str) -> f64 {
     let want = if clamp && raw < 0.0 { 0.0 } else { raw };
     let err = (got - want).abs() / scale;
     if clamp && raw.abs() <= TOL * scale {
-        assert!(got >= 0.0 && got <= 2.0 * TOL * scale, "{what}: near-zero clamp {got}");
+        assert!(
+            got >= 0.0 && got <= 2.0 * TOL * scale,
+            "{what}: near-zero clamp {got}"
+        );
         return 0.0;
     }
-    assert!(err <= TOL, "{what}: got {got:e} want {want:e} (el {el:e} damp {damp:e}) err {err:e}");
+    assert!(
+        err <= TOL,
+        "{what}: got {got:e} want {want:e} (el {el:e} damp {damp:e}) err {err:e}"
+    );
     err
 }
 
@@ -70,7 +78,10 @@ fn powerlaw_equals_defining_formula() {
             for e in [0.2, 0.5, 0.9, 1.0] {
                 for k in [1e3, 1e10] {
                     let mut pair = std::mem::MaybeUninit::<dc_pair>::zeroed();
-                    assert_eq!(unsafe { dc_pair_powerlaw(p, k, e, crit, pair.as_mut_ptr()) }, DC_OK);
+                    assert_eq!(
+                        unsafe { dc_pair_powerlaw(p, k, e, crit, pair.as_mut_ptr()) },
+                        DC_OK
+                    );
                     let pair = unsafe { pair.assume_init() };
                     let a = alpha(e, p, crit);
                     assert_eq!(pair.alpha, a);
@@ -84,8 +95,16 @@ fn powerlaw_equals_defining_formula() {
                                     let damp = a * (m * k).sqrt() * d.powf(0.5 * (p - 1.0)) * vn;
                                     // r_eff is ignored by fixed-k pairs: pass garbage.
                                     let got = unsafe { dc_normal_force(&pair, d, vn, f64::NAN, m) };
-                                    let what = format!("p={p} crit={crit} e={e} k={k} d={d:e} m={m} vn={vn}");
-                                    worst = worst.max(check(got, el, damp, crit == DC_END_FORCE, &what));
+                                    let what = format!(
+                                        "p={p} crit={crit} e={e} k={k} d={d:e} m={m} vn={vn}"
+                                    );
+                                    worst = worst.max(check(
+                                        got,
+                                        el,
+                                        damp,
+                                        crit == DC_END_FORCE,
+                                        &what,
+                                    ));
                                     count += 1;
                                 }
                             }
@@ -108,12 +127,19 @@ fn hertz_equals_defining_formula() {
     let g = grid();
     let mut worst = 0.0f64;
     let mut count = 0usize;
-    let mats = [(63e9, 0.23, 63e9, 0.23), (210e9, 0.3, 5e6, 0.49), (1e7, 0.0, 1e12, -0.5)];
+    let mats = [
+        (63e9, 0.23, 63e9, 0.23),
+        (210e9, 0.3, 5e6, 0.49),
+        (1e7, 0.0, 1e12, -0.5),
+    ];
     for &(e1, nu1, e2, nu2) in &mats {
         for crit in [DC_END_OVERLAP, DC_END_FORCE] {
             for e in [0.2, 0.5, 0.9, 1.0] {
                 let mut pair = std::mem::MaybeUninit::<dc_pair>::zeroed();
-                assert_eq!(unsafe { dc_pair_hertz(e1, nu1, e2, nu2, e, crit, pair.as_mut_ptr()) }, DC_OK);
+                assert_eq!(
+                    unsafe { dc_pair_hertz(e1, nu1, e2, nu2, e, crit, pair.as_mut_ptr()) },
+                    DC_OK
+                );
                 let pair = unsafe { pair.assume_init() };
                 let a = alpha(e, 1.5, crit);
                 for &r in &g.radii {
@@ -125,8 +151,12 @@ fn hertz_equals_defining_formula() {
                                 let el = k * d.powf(1.5);
                                 let damp = a * (m * k).sqrt() * d.powf(0.25) * vn;
                                 let got = unsafe { dc_normal_force(&pair, d, vn, r, m) };
-                                let what = format!("E*={} crit={crit} e={e} r={r} d={d:e} m={m} vn={vn}", pair.stiffness);
-                                worst = worst.max(check(got, el, damp, crit == DC_END_FORCE, &what));
+                                let what = format!(
+                                    "E*={} crit={crit} e={e} r={r} d={d:e} m={m} vn={vn}",
+                                    pair.stiffness
+                                );
+                                worst =
+                                    worst.max(check(got, el, damp, crit == DC_END_FORCE, &what));
                                 count += 1;
                             }
                         }
@@ -148,7 +178,10 @@ fn viscoelastic_equals_seed_formula() {
     for crit in [DC_END_OVERLAP, DC_END_FORCE] {
         for a_damp in [1e-7, 1e-5, 1e-3] {
             let mut pair = std::mem::MaybeUninit::<dc_pair>::zeroed();
-            assert_eq!(unsafe { dc_pair_viscoelastic(y, nu, y, nu, a_damp, crit, pair.as_mut_ptr()) }, DC_OK);
+            assert_eq!(
+                unsafe { dc_pair_viscoelastic(y, nu, y, nu, a_damp, crit, pair.as_mut_ptr()) },
+                DC_OK
+            );
             let pair = unsafe { pair.assume_init() };
             assert!(pair.e.is_nan() && pair.alpha == 0.0 && pair.damping_a == a_damp);
             for &r in &g.radii {
@@ -180,13 +213,21 @@ fn all_pairs() -> Vec<(String, dc_pair)> {
     for crit in [DC_END_OVERLAP, DC_END_FORCE] {
         for e in [0.3, 1.0] {
             for p in [1.0, 1.5, 2.0, 1.7] {
-                push(format!("powerlaw p={p} e={e} c={crit}"), &|o| unsafe { dc_pair_powerlaw(p, 1e6, e, crit, o) });
+                push(format!("powerlaw p={p} e={e} c={crit}"), &|o| unsafe {
+                    dc_pair_powerlaw(p, 1e6, e, crit, o)
+                });
             }
-            push(format!("linear e={e} c={crit}"), &|o| unsafe { dc_pair_linear(1e4, e, crit, o) });
-            push(format!("hertz e={e} c={crit}"), &|o| unsafe { dc_pair_hertz(1e9, 0.3, 2e9, 0.2, e, crit, o) });
+            push(format!("linear e={e} c={crit}"), &|o| unsafe {
+                dc_pair_linear(1e4, e, crit, o)
+            });
+            push(format!("hertz e={e} c={crit}"), &|o| unsafe {
+                dc_pair_hertz(1e9, 0.3, 2e9, 0.2, e, crit, o)
+            });
         }
         for a in [0.0, 1e-4] {
-            push(format!("visco A={a} c={crit}"), &|o| unsafe { dc_pair_viscoelastic(1e9, 0.3, 1e9, 0.3, a, crit, o) });
+            push(format!("visco A={a} c={crit}"), &|o| unsafe {
+                dc_pair_viscoelastic(1e9, 0.3, 1e9, 0.3, a, crit, o)
+            });
         }
     }
     v
@@ -205,10 +246,22 @@ fn kernels_are_specialised() {
 #[test]
 fn zero_force_without_overlap_and_never_nan_for_finite_input() {
     for (name, pair) in all_pairs() {
-        for d in [0.0, -0.0, -1e-300, -1e-3, -1e300, f64::NAN, f64::NEG_INFINITY] {
+        for d in [
+            0.0,
+            -0.0,
+            -1e-300,
+            -1e-3,
+            -1e300,
+            f64::NAN,
+            f64::NEG_INFINITY,
+        ] {
             for vn in [0.0, 1e3, -1e3] {
                 let f = unsafe { dc_normal_force(&pair, d, vn, 1e-3, 1e-3) };
-                assert_eq!(f.to_bits(), 0.0f64.to_bits(), "{name}: d={d} vn={vn} gave {f}");
+                assert_eq!(
+                    f.to_bits(),
+                    0.0f64.to_bits(),
+                    "{name}: d={d} vn={vn} gave {f}"
+                );
             }
         }
         // Finite physical input at the edges: smallest positive overlaps, subnormals, huge speeds.
@@ -232,19 +285,32 @@ fn zero_force_without_overlap_and_never_nan_for_finite_input() {
 fn fixed_k_hertz_agrees_with_material_hertz() {
     // The power law at p = 3/2 with k = (4/3) E* sqrt(R) is the material Hertz pair at radius R:
     // two different kernels (sqrt(d), sqrt(m sqrt d) vs sqrt(R d), sqrt(m q)) must agree.
-    let (e1, nu1, e2, nu2, r, m): (f64, f64, f64, f64, f64, f64) = (70e9, 0.33, 200e9, 0.29, 2.5e-3, 4e-4);
+    let (e1, nu1, e2, nu2, r, m): (f64, f64, f64, f64, f64, f64) =
+        (70e9, 0.33, 200e9, 0.29, 2.5e-3, 4e-4);
     let k = 4.0 / 3.0 * e_star(e1, nu1, e2, nu2) * r.sqrt();
     for crit in [DC_END_OVERLAP, DC_END_FORCE] {
-        let (mut a, mut b) = (std::mem::MaybeUninit::zeroed(), std::mem::MaybeUninit::zeroed());
-        assert_eq!(unsafe { dc_pair_powerlaw(1.5, k, 0.4, crit, a.as_mut_ptr()) }, DC_OK);
-        assert_eq!(unsafe { dc_pair_hertz(e1, nu1, e2, nu2, 0.4, crit, b.as_mut_ptr()) }, DC_OK);
+        let (mut a, mut b) = (
+            std::mem::MaybeUninit::zeroed(),
+            std::mem::MaybeUninit::zeroed(),
+        );
+        assert_eq!(
+            unsafe { dc_pair_powerlaw(1.5, k, 0.4, crit, a.as_mut_ptr()) },
+            DC_OK
+        );
+        assert_eq!(
+            unsafe { dc_pair_hertz(e1, nu1, e2, nu2, 0.4, crit, b.as_mut_ptr()) },
+            DC_OK
+        );
         let (a, b): (dc_pair, dc_pair) = unsafe { (a.assume_init(), b.assume_init()) };
         for d in logspace(1e-12 * r, 0.1 * r, 20) {
             for vn in [-3.0, -0.01, 0.2, 10.0] {
                 let fa = unsafe { dc_normal_force(&a, d, vn, r, m) };
                 let fb = unsafe { dc_normal_force(&b, d, vn, r, m) };
                 let scale = k * d.powf(1.5) + a.alpha * (m * k).sqrt() * d.powf(0.25) * vn.abs();
-                assert!((fa - fb).abs() <= 1e-14 * scale, "d={d:e} vn={vn}: {fa:e} vs {fb:e}");
+                assert!(
+                    (fa - fb).abs() <= 1e-14 * scale,
+                    "d={d:e} vn={vn}: {fa:e} vs {fb:e}"
+                );
             }
         }
     }

@@ -3,13 +3,27 @@
 //! Later modules add their own `no_alloc_*.rs` files using the same `alloc_counter`.
 
 mod alloc_counter;
-use alloc_counter::{assert_counter_works, count_allocations, Counting};
+use alloc_counter::{Counting, assert_counter_works, count_allocations};
 use demcontact::ffi::{calibration::*, material::*, status::*, timestep::*, version::*};
 
 #[global_allocator]
 static ALLOC: Counting = Counting;
 
-const INPUTS: [f64; 13] = [-1.0, 0.0, 1e-300, 1e-6, 0.3, 0.5, 1.0, 1.5, 2.0, 7.0, 1e300, f64::NAN, f64::INFINITY];
+const INPUTS: [f64; 13] = [
+    -1.0,
+    0.0,
+    1e-300,
+    1e-6,
+    0.3,
+    0.5,
+    1.0,
+    1.5,
+    2.0,
+    7.0,
+    1e300,
+    f64::NAN,
+    f64::INFINITY,
+];
 
 #[test]
 fn foundation_exports_do_not_allocate() {
@@ -29,7 +43,9 @@ fn foundation_exports_do_not_allocate() {
                 }
                 for &c in &INPUTS {
                     unsafe { std::hint::black_box(dc_dt_crit(a, b, c, &mut out)) };
-                    unsafe { std::hint::black_box(dc_hertz_stiffness(a, 0.3, b, c, 0.2, 1e-3, &mut out)) };
+                    unsafe {
+                        std::hint::black_box(dc_hertz_stiffness(a, 0.3, b, c, 0.2, 1e-3, &mut out))
+                    };
                     unsafe { std::hint::black_box(dc_effective_modulus(a, 0.3, b, c, &mut out)) };
                     calls += 3;
                 }
@@ -40,6 +56,9 @@ fn foundation_exports_do_not_allocate() {
         }
         std::hint::black_box(dc_version());
     });
-    assert_eq!(n, 0, "exported functions allocated {n} times in {calls} calls");
+    assert_eq!(
+        n, 0,
+        "exported functions allocated {n} times in {calls} calls"
+    );
     println!("no_alloc: {calls} calls, 0 allocations");
 }

@@ -2,7 +2,7 @@
 //! invalid input, counted by the per-thread counting allocator.
 
 mod alloc_counter;
-use alloc_counter::{assert_counter_works, count_allocations, Counting};
+use alloc_counter::{Counting, assert_counter_works, count_allocations};
 use demcontact::ffi::force::*;
 use demcontact::ffi::status::*;
 use std::hint::black_box;
@@ -57,15 +57,42 @@ fn force_exports_do_not_allocate() {
             }
             for len in [0usize, 1, 64] {
                 unsafe {
-                    black_box(dc_normal_force_batch(&pair, len, d.as_ptr(), vn.as_ptr(), r.as_ptr(), m.as_ptr(), out.as_mut_ptr()));
-                    black_box(dc_normal_force_batch(&pair, len, d.as_ptr(), std::ptr::null(), r.as_ptr(), m.as_ptr(), out.as_mut_ptr()));
+                    black_box(dc_normal_force_batch(
+                        &pair,
+                        len,
+                        d.as_ptr(),
+                        vn.as_ptr(),
+                        r.as_ptr(),
+                        m.as_ptr(),
+                        out.as_mut_ptr(),
+                    ));
+                    black_box(dc_normal_force_batch(
+                        &pair,
+                        len,
+                        d.as_ptr(),
+                        std::ptr::null(),
+                        r.as_ptr(),
+                        m.as_ptr(),
+                        out.as_mut_ptr(),
+                    ));
                 }
                 calls += 2;
             }
             let mut f3 = [0.0; 3];
             for &rad in &V {
                 unsafe {
-                    black_box(dc_normal_force_3d(&pair, x[0].as_ptr(), vn.as_ptr(), rad, 1e-4, x[1].as_ptr(), r.as_ptr(), 1e-3, 1e-4, f3.as_mut_ptr()));
+                    black_box(dc_normal_force_3d(
+                        &pair,
+                        x[0].as_ptr(),
+                        vn.as_ptr(),
+                        rad,
+                        1e-4,
+                        x[1].as_ptr(),
+                        r.as_ptr(),
+                        1e-3,
+                        1e-4,
+                        f3.as_mut_ptr(),
+                    ));
                 }
                 calls += 1;
             }

@@ -1,7 +1,7 @@
 //! Proves that `dc_dt_for_accuracy` never allocates, on valid and invalid input.
 
 mod alloc_counter;
-use alloc_counter::{assert_counter_works, count_allocations, Counting};
+use alloc_counter::{Counting, assert_counter_works, count_allocations};
 use demcontact::ffi::{status::*, step_accuracy::*};
 
 #[global_allocator]
@@ -43,12 +43,23 @@ fn dt_for_accuracy_does_not_allocate() {
             for crit in [DC_END_OVERLAP, DC_END_FORCE, 9] {
                 unsafe {
                     std::hint::black_box(dc_dt_for_accuracy(p, e, crit, v0, w0, tol, &mut out));
-                    std::hint::black_box(dc_dt_for_accuracy(p, e, crit, v0, w0, tol, std::ptr::null_mut()));
+                    std::hint::black_box(dc_dt_for_accuracy(
+                        p,
+                        e,
+                        crit,
+                        v0,
+                        w0,
+                        tol,
+                        std::ptr::null_mut(),
+                    ));
                 }
                 calls += 2;
             }
         }
     });
-    assert_eq!(n, 0, "dc_dt_for_accuracy allocated {n} times in {calls} calls");
+    assert_eq!(
+        n, 0,
+        "dc_dt_for_accuracy allocated {n} times in {calls} calls"
+    );
     println!("no_alloc_step_accuracy: {calls} calls, 0 allocations");
 }

@@ -3,13 +3,26 @@
 //! Run: `cargo test --release --test no_alloc_viscoelastic -- --nocapture`.
 
 mod alloc_counter;
-use alloc_counter::{assert_counter_works, count_allocations, Counting};
+use alloc_counter::{Counting, assert_counter_works, count_allocations};
 use demcontact::ffi::{status::*, viscoelastic::*};
 
 #[global_allocator]
 static ALLOC: Counting = Counting;
 
-const INPUTS: [f64; 12] = [-1.0, 0.0, 1e-300, 1e-6, 0.3, 0.5, 1.0, 2.0, 7.0, 1e6, f64::NAN, f64::INFINITY];
+const INPUTS: [f64; 12] = [
+    -1.0,
+    0.0,
+    1e-300,
+    1e-6,
+    0.3,
+    0.5,
+    1.0,
+    2.0,
+    7.0,
+    1e6,
+    f64::NAN,
+    f64::INFINITY,
+];
 
 /// Under Miri (scripts/miri.sh) a call costs 10^4 to 10^6 times more than natively, so there the
 /// ODE reference runs on a few b and the two-argument calibrations on a few second arguments (one
@@ -48,7 +61,9 @@ fn viscoelastic_exports_do_not_allocate() {
                         std::hint::black_box(dc_viscoelastic_beta_from_e(a, b, crit, &mut o1));
                         std::hint::black_box(dc_viscoelastic_speed_for_e(a, b, crit, &mut o1));
                         std::hint::black_box(dc_viscoelastic_e_of_speed(a, b, 1.0, crit, &mut o1));
-                        std::hint::black_box(dc_viscoelastic_a_from_e(a, b, 2e6, 0.01, crit, &mut o1));
+                        std::hint::black_box(dc_viscoelastic_a_from_e(
+                            a, b, 2e6, 0.01, crit, &mut o1,
+                        ));
                     }
                     calls += 4;
                 }
@@ -57,12 +72,21 @@ fn viscoelastic_exports_do_not_allocate() {
                 unsafe {
                     std::hint::black_box(dc_viscoelastic_b(a, b, 1.0, &mut o1));
                     std::hint::black_box(dc_viscoelastic_k_gamma(a, b, 0.01, &mut o1, &mut o2));
-                    std::hint::black_box(dc_viscoelastic_k_gamma(a, b, 0.01, std::ptr::null_mut(), &mut o2));
+                    std::hint::black_box(dc_viscoelastic_k_gamma(
+                        a,
+                        b,
+                        0.01,
+                        std::ptr::null_mut(),
+                        &mut o2,
+                    ));
                 }
                 calls += 3;
             }
         }
     });
-    assert_eq!(n, 0, "viscoelastic exports allocated {n} times in {calls} calls");
+    assert_eq!(
+        n, 0,
+        "viscoelastic exports allocated {n} times in {calls} calls"
+    );
     println!("no_alloc_viscoelastic: {calls} calls, 0 allocations");
 }

@@ -6,7 +6,9 @@
 use demcontact::ffi::{calibration::*, powerlaw::*, status::*};
 
 const PS: [f64; 6] = [1.0, 1.25, 1.5, 2.0, 3.0, 5.0];
-const ES: [f64; 12] = [0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.8, 0.9, 0.99, 0.995, 0.999];
+const ES: [f64; 12] = [
+    0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.8, 0.9, 0.99, 0.995, 0.999,
+];
 
 fn rel(a: f64, b: f64) -> f64 {
     ((a - b) / b).abs()
@@ -14,7 +16,11 @@ fn rel(a: f64, b: f64) -> f64 {
 
 fn plan(p: f64, level: i32) -> dc_duration_plan {
     let mut pl = dc_duration_plan::default();
-    assert_eq!(unsafe { dc_duration_plan_init(p, level, &mut pl) }, DC_OK, "p={p} level={level}");
+    assert_eq!(
+        unsafe { dc_duration_plan_init(p, level, &mut pl) },
+        DC_OK,
+        "p={p} level={level}"
+    );
     pl
 }
 
@@ -78,18 +84,38 @@ fn plan_statuses() {
         (1.5, -1, DC_ERR_LEVEL),
         (1.5, 5, DC_ERR_LEVEL),
     ] {
-        assert_eq!(unsafe { dc_duration_plan_init(p, lv, &mut pl) }, want, "p={p} lv={lv}");
+        assert_eq!(
+            unsafe { dc_duration_plan_init(p, lv, &mut pl) },
+            want,
+            "p={p} lv={lv}"
+        );
         assert_eq!(pl, dc_duration_plan::default());
     }
-    assert_eq!(unsafe { dc_duration_plan_init(1.5, 2, std::ptr::null_mut()) }, DC_ERR_NULL_POINTER);
+    assert_eq!(
+        unsafe { dc_duration_plan_init(1.5, 2, std::ptr::null_mut()) },
+        DC_ERR_NULL_POINTER
+    );
     // Planned call: NULL plan / output, zero-filled or modified plan, and the input statuses of
     // dc_contact_duration (same codes as the unplanned call, output untouched).
     let mut tau = -1.0;
     let zero = dc_duration_plan::default();
-    assert_eq!(unsafe { dc_contact_duration_planned(std::ptr::null(), 0.3, 1.0, 1.0, DC_END_FORCE, &mut tau) }, DC_ERR_NULL_POINTER);
+    assert_eq!(
+        unsafe {
+            dc_contact_duration_planned(std::ptr::null(), 0.3, 1.0, 1.0, DC_END_FORCE, &mut tau)
+        },
+        DC_ERR_NULL_POINTER
+    );
     let good = plan(1.5, 2);
-    assert_eq!(unsafe { dc_contact_duration_planned(&good, 0.3, 1.0, 1.0, DC_END_FORCE, std::ptr::null_mut()) }, DC_ERR_NULL_POINTER);
-    assert_eq!(unsafe { dc_contact_duration_planned(&zero, 0.3, 1.0, 1.0, DC_END_FORCE, &mut tau) }, DC_ERR_PLAN);
+    assert_eq!(
+        unsafe {
+            dc_contact_duration_planned(&good, 0.3, 1.0, 1.0, DC_END_FORCE, std::ptr::null_mut())
+        },
+        DC_ERR_NULL_POINTER
+    );
+    assert_eq!(
+        unsafe { dc_contact_duration_planned(&zero, 0.3, 1.0, 1.0, DC_END_FORCE, &mut tau) },
+        DC_ERR_PLAN
+    );
     for edit in 0..4 {
         let mut bad = good;
         match edit {
@@ -98,7 +124,11 @@ fn plan_statuses() {
             2 => bad.p = 2.0,
             _ => bad.n = 16,
         }
-        assert_eq!(unsafe { dc_contact_duration_planned(&bad, 0.3, 1.0, 1.0, DC_END_FORCE, &mut tau) }, DC_ERR_PLAN, "edit {edit}");
+        assert_eq!(
+            unsafe { dc_contact_duration_planned(&bad, 0.3, 1.0, 1.0, DC_END_FORCE, &mut tau) },
+            DC_ERR_PLAN,
+            "edit {edit}"
+        );
     }
     assert_eq!(tau, -1.0);
     for (alpha, v0, w0, crit) in [
@@ -113,10 +143,16 @@ fn plan_statuses() {
         let mut want_tau = -1.0;
         let want = unsafe { dc_contact_duration(1.5, alpha, v0, w0, crit, &mut want_tau) };
         assert_ne!(want, DC_OK);
-        assert_eq!(unsafe { dc_contact_duration_planned(&good, alpha, v0, w0, crit, &mut tau) }, want);
+        assert_eq!(
+            unsafe { dc_contact_duration_planned(&good, alpha, v0, w0, crit, &mut tau) },
+            want
+        );
         assert_eq!(tau, -1.0);
     }
     let mut s = 0.0;
-    assert_eq!(unsafe { dc_contact_duration_planned(&good, 0.3, 1.0, 1.0, DC_END_FORCE, &mut s) }, DC_OK);
+    assert_eq!(
+        unsafe { dc_contact_duration_planned(&good, 0.3, 1.0, 1.0, DC_END_FORCE, &mut s) },
+        DC_OK
+    );
     assert!(s > 0.0);
 }

@@ -8,10 +8,10 @@
 
 mod common;
 use common::collide;
+use demcontact::EndCriterion;
 use demcontact::ffi::powerlaw::*;
 use demcontact::ffi::status::*;
 use demcontact::powerlaw::alpha_from_e;
-use demcontact::EndCriterion;
 
 const PS: [f64; 6] = [1.0, 1.25, 1.5, 2.0, 3.0, 5.0];
 const ES: [f64; 8] = [0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999];
@@ -29,17 +29,29 @@ struct Worst {
 
 impl Worst {
     fn new(name: &'static str) -> Self {
-        Worst { name, err: 0.0, at: String::new() }
+        Worst {
+            name,
+            err: 0.0,
+            at: String::new(),
+        }
     }
     fn see(&mut self, err: f64, at: impl FnOnce() -> String) {
-        assert!(err.is_finite(), "{}: non-finite error at {}", self.name, at());
+        assert!(
+            err.is_finite(),
+            "{}: non-finite error at {}",
+            self.name,
+            at()
+        );
         if err > self.err {
             self.err = err;
             self.at = at();
         }
     }
     fn check(&self, tol: f64) -> bool {
-        println!("{:<34} worst {:9.2e} (tol {:.0e}) at {}", self.name, self.err, tol, self.at);
+        println!(
+            "{:<34} worst {:9.2e} (tol {:.0e}) at {}",
+            self.name, self.err, tol, self.at
+        );
         self.err < tol
     }
 }
@@ -49,7 +61,11 @@ fn cases(p: f64) -> Vec<(f64, EndCriterion, String)> {
     let mut v = Vec::new();
     for &e in &ES {
         for crit in [EndCriterion::Overlap, EndCriterion::Force] {
-            v.push((alpha_from_e(e, p, crit).unwrap(), crit, format!("e={e} {crit:?}")));
+            v.push((
+                alpha_from_e(e, p, crit).unwrap(),
+                crit,
+                format!("e={e} {crit:?}"),
+            ));
         }
     }
     let s = (2.0 * (p + 1.0)).sqrt();
@@ -76,9 +92,20 @@ fn observables_match_reference() {
                 n += 1;
                 let at = || format!("p={p} {label} v0={v0} w0={w0}");
                 let (mut dmax, mut tmax, mut tau) = (0.0, 0.0, 0.0);
-                assert_eq!(unsafe { dc_max_overlap(p, alpha, v0, w0, &mut dmax) }, DC_OK);
-                assert_eq!(unsafe { dc_time_of_max_overlap(p, alpha, v0, w0, &mut tmax) }, DC_OK);
-                assert_eq!(unsafe { dc_contact_duration(p, alpha, v0, w0, crit.code(), &mut tau) }, DC_OK, "{}", at());
+                assert_eq!(
+                    unsafe { dc_max_overlap(p, alpha, v0, w0, &mut dmax) },
+                    DC_OK
+                );
+                assert_eq!(
+                    unsafe { dc_time_of_max_overlap(p, alpha, v0, w0, &mut tmax) },
+                    DC_OK
+                );
+                assert_eq!(
+                    unsafe { dc_contact_duration(p, alpha, v0, w0, crit.code(), &mut tau) },
+                    DC_OK,
+                    "{}",
+                    at()
+                );
                 w_dmax.see(rel(dmax, r.delta_max), at);
                 if p == 1.0 {
                     w_tau_lin.see(rel(tmax, r.t_max).max(rel(tau, r.tau)), at);
@@ -90,12 +117,17 @@ fn observables_match_reference() {
                     }
                 }
                 // Energies from the reference's states: E = v² + 2ω0² δ^{p+1}/(p+1), per v0².
-                let en = |d: f64, v: f64| (v * v + 2.0 * w0 * w0 * d.powf(p + 1.0) / (p + 1.0)) / (v0 * v0);
+                let en = |d: f64, v: f64| {
+                    (v * v + 2.0 * w0 * w0 * d.powf(p + 1.0) / (p + 1.0)) / (v0 * v0)
+                };
                 let e_turn = en(r.delta_max, 0.0);
                 let e_end = en(r.delta_end, r.v_end);
                 let stored = 2.0 * w0 * w0 * r.delta_end.powf(p + 1.0) / (p + 1.0) / (v0 * v0);
                 let mut part = dc_energy::default();
-                assert_eq!(unsafe { dc_energy_partition(p, alpha, crit.code(), &mut part) }, DC_OK);
+                assert_eq!(
+                    unsafe { dc_energy_partition(p, alpha, crit.code(), &mut part) },
+                    DC_OK
+                );
                 let errs = [
                     (part.loading - (1.0 - e_turn)).abs(),
                     (part.unloading - (e_turn - e_end)).abs(),
@@ -120,7 +152,10 @@ fn observables_match_reference() {
         w_energy.check(2e-12),
         w_e.check(1e-12),
     ];
-    assert!(ok.iter().all(|&b| b), "some observable is outside its tolerance (see above)");
+    assert!(
+        ok.iter().all(|&b| b),
+        "some observable is outside its tolerance (see above)"
+    );
 }
 
 #[test]
@@ -128,7 +163,10 @@ fn overdamped_overlap_end_has_no_event() {
     let mut tau = -1.0;
     for z in [1.0, 1.0 + 1e-12, 3.0, 1e6] {
         let alpha = z * 5f64.sqrt();
-        assert_eq!(unsafe { dc_contact_duration(1.5, alpha, 1.0, 1.0, DC_END_OVERLAP, &mut tau) }, DC_ERR_NO_EVENT);
+        assert_eq!(
+            unsafe { dc_contact_duration(1.5, alpha, 1.0, 1.0, DC_END_OVERLAP, &mut tau) },
+            DC_ERR_NO_EVENT
+        );
         assert_eq!(tau, -1.0);
     }
 }
@@ -150,7 +188,10 @@ fn critical_damping_is_continuous() {
         };
         let (lo, mid, hi) = (f(1.0 - 1e-9), f(1.0), f(1.0 + 1e-9));
         for i in 0..3 {
-            assert!(rel(lo[i], mid[i]) < 3e-9 && rel(hi[i], mid[i]) < 3e-9, "p={p} i={i}: {lo:?} {mid:?} {hi:?}");
+            assert!(
+                rel(lo[i], mid[i]) < 3e-9 && rel(hi[i], mid[i]) < 3e-9,
+                "p={p} i={i}: {lo:?} {mid:?} {hi:?}"
+            );
         }
     }
 }
@@ -167,11 +208,28 @@ fn seed_table_ii() {
             let r = collide(p, alpha, v0, 1.0, EndCriterion::Overlap, 1e-14);
             assert!((r.e - 0.5).abs() < 1e-11, "p={p} v0={v0}: {}", r.e);
             let mut part = dc_energy::default();
-            assert_eq!(unsafe { dc_energy_partition(p, alpha, DC_END_OVERLAP, &mut part) }, DC_OK);
+            assert_eq!(
+                unsafe { dc_energy_partition(p, alpha, DC_END_OVERLAP, &mut part) },
+                DC_OK
+            );
             assert!((part.e - 0.5).abs() < 1e-15);
             let (mut t, mut d, mut v, mut f) = ([0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3]);
             let st = unsafe {
-                dc_contact_trajectory(p, alpha, v0, 1.0, 1.0, DC_END_OVERLAP, DC_LEVEL_MAX, 3, t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), 3)
+                dc_contact_trajectory(
+                    p,
+                    alpha,
+                    v0,
+                    1.0,
+                    1.0,
+                    DC_END_OVERLAP,
+                    DC_LEVEL_MAX,
+                    3,
+                    t.as_mut_ptr(),
+                    d.as_mut_ptr(),
+                    v.as_mut_ptr(),
+                    f.as_mut_ptr(),
+                    3,
+                )
             };
             assert_eq!(st, DC_OK);
             assert!((-v[2] / v0 - 0.5).abs() < 1e-14 && d[2] == 0.0);
@@ -183,22 +241,65 @@ fn seed_table_ii() {
 
 /// Integrates the reference from impact until δ crosses `target` (loading: rising, unloading:
 /// falling) and returns (t, v) there.
-fn reference_at_overlap(p: f64, alpha: f64, v0: f64, w0: f64, target: f64, loading: bool) -> (f64, f64) {
-    use demcontact::numerics::ode::{integrate_to_event, Tolerance};
+fn reference_at_overlap(
+    p: f64,
+    alpha: f64,
+    v0: f64,
+    w0: f64,
+    target: f64,
+    loading: bool,
+) -> (f64, f64) {
+    use demcontact::numerics::ode::{Tolerance, integrate_to_event};
     let de = 0.5 * (p - 1.0);
     let rhs = move |y: [f64; 2]| {
         let d = y[0].abs();
-        [y[1], -w0 * w0 * d.powf(p) * y[0].signum() - alpha * w0 * d.powf(de) * y[1]]
+        [
+            y[1],
+            -w0 * w0 * d.powf(p) * y[0].signum() - alpha * w0 * d.powf(de) * y[1],
+        ]
     };
     let ds = (v0 / w0).powf(2.0 / (p + 1.0));
-    let tol = Tolerance { rtol: 1e-14, atol: [1e-17 * ds, 1e-17 * v0] };
+    let tol = Tolerance {
+        rtol: 1e-14,
+        atol: [1e-17 * ds, 1e-17 * v0],
+    };
     let h0 = 1e-8 * ds / v0;
     if loading {
-        let hit = integrate_to_event(rhs, 0.0, [0.0, v0], |y| target - y[0], |_, _| {}, &tol, h0, 10_000_000).unwrap();
+        let hit = integrate_to_event(
+            rhs,
+            0.0,
+            [0.0, v0],
+            |y| target - y[0],
+            |_, _| {},
+            &tol,
+            h0,
+            10_000_000,
+        )
+        .unwrap();
         return (hit.t, hit.y[1]);
     }
-    let top = integrate_to_event(rhs, 0.0, [0.0, v0], |y| y[1], |_, _| {}, &tol, h0, 10_000_000).unwrap();
-    let hit = integrate_to_event(rhs, top.t, top.y, |y| y[0] - target, |_, _| {}, &tol, 1e-3 * top.t, 10_000_000).unwrap();
+    let top = integrate_to_event(
+        rhs,
+        0.0,
+        [0.0, v0],
+        |y| y[1],
+        |_, _| {},
+        &tol,
+        h0,
+        10_000_000,
+    )
+    .unwrap();
+    let hit = integrate_to_event(
+        rhs,
+        top.t,
+        top.y,
+        |y| y[0] - target,
+        |_, _| {},
+        &tol,
+        1e-3 * top.t,
+        10_000_000,
+    )
+    .unwrap();
     (hit.t, hit.y[1])
 }
 
@@ -214,29 +315,57 @@ fn trajectory_matches_reference() {
         let s = (2.0 * (p + 1.0)).sqrt();
         let mut cases: Vec<(f64, EndCriterion)> = Vec::new();
         for &e in &[0.05, 0.5, 0.99] {
-            cases.push((alpha_from_e(e, p, EndCriterion::Overlap).unwrap(), EndCriterion::Overlap));
-            cases.push((alpha_from_e(e, p, EndCriterion::Force).unwrap(), EndCriterion::Force));
+            cases.push((
+                alpha_from_e(e, p, EndCriterion::Overlap).unwrap(),
+                EndCriterion::Overlap,
+            ));
+            cases.push((
+                alpha_from_e(e, p, EndCriterion::Force).unwrap(),
+                EndCriterion::Force,
+            ));
         }
         cases.push((1.0 * s, EndCriterion::Force));
         cases.push((3.0 * s, EndCriterion::Force));
         // 41 samples (5-point rule between samples) and 401 (3-point rule, n ≥ 200).
-        for (alpha, crit, n) in cases.iter().flat_map(|&(a, c)| [(a, c, 41usize), (a, c, 401)]) {
+        for (alpha, crit, n) in cases
+            .iter()
+            .flat_map(|&(a, c)| [(a, c, 41usize), (a, c, 401)])
+        {
             let (v0, w0, m) = (0.4, 30.0, 2.5);
             #[allow(non_snake_case)]
             let N = n;
-            let (mut t, mut d, mut v, mut f) = (vec![0.0; N], vec![0.0; N], vec![0.0; N], vec![0.0; N]);
+            let (mut t, mut d, mut v, mut f) =
+                (vec![0.0; N], vec![0.0; N], vec![0.0; N], vec![0.0; N]);
             let st = unsafe {
-                dc_contact_trajectory(p, alpha, v0, w0, m, crit.code(), DC_LEVEL_MAX, N, t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), N)
+                dc_contact_trajectory(
+                    p,
+                    alpha,
+                    v0,
+                    w0,
+                    m,
+                    crit.code(),
+                    DC_LEVEL_MAX,
+                    N,
+                    t.as_mut_ptr(),
+                    d.as_mut_ptr(),
+                    v.as_mut_ptr(),
+                    f.as_mut_ptr(),
+                    N,
+                )
             };
             assert_eq!(st, DC_OK);
             let mut tau = 0.0;
-            assert_eq!(unsafe { dc_contact_duration(p, alpha, v0, w0, crit.code(), &mut tau) }, DC_OK);
+            assert_eq!(
+                unsafe { dc_contact_duration(p, alpha, v0, w0, crit.code(), &mut tau) },
+                DC_OK
+            );
             assert_eq!(t[N - 1], tau);
             assert!(t.windows(2).all(|w| w[1] > w[0]), "times increase");
             for j in 1..N - 1 {
                 let k = m * w0 * w0;
                 let want_f = k * d[j].powf(p) + alpha * m * w0 * d[j].powf(0.5 * (p - 1.0)) * v[j];
-                let scale = k * d[j].powf(p) + (alpha * m * w0 * d[j].powf(0.5 * (p - 1.0)) * v[j]).abs();
+                let scale =
+                    k * d[j].powf(p) + (alpha * m * w0 * d[j].powf(0.5 * (p - 1.0)) * v[j]).abs();
                 assert!((f[j] - want_f).abs() <= 1e-13 * scale, "F at p={p} j={j}");
                 if v[j].abs() < 0.05 * v0 {
                     continue;
@@ -248,7 +377,9 @@ fn trajectory_matches_reference() {
             }
         }
     }
-    println!("trajectory: {checked} samples; worst rel t {worst_t:.2e}, worst |Δv|/v0 {worst_v:.2e}");
+    println!(
+        "trajectory: {checked} samples; worst rel t {worst_t:.2e}, worst |Δv|/v0 {worst_v:.2e}"
+    );
     assert!(worst_t < 1e-10 && worst_v < 1e-10);
 }
 
@@ -260,13 +391,18 @@ fn accuracy_levels() {
     let mut worst = [0.0f64; 5];
     for &p in &PS[1..] {
         let s = (2.0 * (p + 1.0)).sqrt();
-        let mut alphas: Vec<f64> = ES.iter().map(|&e| alpha_from_e(e, p, EndCriterion::Force).unwrap()).collect();
+        let mut alphas: Vec<f64> = ES
+            .iter()
+            .map(|&e| alpha_from_e(e, p, EndCriterion::Force).unwrap())
+            .collect();
         alphas.extend([1.0, 1.5, 4.0, 30.0].iter().map(|z| z * s));
         for alpha in alphas {
             let r = collide(p, alpha, 1.0, 1.0, EndCriterion::Force, RTOL);
             for (lv, w) in worst.iter_mut().enumerate() {
                 let mut tau = 0.0;
-                let st = unsafe { dc_contact_duration_level(p, alpha, 1.0, 1.0, DC_END_FORCE, lv as i32, &mut tau) };
+                let st = unsafe {
+                    dc_contact_duration_level(p, alpha, 1.0, 1.0, DC_END_FORCE, lv as i32, &mut tau)
+                };
                 assert_eq!(st, DC_OK);
                 let c = demcontact::powerlaw::Contact::new(p, alpha, 1.0, 1.0).unwrap();
                 let tm = demcontact::powerlaw::time_of_max_overlap(&c, lv as u32).unwrap();
@@ -275,7 +411,10 @@ fn accuracy_levels() {
         }
     }
     for (lv, w) in worst.iter().enumerate() {
-        println!("level {lv}: {} evaluations per panel, worst rel error {w:.1e}", demcontact::numerics::jacobi_cc::evaluations(lv as u32));
+        println!(
+            "level {lv}: {} evaluations per panel, worst rel error {w:.1e}",
+            demcontact::numerics::jacobi_cc::evaluations(lv as u32)
+        );
     }
     assert!(worst[4] < 1e-10);
 }
@@ -291,7 +430,11 @@ fn reference_tolerance_for_benchmark() {
         unsafe { dc_contact_duration(1.5, alpha, 1.0, 1.0, DC_END_FORCE, &mut tau) };
         for &rtol in &[1e-9, 3e-10, 1e-10, 3e-11, 1e-11, 1e-12] {
             let r = collide(1.5, alpha, 1.0, 1.0, EndCriterion::Force, rtol);
-            println!("e={e} rtol {rtol:.0e}: rel error {:.1e}, {} evals", rel(r.tau, tau), r.evals);
+            println!(
+                "e={e} rtol {rtol:.0e}: rel error {:.1e}, {} evals",
+                rel(r.tau, tau),
+                r.evals
+            );
         }
         let r = collide(1.5, alpha, 1.0, 1.0, EndCriterion::Force, 3e-11);
         assert!(rel(r.tau, tau) < 1e-10);
@@ -307,14 +450,38 @@ fn reference_tolerance_for_trajectory_benchmark() {
     const N: usize = 1000;
     let (mut t, mut d, mut v, mut f) = (vec![0.0; N], vec![0.0; N], vec![0.0; N], vec![0.0; N]);
     let st = unsafe {
-        dc_contact_trajectory(p, alpha, v0, w0, 1.0, DC_END_FORCE, 2, N, t.as_mut_ptr(), d.as_mut_ptr(), v.as_mut_ptr(), f.as_mut_ptr(), N)
+        dc_contact_trajectory(
+            p,
+            alpha,
+            v0,
+            w0,
+            1.0,
+            DC_END_FORCE,
+            2,
+            N,
+            t.as_mut_ptr(),
+            d.as_mut_ptr(),
+            v.as_mut_ptr(),
+            f.as_mut_ptr(),
+            N,
+        )
     };
     assert_eq!(st, DC_OK);
     let targets = &d[1..N - 1];
     let ups: Vec<bool> = v[1..N - 1].iter().map(|&x| x > 0.0).collect();
     for &rtol in &[1e-9, 1e-10, 1e-11, 1e-12, 1e-13] {
         let mut tr = vec![0.0; N - 2];
-        let end = common::chained_reference(p, alpha, v0, w0, EndCriterion::Force, targets, &ups, rtol, &mut tr);
+        let end = common::chained_reference(
+            p,
+            alpha,
+            v0,
+            w0,
+            EndCriterion::Force,
+            targets,
+            &ups,
+            rtol,
+            &mut tr,
+        );
         // Compare where t(δ) is well conditioned (|v| ≥ 0.05 v0).
         let mut worst: f64 = rel(end, t[N - 1]);
         for j in 1..N - 1 {

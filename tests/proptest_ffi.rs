@@ -2,7 +2,9 @@
 //! returns DC_ERR_INTERNAL, errors leave the output untouched, successes are finite; and the
 //! physics' monotonicity and round trips hold on the valid domain.
 
-use demcontact::ffi::{calibration::*, force::*, material::*, powerlaw::*, status::*, timestep::*, viscoelastic::*};
+use demcontact::ffi::{
+    calibration::*, force::*, material::*, powerlaw::*, status::*, timestep::*, viscoelastic::*,
+};
 use proptest::prelude::*;
 
 const SENTINEL: f64 = -9.87654321e123;
@@ -48,7 +50,11 @@ fn contract(f: impl Fn(*mut f64) -> i32) -> Result<(i32, f64), TestCaseError> {
 /// PROPTEST_RNG_SEED (a number) to explore other inputs, e.g.
 /// `for s in $(seq 1 50); do PROPTEST_RNG_SEED=$s cargo test --release --test proptest_ffi || break; done`.
 fn config(cases: u32) -> ProptestConfig {
-    let mut c = ProptestConfig { cases, failure_persistence: None, ..ProptestConfig::default() };
+    let mut c = ProptestConfig {
+        cases,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    };
     if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
         c.rng_seed = proptest::test_runner::RngSeed::Fixed(20_261_121);
     }
@@ -168,18 +174,36 @@ fn mixed_alpha() -> impl Strategy<Value = f64> {
 
 /// dc_energy contract: known status, untouched on error, finite and summing to 1 on success.
 fn energy_contract(f: impl Fn(*mut dc_energy) -> i32) -> Result<(i32, dc_energy), TestCaseError> {
-    let sentinel = dc_energy { e: SENTINEL, loading: SENTINEL, unloading: SENTINEL, returned: SENTINEL, clamped: SENTINEL };
+    let sentinel = dc_energy {
+        e: SENTINEL,
+        loading: SENTINEL,
+        unloading: SENTINEL,
+        returned: SENTINEL,
+        clamped: SENTINEL,
+    };
     let mut out = sentinel;
     let s = f(&mut out);
     prop_assert!(known(s), "unknown or internal status {}", s);
     if s == DC_OK {
         let parts = [out.e, out.loading, out.unloading, out.returned, out.clamped];
-        prop_assert!(parts.iter().all(|x| x.is_finite()), "non-finite partition {:?}", out);
+        prop_assert!(
+            parts.iter().all(|x| x.is_finite()),
+            "non-finite partition {:?}",
+            out
+        );
         // Each fraction in [0, 1] up to rounding, and the four energies sum to 1.
-        prop_assert!(parts.iter().all(|x| (-1e-15..=1.0 + 1e-15).contains(x)), "fraction out of [0,1]: {:?}", out);
+        prop_assert!(
+            parts.iter().all(|x| (-1e-15..=1.0 + 1e-15).contains(x)),
+            "fraction out of [0,1]: {:?}",
+            out
+        );
         let sum = out.loading + out.unloading + out.returned + out.clamped;
         prop_assert!((sum - 1.0).abs() <= 4e-15, "fractions sum to {}", sum);
-        prop_assert!((out.returned - out.e * out.e).abs() <= 4e-16, "returned != e^2: {:?}", out);
+        prop_assert!(
+            (out.returned - out.e * out.e).abs() <= 4e-16,
+            "returned != e^2: {:?}",
+            out
+        );
     } else {
         prop_assert_eq!(out, sentinel, "dc_energy touched on error");
     }
@@ -194,7 +218,11 @@ fn contract2(f: impl Fn(*mut f64, *mut f64) -> i32) -> Result<(i32, f64, f64), T
     if s == DC_OK {
         prop_assert!(a.is_finite() && b.is_finite());
     } else {
-        prop_assert_eq!((a.to_bits(), b.to_bits()), (SENTINEL.to_bits(), SENTINEL.to_bits()), "output touched on error");
+        prop_assert_eq!(
+            (a.to_bits(), b.to_bits()),
+            (SENTINEL.to_bits(), SENTINEL.to_bits()),
+            "output touched on error"
+        );
     }
     Ok((s, a, b))
 }

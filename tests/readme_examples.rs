@@ -8,6 +8,9 @@ fn readme_quotes_the_tested_programs() {
     for file in ["examples_cpp/minimal.cpp", "c_tests/fortran/minimal.f90"] {
         let src = std::fs::read_to_string(root.join(file)).unwrap_or_default();
         assert!(!src.is_empty(), "{file} missing");
-        assert!(readme.contains(&src), "README.md does not quote {file} verbatim");
+        assert!(
+            readme.contains(&src),
+            "README.md does not quote {file} verbatim"
+        );
     }
 }

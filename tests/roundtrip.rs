@@ -5,7 +5,11 @@ use demcontact::ffi::{calibration::*, status::*};
 
 fn round_trip(e: f64, p: f64, crit: i32) -> f64 {
     let (mut a, mut back) = (f64::NAN, f64::NAN);
-    assert_eq!(unsafe { dc_alpha_from_e(e, p, crit, &mut a) }, DC_OK, "e={e} p={p}");
+    assert_eq!(
+        unsafe { dc_alpha_from_e(e, p, crit, &mut a) },
+        DC_OK,
+        "e={e} p={p}"
+    );
     assert_eq!(unsafe { dc_e_from_alpha(a, p, crit, &mut back) }, DC_OK);
     (back - e).abs() / e
 }
@@ -33,7 +37,10 @@ fn round_trip_within_1e_13() {
                 }
             }
         }
-        println!("criterion {crit}: worst round trip {:.2e} at e={:e} p={}", worst.0, worst.1, worst.2);
+        println!(
+            "criterion {crit}: worst round trip {:.2e} at e={:e} p={}",
+            worst.0, worst.1, worst.2
+        );
         assert!(worst.0 <= 1e-13, "criterion {crit}: {worst:?}");
     }
 }

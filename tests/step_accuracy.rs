@@ -45,7 +45,10 @@ fn worst(p: f64, e: f64, crit: i32, dt: f64) -> f64 {
             let er = realised_e(p, alpha, crit == DC_END_FORCE, dt, (i as f64 + 0.3) / 61.0);
             ((er - e) / e).abs()
         })
-        .fold(0.0, |a: f64, b| if b.is_nan() { f64::INFINITY } else { a.max(b) })
+        .fold(
+            0.0,
+            |a: f64, b| if b.is_nan() { f64::INFINITY } else { a.max(b) },
+        )
 }
 
 #[test]
@@ -57,7 +60,10 @@ fn returned_step_meets_tolerance_and_twice_it_does_not() {
             for &e in &[0.1, 0.5, 0.9] {
                 for &tol in &[1e-2, 1e-3] {
                     let mut dt = f64::NAN;
-                    assert_eq!(unsafe { dc_dt_for_accuracy(p, e, crit, V0, W0, tol, &mut dt) }, DC_OK);
+                    assert_eq!(
+                        unsafe { dc_dt_for_accuracy(p, e, crit, V0, W0, tol, &mut dt) },
+                        DC_OK
+                    );
                     let at = worst(p, e, crit, dt) / tol;
                     let twice = worst(p, e, crit, 2.0 * dt) / tol;
                     lines.push(format!("crit {crit} p {p} e {e} tol {tol:.0e}: dt {dt:.4e}  E(dt)/tol {at:.3}  E(2dt)/tol {twice:.3}"));
@@ -81,8 +87,14 @@ fn scaling_with_speed_and_stiffness() {
     let mut a = 0.0;
     let mut b = 0.0;
     unsafe {
-        assert_eq!(dc_dt_for_accuracy(p, e, DC_END_FORCE, 1.0, 1.0, tol, &mut a), DC_OK);
-        assert_eq!(dc_dt_for_accuracy(p, e, DC_END_FORCE, 3.0, 50.0, tol, &mut b), DC_OK);
+        assert_eq!(
+            dc_dt_for_accuracy(p, e, DC_END_FORCE, 1.0, 1.0, tol, &mut a),
+            DC_OK
+        );
+        assert_eq!(
+            dc_dt_for_accuracy(p, e, DC_END_FORCE, 3.0, 50.0, tol, &mut b),
+            DC_OK
+        );
     }
     let t_star = (3.0f64 / 50.0).powf(2.0 / (p + 1.0)) / 3.0;
     assert!((b / (a * t_star) - 1.0).abs() < 1e-12, "{a} {b}");
@@ -92,16 +104,46 @@ fn scaling_with_speed_and_stiffness() {
 fn bad_input() {
     let mut out = 42.0;
     unsafe {
-        assert_eq!(dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 1.0, 1.0, 1e-2, std::ptr::null_mut()), DC_ERR_NULL_POINTER);
-        assert_eq!(dc_dt_for_accuracy(f64::NAN, 0.5, DC_END_FORCE, 1.0, 1.0, 1e-2, &mut out), DC_ERR_NOT_FINITE);
-        assert_eq!(dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 1.0, f64::INFINITY, 1e-2, &mut out), DC_ERR_NOT_FINITE);
-        assert_eq!(dc_dt_for_accuracy(0.5, 0.5, DC_END_FORCE, 1.0, 1.0, 1e-2, &mut out), DC_ERR_EXPONENT_RANGE);
-        assert_eq!(dc_dt_for_accuracy(1.5, 0.0, DC_END_FORCE, 1.0, 1.0, 1e-2, &mut out), DC_ERR_RESTITUTION_RANGE);
-        assert_eq!(dc_dt_for_accuracy(1.5, 1.1, DC_END_FORCE, 1.0, 1.0, 1e-2, &mut out), DC_ERR_RESTITUTION_RANGE);
-        assert_eq!(dc_dt_for_accuracy(1.5, 0.5, 2, 1.0, 1.0, 1e-2, &mut out), DC_ERR_CRITERION);
-        assert_eq!(dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 0.0, 1.0, 1e-2, &mut out), DC_ERR_NOT_POSITIVE);
-        assert_eq!(dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 1.0, -1.0, 1e-2, &mut out), DC_ERR_NOT_POSITIVE);
-        assert_eq!(dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 1.0, 1.0, 0.0, &mut out), DC_ERR_NOT_POSITIVE);
+        assert_eq!(
+            dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 1.0, 1.0, 1e-2, std::ptr::null_mut()),
+            DC_ERR_NULL_POINTER
+        );
+        assert_eq!(
+            dc_dt_for_accuracy(f64::NAN, 0.5, DC_END_FORCE, 1.0, 1.0, 1e-2, &mut out),
+            DC_ERR_NOT_FINITE
+        );
+        assert_eq!(
+            dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 1.0, f64::INFINITY, 1e-2, &mut out),
+            DC_ERR_NOT_FINITE
+        );
+        assert_eq!(
+            dc_dt_for_accuracy(0.5, 0.5, DC_END_FORCE, 1.0, 1.0, 1e-2, &mut out),
+            DC_ERR_EXPONENT_RANGE
+        );
+        assert_eq!(
+            dc_dt_for_accuracy(1.5, 0.0, DC_END_FORCE, 1.0, 1.0, 1e-2, &mut out),
+            DC_ERR_RESTITUTION_RANGE
+        );
+        assert_eq!(
+            dc_dt_for_accuracy(1.5, 1.1, DC_END_FORCE, 1.0, 1.0, 1e-2, &mut out),
+            DC_ERR_RESTITUTION_RANGE
+        );
+        assert_eq!(
+            dc_dt_for_accuracy(1.5, 0.5, 2, 1.0, 1.0, 1e-2, &mut out),
+            DC_ERR_CRITERION
+        );
+        assert_eq!(
+            dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 0.0, 1.0, 1e-2, &mut out),
+            DC_ERR_NOT_POSITIVE
+        );
+        assert_eq!(
+            dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 1.0, -1.0, 1e-2, &mut out),
+            DC_ERR_NOT_POSITIVE
+        );
+        assert_eq!(
+            dc_dt_for_accuracy(1.5, 0.5, DC_END_FORCE, 1.0, 1.0, 0.0, &mut out),
+            DC_ERR_NOT_POSITIVE
+        );
     }
     assert_eq!(out, 42.0, "output touched on error");
 }

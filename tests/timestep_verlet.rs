@@ -27,7 +27,12 @@ fn vv_collision(p: f64, alpha: f64, v0: f64, w0: f64, dt: f64) -> (f64, f64) {
         d += dt * vh;
         a = acc(p, alpha, w0, d, vh, true);
         v = vh + 0.5 * dt * a;
-        let e = 0.5 * v * v + if d > 0.0 { w0 * w0 * d.powf(p + 1.0) / (p + 1.0) } else { 0.0 };
+        let e = 0.5 * v * v
+            + if d > 0.0 {
+                w0 * w0 * d.powf(p + 1.0) / (p + 1.0)
+            } else {
+                0.0
+            };
         emax = emax.max(e / e0);
         if d <= 0.0 && v < 0.0 {
             return (-v / v0, emax);
@@ -60,15 +65,24 @@ fn vv_resting_stable(p: f64, alpha: f64, w0: f64, g: f64, dt: f64, steps: u32) -
 fn single_collision() {
     // dt = s × {seed's dt_crit, 2/ω_lin at the undamped δ_max}; realised e against the exact one.
     println!("single collision, force end (clamped), v0 = 1, ω0 = 1:");
-    println!("{:>4} {:>5} {:>9} {:>10} | rel. error of e (max energy ratio) at dt = s × bound, s = 1, 0.5, 0.2, 0.1", "p", "e", "bound", "τ/bound");
+    println!(
+        "{:>4} {:>5} {:>9} {:>10} | rel. error of e (max energy ratio) at dt = s × bound, s = 1, 0.5, 0.2, 0.1",
+        "p", "e", "bound", "τ/bound"
+    );
     for &p in &[1.0, 1.5, 2.0, 3.0] {
         for &e in &[0.5, 0.9] {
             let mut alpha = 0.0;
-            assert_eq!(unsafe { dc_alpha_from_e(e, p, DC_END_FORCE, &mut alpha) }, DC_OK);
+            assert_eq!(
+                unsafe { dc_alpha_from_e(e, p, DC_END_FORCE, &mut alpha) },
+                DC_OK
+            );
             let (mut seed, mut lin, mut tau) = (0.0, 0.0, 0.0);
             assert_eq!(unsafe { dc_dt_crit(p, 1.0, 1.0, &mut seed) }, DC_OK);
             assert_eq!(unsafe { dc_dt_linearised(p, 1.0, 1.0, &mut lin) }, DC_OK);
-            assert_eq!(unsafe { dc_contact_duration(p, alpha, 1.0, 1.0, DC_END_FORCE, &mut tau) }, DC_OK);
+            assert_eq!(
+                unsafe { dc_contact_duration(p, alpha, 1.0, 1.0, DC_END_FORCE, &mut tau) },
+                DC_OK
+            );
             for (name, bound) in [("seed", seed), ("lin", lin)] {
                 let mut row = String::new();
                 for &s in &[1.0, 0.5, 0.2, 0.1] {
@@ -80,7 +94,10 @@ fn single_collision() {
                         assert!(err > 0.2, "p={p} e={e}: {err}");
                     }
                     if s == 0.1 {
-                        assert!(err < 0.05 && emax < 1.0 + 1e-9, "p={p} e={e} {name}: {err} {emax}");
+                        assert!(
+                            err < 0.05 && emax < 1.0 + 1e-9,
+                            "p={p} e={e} {name}: {err} {emax}"
+                        );
                     }
                 }
                 println!("{p:>4} {e:>5} {name:>9} {:>10.2} |{row}", tau / bound);
@@ -98,13 +115,19 @@ fn persistent_contact_under_load() {
     // the speed √(2 g δ_eq) of a particle landing from a height δ_eq, in the same units. The
     // "theory" column is dc_dt_static (which includes the damping factor).
     println!("persistent contact under load g = 1, ω0 = 1e3:");
-    println!("{:>4} {:>6} {:>8} {:>14} {:>10} {:>16}", "p", "e", "ζ_eq", "dt_max·ω_eq/2", "theory", "seed dt/(2/ω_eq)");
+    println!(
+        "{:>4} {:>6} {:>8} {:>14} {:>10} {:>16}",
+        "p", "e", "ζ_eq", "dt_max·ω_eq/2", "theory", "seed dt/(2/ω_eq)"
+    );
     let (w0, g) = (1e3f64, 1.0f64);
     for &p in &[1.0, 1.5, 2.0, 3.0] {
         for &e in &[1.0, 0.9, 0.5, 0.1] {
             let mut alpha = 0.0;
             if e < 1.0 {
-                assert_eq!(unsafe { dc_alpha_from_e(e, p, DC_END_FORCE, &mut alpha) }, DC_OK);
+                assert_eq!(
+                    unsafe { dc_alpha_from_e(e, p, DC_END_FORCE, &mut alpha) },
+                    DC_OK
+                );
             }
             let d_eq = (g / (w0 * w0)).powf(1.0 / p);
             let w_eq = w0 * (p * d_eq.powf(p - 1.0)).sqrt();
@@ -123,12 +146,25 @@ fn persistent_contact_under_load() {
             let z = alpha / (2.0 * p.sqrt());
             let theory = (1.0 + z * z).sqrt() - z;
             let mut seed = 0.0;
-            assert_eq!(unsafe { dc_dt_crit(p, (2.0 * g * d_eq).sqrt(), w0, &mut seed) }, DC_OK);
+            assert_eq!(
+                unsafe { dc_dt_crit(p, (2.0 * g * d_eq).sqrt(), w0, &mut seed) },
+                DC_OK
+            );
             let mut lib = 0.0;
             assert_eq!(unsafe { dc_dt_static(p, alpha, w0, g, &mut lib) }, DC_OK);
-            println!("{p:>4} {e:>6} {z:>8.4} {lo:>14.4} {:>10.4} {:>16.3}", lib / bound, seed / bound);
-            assert!((lo - theory).abs() < 0.01 * theory, "p={p} e={e}: {lo} vs {theory}");
-            assert!(((lib / bound - theory) / theory).abs() < 1e-13, "dc_dt_static");
+            println!(
+                "{p:>4} {e:>6} {z:>8.4} {lo:>14.4} {:>10.4} {:>16.3}",
+                lib / bound,
+                seed / bound
+            );
+            assert!(
+                (lo - theory).abs() < 0.01 * theory,
+                "p={p} e={e}: {lo} vs {theory}"
+            );
+            assert!(
+                ((lib / bound - theory) / theory).abs() < 1e-13,
+                "dc_dt_static"
+            );
         }
     }
 }

@@ -2,13 +2,15 @@
 //! Run: `cargo test --release --test viscoelastic_accuracy -- --nocapture`.
 #![allow(clippy::unwrap_used, clippy::indexing_slicing)]
 
-use demcontact::viscoelastic::full_range::e_full;
-use demcontact::viscoelastic::reference::{e_reference, e_reference_tol, integrate, Event};
 use demcontact::EndCriterion::{self, Force, Overlap};
+use demcontact::viscoelastic::full_range::e_full;
+use demcontact::viscoelastic::reference::{Event, e_reference, e_reference_tol, integrate};
 
 /// 420 points: 120 uniform in [0, 2], 300 log-spaced in [1e-8, 1e6].
 fn grid() -> Vec<f64> {
-    let mut g: Vec<f64> = (0..120).map(|i| 2.0 * i as f64 / 119.0 + 1e-3 * (i % 7) as f64).collect();
+    let mut g: Vec<f64> = (0..120)
+        .map(|i| 2.0 * i as f64 / 119.0 + 1e-3 * (i % 7) as f64)
+        .collect();
     g.extend((0..300).map(|i| 10f64.powf(-8.0 + 14.0 * (i as f64 + 0.37) / 300.0)));
     g
 }
@@ -34,7 +36,9 @@ fn full_range_matches_reference_on_420_points() {
             used += 1;
         }
         let top = if c == Force { "1e6" } else { "3e3" };
-        println!("{c:?}: full-range vs reference on {used} points in [0, {top}]: max relative error {worst:.2e} at b = {at:.4e}");
+        println!(
+            "{c:?}: full-range vs reference on {used} points in [0, {top}]: max relative error {worst:.2e} at b = {at:.4e}"
+        );
         assert!(used >= 200 && worst < 1e-10);
     }
 }
@@ -52,7 +56,10 @@ fn reference_converges_in_tolerance() {
             let e18 = e_reference_tol(b, c, 1e-18).unwrap();
             let e20 = e_reference_tol(b, c, 1e-20).unwrap();
             let d = ((e18 - e20) / e20).abs();
-            println!("{c:?} b={b:9}: e={e20:.16e}  |e(1e-16)/e(1e-20)-1|={:.1e} |e(1e-18)/e(1e-20)-1|={d:.1e}", ((e16 - e20) / e20).abs());
+            println!(
+                "{c:?} b={b:9}: e={e20:.16e}  |e(1e-16)/e(1e-20)-1|={:.1e} |e(1e-18)/e(1e-20)-1|={d:.1e}",
+                ((e16 - e20) / e20).abs()
+            );
             assert!(d < if b > 1e4 { 1e-11 } else { 3e-15 });
         }
     }
@@ -74,7 +81,9 @@ fn reference_small_b_limit_is_exact() {
             Overlap => 0.7982665553 * b * b - 0.5228825609 * b.powi(3),
         };
         let k = (1.0 - e + higher) / b;
-        println!("{c:?}: (1-e)/b at b=1e-5, next terms removed: {k:.12} exact {c1:.12} (paper Table III 1.153448854, Table V 1.153448856)");
+        println!(
+            "{c:?}: (1-e)/b at b=1e-5, next terms removed: {k:.12} exact {c1:.12} (paper Table III 1.153448854, Table V 1.153448856)"
+        );
         assert!(((k - c1) / c1).abs() < 5e-11);
     }
     // Undamped maximum compression (5/4)^{2/5} and time (4/5)^{3/5} Γ(2/5)Γ(1/2)/(2Γ(9/10)) ... the
@@ -83,7 +92,10 @@ fn reference_small_b_limit_is_exact() {
     let t0 = 0.8f64.powf(0.6) * libm::tgamma(0.4) * libm::tgamma(0.5) / (2.0 * libm::tgamma(0.9));
     // Exact: T_max = ∫_0^{Xm} dX / √(1 − (4/5) X^{5/2}) = (5/4)^{2/5} (2/5) B(2/5, 1/2)
     let exact = 1.25f64.powf(0.4) * 0.4 * libm::tgamma(0.4) * libm::tgamma(0.5) / libm::tgamma(0.9);
-    println!("T_max(b=0) {:.15} exact {exact:.15}; paper eq. 28 as printed {t0:.15}", h.state.t);
+    println!(
+        "T_max(b=0) {:.15} exact {exact:.15}; paper eq. 28 as printed {t0:.15}",
+        h.state.t
+    );
     assert!((h.state.t - exact).abs() < 1e-14);
 }
 
@@ -93,7 +105,10 @@ fn overlap_large_b_law_is_exact_beyond_8() {
     for &b in &[8.0, 10.0, 30.0, 100.0, 300.0] {
         let e = e_reference(b, Overlap).unwrap();
         let rel = (e * b.powi(5) / c_o - 1.0).abs();
-        println!("b={b}: e_O b^5 = {:.16} (rel. dev. {rel:.1e})", e * b.powi(5));
+        println!(
+            "b={b}: e_O b^5 = {:.16} (rel. dev. {rel:.1e})",
+            e * b.powi(5)
+        );
         assert!(rel < 2e-14);
     }
 }
@@ -123,7 +138,9 @@ fn force_large_b_law() {
     let r = (b3 / b2).powf(-p);
     let extrapolated = g3 + (g3 - g2) * r / (1.0 - r);
     let exact = 1.5f64.powf(2.0 / 3.0);
-    println!("force: e b^(5/3) at 2^16, 2^18, 2^20 = {g1:.12}, {g2:.12}, {g3:.12}; correction exponent {p:.3}; limit {extrapolated:.12} vs (3/2)^(2/3) = {exact:.12}");
+    println!(
+        "force: e b^(5/3) at 2^16, 2^18, 2^20 = {g1:.12}, {g2:.12}, {g3:.12}; correction exponent {p:.3}; limit {extrapolated:.12} vs (3/2)^(2/3) = {exact:.12}"
+    );
     assert!((extrapolated / exact - 1.0).abs() < 1e-10);
     // Beyond the table (b ≥ 2^20) the law C_F b^{-5/3}(1 − D b^{-P}) against the reference
     // (whose own error there is ~1e-11, from its tolerance convergence).
@@ -134,6 +151,8 @@ fn force_large_b_law() {
         let f = e_full(b, Force).unwrap();
         worst = worst.max(((f - r) / r).abs());
     }
-    println!("force: full-range (asymptotic law) vs reference on [2^20, 2^21.5]: max relative error {worst:.1e}");
+    println!(
+        "force: full-range (asymptotic law) vs reference on [2^20, 2^21.5]: max relative error {worst:.1e}"
+    );
     assert!(worst < 1e-10);
 }

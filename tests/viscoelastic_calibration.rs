@@ -4,10 +4,10 @@
 //! Run: `cargo test --release --test viscoelastic_calibration -- --nocapture`.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use demcontact::numerics::ode::{integrate_to_event, Tolerance};
-use demcontact::viscoelastic::{calibration, full_range::e_full, scaling};
 use demcontact::EndCriterion::{self, Force, Overlap};
 use demcontact::Error;
+use demcontact::numerics::ode::{Tolerance, integrate_to_event};
+use demcontact::viscoelastic::{calibration, full_range::e_full, scaling};
 
 /// m ξ'' = −ρ ξ^{3/2} − (3/2) A ρ √ξ ξ' in SI units, DP5(4) at rtol 1e-13, two phases.
 fn collide_physical(rho: f64, a: f64, m: f64, v: f64, c: EndCriterion) -> f64 {
@@ -17,13 +17,36 @@ fn collide_physical(rho: f64, a: f64, m: f64, v: f64, c: EndCriterion) -> f64 {
         [y[1], -f / m]
     };
     let xs = (v * v * m / rho).powf(0.4);
-    let tol = Tolerance { rtol: 1e-13, atol: [1e-16 * xs, 1e-16 * v] };
-    let load = integrate_to_event(rhs, 0.0, [0.0, v], |y| y[1], |_, _| {}, &tol, 1e-9 * xs / v, 50_000_000).unwrap();
+    let tol = Tolerance {
+        rtol: 1e-13,
+        atol: [1e-16 * xs, 1e-16 * v],
+    };
+    let load = integrate_to_event(
+        rhs,
+        0.0,
+        [0.0, v],
+        |y| y[1],
+        |_, _| {},
+        &tol,
+        1e-9 * xs / v,
+        50_000_000,
+    )
+    .unwrap();
     let ev = move |y: [f64; 2]| match c {
         Overlap => y[0],
         Force => y[0] + 1.5 * a * y[1], // F/(ρ√ξ) = ξ + (3/2)A ξ'
     };
-    let end = integrate_to_event(rhs, load.t, load.y, ev, |_, _| {}, &tol, 1e-3 * load.t, 50_000_000).unwrap();
+    let end = integrate_to_event(
+        rhs,
+        load.t,
+        load.y,
+        ev,
+        |_, _| {},
+        &tol,
+        1e-3 * load.t,
+        50_000_000,
+    )
+    .unwrap();
     -end.y[1] / v
 }
 
@@ -37,9 +60,12 @@ fn physical_units_match_direct_integration() {
             for c in [Force, Overlap] {
                 let e = calibration::e_of_speed(k, g, v, c).unwrap();
                 let r = collide_physical(rho, a, m, v, c);
-                let b = scaling::b_from_beta_speed(scaling::beta_from_k_gamma(k, g).unwrap(), v).unwrap();
+                let b = scaling::b_from_beta_speed(scaling::beta_from_k_gamma(k, g).unwrap(), v)
+                    .unwrap();
                 let rel = ((e - r) / r).abs();
-                println!("rho={rho:e} A={a:e} m={m} v={v} b={b:.4} {c:?}: e={e:.12} direct {r:.12} rel {rel:.1e}");
+                println!(
+                    "rho={rho:e} A={a:e} m={m} v={v} b={b:.4} {c:?}: e={e:.12} direct {r:.12} rel {rel:.1e}"
+                );
                 worst = worst.max(rel);
             }
         }
@@ -94,13 +120,34 @@ fn bad_input_is_reported() {
         assert_eq!(calibration::b_from_e(0.0, c), Err(Error::RestitutionRange));
         assert_eq!(calibration::b_from_e(1.5, c), Err(Error::RestitutionRange));
         assert_eq!(calibration::b_from_e(f64::NAN, c), Err(Error::NotFinite));
-        assert_eq!(calibration::beta_from_e(0.5, 0.0, c), Err(Error::NotPositive));
-        assert_eq!(calibration::beta_from_e(0.5, -1.0, c), Err(Error::NotPositive));
-        assert_eq!(calibration::speed_for_e(0.5, 0.0, c), Err(Error::NotPositive));
-        assert_eq!(calibration::speed_for_e(0.5, f64::INFINITY, c), Err(Error::NotFinite));
-        assert_eq!(calibration::e_of_speed(-1.0, 1.0, 1.0, c), Err(Error::NotPositive));
-        assert_eq!(calibration::e_of_speed(1.0, -1.0, 1.0, c), Err(Error::Negative));
-        assert_eq!(calibration::e_of_speed(1.0, 1.0, f64::NAN, c), Err(Error::NotFinite));
+        assert_eq!(
+            calibration::beta_from_e(0.5, 0.0, c),
+            Err(Error::NotPositive)
+        );
+        assert_eq!(
+            calibration::beta_from_e(0.5, -1.0, c),
+            Err(Error::NotPositive)
+        );
+        assert_eq!(
+            calibration::speed_for_e(0.5, 0.0, c),
+            Err(Error::NotPositive)
+        );
+        assert_eq!(
+            calibration::speed_for_e(0.5, f64::INFINITY, c),
+            Err(Error::NotFinite)
+        );
+        assert_eq!(
+            calibration::e_of_speed(-1.0, 1.0, 1.0, c),
+            Err(Error::NotPositive)
+        );
+        assert_eq!(
+            calibration::e_of_speed(1.0, -1.0, 1.0, c),
+            Err(Error::Negative)
+        );
+        assert_eq!(
+            calibration::e_of_speed(1.0, 1.0, f64::NAN, c),
+            Err(Error::NotFinite)
+        );
         assert_eq!(e_full(-1e-300, c), Err(Error::Negative));
         assert_eq!(e_full(f64::NAN, c), Err(Error::NotFinite));
         assert_eq!(e_full(f64::INFINITY, c), Err(Error::NotFinite));

@@ -7,13 +7,14 @@
 
 use demcontact::ffi::{calibration::dc_e_from_alpha, status::*};
 use demcontact::lsd::e_force;
-use demcontact::numerics::ode::{integrate_to_event, Tolerance};
+use demcontact::numerics::ode::{Tolerance, integrate_to_event};
 
 /// Eq. (12) with its middle branch as printed: exp(−(β/ω) arctan(2βω/(ω² − β²))).
 fn eq12_printed(beta: f64, w0: f64) -> f64 {
     if beta < w0 / 2f64.sqrt() {
         let w = (w0 * w0 - beta * beta).sqrt();
-        (-(beta / w) * (std::f64::consts::PI - (2.0 * beta * w / (w * w - beta * beta)).atan())).exp()
+        (-(beta / w) * (std::f64::consts::PI - (2.0 * beta * w / (w * w - beta * beta)).atan()))
+            .exp()
     } else if beta < w0 {
         let w = (w0 * w0 - beta * beta).sqrt();
         (-(beta / w) * (2.0 * beta * w / (w * w - beta * beta)).atan()).exp()
@@ -36,17 +37,41 @@ fn eq12_corrected(beta: f64, w0: f64) -> f64 {
 
 fn e_direct(zeta: f64) -> f64 {
     // x'' + 2ζx' + x = 0, ends when x + 2ζ x' = 0 while unloading.
-    let tol = Tolerance { rtol: 1e-13, atol: [1e-16, 1e-16] };
+    let tol = Tolerance {
+        rtol: 1e-13,
+        atol: [1e-16, 1e-16],
+    };
     let f = move |y: [f64; 2]| [y[1], -y[0] - 2.0 * zeta * y[1]];
-    let l = integrate_to_event(f, 0.0, [0.0, 1.0], |y| y[1], |_, _| {}, &tol, 1e-4, 10_000_000).unwrap();
-    let e = integrate_to_event(f, l.t, l.y, |y| y[0] + 2.0 * zeta * y[1], |_, _| {}, &tol, 1e-4, 10_000_000).unwrap();
+    let l = integrate_to_event(
+        f,
+        0.0,
+        [0.0, 1.0],
+        |y| y[1],
+        |_, _| {},
+        &tol,
+        1e-4,
+        10_000_000,
+    )
+    .unwrap();
+    let e = integrate_to_event(
+        f,
+        l.t,
+        l.y,
+        |y| y[0] + 2.0 * zeta * y[1],
+        |_, _| {},
+        &tol,
+        1e-4,
+        10_000_000,
+    )
+    .unwrap();
     -e.y[1]
 }
 
 #[test]
 fn eq12_matches_the_single_formula() {
     let w0 = 3.0;
-    let (mut worst_lo, mut worst_mid_printed, mut worst_mid, mut worst_hi, mut worst_direct) = (0.0f64, 0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    let (mut worst_lo, mut worst_mid_printed, mut worst_mid, mut worst_hi, mut worst_direct) =
+        (0.0f64, 0.0f64, 0.0f64, 0.0f64, 0.0f64);
     for i in 1..400 {
         let zeta = 2.5 * i as f64 / 400.0;
         if (zeta - 1.0).abs() < 1e-9 || (zeta - 0.5f64.sqrt()).abs() < 1e-9 {
@@ -54,7 +79,10 @@ fn eq12_matches_the_single_formula() {
         }
         let ours = e_force(zeta);
         let mut viac = 0.0;
-        assert_eq!(unsafe { dc_e_from_alpha(2.0 * zeta, 1.0, DC_END_FORCE, &mut viac) }, DC_OK);
+        assert_eq!(
+            unsafe { dc_e_from_alpha(2.0 * zeta, 1.0, DC_END_FORCE, &mut viac) },
+            DC_OK
+        );
         assert!(((viac - ours) / ours).abs() < 1e-14, "{zeta} {viac} {ours}");
         let printed = eq12_printed(zeta * w0, w0);
         let corrected = eq12_corrected(zeta * w0, w0);
@@ -72,7 +100,12 @@ fn eq12_matches_the_single_formula() {
             worst_direct = worst_direct.max(((e_direct(zeta) - ours) / ours).abs());
         }
     }
-    println!("eq. 12 vs lsd::e_force: branch 1 {worst_lo:.1e}; branch 2 as printed {worst_mid_printed:.1e} (e > 1: sign lost), corrected {worst_mid:.1e}; branch 3 {worst_hi:.1e}; direct ODE {worst_direct:.1e}");
+    println!(
+        "eq. 12 vs lsd::e_force: branch 1 {worst_lo:.1e}; branch 2 as printed {worst_mid_printed:.1e} (e > 1: sign lost), corrected {worst_mid:.1e}; branch 3 {worst_hi:.1e}; direct ODE {worst_direct:.1e}"
+    );
     assert!(worst_lo < 1e-13 && worst_mid < 1e-13 && worst_hi < 1e-13 && worst_direct < 1e-10);
-    assert!(worst_mid_printed > 0.1, "the printed middle branch is wrong");
+    assert!(
+        worst_mid_printed > 0.1,
+        "the printed middle branch is wrong"
+    );
 }

@@ -3,9 +3,9 @@
 //! Run: `cargo test --release --test viscoelastic_series -- --nocapture`.
 #![allow(clippy::unwrap_used)]
 
+use demcontact::EndCriterion::{Force, Overlap};
 use demcontact::viscoelastic::reference::e_reference;
 use demcontact::viscoelastic::series::e_series;
-use demcontact::EndCriterion::{Force, Overlap};
 
 #[test]
 fn series_validity_range() {
@@ -31,7 +31,11 @@ fn series_validity_range() {
             }
             b *= 1.01;
         }
-        println!("{c:?}: |series − reference| exceeds 1e-6 from b = {:.3}, 1e-3 from b = {:.3}", lim6.unwrap(), lim3.unwrap());
+        println!(
+            "{c:?}: |series − reference| exceeds 1e-6 from b = {:.3}, 1e-3 from b = {:.3}",
+            lim6.unwrap(),
+            lim3.unwrap()
+        );
         for (b, r, s, err) in table {
             println!("   b = {b:.3}: reference {r:.12}, series {s:.12}, error {err:.1e}");
         }

@@ -6,8 +6,8 @@
 #[path = "../examples/gen_viscoelastic_table.rs"]
 mod generator;
 
-use demcontact::viscoelastic::full_range::{asymptotic_constants, table_pieces};
 use demcontact::EndCriterion;
+use demcontact::viscoelastic::full_range::{asymptotic_constants, table_pieces};
 
 #[test]
 fn committed_table_matches_regeneration() {
@@ -16,7 +16,11 @@ fn committed_table_matches_regeneration() {
     for c in [EndCriterion::Force, EndCriterion::Overlap] {
         let (w, bin) = table_pieces(c);
         let gw = generator::w_pieces(c);
-        let nb = if c == EndCriterion::Force { generator::FORCE_BINADES } else { generator::OVERLAP_BINADES };
+        let nb = if c == EndCriterion::Force {
+            generator::FORCE_BINADES
+        } else {
+            generator::OVERLAP_BINADES
+        };
         let gb = generator::binade_pieces(c, nb);
         assert_eq!(w.len(), gw.len());
         assert_eq!(bin.len(), gb.len());
@@ -33,10 +37,15 @@ fn committed_table_matches_regeneration() {
     let (co, cf, p, d) = asymptotic_constants();
     let (gcf, gp, gd) = generator::c_force();
     let gco = generator::c_overlap();
-    println!("regenerated {n} coefficients: worst difference {worst:.1e} (relative to piece scale)");
+    println!(
+        "regenerated {n} coefficients: worst difference {worst:.1e} (relative to piece scale)"
+    );
     println!("C_O {co} vs {gco}; C_F {cf} vs {gcf}; P {p} vs {gp}; D {d} vs {gd}");
     // Same code on the same platform gives identical bits; another libm may move the last bits.
-    assert!(worst < 1e-13, "table is stale: regenerate with cargo run --release --example gen_viscoelastic_table");
+    assert!(
+        worst < 1e-13,
+        "table is stale: regenerate with cargo run --release --example gen_viscoelastic_table"
+    );
     assert!(((co - gco) / co).abs() < 1e-14 && ((cf - gcf) / cf).abs() < 1e-12);
     assert!(((p - gp) / p).abs() < 1e-8 && ((d - gd) / d).abs() < 1e-6);
 }

@@ -1,12 +1,12 @@
 //! Section 1: cost against error for every quantity that has more than one way to compute it.
 
-use crate::plot::{figure, Kind, Panel, Res, Series};
-use crate::reference;
 use crate::Report;
+use crate::plot::{Kind, Panel, Res, Series, figure};
+use crate::reference;
+use demcontact::EndCriterion;
 use demcontact::force::powerlaw::powerlaw_from_alpha;
 use demcontact::powerlaw::{alpha_from_e, e_from_alpha};
-use demcontact::timestep::{collide, Scheme};
-use demcontact::EndCriterion;
+use demcontact::timestep::{Scheme, collide};
 use plotters::prelude::SeriesLabelPosition;
 use std::fmt::Write;
 use std::hint::black_box;
@@ -44,14 +44,40 @@ fn powerlaw_rows(rows: &mut Vec<Row>) -> Res<()> {
     let (p, e_t, crit) = (1.5, 0.5, EndCriterion::Force);
     let alpha = alpha_from_e(e_t, p, crit)?;
     let truth = reference::collide(p, alpha, 1.0, 1.0, crit, 1e-13).ok_or("reference")?;
-    rows.push(Row { quantity: "e", method: "closed form e_from_alpha".into(), family: "closed form", ns: ns_per_call(|| e_from_alpha(black_box(alpha), p, crit).unwrap_or(0.0)), err: rel(e_from_alpha(alpha, p, crit)?, e_t) });
+    rows.push(Row {
+        quantity: "e",
+        method: "closed form e_from_alpha".into(),
+        family: "closed form",
+        ns: ns_per_call(|| e_from_alpha(black_box(alpha), p, crit).unwrap_or(0.0)),
+        err: rel(e_from_alpha(alpha, p, crit)?, e_t),
+    });
     for &rtol in &[1e-4, 1e-6, 1e-8, 1e-10, 1e-12] {
         let r = reference::collide(p, alpha, 1.0, 1.0, crit, rtol).ok_or("reference")?;
-        let ns = ns_per_call(|| reference::collide(p, black_box(alpha), 1.0, 1.0, crit, rtol).map_or(0.0, |r| r.e));
+        let ns = ns_per_call(|| {
+            reference::collide(p, black_box(alpha), 1.0, 1.0, crit, rtol).map_or(0.0, |r| r.e)
+        });
         let m = format!("ODE reference rtol {rtol:.0e}");
-        rows.push(Row { quantity: "e", method: m.clone(), family: "ODE reference", ns, err: rel(r.e, e_t) });
-        rows.push(Row { quantity: "δ_max", method: m.clone(), family: "ODE reference", ns, err: rel(r.delta_max, truth.delta_max) });
-        rows.push(Row { quantity: "τ (force end)", method: m, family: "ODE reference", ns, err: rel(r.tau, truth.tau) });
+        rows.push(Row {
+            quantity: "e",
+            method: m.clone(),
+            family: "ODE reference",
+            ns,
+            err: rel(r.e, e_t),
+        });
+        rows.push(Row {
+            quantity: "δ_max",
+            method: m.clone(),
+            family: "ODE reference",
+            ns,
+            err: rel(r.delta_max, truth.delta_max),
+        });
+        rows.push(Row {
+            quantity: "τ (force end)",
+            method: m,
+            family: "ODE reference",
+            ns,
+            err: rel(r.tau, truth.tau),
+        });
     }
     let pair = powerlaw_from_alpha(p, 1.0, alpha, crit)?;
     for &f in &[0.1, 0.03, 0.01, 0.003, 0.001] {
@@ -59,16 +85,55 @@ fn powerlaw_rows(rows: &mut Vec<Row>) -> Res<()> {
         let steps = (100.0 / f) as u32;
         let mut w = [0.0f64; 3];
         for i in 0..16 {
-            let c = collide(&pair, 1.0, 1.0, 1.0, dt, (i as f64 + 0.5) / 16.0, Scheme::VelocityVerlet, steps)?;
+            let c = collide(
+                &pair,
+                1.0,
+                1.0,
+                1.0,
+                dt,
+                (i as f64 + 0.5) / 16.0,
+                Scheme::VelocityVerlet,
+                steps,
+            )?;
             w[0] = w[0].max(rel(c.e, e_t));
             w[1] = w[1].max(rel(c.delta_max, truth.delta_max));
             w[2] = w[2].max(rel(c.duration, truth.tau));
         }
-        let ns = ns_per_call(|| collide(&pair, 1.0, 1.0, 1.0, black_box(dt), 0.5, Scheme::VelocityVerlet, steps).map_or(0.0, |c| c.e));
+        let ns = ns_per_call(|| {
+            collide(
+                &pair,
+                1.0,
+                1.0,
+                1.0,
+                black_box(dt),
+                0.5,
+                Scheme::VelocityVerlet,
+                steps,
+            )
+            .map_or(0.0, |c| c.e)
+        });
         let m = format!("velocity-Verlet dt = {f}·τ (worst of 16 phases)");
-        rows.push(Row { quantity: "e", method: m.clone(), family: "velocity-Verlet", ns, err: w[0] });
-        rows.push(Row { quantity: "δ_max", method: m.clone(), family: "velocity-Verlet", ns, err: w[1] });
-        rows.push(Row { quantity: "τ (force end)", method: m, family: "velocity-Verlet", ns, err: w[2] });
+        rows.push(Row {
+            quantity: "e",
+            method: m.clone(),
+            family: "velocity-Verlet",
+            ns,
+            err: w[0],
+        });
+        rows.push(Row {
+            quantity: "δ_max",
+            method: m.clone(),
+            family: "velocity-Verlet",
+            ns,
+            err: w[1],
+        });
+        rows.push(Row {
+            quantity: "τ (force end)",
+            method: m,
+            family: "velocity-Verlet",
+            ns,
+            err: w[2],
+        });
     }
     Ok(())
 }
@@ -87,9 +152,16 @@ v0 = ω0 = 1). Truth: the calibrated e itself (exact by construction), and δ_ma
 validated set-up of one collision). A velocity-Verlet row \
 costs one whole simulated collision; its error is the worst over 16 start phases.\n"
     )?;
-    writeln!(md, "| quantity | method | ns per call | relative error |\n|---|---|---|---|")?;
+    writeln!(
+        md,
+        "| quantity | method | ns per call | relative error |\n|---|---|---|---|"
+    )?;
     for r in &rows {
-        writeln!(md, "| {} | {} | {:.3e} | {:.1e} |", r.quantity, r.method, r.ns, r.err)?;
+        writeln!(
+            md,
+            "| {} | {} | {:.3e} | {:.1e} |",
+            r.quantity, r.method, r.ns, r.err
+        )?;
     }
     writeln!(md)?;
     let mut quantities: Vec<&str> = Vec::new();
@@ -100,9 +172,13 @@ costs one whole simulated collision; its error is the worst over 16 start phases
     }
     let mut panels = Vec::new();
     for q in &quantities {
-        let mut pn = Panel::new(format!("{q}"), "cost (ns per call, this machine)", "relative error (dimensionless)")
-            .log(true, true)
-            .legend(SeriesLabelPosition::UpperRight);
+        let mut pn = Panel::new(
+            format!("{q}"),
+            "cost (ns per call, this machine)",
+            "relative error (dimensionless)",
+        )
+        .log(true, true)
+        .legend(SeriesLabelPosition::UpperRight);
         let mut fams: Vec<&str> = Vec::new();
         for r in rows.iter().filter(|r| r.quantity == *q) {
             if !fams.contains(&r.family) {
@@ -110,8 +186,16 @@ costs one whole simulated collision; its error is the worst over 16 start phases
             }
         }
         for (i, fam) in fams.iter().enumerate() {
-            let pts: Vec<(f64, f64)> = rows.iter().filter(|r| r.quantity == *q && r.family == *fam).map(|r| (r.ns, r.err)).collect();
-            let kind = if pts.len() > 1 { Kind::LinePoints } else { Kind::Points };
+            let pts: Vec<(f64, f64)> = rows
+                .iter()
+                .filter(|r| r.quantity == *q && r.family == *fam)
+                .map(|r| (r.ns, r.err))
+                .collect();
+            let kind = if pts.len() > 1 {
+                Kind::LinePoints
+            } else {
+                Kind::Points
+            };
             pn.add(Series::new(*fam, pts, kind, i));
         }
         panels.push(pn);
@@ -133,32 +217,71 @@ costs one whole simulated collision; its error is the worst over 16 start phases
 /// (complex log-gamma), against the reference.
 fn calculus_rows(rows: &mut Vec<Row>) -> Res<()> {
     use demcontact::numerics::jacobi_cc::evaluations;
-    use demcontact::powerlaw::{contact_duration, max_overlap, Contact};
+    use demcontact::powerlaw::{Contact, contact_duration, max_overlap};
     let p = 1.5;
-    for (crit, e_t, q) in [(EndCriterion::Force, 0.5, "τ (force end)"), (EndCriterion::Overlap, 0.5, "τ (overlap end)")] {
+    for (crit, e_t, q) in [
+        (EndCriterion::Force, 0.5, "τ (force end)"),
+        (EndCriterion::Overlap, 0.5, "τ (overlap end)"),
+    ] {
         let alpha = alpha_from_e(e_t, p, crit)?;
         let truth = reference::collide(p, alpha, 1.0, 1.0, crit, 1e-13).ok_or("reference")?;
         let c = Contact::new(p, alpha, 1.0, 1.0)?;
         if crit == EndCriterion::Force {
-            let ns = ns_per_call(|| Contact::new(p, black_box(alpha), 1.0, 1.0).and_then(|c| max_overlap(&c)).unwrap_or(0.0));
-            rows.push(Row { quantity: "δ_max", method: "max_overlap (closed form, with Contact::new)".into(), family: "closed form", ns, err: rel(max_overlap(&c)?, truth.delta_max) });
+            let ns = ns_per_call(|| {
+                Contact::new(p, black_box(alpha), 1.0, 1.0)
+                    .and_then(|c| max_overlap(&c))
+                    .unwrap_or(0.0)
+            });
+            rows.push(Row {
+                quantity: "δ_max",
+                method: "max_overlap (closed form, with Contact::new)".into(),
+                family: "closed form",
+                ns,
+                err: rel(max_overlap(&c)?, truth.delta_max),
+            });
             for level in 0..=4u32 {
-                let ns = ns_per_call(|| Contact::new(p, black_box(alpha), 1.0, 1.0).and_then(|c| contact_duration(&c, crit, level)).unwrap_or(0.0));
+                let ns = ns_per_call(|| {
+                    Contact::new(p, black_box(alpha), 1.0, 1.0)
+                        .and_then(|c| contact_duration(&c, crit, level))
+                        .unwrap_or(0.0)
+                });
                 rows.push(Row {
                     quantity: q,
-                    method: format!("contact_duration, quadrature level {level} ({} evaluations)", evaluations(level)),
+                    method: format!(
+                        "contact_duration, quadrature level {level} ({} evaluations)",
+                        evaluations(level)
+                    ),
                     family: "quadrature",
                     ns,
                     err: rel(contact_duration(&c, crit, level)?, truth.tau),
                 });
             }
         } else {
-            let ns = ns_per_call(|| Contact::new(p, black_box(alpha), 1.0, 1.0).and_then(|c| contact_duration(&c, crit, 4)).unwrap_or(0.0));
-            rows.push(Row { quantity: q, method: "contact_duration (closed form, complex log-gamma)".into(), family: "closed form", ns, err: rel(contact_duration(&c, crit, 4)?, truth.tau) });
+            let ns = ns_per_call(|| {
+                Contact::new(p, black_box(alpha), 1.0, 1.0)
+                    .and_then(|c| contact_duration(&c, crit, 4))
+                    .unwrap_or(0.0)
+            });
+            rows.push(Row {
+                quantity: q,
+                method: "contact_duration (closed form, complex log-gamma)".into(),
+                family: "closed form",
+                ns,
+                err: rel(contact_duration(&c, crit, 4)?, truth.tau),
+            });
             for &rtol in &[1e-4, 1e-8, 1e-12] {
                 let r = reference::collide(p, alpha, 1.0, 1.0, crit, rtol).ok_or("reference")?;
-                let ns = ns_per_call(|| reference::collide(p, black_box(alpha), 1.0, 1.0, crit, rtol).map_or(0.0, |r| r.tau));
-                rows.push(Row { quantity: q, method: format!("ODE reference rtol {rtol:.0e}"), family: "ODE reference", ns, err: rel(r.tau, truth.tau) });
+                let ns = ns_per_call(|| {
+                    reference::collide(p, black_box(alpha), 1.0, 1.0, crit, rtol)
+                        .map_or(0.0, |r| r.tau)
+                });
+                rows.push(Row {
+                    quantity: q,
+                    method: format!("ODE reference rtol {rtol:.0e}"),
+                    family: "ODE reference",
+                    ns,
+                    err: rel(r.tau, truth.tau),
+                });
             }
         }
     }
@@ -173,10 +296,25 @@ fn viscoelastic_rows(rows: &mut Vec<Row>) -> Res<()> {
     use demcontact::viscoelastic::reference::{e_reference, e_reference_tol};
     use demcontact::viscoelastic::series::e_series;
     let crit = EndCriterion::Force;
-    for (b, q) in [(0.1, "viscoelastic e(b = 0.1), force end"), (0.6, "viscoelastic e(b = 0.6), force end")] {
+    for (b, q) in [
+        (0.1, "viscoelastic e(b = 0.1), force end"),
+        (0.6, "viscoelastic e(b = 0.6), force end"),
+    ] {
         let truth = e_reference(b, crit)?;
-        rows.push(Row { quantity: q, method: "published series (Schwager & Pöschel)".into(), family: "series", ns: ns_per_call(|| e_series(black_box(b), crit).unwrap_or(0.0)), err: rel(e_series(b, crit)?, truth) });
-        rows.push(Row { quantity: q, method: "full-range Chebyshev tables".into(), family: "tables", ns: ns_per_call(|| e_full(black_box(b), crit).unwrap_or(0.0)), err: rel(e_full(b, crit)?, truth) });
+        rows.push(Row {
+            quantity: q,
+            method: "published series (Schwager & Pöschel)".into(),
+            family: "series",
+            ns: ns_per_call(|| e_series(black_box(b), crit).unwrap_or(0.0)),
+            err: rel(e_series(b, crit)?, truth),
+        });
+        rows.push(Row {
+            quantity: q,
+            method: "full-range Chebyshev tables".into(),
+            family: "tables",
+            ns: ns_per_call(|| e_full(black_box(b), crit).unwrap_or(0.0)),
+            err: rel(e_full(b, crit)?, truth),
+        });
         for &tol in &[1e-6, 1e-10, 1e-14] {
             rows.push(Row {
                 quantity: q,

@@ -1,14 +1,16 @@
 //! Section 2: the time-step trade of velocity-Verlet (LAMMPS/LIGGGHTS order) and symplectic Euler,
 //! the stability of a resting contact, and dc_dt_for_accuracy.
 
-use crate::plot::{figure, Kind, Panel, Res, Series};
-use crate::reference;
 use crate::Report;
+use crate::plot::{Kind, Panel, Res, Series, figure};
+use crate::reference;
+use demcontact::EndCriterion;
 use demcontact::force::powerlaw::{powerlaw, powerlaw_from_alpha};
 use demcontact::powerlaw::timestep::dt_static;
 use demcontact::powerlaw::{alpha_from_e, dt_crit_seed};
-use demcontact::timestep::{collide, dt_for_accuracy, resting_contact_stable, worst_restitution_error, Scheme};
-use demcontact::EndCriterion;
+use demcontact::timestep::{
+    Scheme, collide, dt_for_accuracy, resting_contact_stable, worst_restitution_error,
+};
 use plotters::prelude::SeriesLabelPosition;
 use std::fmt::Write;
 
@@ -32,7 +34,14 @@ fn scheme_name(s: Scheme) -> &'static str {
 }
 
 /// Worst relative errors (e, δ_max, τ) over N_PHASE start phases at step dt; v0 = ω0 = 1.
-fn worst_errors(p: f64, e: f64, crit: EndCriterion, scheme: Scheme, dt: f64, r: &reference::RefCollision) -> [f64; 3] {
+fn worst_errors(
+    p: f64,
+    e: f64,
+    crit: EndCriterion,
+    scheme: Scheme,
+    dt: f64,
+    r: &reference::RefCollision,
+) -> [f64; 3] {
     let pair = powerlaw(p, 1.0, e, crit).expect("pair");
     let mut w = [0.0f64; 3];
     for i in 0..N_PHASE {
@@ -51,7 +60,9 @@ fn worst_errors(p: f64, e: f64, crit: EndCriterion, scheme: Scheme, dt: f64, r: 
 }
 
 pub fn dt_grid() -> Vec<f64> {
-    (0..15).map(|i| 1e-3 * 10f64.powf(i as f64 * (2.5 / 14.0))).collect()
+    (0..15)
+        .map(|i| 1e-3 * 10f64.powf(i as f64 * (2.5 / 14.0)))
+        .collect()
 }
 
 pub fn trade(rep: &mut Report) -> Res<()> {
@@ -72,12 +83,21 @@ forces (their kernel), so the realised e is that of a clamping solver.\n"
     )?;
     // results[scheme][crit][p][e][dt] = [3]
     let mut table_c = String::new();
-    writeln!(table_c, "First-order error constants, velocity-Verlet: C = (worst relative error)/(dt/τ) at dt/τ = 0.01 (e | δ_max | τ):\n")?;
-    writeln!(table_c, "| criterion | p | e = 0.1 | e = 0.5 | e = 0.9 |\n|---|---|---|---|---|")?;
+    writeln!(
+        table_c,
+        "First-order error constants, velocity-Verlet: C = (worst relative error)/(dt/τ) at dt/τ = 0.01 (e | δ_max | τ):\n"
+    )?;
+    writeln!(
+        table_c,
+        "| criterion | p | e = 0.1 | e = 0.5 | e = 0.9 |\n|---|---|---|---|---|"
+    )?;
     for scheme in [Scheme::VelocityVerlet, Scheme::SymplecticEuler] {
         let mut panels: Vec<Vec<Panel>> = vec![Vec::new(), Vec::new(), Vec::new()];
         for crit in CRITS {
-            let mut rows: Vec<String> = PS.iter().map(|p| format!("| {} | {p} |", crit_name(crit))).collect();
+            let mut rows: Vec<String> = PS
+                .iter()
+                .map(|p| format!("| {} | {p} |", crit_name(crit)))
+                .collect();
             for &e in &ES {
                 let mut ps: Vec<Panel> = (0..3)
                     .map(|q| {
@@ -92,7 +112,8 @@ forces (their kernel), so the realised e is that of a clamping solver.\n"
                     .collect();
                 for (ip, &p) in PS.iter().enumerate() {
                     let alpha = alpha_from_e(e, p, crit)?;
-                    let r = reference::collide(p, alpha, 1.0, 1.0, crit, 1e-12).ok_or("reference")?;
+                    let r =
+                        reference::collide(p, alpha, 1.0, 1.0, crit, 1e-12).ok_or("reference")?;
                     let mut pts: [Vec<(f64, f64)>; 3] = Default::default();
                     for &f in &grid {
                         let w = worst_errors(p, e, crit, scheme, f * r.tau, &r);
@@ -102,16 +123,32 @@ forces (their kernel), so the realised e is that of a clamping solver.\n"
                     }
                     if scheme == Scheme::VelocityVerlet {
                         let w = worst_errors(p, e, crit, scheme, 0.01 * r.tau, &r);
-                        write!(rows[ip], " {:.2} \\| {:.2} \\| {:.2} |", w[0] / 0.01, w[1] / 0.01, w[2] / 0.01)?;
+                        write!(
+                            rows[ip],
+                            " {:.2} \\| {:.2} \\| {:.2} |",
+                            w[0] / 0.01,
+                            w[1] / 0.01,
+                            w[2] / 0.01
+                        )?;
                     }
                     for q in 0..3 {
-                        ps[q].add(Series::new(format!("p = {p}"), pts[q].clone(), Kind::LinePoints, ip));
+                        ps[q].add(Series::new(
+                            format!("p = {p}"),
+                            pts[q].clone(),
+                            Kind::LinePoints,
+                            ip,
+                        ));
                     }
                 }
                 for q in 0..3 {
                     let slope1: Vec<(f64, f64)> = vec![(1e-3, 1e-3), (0.3, 0.3)];
                     let mut pn = std::mem::replace(&mut ps[q], Panel::new("", "", ""));
-                    pn.add(Series::new("slope 1: error = dt/τ", slope1, Kind::Dashed, 7));
+                    pn.add(Series::new(
+                        "slope 1: error = dt/τ",
+                        slope1,
+                        Kind::Dashed,
+                        7,
+                    ));
                     panels[q].push(pn);
                 }
             }
@@ -149,8 +186,26 @@ forces (their kernel), so the realised e is that of a clamping solver.\n"
                 for &dt in &[0.003, 0.03, 0.3] {
                     for i in 0..8 {
                         let ph = (i as f64 + 0.5) / 8.0;
-                        let a = collide(&pair, 1.0, 1.0, 1.0, dt, ph, Scheme::VelocityVerlet, 1_000_000)?;
-                        let b = collide(&pair, 1.0, 1.0, 1.0, dt, ph, Scheme::SymplecticEuler, 1_000_000)?;
+                        let a = collide(
+                            &pair,
+                            1.0,
+                            1.0,
+                            1.0,
+                            dt,
+                            ph,
+                            Scheme::VelocityVerlet,
+                            1_000_000,
+                        )?;
+                        let b = collide(
+                            &pair,
+                            1.0,
+                            1.0,
+                            1.0,
+                            dt,
+                            ph,
+                            Scheme::SymplecticEuler,
+                            1_000_000,
+                        )?;
                         diff[0] = diff[0].max(((a.e - b.e) / a.e).abs());
                         diff[1] = diff[1].max(((a.delta_max - b.delta_max) / a.delta_max).abs());
                         diff[2] = diff[2].max(((a.duration - b.duration) / a.duration).abs());
@@ -178,25 +233,25 @@ figures equal the velocity-Verlet ones.\n",
 fn unstable_dt(p: f64, e: f64, scheme: Scheme) -> f64 {
     let pair = powerlaw(p, 1.0, e, EndCriterion::Force).expect("pair");
     let scale = 2.0 / p.sqrt();
-    let stable = |dt: f64| resting_contact_stable(&pair, 1.0, 1.0, 1.0, 1.0, 1.001, dt, scheme, 20_000);
+    let stable =
+        |dt: f64| resting_contact_stable(&pair, 1.0, 1.0, 1.0, 1.0, 1.001, dt, scheme, 20_000);
     let (mut lo, mut hi) = (0.05 * scale, 3.0 * scale);
     if !stable(lo) {
         return f64::NAN;
     }
     for _ in 0..40 {
         let mid = 0.5 * (lo + hi);
-        if stable(mid) {
-            lo = mid
-        } else {
-            hi = mid
-        }
+        if stable(mid) { lo = mid } else { hi = mid }
     }
     lo
 }
 
 pub fn stability(rep: &mut Report) -> Res<()> {
     let mut md = String::new();
-    writeln!(md, "### Resting contact under a constant load: where the integration becomes unstable\n")?;
+    writeln!(
+        md,
+        "### Resting contact under a constant load: where the integration becomes unstable\n"
+    )?;
     writeln!(
         md,
         "A body pressed by a constant load (g = 1, k = 1, m = 1, so δ_eq = 1 and ω_eq = ω0 √p δ_eq^((p−1)/2) = √p) starts \
@@ -210,49 +265,93 @@ dashpot at the half-step velocity, `powerlaw::timestep::dt_static` = (2/ω_eq)(�
     let es: Vec<f64> = (1..=10).map(|i| i as f64 / 10.0).collect();
     let mut panels = Vec::new();
     let mut theory_rows: Vec<String> = Vec::new();
-    writeln!(md, "| p | scheme | e = 0.1 | 0.3 | 0.5 | 0.7 | 0.9 | 1.0 | dc_dt_crit/(2/ω_eq) |\n|---|---|---|---|---|---|---|---|---|")?;
+    writeln!(
+        md,
+        "| p | scheme | e = 0.1 | 0.3 | 0.5 | 0.7 | 0.9 | 1.0 | dc_dt_crit/(2/ω_eq) |\n|---|---|---|---|---|---|---|---|---|"
+    )?;
     for scheme in [Scheme::VelocityVerlet, Scheme::SymplecticEuler] {
         let mut pn = Panel::new(
-            format!("{}: stability limit of a resting contact", scheme_name(scheme)),
+            format!(
+                "{}: stability limit of a resting contact",
+                scheme_name(scheme)
+            ),
             "target restitution e (dimensionless)",
             "dt / (2/ω_eq) (dimensionless)",
         )
         .legend(SeriesLabelPosition::UpperLeft)
         .yrange(0.0, 2.0);
         for (ip, &p) in PS.iter().enumerate() {
-            let pts: Vec<(f64, f64)> = es.iter().map(|&e| (e, unstable_dt(p, e, scheme) / (2.0 / p.sqrt()))).collect();
+            let pts: Vec<(f64, f64)> = es
+                .iter()
+                .map(|&e| (e, unstable_dt(p, e, scheme) / (2.0 / p.sqrt())))
+                .collect();
             let v0 = (2.0 / (p + 1.0)).sqrt();
             let crit_ratio = dt_crit_seed(p, v0, 1.0)? / (2.0 / p.sqrt());
             let mut row = format!("| {p} | {} |", scheme_name(scheme));
             for &(e, r) in &pts {
-                if [0.1, 0.3, 0.5, 0.7, 0.9, 1.0].iter().any(|&x| (x - e).abs() < 1e-9) {
+                if [0.1, 0.3, 0.5, 0.7, 0.9, 1.0]
+                    .iter()
+                    .any(|&x| (x - e).abs() < 1e-9)
+                {
                     write!(row, " {r:.3} |")?;
                 }
             }
             writeln!(md, "{row} {crit_ratio:.3} |")?;
-            pn.add(Series::new(format!("measured, p = {p}"), pts, Kind::Line, ip));
-            let name = |s: &str| if ip == 0 { s.to_string() } else { String::new() };
-            pn.add(Series::new(name("dc_dt_crit (dashed, colour = p)"), vec![(0.1, crit_ratio), (1.0, crit_ratio)], Kind::Dashed, ip));
+            pn.add(Series::new(
+                format!("measured, p = {p}"),
+                pts,
+                Kind::Line,
+                ip,
+            ));
+            let name = |s: &str| {
+                if ip == 0 {
+                    s.to_string()
+                } else {
+                    String::new()
+                }
+            };
+            pn.add(Series::new(
+                name("dc_dt_crit (dashed, colour = p)"),
+                vec![(0.1, crit_ratio), (1.0, crit_ratio)],
+                Kind::Dashed,
+                ip,
+            ));
             // The linear analysis of velocity-Verlet with half-step damping (powerlaw::timestep::dt_static).
             let lin: Vec<(f64, f64)> = es
                 .iter()
                 .map(|&e| {
                     let a = alpha_from_e(e, p, EndCriterion::Force).unwrap_or(f64::NAN);
-                    (e, dt_static(p, a, 1.0, 1.0).unwrap_or(f64::NAN) / (2.0 / p.sqrt()))
+                    (
+                        e,
+                        dt_static(p, a, 1.0, 1.0).unwrap_or(f64::NAN) / (2.0 / p.sqrt()),
+                    )
                 })
                 .collect();
             if scheme == Scheme::VelocityVerlet {
                 let mut row = format!("| {p} | linear theory (dt_static) |");
                 for &(e, r) in &lin {
-                    if [0.1, 0.3, 0.5, 0.7, 0.9, 1.0].iter().any(|&x| (x - e).abs() < 1e-9) {
+                    if [0.1, 0.3, 0.5, 0.7, 0.9, 1.0]
+                        .iter()
+                        .any(|&x| (x - e).abs() < 1e-9)
+                    {
                         write!(row, " {r:.3} |")?;
                     }
                 }
                 theory_rows.push(row + " |");
             }
-            pn.add(Series::new(name("linear theory dt_static (markers)"), lin, Kind::Points, ip));
+            pn.add(Series::new(
+                name("linear theory dt_static (markers)"),
+                lin,
+                Kind::Points,
+                ip,
+            ));
         }
-        pn.add(Series::new("linearised bound 2/ω_eq", vec![(0.1, 1.0), (1.0, 1.0)], Kind::Line, 7));
+        pn.add(Series::new(
+            "linearised bound 2/ω_eq",
+            vec![(0.1, 1.0), (1.0, 1.0)],
+            Kind::Line,
+            7,
+        ));
         panels.push(pn);
     }
     for r in theory_rows {
@@ -273,13 +372,19 @@ dashpot at the half-step velocity, `powerlaw::timestep::dt_static` = (2/ω_eq)(�
 
 pub fn accuracy(rep: &mut Report) -> Res<()> {
     let mut md = String::new();
-    writeln!(md, "### `dc_dt_for_accuracy`: the step for a tolerance on e\n")?;
+    writeln!(
+        md,
+        "### `dc_dt_for_accuracy`: the step for a tolerance on e\n"
+    )?;
     writeln!(
         md,
         "`dc_dt_for_accuracy(p, e, criterion, v0, omega0, tol, &dt)` (v0 = ω0 = 1 here). Check columns: the worst relative \
 error of e over 61 evenly spaced start phases (a different set from the function's 64, sharing only 0 and 1⁻) at the returned dt and at 2 dt, divided by tol; the time per call is this machine's wall clock.\n"
     )?;
-    writeln!(md, "| criterion | p | e | tol | dt/τ | E(dt)/tol | E(2dt)/tol | time per call |\n|---|---|---|---|---|---|---|---|")?;
+    writeln!(
+        md,
+        "| criterion | p | e | tol | dt/τ | E(dt)/tol | E(2dt)/tol | time per call |\n|---|---|---|---|---|---|---|---|"
+    )?;
     let tols = [1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 3e-4, 1e-4];
     let mut panels = Vec::new();
     for crit in CRITS {
@@ -314,7 +419,12 @@ error of e over 61 evenly spaced start phases (a different set from the function
                         )?;
                     }
                 }
-                pn.add(Series::new(format!("p = {p}, e = {e}"), pts, Kind::LinePoints, color));
+                pn.add(Series::new(
+                    format!("p = {p}, e = {e}"),
+                    pts,
+                    Kind::LinePoints,
+                    color,
+                ));
                 color += 1;
             }
         }

@@ -21,12 +21,21 @@ pub struct Report {
 
 impl Report {
     pub fn fig_path(&self, file: &str) -> String {
-        self.dir.join("figures").join(file).to_string_lossy().into_owned()
+        self.dir
+            .join("figures")
+            .join(file)
+            .to_string_lossy()
+            .into_owned()
     }
     /// Links a figure with its title and one-line caption (what to read from it).
     pub fn figure(&mut self, md: &mut String, file: &str, title: &str, caption: &str) -> Res<()> {
         self.n_fig += 1;
-        writeln!(md, "![{title}](figures/{file})\n\n*Figure {}: {title}.* {}\n", self.n_fig, upper_first(caption))?;
+        writeln!(
+            md,
+            "![{title}](figures/{file})\n\n*Figure {}: {title}.* {}\n",
+            self.n_fig,
+            upper_first(caption)
+        )?;
         Ok(())
     }
     pub fn push(&mut self, s: &str) {
@@ -54,7 +63,11 @@ fn run() -> Res<()> {
     plot::load_font()?;
     let dir = PathBuf::from(std::env::var("DC_REPORT_DIR").unwrap_or_else(|_| "docs".into()));
     std::fs::create_dir_all(dir.join("figures"))?;
-    let mut rep = Report { dir: dir.clone(), body: String::new(), n_fig: 0 };
+    let mut rep = Report {
+        dir: dir.clone(),
+        body: String::new(),
+        n_fig: 0,
+    };
     let only = std::env::var("DC_REPORT_ONLY").unwrap_or_default();
     let want = |s: &str| only.is_empty() || only.split(',').any(|o| o == s);
     if want("costs") {
@@ -89,6 +102,11 @@ absolute values. The findings on the time step are discussed in [timestep.md](ti
     )?;
     md.push_str(&rep.body);
     std::fs::write(dir.join("report.md"), md)?;
-    eprintln!("wrote {} ({} figures) in {:.1} s", dir.join("report.md").display(), rep.n_fig, start.elapsed().as_secs_f64());
+    eprintln!(
+        "wrote {} ({} figures) in {:.1} s",
+        dir.join("report.md").display(),
+        rep.n_fig,
+        start.elapsed().as_secs_f64()
+    );
     Ok(())
 }

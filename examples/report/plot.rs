@@ -34,7 +34,12 @@ pub struct Series {
 
 impl Series {
     pub fn new(name: impl Into<String>, pts: Vec<(f64, f64)>, kind: Kind, color: usize) -> Self {
-        Series { name: name.into(), pts, kind, color }
+        Series {
+            name: name.into(),
+            pts,
+            kind,
+            color,
+        }
     }
 }
 
@@ -51,7 +56,11 @@ pub struct Panel {
 }
 
 impl Panel {
-    pub fn new(title: impl Into<String>, xlabel: impl Into<String>, ylabel: impl Into<String>) -> Self {
+    pub fn new(
+        title: impl Into<String>,
+        xlabel: impl Into<String>,
+        ylabel: impl Into<String>,
+    ) -> Self {
         Panel {
             title: title.into(),
             xlabel: xlabel.into(),
@@ -119,7 +128,11 @@ pub fn load_font() -> Res<()> {
 
 fn tr(v: f64, log: bool) -> Option<f64> {
     if log {
-        if v > 0.0 && v.is_finite() { Some(v.log10()) } else { None }
+        if v > 0.0 && v.is_finite() {
+            Some(v.log10())
+        } else {
+            None
+        }
     } else if v.is_finite() {
         Some(v)
     } else {
@@ -156,7 +169,8 @@ fn fmt_tick(v: f64, log: bool) -> String {
 /// Draws `panels` in a grid of `cols` columns into `path` (width × height per panel).
 pub fn figure(path: &str, panels: &[Panel], cols: usize, size: (u32, u32)) -> Res<()> {
     let rows = panels.len().div_ceil(cols);
-    let root = BitMapBackend::new(path, (size.0 * cols as u32, size.1 * rows as u32)).into_drawing_area();
+    let root =
+        BitMapBackend::new(path, (size.0 * cols as u32, size.1 * rows as u32)).into_drawing_area();
     root.fill(&WHITE)?;
     let areas = root.split_evenly((rows, cols));
     for (panel, area) in panels.iter().zip(areas.iter()) {
@@ -180,7 +194,13 @@ fn draw_panel(p: &Panel, area: &DrawingArea<BitMapBackend, plotters::coord::Shif
     let span = |v: &[f64]| {
         let lo = v.iter().cloned().fold(f64::INFINITY, f64::min);
         let hi = v.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
-        if lo.is_finite() && hi > lo { (lo, hi) } else if lo.is_finite() { (lo - 0.5, lo + 0.5) } else { (0.0, 1.0) }
+        if lo.is_finite() && hi > lo {
+            (lo, hi)
+        } else if lo.is_finite() {
+            (lo - 0.5, lo + 0.5)
+        } else {
+            (0.0, 1.0)
+        }
     };
     let (mut x0, mut x1) = span(&xs);
     let (mut y0, mut y1) = match p.yrange {
@@ -213,8 +233,16 @@ fn draw_panel(p: &Panel, area: &DrawingArea<BitMapBackend, plotters::coord::Shif
     let (lx, ly) = (p.logx, p.logy);
     let fx = move |v: &f64| fmt_tick(*v, lx);
     let fy = move |v: &f64| fmt_tick(*v, ly);
-    let nx = if lx { ((x1 - x0).round() as usize + 1).clamp(2, 12) } else { 8 };
-    let ny = if ly { ((y1 - y0).round() as usize + 1).clamp(2, 12) } else { 8 };
+    let nx = if lx {
+        ((x1 - x0).round() as usize + 1).clamp(2, 12)
+    } else {
+        8
+    };
+    let ny = if ly {
+        ((y1 - y0).round() as usize + 1).clamp(2, 12)
+    } else {
+        8
+    };
     chart
         .configure_mesh()
         .x_desc(&p.xlabel)
@@ -235,7 +263,9 @@ fn draw_panel(p: &Panel, area: &DrawingArea<BitMapBackend, plotters::coord::Shif
             .filter_map(|&(x, y)| Some((tr(x, lx)?, tr(y, ly)?)))
             .filter(|&(_, y)| p.yrange.is_none() || (y >= y0 && y <= y1))
             .collect();
-        let legend_line = move |(x, y): (i32, i32)| PathElement::new(vec![(x, y), (x + 22, y)], c.stroke_width(2));
+        let legend_line = move |(x, y): (i32, i32)| {
+            PathElement::new(vec![(x, y), (x + 22, y)], c.stroke_width(2))
+        };
         match s.kind {
             Kind::Line | Kind::LinePoints => {
                 let anno = chart.draw_series(LineSeries::new(pts.clone(), c.stroke_width(2)))?;
@@ -252,7 +282,9 @@ fn draw_panel(p: &Panel, area: &DrawingArea<BitMapBackend, plotters::coord::Shif
                 for w in pts.windows(2) {
                     let (a, b) = (w[0], w[1]);
                     // Dash length ~1/60 of the panel, in plotted (possibly log) units.
-                    let len = (((b.0 - a.0) / (x1 - x0)).powi(2) + ((b.1 - a.1) / (y1 - y0)).powi(2)).sqrt();
+                    let len = (((b.0 - a.0) / (x1 - x0)).powi(2)
+                        + ((b.1 - a.1) / (y1 - y0)).powi(2))
+                    .sqrt();
                     let n = ((len * 60.0).ceil() as usize).max(2) * 2;
                     for k in 0..n {
                         if k % 2 == 0 {
@@ -265,7 +297,10 @@ fn draw_panel(p: &Panel, area: &DrawingArea<BitMapBackend, plotters::coord::Shif
                         }
                     }
                 }
-                let anno = chart.draw_series(segs.into_iter().map(|v| PathElement::new(v, c.stroke_width(2))))?;
+                let anno = chart.draw_series(
+                    segs.into_iter()
+                        .map(|v| PathElement::new(v, c.stroke_width(2))),
+                )?;
                 if !s.name.is_empty() {
                     anno.label(s.name.as_str()).legend(move |(x, y)| {
                         PathElement::new(vec![(x, y), (x + 8, y)], c.stroke_width(2))
@@ -275,7 +310,8 @@ fn draw_panel(p: &Panel, area: &DrawingArea<BitMapBackend, plotters::coord::Shif
             Kind::Points => {
                 let anno = chart.draw_series(pts.iter().map(|&q| Circle::new(q, 4, c.filled())))?;
                 if !s.name.is_empty() {
-                    anno.label(s.name.as_str()).legend(move |(x, y)| Circle::new((x + 11, y), 4, c.filled()));
+                    anno.label(s.name.as_str())
+                        .legend(move |(x, y)| Circle::new((x + 11, y), 4, c.filled()));
                 }
             }
         }

@@ -5,4 +5,6 @@
 #[path = "../../tests/common/mod.rs"]
 mod common;
 
-pub use common::{try_collide as collide, try_collide_observed as collide_observed, Collision as RefCollision};
+pub use common::{
+    Collision as RefCollision, try_collide as collide, try_collide_observed as collide_observed,
+};

@@ -27,9 +27,18 @@ use crate::powerlaw;
 /// # Safety
 /// `alpha_out` must be NULL or point to writable memory for one double.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_alpha_from_e(e: f64, p: f64, criterion: i32, alpha_out: *mut f64) -> i32 {
+pub unsafe extern "C" fn dc_alpha_from_e(
+    e: f64,
+    p: f64,
+    criterion: i32,
+    alpha_out: *mut f64,
+) -> i32 {
     // SAFETY: forwarded caller contract on alpha_out.
-    unsafe { write_result(alpha_out, || powerlaw::alpha_from_e(e, p, parse_criterion(criterion)?)) }
+    unsafe {
+        write_result(alpha_out, || {
+            powerlaw::alpha_from_e(e, p, parse_criterion(criterion)?)
+        })
+    }
 }
 
 /// Restitution e realised by a power-law Tsuji contact with damping coefficient `alpha`.
@@ -50,7 +59,16 @@ pub unsafe extern "C" fn dc_alpha_from_e(e: f64, p: f64, criterion: i32, alpha_o
 /// # Safety
 /// `e_out` must be NULL or point to writable memory for one double.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_e_from_alpha(alpha: f64, p: f64, criterion: i32, e_out: *mut f64) -> i32 {
+pub unsafe extern "C" fn dc_e_from_alpha(
+    alpha: f64,
+    p: f64,
+    criterion: i32,
+    e_out: *mut f64,
+) -> i32 {
     // SAFETY: forwarded caller contract on e_out.
-    unsafe { write_result(e_out, || powerlaw::e_from_alpha(alpha, p, parse_criterion(criterion)?)) }
+    unsafe {
+        write_result(e_out, || {
+            powerlaw::e_from_alpha(alpha, p, parse_criterion(criterion)?)
+        })
+    }
 }

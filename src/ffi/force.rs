@@ -3,9 +3,11 @@
 use super::status::*;
 use super::{parse_criterion, status_of, write_result};
 use crate::force::batch::normal_force_batch;
-use crate::force::geometry3d::{normal_force_3d, Sphere};
-use crate::force::pair::{needs, normal_force_raw, unclamped, MODEL_HERTZ, MODEL_POWERLAW, MODEL_VISCOELASTIC};
-use crate::force::{hertz, powerlaw, viscoelastic, Consts, PairModel};
+use crate::force::geometry3d::{Sphere, normal_force_3d};
+use crate::force::pair::{
+    MODEL_HERTZ, MODEL_POWERLAW, MODEL_VISCOELASTIC, needs, normal_force_raw, unclamped,
+};
+use crate::force::{Consts, PairModel, hertz, powerlaw, viscoelastic};
 use crate::{EndCriterion, Error};
 
 /// dc_pair.model of a power-law Tsuji pair with fixed stiffness (including the linear
@@ -18,7 +20,9 @@ pub const DC_MODEL_VISCOELASTIC: i32 = 3;
 
 // The C constants are literals (cbindgen cannot resolve paths); they must equal the core's.
 const _: () = assert!(
-    DC_MODEL_POWERLAW == MODEL_POWERLAW && DC_MODEL_HERTZ == MODEL_HERTZ && DC_MODEL_VISCOELASTIC == MODEL_VISCOELASTIC
+    DC_MODEL_POWERLAW == MODEL_POWERLAW
+        && DC_MODEL_HERTZ == MODEL_HERTZ
+        && DC_MODEL_VISCOELASTIC == MODEL_VISCOELASTIC
 );
 
 /// A calibrated contact model for one material pair (type pair): plain data, owned by the
@@ -92,7 +96,11 @@ impl From<PairModel> for dc_pair {
 impl dc_pair {
     #[inline(always)]
     fn consts(&self) -> Consts {
-        Consts { k: self.k, c: self.c, h: self.h }
+        Consts {
+            k: self.k,
+            c: self.c,
+            h: self.h,
+        }
     }
 }
 
@@ -113,9 +121,19 @@ impl dc_pair {
 /// # Safety
 /// `out` must be NULL or point to writable memory for one dc_pair.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_pair_powerlaw(p: f64, k: f64, e: f64, criterion: i32, out: *mut dc_pair) -> i32 {
+pub unsafe extern "C" fn dc_pair_powerlaw(
+    p: f64,
+    k: f64,
+    e: f64,
+    criterion: i32,
+    out: *mut dc_pair,
+) -> i32 {
     // SAFETY: forwarded caller contract on out.
-    unsafe { write_result(out, || Ok(powerlaw::powerlaw(p, k, e, parse_criterion(criterion)?)?.into())) }
+    unsafe {
+        write_result(out, || {
+            Ok(powerlaw::powerlaw(p, k, e, parse_criterion(criterion)?)?.into())
+        })
+    }
 }
 
 /// Power-law Tsuji pair from its damping coefficient alpha >= 0 directly (for hosts that already
@@ -127,10 +145,18 @@ pub unsafe extern "C" fn dc_pair_powerlaw(p: f64, k: f64, e: f64, criterion: i32
 /// # Safety
 /// `out` must be NULL or point to writable memory for one dc_pair.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_pair_powerlaw_alpha(p: f64, k: f64, alpha: f64, criterion: i32, out: *mut dc_pair) -> i32 {
+pub unsafe extern "C" fn dc_pair_powerlaw_alpha(
+    p: f64,
+    k: f64,
+    alpha: f64,
+    criterion: i32,
+    out: *mut dc_pair,
+) -> i32 {
     // SAFETY: forwarded caller contract on out.
     unsafe {
-        write_result(out, || Ok(powerlaw::powerlaw_from_alpha(p, k, alpha, parse_criterion(criterion)?)?.into()))
+        write_result(out, || {
+            Ok(powerlaw::powerlaw_from_alpha(p, k, alpha, parse_criterion(criterion)?)?.into())
+        })
     }
 }
 
@@ -142,7 +168,11 @@ pub unsafe extern "C" fn dc_pair_powerlaw_alpha(p: f64, k: f64, alpha: f64, crit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn dc_pair_linear(k: f64, e: f64, criterion: i32, out: *mut dc_pair) -> i32 {
     // SAFETY: forwarded caller contract on out.
-    unsafe { write_result(out, || Ok(powerlaw::linear(k, e, parse_criterion(criterion)?)?.into())) }
+    unsafe {
+        write_result(out, || {
+            Ok(powerlaw::linear(k, e, parse_criterion(criterion)?)?.into())
+        })
+    }
 }
 
 /// Hertz pair of two materials: F = k d^(3/2) + alpha sqrt(m_eff k) d^(1/4) vn with
@@ -172,7 +202,11 @@ pub unsafe extern "C" fn dc_pair_hertz(
     out: *mut dc_pair,
 ) -> i32 {
     // SAFETY: forwarded caller contract on out.
-    unsafe { write_result(out, || Ok(hertz::hertz(E1, nu1, E2, nu2, e, parse_criterion(criterion)?)?.into())) }
+    unsafe {
+        write_result(out, || {
+            Ok(hertz::hertz(E1, nu1, E2, nu2, e, parse_criterion(criterion)?)?.into())
+        })
+    }
 }
 
 /// Viscoelastic Hertz pair (Brilliantov et al.): F = rho d^(3/2) + (3/2) A rho sqrt(d) vn with
@@ -203,7 +237,10 @@ pub unsafe extern "C" fn dc_pair_viscoelastic(
     // SAFETY: forwarded caller contract on out.
     unsafe {
         write_result(out, || {
-            Ok(viscoelastic::viscoelastic(E1, nu1, E2, nu2, A, parse_criterion(criterion)?)?.into())
+            Ok(
+                viscoelastic::viscoelastic(E1, nu1, E2, nu2, A, parse_criterion(criterion)?)?
+                    .into(),
+            )
         })
     }
 }
@@ -229,7 +266,13 @@ pub unsafe extern "C" fn dc_pair_viscoelastic(
 /// # Safety
 /// `pair` must be NULL or point to a readable dc_pair.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_normal_force(pair: *const dc_pair, overlap: f64, vn: f64, r_eff: f64, m_eff: f64) -> f64 {
+pub unsafe extern "C" fn dc_normal_force(
+    pair: *const dc_pair,
+    overlap: f64,
+    vn: f64,
+    r_eff: f64,
+    m_eff: f64,
+) -> f64 {
     // SAFETY: non-null checked; readability is the caller's contract. Every bit pattern of
     // dc_pair is a valid value (integers and doubles only).
     match unsafe { pair.as_ref() } {
@@ -242,7 +285,11 @@ pub unsafe extern "C" fn dc_normal_force(pair: *const dc_pair, overlap: f64, vn:
 fn checked_force(p: &dc_pair, overlap: f64, vn: f64, r_eff: f64, m_eff: f64) -> Result<f64, Error> {
     let (uses_vn, uses_r, uses_m) = needs(p.kernel).ok_or(Error::PairInvalid)?;
     let finite = |used: bool, x: f64| !used || x.is_finite();
-    if !(overlap.is_finite() && finite(uses_vn, vn) && finite(uses_r, r_eff) && finite(uses_m, m_eff)) {
+    if !(overlap.is_finite()
+        && finite(uses_vn, vn)
+        && finite(uses_r, r_eff)
+        && finite(uses_m, m_eff))
+    {
         return Err(Error::NotFinite);
     }
     if (uses_r && !(r_eff > 0.0)) || (uses_m && !(m_eff > 0.0)) {
@@ -253,7 +300,14 @@ fn checked_force(p: &dc_pair, overlap: f64, vn: f64, r_eff: f64, m_eff: f64) -> 
     if !raw.is_finite() {
         return Err(Error::ResultRange);
     }
-    Ok(normal_force_raw(p.kernel, p.consts(), overlap, vn, r_eff, m_eff))
+    Ok(normal_force_raw(
+        p.kernel,
+        p.consts(),
+        overlap,
+        vn,
+        r_eff,
+        m_eff,
+    ))
 }
 
 /// dc_normal_force with every check: the force is written to `force_out` only on success.
@@ -424,14 +478,28 @@ pub unsafe extern "C" fn dc_normal_force_3d(
     // SAFETY: all pointers non-null (checked); readability is the caller's contract.
     let (p, s1, s2) = unsafe {
         let p = pair.read_unaligned();
-        let s1 = Sphere { x: read3(x1), v: read3(v1), r: R1, m: m1 };
-        let s2 = Sphere { x: read3(x2), v: read3(v2), r: R2, m: m2 };
+        let s1 = Sphere {
+            x: read3(x1),
+            v: read3(v1),
+            r: R1,
+            m: m1,
+        };
+        let s2 = Sphere {
+            x: read3(x2),
+            v: read3(v2),
+            r: R2,
+            m: m2,
+        };
         (p, s1, s2)
     };
     let model = PairModel {
         model: p.model,
         kernel: p.kernel,
-        criterion: if p.clamp != 0 { EndCriterion::Force } else { EndCriterion::Overlap },
+        criterion: if p.clamp != 0 {
+            EndCriterion::Force
+        } else {
+            EndCriterion::Overlap
+        },
         p: p.p,
         stiffness: p.stiffness,
         alpha: p.alpha,
@@ -440,5 +508,9 @@ pub unsafe extern "C" fn dc_normal_force_3d(
         consts: p.consts(),
     };
     // SAFETY: forwarded caller contract on force_out (null checked inside).
-    unsafe { write_result(force_out.cast::<[f64; 3]>(), || normal_force_3d(&model, &s1, &s2)) }
+    unsafe {
+        write_result(force_out.cast::<[f64; 3]>(), || {
+            normal_force_3d(&model, &s1, &s2)
+        })
+    }
 }

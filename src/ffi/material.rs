@@ -44,7 +44,13 @@ pub unsafe extern "C" fn dc_hertz_stiffness(
 /// `E_star_out` must be NULL or point to writable memory for one double.
 #[unsafe(no_mangle)]
 #[allow(non_snake_case)]
-pub unsafe extern "C" fn dc_effective_modulus(E1: f64, nu1: f64, E2: f64, nu2: f64, E_star_out: *mut f64) -> i32 {
+pub unsafe extern "C" fn dc_effective_modulus(
+    E1: f64,
+    nu1: f64,
+    E2: f64,
+    nu2: f64,
+    E_star_out: *mut f64,
+) -> i32 {
     // SAFETY: forwarded caller contract on E_star_out.
     unsafe { write_result(E_star_out, || material::effective_modulus(E1, nu1, E2, nu2)) }
 }

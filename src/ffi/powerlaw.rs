@@ -8,7 +8,7 @@
 
 use super::status::DC_OK;
 use super::{parse_criterion, status_of, write_result};
-use crate::powerlaw::trajectory::{sample_trajectory, TrajectoryOut};
+use crate::powerlaw::trajectory::{TrajectoryOut, sample_trajectory};
 use crate::powerlaw::{self, Contact};
 use crate::{EndCriterion, Error};
 
@@ -58,9 +58,19 @@ pub struct dc_energy {
 /// # Safety
 /// `delta_max_out` must be NULL or point to writable memory for one double.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_max_overlap(p: f64, alpha: f64, v0: f64, omega0: f64, delta_max_out: *mut f64) -> i32 {
+pub unsafe extern "C" fn dc_max_overlap(
+    p: f64,
+    alpha: f64,
+    v0: f64,
+    omega0: f64,
+    delta_max_out: *mut f64,
+) -> i32 {
     // SAFETY: forwarded caller contract on delta_max_out.
-    unsafe { write_result(delta_max_out, || powerlaw::max_overlap(&Contact::new(p, alpha, v0, omega0)?)) }
+    unsafe {
+        write_result(delta_max_out, || {
+            powerlaw::max_overlap(&Contact::new(p, alpha, v0, omega0)?)
+        })
+    }
 }
 
 /// Time from impact to maximum overlap [s], at the highest accuracy level (closed form for p = 1
@@ -71,11 +81,20 @@ pub unsafe extern "C" fn dc_max_overlap(p: f64, alpha: f64, v0: f64, omega0: f64
 /// # Safety
 /// `t_out` must be NULL or point to writable memory for one double.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_time_of_max_overlap(p: f64, alpha: f64, v0: f64, omega0: f64, t_out: *mut f64) -> i32 {
+pub unsafe extern "C" fn dc_time_of_max_overlap(
+    p: f64,
+    alpha: f64,
+    v0: f64,
+    omega0: f64,
+    t_out: *mut f64,
+) -> i32 {
     // SAFETY: forwarded caller contract on t_out.
     unsafe {
         write_result(t_out, || {
-            powerlaw::time_of_max_overlap(&Contact::new(p, alpha, v0, omega0)?, DC_LEVEL_MAX.unsigned_abs())
+            powerlaw::time_of_max_overlap(
+                &Contact::new(p, alpha, v0, omega0)?,
+                DC_LEVEL_MAX.unsigned_abs(),
+            )
         })
     }
 }
@@ -181,7 +200,10 @@ pub struct dc_duration_plan {
 
 fn plan_nodes(level: i32) -> Result<usize, Error> {
     let lv = self::level(level)?;
-    powerlaw::duration::PLAN_NODES.get(lv as usize).copied().ok_or(Error::Level)
+    powerlaw::duration::PLAN_NODES
+        .get(lv as usize)
+        .copied()
+        .ok_or(Error::Level)
 }
 
 fn build_plan(p: f64, level: i32) -> Result<dc_duration_plan, Error> {
@@ -211,14 +233,23 @@ fn build_plan(p: f64, level: i32) -> Result<dc_duration_plan, Error> {
 
 /// The planned duration behind the C boundary: checks the plan, then the inputs exactly as
 /// dc_contact_duration does (same statuses in the same order).
-fn duration_planned(plan: &dc_duration_plan, alpha: f64, v0: f64, omega0: f64, criterion: i32) -> Result<f64, Error> {
+fn duration_planned(
+    plan: &dc_duration_plan,
+    alpha: f64,
+    v0: f64,
+    omega0: f64,
+    criterion: i32,
+) -> Result<f64, Error> {
     let n = plan_nodes(plan.level).map_err(|_| Error::Plan)?;
     let p = plan.p;
     if plan.tag != PLAN_TAG
         || plan.n != i32::try_from(n).map_err(|_| Error::Plan)?
         || !(p.is_finite() && p >= 1.0)
         || plan.q != powerlaw::transform_q(p)
-        || !(plan.amp.is_finite() && plan.amp > 0.0 && plan.lgamma_q.is_finite() && plan.ln_aq.is_finite())
+        || !(plan.amp.is_finite()
+            && plan.amp > 0.0
+            && plan.lgamma_q.is_finite()
+            && plan.ln_aq.is_finite())
     {
         return Err(Error::Plan);
     }
@@ -232,7 +263,10 @@ fn duration_planned(plan: &dc_duration_plan, alpha: f64, v0: f64, omega0: f64, c
         amp: plan.amp,
         lgamma_q: plan.lgamma_q,
         ln_aq: plan.ln_aq,
-        singular: powerlaw::duration::Rule { nodes: x, weights: w },
+        singular: powerlaw::duration::Rule {
+            nodes: x,
+            weights: w,
+        },
     };
     powerlaw::duration::contact_duration_planned(&pl, &c, crit)
 }
@@ -251,7 +285,11 @@ fn duration_planned(plan: &dc_duration_plan, alpha: f64, v0: f64, omega0: f64, c
 /// # Safety
 /// `plan_out` must be NULL or point to writable memory for one dc_duration_plan.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_duration_plan_init(p: f64, level: i32, plan_out: *mut dc_duration_plan) -> i32 {
+pub unsafe extern "C" fn dc_duration_plan_init(
+    p: f64,
+    level: i32,
+    plan_out: *mut dc_duration_plan,
+) -> i32 {
     // SAFETY: forwarded caller contract on plan_out.
     unsafe { write_result(plan_out, || build_plan(p, level)) }
 }
@@ -286,7 +324,11 @@ pub unsafe extern "C" fn dc_contact_duration_planned(
     // SAFETY: non-null and aligned checked above; readability is the caller's contract.
     let plan = unsafe { &*plan };
     // SAFETY: forwarded caller contract on tau_out.
-    unsafe { write_result(tau_out, || duration_planned(plan, alpha, v0, omega0, criterion)) }
+    unsafe {
+        write_result(tau_out, || {
+            duration_planned(plan, alpha, v0, omega0, criterion)
+        })
+    }
 }
 
 /// Energy partition of a collision as fractions of m v0^2/2 (independent of v0, m and k):
@@ -301,13 +343,24 @@ pub unsafe extern "C" fn dc_contact_duration_planned(
 /// # Safety
 /// `energy_out` must be NULL or point to writable memory for one dc_energy.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_energy_partition(p: f64, alpha: f64, criterion: i32, energy_out: *mut dc_energy) -> i32 {
+pub unsafe extern "C" fn dc_energy_partition(
+    p: f64,
+    alpha: f64,
+    criterion: i32,
+    energy_out: *mut dc_energy,
+) -> i32 {
     // SAFETY: forwarded caller contract on energy_out.
     unsafe {
         write_result(energy_out, || {
             let c = Contact::new(p, alpha, 1.0, 1.0)?;
             let e = powerlaw::energy_partition(&c, parse_criterion(criterion)?);
-            Ok(dc_energy { e: e.e, loading: e.loading, unloading: e.unloading, returned: e.returned, clamped: e.clamped })
+            Ok(dc_energy {
+                e: e.e,
+                loading: e.loading,
+                unloading: e.unloading,
+                returned: e.returned,
+                clamped: e.clamped,
+            })
         })
     }
 }

@@ -58,6 +58,8 @@ pub unsafe extern "C" fn dc_dt_for_accuracy(
 ) -> i32 {
     // SAFETY: forwarded caller contract on dt_out.
     unsafe {
-        write_result(dt_out, || timestep::dt_for_accuracy(p, e, parse_criterion(criterion)?, v0, omega0, tol))
+        write_result(dt_out, || {
+            timestep::dt_for_accuracy(p, e, parse_criterion(criterion)?, v0, omega0, tol)
+        })
     }
 }

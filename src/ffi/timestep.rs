@@ -63,7 +63,17 @@ pub unsafe extern "C" fn dc_dt_linearised(p: f64, v0: f64, omega0: f64, dt_out: 
 /// # Safety
 /// `dt_out` must be NULL or point to writable memory for one double.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_dt_static(p: f64, alpha: f64, omega0: f64, accel: f64, dt_out: *mut f64) -> i32 {
+pub unsafe extern "C" fn dc_dt_static(
+    p: f64,
+    alpha: f64,
+    omega0: f64,
+    accel: f64,
+    dt_out: *mut f64,
+) -> i32 {
     // SAFETY: forwarded caller contract on dt_out.
-    unsafe { write_result(dt_out, || powerlaw::timestep::dt_static(p, alpha, omega0, accel)) }
+    unsafe {
+        write_result(dt_out, || {
+            powerlaw::timestep::dt_static(p, alpha, omega0, accel)
+        })
+    }
 }

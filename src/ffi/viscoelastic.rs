@@ -74,9 +74,17 @@ pub unsafe extern "C" fn dc_viscoelastic_e_series(b: f64, criterion: i32, e_out:
 /// # Safety
 /// `e_out` must be NULL or point to writable memory for one double.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_viscoelastic_e_reference(b: f64, criterion: i32, e_out: *mut f64) -> i32 {
+pub unsafe extern "C" fn dc_viscoelastic_e_reference(
+    b: f64,
+    criterion: i32,
+    e_out: *mut f64,
+) -> i32 {
     // SAFETY: forwarded caller contract on e_out.
-    unsafe { write_result(e_out, || reference::e_reference(b, parse_criterion(criterion)?)) }
+    unsafe {
+        write_result(e_out, || {
+            reference::e_reference(b, parse_criterion(criterion)?)
+        })
+    }
 }
 
 /// The parameter b = gamma k^(-3/5) v^(1/5) of a viscoelastic collision.
@@ -112,9 +120,19 @@ pub unsafe extern "C" fn dc_viscoelastic_b(k: f64, gamma: f64, v: f64, b_out: *m
 /// # Safety
 /// `e_out` must be NULL or point to writable memory for one double.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_viscoelastic_e_of_speed(k: f64, gamma: f64, v: f64, criterion: i32, e_out: *mut f64) -> i32 {
+pub unsafe extern "C" fn dc_viscoelastic_e_of_speed(
+    k: f64,
+    gamma: f64,
+    v: f64,
+    criterion: i32,
+    e_out: *mut f64,
+) -> i32 {
     // SAFETY: forwarded caller contract on e_out.
-    unsafe { write_result(e_out, || calibration::e_of_speed(k, gamma, v, parse_criterion(criterion)?)) }
+    unsafe {
+        write_result(e_out, || {
+            calibration::e_of_speed(k, gamma, v, parse_criterion(criterion)?)
+        })
+    }
 }
 
 /// Stiffness and damping per unit mass from the material law F = rho xi^(3/2) + (3/2) A rho
@@ -130,7 +148,13 @@ pub unsafe extern "C" fn dc_viscoelastic_e_of_speed(k: f64, gamma: f64, v: f64, 
 /// # Safety
 /// `k_out` and `gamma_out` must each be NULL or point to writable memory for one double.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_viscoelastic_k_gamma(rho: f64, a: f64, m_eff: f64, k_out: *mut f64, gamma_out: *mut f64) -> i32 {
+pub unsafe extern "C" fn dc_viscoelastic_k_gamma(
+    rho: f64,
+    a: f64,
+    m_eff: f64,
+    k_out: *mut f64,
+    gamma_out: *mut f64,
+) -> i32 {
     if k_out.is_null() || gamma_out.is_null() {
         return DC_ERR_NULL_POINTER;
     }
@@ -162,7 +186,11 @@ pub unsafe extern "C" fn dc_viscoelastic_k_gamma(rho: f64, a: f64, m_eff: f64, k
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn dc_viscoelastic_b_from_e(e: f64, criterion: i32, b_out: *mut f64) -> i32 {
     // SAFETY: forwarded caller contract on b_out.
-    unsafe { write_result(b_out, || calibration::b_from_e(e, parse_criterion(criterion)?)) }
+    unsafe {
+        write_result(b_out, || {
+            calibration::b_from_e(e, parse_criterion(criterion)?)
+        })
+    }
 }
 
 /// Calibration: beta = gamma k^(-3/5) such that a collision at speed v_ref rebounds with e.
@@ -177,9 +205,18 @@ pub unsafe extern "C" fn dc_viscoelastic_b_from_e(e: f64, criterion: i32, b_out:
 /// # Safety
 /// `beta_out` must be NULL or point to writable memory for one double.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_viscoelastic_beta_from_e(e: f64, v_ref: f64, criterion: i32, beta_out: *mut f64) -> i32 {
+pub unsafe extern "C" fn dc_viscoelastic_beta_from_e(
+    e: f64,
+    v_ref: f64,
+    criterion: i32,
+    beta_out: *mut f64,
+) -> i32 {
     // SAFETY: forwarded caller contract on beta_out.
-    unsafe { write_result(beta_out, || calibration::beta_from_e(e, v_ref, parse_criterion(criterion)?)) }
+    unsafe {
+        write_result(beta_out, || {
+            calibration::beta_from_e(e, v_ref, parse_criterion(criterion)?)
+        })
+    }
 }
 
 /// Calibration for a given material: the dissipative constant A such that a collision at v_ref
@@ -194,9 +231,20 @@ pub unsafe extern "C" fn dc_viscoelastic_beta_from_e(e: f64, v_ref: f64, criteri
 /// # Safety
 /// `a_out` must be NULL or point to writable memory for one double.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_viscoelastic_a_from_e(e: f64, v_ref: f64, rho: f64, m_eff: f64, criterion: i32, a_out: *mut f64) -> i32 {
+pub unsafe extern "C" fn dc_viscoelastic_a_from_e(
+    e: f64,
+    v_ref: f64,
+    rho: f64,
+    m_eff: f64,
+    criterion: i32,
+    a_out: *mut f64,
+) -> i32 {
     // SAFETY: forwarded caller contract on a_out.
-    unsafe { write_result(a_out, || calibration::a_from_e(e, v_ref, rho, m_eff, parse_criterion(criterion)?)) }
+    unsafe {
+        write_result(a_out, || {
+            calibration::a_from_e(e, v_ref, rho, m_eff, parse_criterion(criterion)?)
+        })
+    }
 }
 
 /// The impact speed at which the restitution equals e, for a material with beta > 0:
@@ -212,7 +260,16 @@ pub unsafe extern "C" fn dc_viscoelastic_a_from_e(e: f64, v_ref: f64, rho: f64, 
 /// # Safety
 /// `v_out` must be NULL or point to writable memory for one double.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_viscoelastic_speed_for_e(e: f64, beta: f64, criterion: i32, v_out: *mut f64) -> i32 {
+pub unsafe extern "C" fn dc_viscoelastic_speed_for_e(
+    e: f64,
+    beta: f64,
+    criterion: i32,
+    v_out: *mut f64,
+) -> i32 {
     // SAFETY: forwarded caller contract on v_out.
-    unsafe { write_result(v_out, || calibration::speed_for_e(e, beta, parse_criterion(criterion)?)) }
+    unsafe {
+        write_result(v_out, || {
+            calibration::speed_for_e(e, beta, parse_criterion(criterion)?)
+        })
+    }
 }

@@ -1,7 +1,7 @@
 //! Structure-of-arrays batches: one dispatch per batch, then a plain loop over slices that the
 //! compiler vectorises (square roots are IEEE instructions in Rust, never `errno` calls).
 
-use super::pair::{dispatch, eval, Consts, Law, Visit};
+use super::pair::{Consts, Law, Visit, dispatch, eval};
 use crate::Error;
 
 struct Batch<'a> {
@@ -24,7 +24,14 @@ impl Visit for Batch<'_> {
 // One monomorphised loop per kernel: no branch on the model inside. Not inlined into the
 // dispatcher so that each loop is compiled (and vectorised) on its own.
 #[inline(never)]
-fn run<L: Law, const CLAMP: bool>(c: Consts, d: &[f64], vn: &[f64], r: &[f64], m: &[f64], out: &mut [f64]) {
+fn run<L: Law, const CLAMP: bool>(
+    c: Consts,
+    d: &[f64],
+    vn: &[f64],
+    r: &[f64],
+    m: &[f64],
+    out: &mut [f64],
+) {
     for ((((o, &d), &vn), &r), &m) in out.iter_mut().zip(d).zip(vn).zip(r).zip(m) {
         *o = eval::<L, CLAMP>(&c, d, vn, r, m);
     }
@@ -51,5 +58,16 @@ pub fn normal_force_batch(
         (Some(d), Some(vn), Some(r), Some(m)) => (d, vn, r, m),
         _ => return Err(Error::BufferTooShort),
     };
-    dispatch(kernel, Batch { c, d, vn, r, m, out }).ok_or(Error::PairInvalid)
+    dispatch(
+        kernel,
+        Batch {
+            c,
+            d,
+            vn,
+            r,
+            m,
+            out,
+        },
+    )
+    .ok_or(Error::PairInvalid)
 }

@@ -6,7 +6,7 @@
 //! R* = R1 R2/(R1 + R2), m* = m1 m2/(m1 + m2). The result F n is the force on sphere 1 (repulsive:
 //! along n); sphere 2 receives −F n.
 
-use super::pair::{needs, normal_force_raw, PairModel};
+use super::pair::{PairModel, needs, normal_force_raw};
 use crate::Error;
 use nalgebra::Vector3;
 
@@ -24,7 +24,8 @@ pub struct Sphere {
 }
 
 fn check(s: &Sphere) -> Result<(), Error> {
-    if !(s.x.iter().chain(s.v.iter()).all(|a| a.is_finite()) && s.r.is_finite() && s.m.is_finite()) {
+    if !(s.x.iter().chain(s.v.iter()).all(|a| a.is_finite()) && s.r.is_finite() && s.m.is_finite())
+    {
         return Err(Error::NotFinite);
     }
     if !(s.r > 0.0 && s.m > 0.0) {

@@ -8,7 +8,7 @@
 //! So one contact costs two square roots (q and √(m q)) and no `pow`; c = α √kf per pair. α is
 //! the exact p = 3/2 calibration (speed independent: one α per pair).
 
-use super::pair::{code, pick, Consts, Law, PairModel, MODEL_HERTZ};
+use super::pair::{Consts, Law, MODEL_HERTZ, PairModel, code, pick};
 use crate::material::effective_modulus;
 use crate::powerlaw::alpha_from_e;
 use crate::{EndCriterion, Error};
@@ -47,14 +47,27 @@ pub(crate) fn hertz_factor(e1: f64, nu1: f64, e2: f64, nu2: f64) -> Result<f64, 
 }
 
 /// A Hertz pair of materials (E1, ν1), (E2, ν2) calibrated to restitution e.
-pub fn hertz(e1: f64, nu1: f64, e2: f64, nu2: f64, e: f64, criterion: EndCriterion) -> Result<PairModel, Error> {
+pub fn hertz(
+    e1: f64,
+    nu1: f64,
+    e2: f64,
+    nu2: f64,
+    e: f64,
+    criterion: EndCriterion,
+) -> Result<PairModel, Error> {
     let kf = hertz_factor(e1, nu1, e2, nu2)?;
     let alpha = alpha_from_e(e, 1.5, criterion)?;
     let c = alpha * kf.sqrt();
     if !c.is_finite() {
         return Err(Error::ResultRange);
     }
-    let kernel = pick(alpha > 0.0, criterion, code::HERTZ_ELASTIC, code::HERTZ_DAMPED, code::HERTZ_DAMPED_CLAMPED);
+    let kernel = pick(
+        alpha > 0.0,
+        criterion,
+        code::HERTZ_ELASTIC,
+        code::HERTZ_DAMPED,
+        code::HERTZ_DAMPED_CLAMPED,
+    );
     Ok(PairModel {
         model: MODEL_HERTZ,
         kernel,

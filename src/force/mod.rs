@@ -25,4 +25,4 @@ pub mod pair;
 pub mod powerlaw;
 pub mod viscoelastic;
 
-pub use pair::{normal_force, Consts, PairModel};
+pub use pair::{Consts, PairModel, normal_force};

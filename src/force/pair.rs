@@ -2,7 +2,9 @@
 //! force into the contact force (zero without overlap, optional clamp of attraction).
 
 use super::hertz::{HertzDamped, HertzElastic};
-use super::powerlaw::{GenDamped, GenElastic, LinDamped, LinElastic, P15Damped, P15Elastic, P2Damped, P2Elastic};
+use super::powerlaw::{
+    GenDamped, GenElastic, LinDamped, LinElastic, P2Damped, P2Elastic, P15Damped, P15Elastic,
+};
 use super::viscoelastic::Viscoelastic;
 use crate::EndCriterion;
 
@@ -181,7 +183,13 @@ pub fn normal_force(pair: &PairModel, d: f64, vn: f64, r: f64, m: f64) -> f64 {
 
 /// Chooses the kernel code for a Tsuji-type law family: `elastic` when there is no damping,
 /// otherwise the damped law with or without clamping.
-pub(crate) fn pick(damped: bool, criterion: EndCriterion, elastic: i32, free: i32, clamped: i32) -> i32 {
+pub(crate) fn pick(
+    damped: bool,
+    criterion: EndCriterion,
+    elastic: i32,
+    free: i32,
+    clamped: i32,
+) -> i32 {
     match (damped, criterion) {
         (false, _) => elastic,
         (true, EndCriterion::Overlap) => free,

@@ -12,7 +12,7 @@
 //! criterion, which also decides clamping: `Force` clamps attractive force to zero, and its α is
 //! the force-zero one, so a clamping solver realises the target e.
 
-use super::pair::{code, pick, Consts, Law, PairModel, MODEL_POWERLAW};
+use super::pair::{Consts, Law, MODEL_POWERLAW, PairModel, code, pick};
 use crate::powerlaw::{alpha_from_e, check_exponent, e_from_alpha};
 use crate::{EndCriterion, Error};
 
@@ -120,7 +120,12 @@ fn check_stiffness(k: f64) -> Result<(), Error> {
 }
 
 /// A power-law pair from its damping coefficient α directly (for hosts that already have α).
-pub fn powerlaw_from_alpha(p: f64, k: f64, alpha: f64, criterion: EndCriterion) -> Result<PairModel, Error> {
+pub fn powerlaw_from_alpha(
+    p: f64,
+    k: f64,
+    alpha: f64,
+    criterion: EndCriterion,
+) -> Result<PairModel, Error> {
     check_exponent(p)?;
     check_stiffness(k)?;
     // e_from_alpha validates α (finite, ≥ 0) and gives the e this pair realises.
@@ -131,13 +136,37 @@ pub fn powerlaw_from_alpha(p: f64, k: f64, alpha: f64, criterion: EndCriterion) 
     }
     let damped = alpha > 0.0;
     let kernel = if p == 1.0 {
-        pick(damped, criterion, code::LIN_ELASTIC, code::LIN_DAMPED, code::LIN_DAMPED_CLAMPED)
+        pick(
+            damped,
+            criterion,
+            code::LIN_ELASTIC,
+            code::LIN_DAMPED,
+            code::LIN_DAMPED_CLAMPED,
+        )
     } else if p == 1.5 {
-        pick(damped, criterion, code::P15_ELASTIC, code::P15_DAMPED, code::P15_DAMPED_CLAMPED)
+        pick(
+            damped,
+            criterion,
+            code::P15_ELASTIC,
+            code::P15_DAMPED,
+            code::P15_DAMPED_CLAMPED,
+        )
     } else if p == 2.0 {
-        pick(damped, criterion, code::P2_ELASTIC, code::P2_DAMPED, code::P2_DAMPED_CLAMPED)
+        pick(
+            damped,
+            criterion,
+            code::P2_ELASTIC,
+            code::P2_DAMPED,
+            code::P2_DAMPED_CLAMPED,
+        )
     } else {
-        pick(damped, criterion, code::GEN_ELASTIC, code::GEN_DAMPED, code::GEN_DAMPED_CLAMPED)
+        pick(
+            damped,
+            criterion,
+            code::GEN_ELASTIC,
+            code::GEN_DAMPED,
+            code::GEN_DAMPED_CLAMPED,
+        )
     };
     Ok(PairModel {
         model: MODEL_POWERLAW,
@@ -148,7 +177,11 @@ pub fn powerlaw_from_alpha(p: f64, k: f64, alpha: f64, criterion: EndCriterion) 
         alpha,
         damping_a: 0.0,
         e,
-        consts: Consts { k, c, h: 0.5 * (p - 1.0) },
+        consts: Consts {
+            k,
+            c,
+            h: 0.5 * (p - 1.0),
+        },
     })
 }
 

@@ -12,7 +12,7 @@
 //! Schwager & Pöschel).
 
 use super::hertz::hertz_factor;
-use super::pair::{code, pick, Consts, Law, PairModel, MODEL_VISCOELASTIC};
+use super::pair::{Consts, Law, MODEL_VISCOELASTIC, PairModel, code, pick};
 use crate::{EndCriterion, Error};
 
 pub(crate) struct Viscoelastic;
@@ -29,7 +29,14 @@ impl Law for Viscoelastic {
 
 /// A viscoelastic pair of materials (E1, ν1), (E2, ν2) with damping constant A ≥ 0 [s].
 /// A = 0 gives the purely elastic Hertz kernel.
-pub fn viscoelastic(e1: f64, nu1: f64, e2: f64, nu2: f64, a: f64, criterion: EndCriterion) -> Result<PairModel, Error> {
+pub fn viscoelastic(
+    e1: f64,
+    nu1: f64,
+    e2: f64,
+    nu2: f64,
+    a: f64,
+    criterion: EndCriterion,
+) -> Result<PairModel, Error> {
     let kf = hertz_factor(e1, nu1, e2, nu2)?;
     if !a.is_finite() {
         return Err(Error::NotFinite);
@@ -41,7 +48,13 @@ pub fn viscoelastic(e1: f64, nu1: f64, e2: f64, nu2: f64, a: f64, criterion: End
     if !c.is_finite() {
         return Err(Error::ResultRange);
     }
-    let kernel = pick(a > 0.0, criterion, code::HERTZ_ELASTIC, code::VISCO_DAMPED, code::VISCO_DAMPED_CLAMPED);
+    let kernel = pick(
+        a > 0.0,
+        criterion,
+        code::HERTZ_ELASTIC,
+        code::VISCO_DAMPED,
+        code::VISCO_DAMPED_CLAMPED,
+    );
     Ok(PairModel {
         model: MODEL_VISCOELASTIC,
         kernel,

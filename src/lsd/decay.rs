@@ -119,11 +119,16 @@ mod tests {
 
     #[test]
     fn slope_matches_central_difference() {
-        for &z in &[1e-6, 0.1, 0.5, 0.9, 0.97, 0.999, 1.0, 1.001, 1.05, 1.2, 3.0, 1e3, 1e7, 1e9, 1e200] {
+        for &z in &[
+            1e-6, 0.1, 0.5, 0.9, 0.97, 0.999, 1.0, 1.001, 1.05, 1.2, 3.0, 1e3, 1e7, 1e9, 1e200,
+        ] {
             let (_, s) = decay_to_turning_point_with_slope(z);
             let h = 1e-5 * z;
             let fd = (decay_to_turning_point(z + h) - decay_to_turning_point(z - h)) / (2.0 * h);
-            assert!((s - fd).abs() <= 1e-8 * s.abs().max(1e-300), "ζ={z}: {s} vs {fd}");
+            assert!(
+                (s - fd).abs() <= 1e-8 * s.abs().max(1e-300),
+                "ζ={z}: {s} vs {fd}"
+            );
         }
     }
 

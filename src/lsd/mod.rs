@@ -9,4 +9,4 @@ mod decay;
 mod restitution;
 
 pub use decay::{decay_to_turning_point, decay_to_turning_point_with_slope};
-pub use restitution::{e_force, e_overlap, zeta_force, zeta_overlap, ZETA_CRITICAL};
+pub use restitution::{ZETA_CRITICAL, e_force, e_overlap, zeta_force, zeta_overlap};

@@ -17,8 +17,8 @@
 //! solver that clamps forces, which is why the force criterion needs its own inverse.
 
 use super::decay::decay_to_turning_point_with_slope;
-use crate::numerics::newton_bracketed;
 use crate::Error;
+use crate::numerics::newton_bracketed;
 use core::f64::consts::PI;
 
 /// Critical damping ratio: the overlap criterion has no rebound at and above it.

@@ -14,7 +14,11 @@ pub(crate) fn estrin<const N: usize>(x: f64, c: &[f64; N]) -> f64 {
         let half = len.div_ceil(2);
         for i in 0..half {
             let lo = buf.get(2 * i).copied().unwrap_or(0.0);
-            let hi = buf.get(2 * i + 1).copied().filter(|_| 2 * i + 1 < len).unwrap_or(0.0);
+            let hi = buf
+                .get(2 * i + 1)
+                .copied()
+                .filter(|_| 2 * i + 1 < len)
+                .unwrap_or(0.0);
             if let Some(b) = buf.get_mut(i) {
                 *b = lo + hi * xp;
             }
@@ -44,7 +48,8 @@ mod tests {
             }
             *c = 1.0 / f;
         }
-        let alt: [f64; 31] = core::array::from_fn(|k| if k % 2 == 0 { 1.0 } else { -1.0 } / (k as f64 + 1.0));
+        let alt: [f64; 31] =
+            core::array::from_fn(|k| if k % 2 == 0 { 1.0 } else { -1.0 } / (k as f64 + 1.0));
         let mut worst: f64 = 0.0;
         for i in 0..=200 {
             let x = -0.5 + i as f64 / 200.0;
@@ -57,6 +62,9 @@ mod tests {
         // Exact on small integer polynomials (every length, odd and even).
         assert_eq!(estrin(2.0, &[1.0]), 1.0);
         assert_eq!(estrin(2.0, &[1.0, 1.0, 1.0]), 7.0);
-        assert_eq!(estrin(3.0, &[1.0, 2.0, 0.0, 1.0, 5.0]), 1.0 + 6.0 + 27.0 + 405.0);
+        assert_eq!(
+            estrin(3.0, &[1.0, 2.0, 0.0, 1.0, 5.0]),
+            1.0 + 6.0 + 27.0 + 405.0
+        );
     }
 }

@@ -89,7 +89,11 @@ pub(crate) fn gauss_jacobi(nu: f64, nodes: &mut [f64], weights: &mut [f64]) -> R
     let mu0 = (nu + 1.0).recip() * 2f64.powf(nu + 1.0);
     let scale = 2f64.powf(-(nu + 1.0));
     // Ascending y: the zeros were found largest first.
-    for ((y, w), &x) in nodes.iter_mut().zip(weights.iter_mut()).zip(xs.iter().take(n).rev()) {
+    for ((y, w), &x) in nodes
+        .iter_mut()
+        .zip(weights.iter_mut())
+        .zip(xs.iter().take(n).rev())
+    {
         let (mut p0, mut p1) = (0.0, 1.0);
         let mut norm = mu0;
         let mut sum = 1.0 / norm;
@@ -119,12 +123,20 @@ mod tests {
         for &nu in &[-0.9, -2.0 / 3.0, -0.5, -0.2, 0.0, 0.5] {
             for n in 1..=MAX_NODES {
                 let (mut x, mut w) = ([0.0; MAX_NODES], [0.0; MAX_NODES]);
-                gauss_jacobi(nu, &mut x[..n], &mut w[..n]).unwrap_or_else(|e| panic!("ν={nu} n={n}: {e:?}"));
+                gauss_jacobi(nu, &mut x[..n], &mut w[..n])
+                    .unwrap_or_else(|e| panic!("ν={nu} n={n}: {e:?}"));
                 assert!(x[..n].windows(2).all(|p| p[0] < p[1]) && x[0] > 0.0 && x[n - 1] < 1.0);
                 for m in 0..2 * n {
-                    let got: f64 = x[..n].iter().zip(&w[..n]).map(|(&y, &wt)| wt * y.powi(m as i32)).sum();
+                    let got: f64 = x[..n]
+                        .iter()
+                        .zip(&w[..n])
+                        .map(|(&y, &wt)| wt * y.powi(m as i32))
+                        .sum();
                     let want = 1.0 / (nu + m as f64 + 1.0);
-                    assert!(((got - want) / want).abs() < 2e-14, "ν={nu} n={n} m={m}: {got} vs {want}");
+                    assert!(
+                        ((got - want) / want).abs() < 2e-14,
+                        "ν={nu} n={n} m={m}: {got} vs {want}"
+                    );
                 }
             }
         }

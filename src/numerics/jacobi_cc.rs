@@ -215,7 +215,12 @@ pub fn integrate_weighted_nu1<F: FnMut(f64) -> f64>(mut f: F, nu1: f64, level: u
     };
     let mut total = 0.0;
     for (k, (&mk, row)) in mom.iter().zip(mat.iter()).enumerate().take(n + 1) {
-        let a: f64 = row.iter().zip(fv.iter()).take(n + 1).map(|(c, f)| c * f).sum();
+        let a: f64 = row
+            .iter()
+            .zip(fv.iter())
+            .take(n + 1)
+            .map(|(c, f)| c * f)
+            .sum();
         let term = a * mk;
         total += if k == 0 || k == n { 0.5 * term } else { term };
     }
@@ -229,7 +234,10 @@ mod tests {
     #[test]
     fn cosine_table() {
         for (m, &c) in COS48.iter().enumerate() {
-            assert!((c - (m as f64 * core::f64::consts::PI / 48.0).cos()).abs() < 1e-15, "m={m}"); // the reference's argument mπ/48 is rounded: ≤ 7e-16
+            assert!(
+                (c - (m as f64 * core::f64::consts::PI / 48.0).cos()).abs() < 1e-15,
+                "m={m}"
+            ); // the reference's argument mπ/48 is rounded: ≤ 7e-16
         }
     }
 
@@ -241,7 +249,10 @@ mod tests {
                 for m in 0..=LEVEL_N[level as usize] {
                     let got = integrate_weighted_nu1(|y| y.powi(m as i32), nu + 1.0, level);
                     let want = 1.0 / (nu + m as f64 + 1.0);
-                    assert!((got - want).abs() < 5e-15 * want.max(1.0), "ν={nu} level={level} m={m}: {got} vs {want}");
+                    assert!(
+                        (got - want).abs() < 5e-15 * want.max(1.0),
+                        "ν={nu} level={level} m={m}: {got} vs {want}"
+                    );
                 }
             }
         }
@@ -259,7 +270,10 @@ mod tests {
                 want += 1.0 / (fact * (q + k as f64));
             }
             let got = integrate_weighted_nu1(|y| y.exp(), q, MAX_LEVEL);
-            assert!(((got - want) / want).abs() < 1e-15, "q={q}: {got} vs {want}");
+            assert!(
+                ((got - want) / want).abs() < 1e-15,
+                "q={q}: {got} vs {want}"
+            );
         }
     }
 
@@ -276,7 +290,10 @@ mod tests {
                 want += 1.0 / (fact * (nu + k as f64 + 1.0));
             }
             let got = integrate_weighted_nu1(|y| y.exp(), nu + 1.0, MAX_LEVEL);
-            assert!(((got - want) / want).abs() < 1e-15, "ν={nu}: {got} vs {want}");
+            assert!(
+                ((got - want) / want).abs() < 1e-15,
+                "ν={nu}: {got} vs {want}"
+            );
         }
     }
 }

@@ -97,10 +97,18 @@ pub fn dopri_step<F: FnMut(Vec2) -> Vec2>(f: &mut F, y: Vec2, h: f64) -> (Vec2, 
     let k3 = f(axpy(y, h, &[(A31, k1), (A32, k2)]));
     let k4 = f(axpy(y, h, &[(A41, k1), (A42, k2), (A43, k3)]));
     let k5 = f(axpy(y, h, &[(A51, k1), (A52, k2), (A53, k3), (A54, k4)]));
-    let k6 = f(axpy(y, h, &[(A61, k1), (A62, k2), (A63, k3), (A64, k4), (A65, k5)]));
+    let k6 = f(axpy(
+        y,
+        h,
+        &[(A61, k1), (A62, k2), (A63, k3), (A64, k4), (A65, k5)],
+    ));
     let y_new = axpy(y, h, &[(B1, k1), (B3, k3), (B4, k4), (B5, k5), (B6, k6)]);
     let k7 = f(y_new);
-    let err = axpy([0.0, 0.0], h, &[(E1, k1), (E3, k3), (E4, k4), (E5, k5), (E6, k6), (E7, k7)]);
+    let err = axpy(
+        [0.0, 0.0],
+        h,
+        &[(E1, k1), (E3, k3), (E4, k4), (E5, k5), (E6, k6), (E7, k7)],
+    );
     (y_new, err)
 }
 
@@ -152,7 +160,11 @@ where
         let ratio = error_ratio(y, y_new, err, tol);
         if !(ratio <= 1.0) {
             stats.rejected += 1;
-            let fac = if ratio.is_finite() { (0.9 * ratio.powf(-0.2)).max(0.1) } else { 0.1 };
+            let fac = if ratio.is_finite() {
+                (0.9 * ratio.powf(-0.2)).max(0.1)
+            } else {
+                0.1
+            };
             h *= fac;
             if !(h > 0.0) || t + h == t {
                 return Err(Error::NoConvergence);
@@ -197,14 +209,22 @@ where
                 }
             }
             stats.accepted += 1;
-            return Ok(EventHit { t: t + b, y: y_b, stats });
+            return Ok(EventHit {
+                t: t + b,
+                y: y_b,
+                stats,
+            });
         }
         stats.accepted += 1;
         t += h;
         y = y_new;
         ev = ev_new;
         observe(t, y);
-        let fac = if ratio > 0.0 { (0.9 * ratio.powf(-0.2)).clamp(0.2, 5.0) } else { 5.0 };
+        let fac = if ratio > 0.0 {
+            (0.9 * ratio.powf(-0.2)).clamp(0.2, 5.0)
+        } else {
+            5.0
+        };
         h *= fac;
     }
     Err(Error::NoConvergence)
@@ -217,10 +237,30 @@ mod tests {
     #[test]
     fn harmonic_oscillator_quarter_period() {
         // x'' = -x from x=0, v=1: v reaches 0 at t = π/2 with x = 1.
-        let tol = Tolerance { rtol: 1e-13, atol: [1e-15, 1e-15] };
-        let hit = integrate_to_event(|y| [y[1], -y[0]], 0.0, [0.0, 1.0], |y| y[1], |_, _| {}, &tol, 1e-3, 100_000);
-        let hit = hit.unwrap_or(EventHit { t: f64::NAN, y: [f64::NAN; 2], stats: Stats::default() });
-        assert!((hit.t - core::f64::consts::FRAC_PI_2).abs() < 1e-12, "{}", hit.t);
+        let tol = Tolerance {
+            rtol: 1e-13,
+            atol: [1e-15, 1e-15],
+        };
+        let hit = integrate_to_event(
+            |y| [y[1], -y[0]],
+            0.0,
+            [0.0, 1.0],
+            |y| y[1],
+            |_, _| {},
+            &tol,
+            1e-3,
+            100_000,
+        );
+        let hit = hit.unwrap_or(EventHit {
+            t: f64::NAN,
+            y: [f64::NAN; 2],
+            stats: Stats::default(),
+        });
+        assert!(
+            (hit.t - core::f64::consts::FRAC_PI_2).abs() < 1e-12,
+            "{}",
+            hit.t
+        );
         assert!((hit.y[0] - 1.0).abs() < 1e-12);
     }
 
@@ -239,7 +279,10 @@ mod tests {
         // LSD with ζ = 0.3: x returns to 0 at t = π/ω with x' = -exp(-ζπ/ω).
         let z: f64 = 0.3;
         let w = (1.0 - z * z).sqrt();
-        let tol = Tolerance { rtol: 1e-13, atol: [1e-16, 1e-16] };
+        let tol = Tolerance {
+            rtol: 1e-13,
+            atol: [1e-16, 1e-16],
+        };
         let hit = integrate_to_event(
             |y| [y[1], -y[0] - 2.0 * z * y[1]],
             0.0,
@@ -250,7 +293,11 @@ mod tests {
             1e-4,
             100_000,
         );
-        let hit = hit.unwrap_or(EventHit { t: f64::NAN, y: [f64::NAN; 2], stats: Stats::default() });
+        let hit = hit.unwrap_or(EventHit {
+            t: f64::NAN,
+            y: [f64::NAN; 2],
+            stats: Stats::default(),
+        });
         assert!((hit.t - core::f64::consts::PI / w).abs() < 1e-11);
         assert!((-hit.y[1] - (-z * core::f64::consts::PI / w).exp()).abs() < 1e-12);
     }

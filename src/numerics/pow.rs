@@ -75,7 +75,11 @@ fn ln_kernel(x: f64) -> f64 {
     let m = f64::from_bits((bits & 0x000f_ffff_ffff_ffff) | 0x3ff0_0000_0000_0000);
     let big = m > core::f64::consts::SQRT_2;
     let m = if big { 0.5 * m } else { m };
-    let e = if big { e_biased - 1022.0 } else { e_biased - 1023.0 };
+    let e = if big {
+        e_biased - 1022.0
+    } else {
+        e_biased - 1023.0
+    };
     // m − 1 is exact (Sterbenz), and s carries one rounding.
     let f = m - 1.0;
     let s = f / (2.0 + f);
@@ -98,7 +102,10 @@ pub(crate) fn exp_kernel(y: f64) -> f64 {
     let p = 1.0 + (r + r * r * estrin(r, &EXP_TAIL));
     // k + 1023 sits in the low bits of kf + SHIFTER + 1023 (an integer below 2^52 in magnitude
     // offset): shift it into the exponent field.
-    let biased = (kf + (SHIFTER + 1023.0)).to_bits().wrapping_sub(SHIFTER.to_bits()) << 52;
+    let biased = (kf + (SHIFTER + 1023.0))
+        .to_bits()
+        .wrapping_sub(SHIFTER.to_bits())
+        << 52;
     p * f64::from_bits(biased)
 }
 
@@ -158,7 +165,9 @@ mod tests {
     fn samples(n: usize, lo: f64, hi: f64) -> impl Iterator<Item = f64> {
         let mut s: u64 = 0x9e37_79b9_7f4a_7c15;
         (0..n).map(move |_| {
-            s = s.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+            s = s
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
             let u = (s >> 11) as f64 / (1u64 << 53) as f64;
             10f64.powf(lo + (hi - lo) * u)
         })
@@ -169,7 +178,9 @@ mod tests {
         assert_eq!(LN2_HI + LN2_LO, core::f64::consts::LN_2);
         assert_eq!(LN2_HI.to_bits() & ((1 << 21) - 1), 0);
         // The split carries ln 2 beyond double precision: ln 2 − LN_2 ≈ 2.3e−17.
-        assert!(((LN2_HI - core::f64::consts::LN_2) + LN2_LO - 2.319_046_813_846_3e-17).abs() < 1e-24);
+        assert!(
+            ((LN2_HI - core::f64::consts::LN_2) + LN2_LO - 2.319_046_813_846_3e-17).abs() < 1e-24
+        );
         assert_eq!(X_MIN, 2f64.powi(-1000));
         assert_eq!(X_MAX, 2f64.powi(1000));
     }
@@ -177,7 +188,10 @@ mod tests {
     #[test]
     fn ln_within_two_ulp_of_its_magnitude() {
         let mut worst: f64 = 0.0;
-        for x in samples(200_000, -300.0, 300.0).chain(samples(50_000, -1e-3, 1e-3)).chain([1.0, 2.0, 0.5, X_MIN, X_MAX]) {
+        for x in samples(200_000, -300.0, 300.0)
+            .chain(samples(50_000, -1e-3, 1e-3))
+            .chain([1.0, 2.0, 0.5, X_MIN, X_MAX])
+        {
             let (got, want) = (ln_kernel(x), x.ln());
             // Absolute error in units of ulp(|ln x|) (what exp(q ln x) inherits); exact at x = 1.
             let ulp = (want.abs().max(f64::MIN_POSITIVE)) * f64::EPSILON;
@@ -192,7 +206,12 @@ mod tests {
     #[test]
     fn exp_within_one_ulp() {
         let mut worst: f64 = 0.0;
-        for y in samples(100_000, -6.0, 2.845).flat_map(|a| [a, -a]).chain([0.0, 700.0, -700.0, 0.5 * core::f64::consts::LN_2]) {
+        for y in samples(100_000, -6.0, 2.845).flat_map(|a| [a, -a]).chain([
+            0.0,
+            700.0,
+            -700.0,
+            0.5 * core::f64::consts::LN_2,
+        ]) {
             let (got, want) = (exp_kernel(y), y.exp());
             let err = ((got - want) / want).abs() / f64::EPSILON;
             worst = worst.max(err);
@@ -223,7 +242,9 @@ mod tests {
 
     #[test]
     fn pow_matches_powf() {
-        let xs: Vec<f64> = samples(100_000, -320.0, 308.0).chain([0.0, 5e-324, 1e-310, f64::MAX, f64::INFINITY]).collect();
+        let xs: Vec<f64> = samples(100_000, -320.0, 308.0)
+            .chain([0.0, 5e-324, 1e-310, f64::MAX, f64::INFINITY])
+            .collect();
         let mut out = vec![0.0; xs.len()];
         for &q in &[1.0, 0.8, 2.0 / 3.0, 0.5, 1.0 / 3.0, 0.01] {
             pow_slice(&xs, q, &mut out);
@@ -237,7 +258,11 @@ mod tests {
                 // Both sides round q·ln x: |q ln x|·ε relative, plus a few ulp.
                 let bound = (3.0 + 2.0 * (q * x.ln()).abs()) * f64::EPSILON;
                 let err = ((got - want) / want).abs();
-                assert!(err <= bound, "x={x} q={q}: {got} vs {want} ({:.1} ulp)", err / f64::EPSILON);
+                assert!(
+                    err <= bound,
+                    "x={x} q={q}: {got} vs {want} ({:.1} ulp)",
+                    err / f64::EPSILON
+                );
                 worst = worst.max(err / bound);
             }
             println!("pow q={q}: worst {worst:.2} of the bound");

@@ -9,7 +9,13 @@ use crate::Error;
 /// A Newton step that leaves the current bracket, or is not finite, is replaced by bisection
 /// (geometric once the bracket spans more than a factor 4 with lo > 0, so that brackets over many
 /// decades shrink quickly). Stops when the step is below 2 ulp of x or the bracket has collapsed.
-pub fn newton_bracketed<F>(mut f: F, mut lo: f64, mut hi: f64, x0: f64, max_iter: u32) -> Result<f64, Error>
+pub fn newton_bracketed<F>(
+    mut f: F,
+    mut lo: f64,
+    mut hi: f64,
+    x0: f64,
+    max_iter: u32,
+) -> Result<f64, Error>
 where
     F: FnMut(f64) -> (f64, f64),
 {
@@ -74,7 +80,8 @@ mod tests {
 
     #[test]
     fn wide_bracket_geometric() {
-        let r = newton_bracketed(|x: f64| (x.ln() - 300.0, 1.0 / x), 1.0, 1e300, 1e300, 200).unwrap_or(f64::NAN);
+        let r = newton_bracketed(|x: f64| (x.ln() - 300.0, 1.0 / x), 1.0, 1e300, 1e300, 200)
+            .unwrap_or(f64::NAN);
         // ln x is known to ±ulp(300) ≈ 6e-14, so x only to that relative precision.
         assert!((r.ln() - 300.0).abs() <= 1.2e-13, "{r}");
     }
@@ -82,14 +89,26 @@ mod tests {
     #[test]
     fn noisy_function_stalls_gracefully() {
         // f has rounding noise far above one ulp of x: must stop near the root, not fail.
-        let r = newton_bracketed(|x: f64| ((x - 1.0) + 1e-12 * (x * 1e15).sin(), 1.0), 0.0, 3.0, 3.0, 100);
+        let r = newton_bracketed(
+            |x: f64| ((x - 1.0) + 1e-12 * (x * 1e15).sin(), 1.0),
+            0.0,
+            3.0,
+            3.0,
+            100,
+        );
         let r = r.unwrap_or(f64::NAN);
         assert!((r - 1.0).abs() < 1e-11, "{r}");
     }
 
     #[test]
     fn invalid_bracket() {
-        assert_eq!(newton_bracketed(|x| (x, 1.0), 1.0, 0.0, 0.5, 10), Err(Error::NoConvergence));
-        assert_eq!(newton_bracketed(|x| (x, 1.0), f64::NAN, 1.0, 0.5, 10), Err(Error::NoConvergence));
+        assert_eq!(
+            newton_bracketed(|x| (x, 1.0), 1.0, 0.0, 0.5, 10),
+            Err(Error::NoConvergence)
+        );
+        assert_eq!(
+            newton_bracketed(|x| (x, 1.0), f64::NAN, 1.0, 0.5, 10),
+            Err(Error::NoConvergence)
+        );
     }
 }

@@ -12,7 +12,12 @@ use num_complex::Complex64;
 
 /// The arithmetic a Taylor integrator needs: f64 and `Complex64` implement it.
 pub trait Scalar:
-    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Neg<Output = Self>
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
 {
     /// The real number x as a scalar.
     fn from_f64(x: f64) -> Self;

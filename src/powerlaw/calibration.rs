@@ -9,9 +9,9 @@
 //!   corresponds to α → ∞ and is rejected too.
 
 use super::transform::{alpha_from_zeta, check_exponent, damping_scale, zeta_from_alpha};
+use crate::Error;
 use crate::criterion::EndCriterion;
 use crate::lsd;
-use crate::Error;
 
 /// α for target restitution e ∈ (0, 1] and exponent p ≥ 1 under `criterion`.
 pub fn alpha_from_e(e: f64, p: f64, criterion: EndCriterion) -> Result<f64, Error> {
@@ -74,12 +74,21 @@ mod tests {
     #[test]
     fn rejects() {
         use EndCriterion::*;
-        assert_eq!(alpha_from_e(0.0, 1.5, Overlap), Err(Error::RestitutionRange));
-        assert_eq!(alpha_from_e(1.0 + f64::EPSILON, 1.5, Force), Err(Error::RestitutionRange));
+        assert_eq!(
+            alpha_from_e(0.0, 1.5, Overlap),
+            Err(Error::RestitutionRange)
+        );
+        assert_eq!(
+            alpha_from_e(1.0 + f64::EPSILON, 1.5, Force),
+            Err(Error::RestitutionRange)
+        );
         assert_eq!(alpha_from_e(f64::NAN, 1.5, Force), Err(Error::NotFinite));
         assert_eq!(alpha_from_e(0.5, 0.5, Force), Err(Error::ExponentRange));
         assert_eq!(e_from_alpha(-1.0, 1.5, Force), Err(Error::Negative));
-        assert_eq!(e_from_alpha(f64::INFINITY, 1.5, Force), Err(Error::NotFinite));
+        assert_eq!(
+            e_from_alpha(f64::INFINITY, 1.5, Force),
+            Err(Error::NotFinite)
+        );
         assert_eq!(e_from_alpha(1e300, 1.5, Overlap), Ok(0.0));
     }
 

@@ -14,8 +14,8 @@
 //! dt = A q x^{q−1} ds = (A q/ω0)(v0/ω0)^{q−1} X(u)^{q−1} du.
 
 use super::transform::{check_exponent, transform_a, transform_q, zeta_from_alpha};
-use crate::lsd;
 use crate::Error;
+use crate::lsd;
 
 /// Taylor coefficients a_n of ln(sin y / y) = Σ_{n≥1} a_n y^{2n},
 /// a_n = (−1)^n 2^{2n−1} B_{2n}/(n (2n)!) (exact fractions from the Bernoulli numbers, rounded);
@@ -123,7 +123,13 @@ impl Contact {
 
     /// As [`Contact::new`], with (q, A) of this p supplied by a caller that cached them (a
     /// duration plan) instead of recomputed (A costs a `powf`).
-    pub(crate) fn with_constants(p: f64, alpha: f64, v0: f64, omega0: f64, qa: Option<(f64, f64)>) -> Result<Self, Error> {
+    pub(crate) fn with_constants(
+        p: f64,
+        alpha: f64,
+        v0: f64,
+        omega0: f64,
+        qa: Option<(f64, f64)>,
+    ) -> Result<Self, Error> {
         if !(alpha.is_finite() && v0.is_finite() && omega0.is_finite()) {
             return Err(Error::NotFinite);
         }

@@ -20,14 +20,14 @@
 //!   Overdamped, the first panel ends at π/(2ω₂) (S has complex zeros at w = ikπ/ω₂ only);
 //!   beyond it the integral is an exact, positive series ([`super::overdamped_tail`]).
 
-use super::contact::{Contact, Regime};
 use super::contact::ln_sinc_poly;
+use super::contact::{Contact, Regime};
 use super::overdamped_tail::overdamped_tail;
-use crate::numerics::pow::{exp_kernel, EXP_KERNEL_MAX};
+use crate::Error;
 use crate::criterion::EndCriterion;
 use crate::numerics::gamma::ln_gamma_re;
 use crate::numerics::jacobi_cc::integrate_weighted_nu1;
-use crate::Error;
+use crate::numerics::pow::{EXP_KERNEL_MAX, exp_kernel};
 use core::f64::consts::{FRAC_PI_2, LN_2, PI};
 
 /// ∫_0^W e^{κw} S(w)^{q−1} dw for W ≥ 0 (ωW ≤ π/2 when underdamped).
@@ -36,7 +36,9 @@ fn singular_integral(c: &Contact, kappa: f64, big_w: f64, level: u32) -> f64 {
     // First panel: W1^{ν+1} ∫_0^1 y^ν h(W1 y) dy, h = e^{κw}(S(w)/w)^ν analytic; the weight y^ν
     // is integrated exactly by the modified moments.
     let h = |w: f64| (kappa * w + nu * c.ln_sinc(w)).exp();
-    by_panels(c, big_w, |first| integrate_weighted_nu1(|y| h(first * y), c.q, level))
+    by_panels(c, big_w, |first| {
+        integrate_weighted_nu1(|y| h(first * y), c.q, level)
+    })
 }
 
 /// ∫_0^W e^{κw} S(w)^{q−1} dw split where its rules apply: a first panel [0, W1] holding the
@@ -66,7 +68,8 @@ pub(crate) fn ln_full_integral(c: &Contact, w: f64) -> f64 {
 fn ln_full_integral_with(c: &Contact, w: f64, lgamma_q: f64) -> f64 {
     let q = c.q;
     let cc = (1.0 - q) * c.zeta / w;
-    -q * w.ln() + PI.ln() + 0.5 * PI * cc + lgamma_q - (q - 1.0) * LN_2
+    -q * w.ln() + PI.ln() + 0.5 * PI * cc + lgamma_q
+        - (q - 1.0) * LN_2
         - 2.0 * ln_gamma_re(0.5 * (q + 1.0), 0.5 * cc)
 }
 
@@ -188,7 +191,10 @@ fn first_panel_planned(c: &Contact, kappa: f64, first: f64, pl: &Plan<'_>) -> f6
     } else {
         args.iter_mut().for_each(|a| *a = a.exp());
     }
-    args.iter().zip(pl.singular.weights).map(|(&e, &wt)| wt * e).sum()
+    args.iter()
+        .zip(pl.singular.weights)
+        .map(|(&e, &wt)| wt * e)
+        .sum()
 }
 
 /// [`singular_integral`] with a plan's rule for the first panel.
@@ -206,7 +212,11 @@ fn positive_finite(t: f64) -> Result<f64, Error> {
 
 /// [`contact_duration`] with a plan: same branches and formulas, the plan's Gauss rules and cached
 /// constants, and the scale factors merged in logarithms (one exp per term instead of three).
-pub fn contact_duration_planned(pl: &Plan<'_>, c: &Contact, criterion: EndCriterion) -> Result<f64, Error> {
+pub fn contact_duration_planned(
+    pl: &Plan<'_>,
+    c: &Contact,
+    criterion: EndCriterion,
+) -> Result<f64, Error> {
     let ln_scale = pl.ln_aq + (c.q - 1.0) * c.ln_x0 - c.omega0.ln();
     match criterion {
         EndCriterion::Overlap => {
@@ -232,11 +242,16 @@ pub fn contact_duration_planned(pl: &Plan<'_>, c: &Contact, criterion: EndCriter
                     if rest <= 0.0 {
                         return positive_finite(full);
                     }
-                    let tail = (ln_scale + kappa * PI / w + c.q * rest.ln()).exp() * first_panel_planned(c, -kappa, rest, pl);
+                    let tail = (ln_scale + kappa * PI / w + c.q * rest.ln()).exp()
+                        * first_panel_planned(c, -kappa, rest, pl);
                     positive_finite(full - tail)
                 }
-                Regime::Over(w2) if u > FRAC_PI_2 / w2 => finish(ln_scale, singular_integral_planned(c, kappa, u, pl)),
-                _ => positive_finite((ln_scale + c.q * u.ln()).exp() * first_panel_planned(c, kappa, u, pl)),
+                Regime::Over(w2) if u > FRAC_PI_2 / w2 => {
+                    finish(ln_scale, singular_integral_planned(c, kappa, u, pl))
+                }
+                _ => positive_finite(
+                    (ln_scale + c.q * u.ln()).exp() * first_panel_planned(c, kappa, u, pl),
+                ),
             }
         }
     }
@@ -255,14 +270,26 @@ mod tests {
             let c = Contact::new(p, 0.0, v0, w0).unwrap_or_else(|_| unreachable!());
             let a = 1.0 / (p + 1.0);
             let beta = (libm::lgamma(a) + libm::lgamma(0.5) - libm::lgamma(a + 0.5)).exp();
-            let want = 2.0 * c.amp / ((p + 1.0) * w0) * (v0 / w0).powf(-(p - 1.0) / (p + 1.0)) * beta;
-            let got = contact_duration(&c, EndCriterion::Overlap, DEFAULT_LEVEL).unwrap_or(f64::NAN);
-            assert!(((got - want) / want).abs() < 1e-14, "p={p}: {got} vs {want}");
+            let want =
+                2.0 * c.amp / ((p + 1.0) * w0) * (v0 / w0).powf(-(p - 1.0) / (p + 1.0)) * beta;
+            let got =
+                contact_duration(&c, EndCriterion::Overlap, DEFAULT_LEVEL).unwrap_or(f64::NAN);
+            assert!(
+                ((got - want) / want).abs() < 1e-14,
+                "p={p}: {got} vs {want}"
+            );
             // Undamped: both criteria coincide, and the maximum is reached at half time.
             let f = contact_duration(&c, EndCriterion::Force, DEFAULT_LEVEL).unwrap_or(f64::NAN);
-            assert!(((f - want) / want).abs() < 1e-14, "p={p}: force {f} vs {want}");
+            assert!(
+                ((f - want) / want).abs() < 1e-14,
+                "p={p}: force {f} vs {want}"
+            );
             let tm = time_of_max_overlap(&c, DEFAULT_LEVEL).unwrap_or(f64::NAN);
-            assert!(((2.0 * tm - want) / want).abs() < 1e-14, "p={p}: 2 t_max {} vs {want}", 2.0 * tm);
+            assert!(
+                ((2.0 * tm - want) / want).abs() < 1e-14,
+                "p={p}: 2 t_max {} vs {want}",
+                2.0 * tm
+            );
         }
     }
 }
@@ -280,8 +307,11 @@ mod quadrature_vs_gamma {
             // ζ ≤ 0.9: beyond, e^{κw} grows by e^{κπ/(2ω)} over the half interval, a regime the
             // library never integrates (it integrates at most to arccos(ζ)/ω ≈ 1 there).
             for &z in &[1e-4, 0.05, 0.3, 0.6, 0.707, 0.9] {
-                let c = Contact::new(p, z * crate::powerlaw::damping_scale(p), 1.0, 1.0).unwrap_or_else(|_| unreachable!());
-                let Regime::Under(w) = c.regime else { unreachable!() };
+                let c = Contact::new(p, z * crate::powerlaw::damping_scale(p), 1.0, 1.0)
+                    .unwrap_or_else(|_| unreachable!());
+                let Regime::Under(w) = c.regime else {
+                    unreachable!()
+                };
                 let kappa = (1.0 - c.q) * c.zeta;
                 let half = FRAC_PI_2 / w;
                 let quad = singular_integral(&c, kappa, half, level)
@@ -297,7 +327,10 @@ mod quadrature_vs_gamma {
     #[test]
     fn levels() {
         for level in 0..=crate::numerics::jacobi_cc::MAX_LEVEL {
-            println!("level {level}: worst relative difference {:.1e}", worst_at(level));
+            println!(
+                "level {level}: worst relative difference {:.1e}",
+                worst_at(level)
+            );
         }
         assert!(worst_at(4) < 3e-14);
     }

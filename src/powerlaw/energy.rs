@@ -44,14 +44,31 @@ pub fn energy_partition(c: &Contact, criterion: EndCriterion) -> EnergyPartition
     match criterion {
         EndCriterion::Overlap => match c.regime {
             Regime::Under(w) => {
-                let theta = if c.zeta < 0.5 { c.zeta.acos() } else { g * w / c.zeta };
+                let theta = if c.zeta < 0.5 {
+                    c.zeta.acos()
+                } else {
+                    g * w / c.zeta
+                };
                 let unloading = e_f * -(-2.0 * c.zeta * (PI - theta) / w).exp_m1();
                 // From α directly (as dc_e_from_alpha): near critical damping e_O is so steep in ζ
                 // that rounding ζ = α/√(2(p+1)) first cost 2.3e-13 at e = 1e-12 (tests/extremes.rs).
-                let e_o = calibration::e_from_alpha(c.alpha, c.p, EndCriterion::Overlap).unwrap_or((-PI * c.zeta / w).exp());
-                EnergyPartition { e: e_o, loading, unloading, returned: e_o * e_o, clamped: 0.0 }
+                let e_o = calibration::e_from_alpha(c.alpha, c.p, EndCriterion::Overlap)
+                    .unwrap_or((-PI * c.zeta / w).exp());
+                EnergyPartition {
+                    e: e_o,
+                    loading,
+                    unloading,
+                    returned: e_o * e_o,
+                    clamped: 0.0,
+                }
             }
-            _ => EnergyPartition { e: 0.0, loading, unloading: e_f, returned: 0.0, clamped: 0.0 },
+            _ => EnergyPartition {
+                e: 0.0,
+                loading,
+                unloading: e_f,
+                returned: 0.0,
+                clamped: 0.0,
+            },
         },
         EndCriterion::Force => {
             let z2 = 4.0 * c.zeta * c.zeta;
@@ -64,7 +81,13 @@ pub fn energy_partition(c: &Contact, criterion: EndCriterion) -> EnergyPartition
                 (l, (l - 4.0 * g).exp())
             };
             let unloading = e_f * -(-2.0 * g + ln_1p_z2).exp_m1();
-            EnergyPartition { e: e_f, loading, unloading, returned: e_f * e_f, clamped }
+            EnergyPartition {
+                e: e_f,
+                loading,
+                unloading,
+                returned: e_f * e_f,
+                clamped,
+            }
         }
     }
 }

@@ -25,7 +25,9 @@ pub mod transform;
 pub use calibration::{alpha_from_e, e_from_alpha};
 pub use contact::Contact;
 pub use duration::{contact_duration, time_of_max_overlap};
-pub use energy::{energy_partition, EnergyPartition};
+pub use energy::{EnergyPartition, energy_partition};
 pub use overlap::max_overlap;
 pub use timestep::dt_crit_seed;
-pub use transform::{alpha_from_zeta, check_exponent, damping_scale, transform_a, transform_q, zeta_from_alpha};
+pub use transform::{
+    alpha_from_zeta, check_exponent, damping_scale, transform_a, transform_q, zeta_from_alpha,
+};

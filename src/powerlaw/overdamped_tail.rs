@@ -73,8 +73,18 @@ mod tests {
     /// directly (sinh, powf): an independent route.
     fn brute(nu: f64, zeta: f64, w2: f64, a: f64, b: f64) -> f64 {
         // 8-point Gauss–Legendre on [−1, 1].
-        const X: [f64; 4] = [0.183_434_642_495_649_8, 0.525_532_409_916_329, 0.796_666_477_413_626_7, 0.960_289_856_497_536_3];
-        const W: [f64; 4] = [0.362_683_783_378_362, 0.313_706_645_877_887_3, 0.222_381_034_453_374_5, 0.101_228_536_290_376_3];
+        const X: [f64; 4] = [
+            0.183_434_642_495_649_8,
+            0.525_532_409_916_329,
+            0.796_666_477_413_626_7,
+            0.960_289_856_497_536_3,
+        ];
+        const W: [f64; 4] = [
+            0.362_683_783_378_362,
+            0.313_706_645_877_887_3,
+            0.222_381_034_453_374_5,
+            0.101_228_536_290_376_3,
+        ];
         let f = |w: f64| (-nu * zeta * w).exp() * ((w2 * w).sinh() / w2).powf(nu);
         let panels = 400;
         let h = (b - a) / panels as f64;
@@ -102,7 +112,10 @@ mod tests {
                     let got = overdamped_tail(nu, zeta, w2, a, b);
                     let want = brute(nu, zeta, w2, a, b);
                     let err = ((got - want) / want).abs();
-                    assert!(err < 1e-13, "q={q} ζ={zeta} span={span}: {got} vs {want} ({err:.1e})");
+                    assert!(
+                        err < 1e-13,
+                        "q={q} ζ={zeta} span={span}: {got} vs {want} ({err:.1e})"
+                    );
                     worst = worst.max(err);
                 }
             }

@@ -25,7 +25,8 @@ pub fn dt_crit_seed(p: f64, v0: f64, omega0: f64) -> Result<f64, Error> {
     }
     let expo = -(p - 1.0) / (p + 1.0);
     // (v0/ω0)^expo / ω0 in logs: the ratio alone may overflow for extreme but valid inputs.
-    let ln_dt = (4.0 / (p + 1.0) * transform_a(p)).ln() + expo * (v0.ln() - omega0.ln()) - omega0.ln();
+    let ln_dt =
+        (4.0 / (p + 1.0) * transform_a(p)).ln() + expo * (v0.ln() - omega0.ln()) - omega0.ln();
     let dt = ln_dt.exp();
     if !(dt.is_finite() && dt > 0.0) {
         return Err(Error::ResultRange);
@@ -51,7 +52,10 @@ mod tests {
             let dmax = ((p + 1.0) * v0 * v0 / (2.0 * w0 * w0)).powf(1.0 / (p + 1.0));
             let wl = w0 * p.sqrt() * dmax.powf(0.5 * (p - 1.0));
             let ratio = dt_crit_seed(p, v0, w0).unwrap_or(f64::NAN) / (2.0 / wl);
-            assert!((ratio - (2.0 * p / (p + 1.0)).sqrt()).abs() < 1e-14, "p={p}: {ratio}");
+            assert!(
+                (ratio - (2.0 * p / (p + 1.0)).sqrt()).abs() < 1e-14,
+                "p={p}: {ratio}"
+            );
         }
     }
 }
@@ -102,5 +106,10 @@ pub fn dt_static(p: f64, alpha: f64, omega0: f64, accel: f64) -> Result<f64, Err
     let z = alpha / (2.0 * p.sqrt());
     // √(1+ζ²) − ζ = 1/(√(1+ζ²) + ζ): no cancellation for large ζ.
     let factor = 1.0 / (z.hypot(1.0) + z);
-    finite_positive(core::f64::consts::LN_2 + factor.ln() - omega0.ln() - 0.5 * p.ln() - 0.5 * (p - 1.0) * ln_deq)
+    finite_positive(
+        core::f64::consts::LN_2 + factor.ln()
+            - omega0.ln()
+            - 0.5 * p.ln()
+            - 0.5 * (p - 1.0) * ln_deq,
+    )
 }

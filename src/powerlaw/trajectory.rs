@@ -20,11 +20,11 @@
 //!   [`super::duration`] instead. The stencil's error next to the edge is about E^{−8} relative
 //!   (u^{q−1}'s 8th derivative at E steps), 1e−11 for E = 24.
 
-use super::contact::{Contact, Regime, LN_SINC};
+use super::contact::{Contact, LN_SINC, Regime};
 use super::duration::{contact_duration, ln_full_integral, time_at_phase};
+use crate::Error;
 use crate::criterion::EndCriterion;
 use crate::numerics::pow;
-use crate::Error;
 use core::f64::consts::PI;
 
 /// Phase steps next to a singular end whose times are not taken from the stencil.
@@ -42,13 +42,76 @@ const TAYLOR_RATIO: f64 = 0.3;
 /// ∫_0^1 of the Lagrange interpolant through nodes i − s (i = 0..8) over [0, 1], for s = 0..=6:
 /// t(j+1) − t(j) = h Σ_i C[s][i] f(j − s + i). Exact rationals (rounded), each row sums to 1.
 const STENCIL: [[f64; 8]; 7] = [
-    [0.30422453703703706, 1.1561590608465608, -1.0069196428571427, 1.0179646164021163, -0.7320353835978836, 0.3430803571428571, -0.09384093915343915, 0.01136739417989418],
-    [-0.01136739417989418, 0.3951636904761905, 0.8378720238095239, -0.3703455687830688, 0.2222470238095238, -0.09546130952380952, 0.024793320105820107, -0.0029017857142857144],
-    [0.0029017857142857144, -0.034581679894179894, 0.4764136904761905, 0.6753720238095238, -0.1672205687830688, 0.05974702380952381, -0.014211309523809524, 0.0015790343915343915],
-    [-0.0015790343915343915, 0.015534060846560846, -0.07879464285714285, 0.5648396164021164, 0.5648396164021164, -0.07879464285714285, 0.015534060846560846, -0.0015790343915343915],
-    [0.0015790343915343915, -0.014211309523809524, 0.05974702380952381, -0.1672205687830688, 0.6753720238095238, 0.4764136904761905, -0.034581679894179894, 0.0029017857142857144],
-    [-0.0029017857142857144, 0.024793320105820107, -0.09546130952380952, 0.2222470238095238, -0.3703455687830688, 0.8378720238095239, 0.3951636904761905, -0.01136739417989418],
-    [0.01136739417989418, -0.09384093915343915, 0.3430803571428571, -0.7320353835978836, 1.0179646164021163, -1.0069196428571427, 1.1561590608465608, 0.30422453703703706],
+    [
+        0.30422453703703706,
+        1.1561590608465608,
+        -1.0069196428571427,
+        1.0179646164021163,
+        -0.7320353835978836,
+        0.3430803571428571,
+        -0.09384093915343915,
+        0.01136739417989418,
+    ],
+    [
+        -0.01136739417989418,
+        0.3951636904761905,
+        0.8378720238095239,
+        -0.3703455687830688,
+        0.2222470238095238,
+        -0.09546130952380952,
+        0.024793320105820107,
+        -0.0029017857142857144,
+    ],
+    [
+        0.0029017857142857144,
+        -0.034581679894179894,
+        0.4764136904761905,
+        0.6753720238095238,
+        -0.1672205687830688,
+        0.05974702380952381,
+        -0.014211309523809524,
+        0.0015790343915343915,
+    ],
+    [
+        -0.0015790343915343915,
+        0.015534060846560846,
+        -0.07879464285714285,
+        0.5648396164021164,
+        0.5648396164021164,
+        -0.07879464285714285,
+        0.015534060846560846,
+        -0.0015790343915343915,
+    ],
+    [
+        0.0015790343915343915,
+        -0.014211309523809524,
+        0.05974702380952381,
+        -0.1672205687830688,
+        0.6753720238095238,
+        0.4764136904761905,
+        -0.034581679894179894,
+        0.0029017857142857144,
+    ],
+    [
+        -0.0029017857142857144,
+        0.024793320105820107,
+        -0.09546130952380952,
+        0.2222470238095238,
+        -0.3703455687830688,
+        0.8378720238095239,
+        0.3951636904761905,
+        -0.01136739417989418,
+    ],
+    [
+        0.01136739417989418,
+        -0.09384093915343915,
+        0.3430803571428571,
+        -0.7320353835978836,
+        1.0179646164021163,
+        -1.0069196428571427,
+        1.1561590608465608,
+        0.30422453703703706,
+    ],
 ];
 
 /// Taylor coefficients g_k of G(u) = Σ g_k u^k (module docs) for h = exp(φ),
@@ -72,7 +135,14 @@ fn g_series(q: f64, kappa: f64, lam: f64, kk: usize) -> [f64; TAYLOR_K] {
         *x = 1.0;
     }
     for k in 1..kk.min(TAYLOR_K) {
-        let s: f64 = phi.iter().enumerate().skip(1).take(k).zip(h.iter().take(k).rev()).map(|((i, &f), &hh)| i as f64 * f * hh).sum();
+        let s: f64 = phi
+            .iter()
+            .enumerate()
+            .skip(1)
+            .take(k)
+            .zip(h.iter().take(k).rev())
+            .map(|((i, &f), &hh)| i as f64 * f * hh)
+            .sum();
         if let Some(x) = h.get_mut(k) {
             *x = s / k as f64;
         }
@@ -184,7 +254,11 @@ fn fill_states(c: &Contact, h: f64, u_end: f64, x: &mut [f64], v: &mut [f64]) {
 /// x^q for one x: the branch-free kernel where it applies (no libm call), else libm.
 #[inline]
 fn pow_one(x: f64, q: f64) -> f64 {
-    if pow::in_kernel_range(x) { pow::pow_kernel(x, q) } else { (q * x.ln()).exp() }
+    if pow::in_kernel_range(x) {
+        pow::pow_kernel(x, q)
+    } else {
+        (q * x.ln()).exp()
+    }
 }
 
 /// Constant factors from X to δ, δ^((p−1)/2) and F.
@@ -199,7 +273,14 @@ impl Scales {
     /// X (in `d`) → δ, F and dt/du (into `t`), given X^q = pow(X); generic so that `pow` inlines
     /// and the loop vectorises.
     #[inline(always)]
-    fn fill<P: Fn(f64) -> f64>(&self, t: &mut [f64], d: &mut [f64], v: &[f64], f: &mut [f64], pow: P) {
+    fn fill<P: Fn(f64) -> f64>(
+        &self,
+        t: &mut [f64],
+        d: &mut [f64],
+        v: &[f64],
+        f: &mut [f64],
+        pow: P,
+    ) {
         for (((t, d), &vj), f) in t.iter_mut().zip(d.iter_mut()).zip(v).zip(f.iter_mut()) {
             let x = *d;
             let xq = pow(x);
@@ -226,7 +307,8 @@ impl pow::SimdLoop for KernelFill<'_> {
     #[inline(always)]
     fn run(self) {
         let q = self.q;
-        self.scales.fill(self.t, self.d, self.v, self.f, |x| pow::pow_kernel(x, q));
+        self.scales
+            .fill(self.t, self.d, self.v, self.f, |x| pow::pow_kernel(x, q));
     }
 }
 
@@ -275,7 +357,12 @@ pub fn sample_trajectory(
     // out.t) from X^q, the one transcendental pair per sample: a branch-free kernel in a loop
     // compiled for SIMD ([`pow`]), or libm where some X lies outside the kernel's range.
     fill_states(c, h, u_end, out.delta, out.v);
-    let scales = Scales { c_delta, c_dh, k, damp };
+    let scales = Scales {
+        c_delta,
+        c_dh,
+        k,
+        damp,
+    };
     // Samples not overwritten below as δ = 0 ends.
     let kept = match criterion {
         EndCriterion::Overlap => out.delta.get(1..last),
@@ -284,23 +371,49 @@ pub fn sample_trajectory(
     if q == 1.0 {
         // p = 1: x^(1−q) = 1 exactly, also where e^{−ζu} has underflowed to x = 0 (near-critical
         // damping, u_end ~ π/ω huge), which x/xq would turn into 0/0.
-        for (((t, d), &vj), f) in out.t.iter_mut().zip(out.delta.iter_mut()).zip(out.v.iter()).zip(out.force.iter_mut()) {
+        for (((t, d), &vj), f) in out
+            .t
+            .iter_mut()
+            .zip(out.delta.iter_mut())
+            .zip(out.v.iter())
+            .zip(out.force.iter_mut())
+        {
             let dj = c_delta * *d;
             *d = dj;
             *f = k * dj * c_dh * c_dh + damp * c_dh * vj;
             *t = 1.0;
         }
-    } else if kept.unwrap_or(&[]).iter().fold(0u64, |acc, &x| acc | u64::from(!pow::in_kernel_range(x))) == 0 {
+    } else if kept
+        .unwrap_or(&[])
+        .iter()
+        .fold(0u64, |acc, &x| acc | u64::from(!pow::in_kernel_range(x)))
+        == 0
+    {
         // (An OR over the slice vectorises; a short-circuiting `all` does not.)
-        pow::vectorised(KernelFill { scales: &scales, q, t: out.t, d: out.delta, v: out.v, f: out.force });
+        pow::vectorised(KernelFill {
+            scales: &scales,
+            q,
+            t: out.t,
+            d: out.delta,
+            v: out.v,
+            f: out.force,
+        });
     } else {
         scales.fill(out.t, out.delta, out.v, out.force, |x| (q * x.ln()).exp());
     }
     // δ = 0 at impact (and at the end under the overlap criterion): only the linear dashpot
     // (p = 1) still acts there.
-    for j in [Some(0), (criterion == EndCriterion::Overlap).then_some(last)].into_iter().flatten() {
+    for j in [
+        Some(0),
+        (criterion == EndCriterion::Overlap).then_some(last),
+    ]
+    .into_iter()
+    .flatten()
+    {
         let vj = out.v.get(j).copied().unwrap_or(0.0);
-        if let (Some(d), Some(f), Some(t)) = (out.delta.get_mut(j), out.force.get_mut(j), out.t.get_mut(j)) {
+        if let (Some(d), Some(f), Some(t)) =
+            (out.delta.get_mut(j), out.force.get_mut(j), out.t.get_mut(j))
+        {
             *d = 0.0;
             *f = if c.p == 1.0 { damp * vj } else { 0.0 };
             *t = 0.0;
@@ -310,12 +423,20 @@ pub fn sample_trajectory(
     // Pass 2: times.
     if q == 1.0 {
         for (j, t) in out.t.iter_mut().enumerate() {
-            *t = if j == last { tau } else { scale * (j as f64 * h) };
+            *t = if j == last {
+                tau
+            } else {
+                scale * (j as f64 * h)
+            };
         }
         return all_finite(&out);
     }
     let lam = (1.0 - zeta) * (1.0 + zeta);
-    let radius = if lam == 0.0 { f64::INFINITY } else { PI / lam.abs().sqrt() };
+    let radius = if lam == 0.0 {
+        f64::INFINITY
+    } else {
+        PI / lam.abs().sqrt()
+    };
     let edge_u = EDGE as f64 * h;
     let taylor_ok = edge_u <= TAYLOR_RATIO * radius && kappa.abs() * edge_u <= 10.0 * TAYLOR_RATIO;
     // Terms for the edge: the series' terms fall like (u/radius)^k (the zeros of S) and
@@ -330,7 +451,11 @@ pub fn sample_trajectory(
         }
         k
     };
-    let g_left = if taylor_ok { g_series(q, kappa, lam, kk) } else { [0.0; TAYLOR_K] };
+    let g_left = if taylor_ok {
+        g_series(q, kappa, lam, kk)
+    } else {
+        [0.0; TAYLOR_K]
+    };
     // Right singular end (underdamped): π/ω, and the phase left from the last sample to it.
     let right = match c.regime {
         Regime::Under(w) => {
@@ -345,9 +470,11 @@ pub fn sample_trajectory(
     let right_near = right.is_some_and(|(_, r_end)| r_end <= edge_u);
     // Right edge: t = P (T(π/ω) − e^{κπ/ω} r^q G₋(r)), r the phase left to π/ω; both factors once.
     let (g_right, full, right_factor) = match right {
-        Some((w, _)) if right_near && taylor_ok => {
-            (g_series(q, -kappa, lam, kk), ln_full_integral(c, w).exp(), (kappa * PI / w).exp())
-        }
+        Some((w, _)) if right_near && taylor_ok => (
+            g_series(q, -kappa, lam, kk),
+            ln_full_integral(c, w).exp(),
+            (kappa * PI / w).exp(),
+        ),
         _ => ([0.0; TAYLOR_K], 0.0, 0.0),
     };
     // The stencil interpolates the smooth factor e^{κu}(S(u)/u)^ν too: its 8th-order error is
@@ -395,7 +522,11 @@ pub fn sample_trajectory(
             let mut acc = 0.0;
             for (i, &cw) in row.iter().enumerate() {
                 let idx = start + i;
-                let fv = if idx < j { hist.get(idx % 8).copied().unwrap_or(f64::NAN) } else { t.get(idx).copied().unwrap_or(f_here) };
+                let fv = if idx < j {
+                    hist.get(idx % 8).copied().unwrap_or(f64::NAN)
+                } else {
+                    t.get(idx).copied().unwrap_or(f_here)
+                };
                 acc += cw * fv;
             }
             t_prev + scale * h * acc
@@ -439,7 +570,8 @@ pub fn sample_trajectory(
                     });
                 // The block's last 8 nodes' dt/du (older ones in `hist` stay valid).
                 for node in (jb + len).saturating_sub(8).max(jb)..jb + len {
-                    if let (Some(slot), Some(&wi)) = (hist.get_mut(node % 8), w.get(node + 4 - jb)) {
+                    if let (Some(slot), Some(&wi)) = (hist.get_mut(node % 8), w.get(node + 4 - jb))
+                    {
                         *slot = wi;
                     }
                 }
@@ -485,7 +617,11 @@ fn all_finite(out: &TrajectoryOut<'_>) -> Result<(), Error> {
     // An integer OR over the exponent fields (all ones only for ±inf and NaN): a reduction the
     // compiler vectorises, unlike a chain of is_finite.
     const EXP: u64 = 0x7ff0_0000_0000_0000;
-    let finite = |s: &[f64]| s.iter().fold(0u64, |acc, x| acc | u64::from(x.to_bits() & EXP == EXP)) == 0;
+    let finite = |s: &[f64]| {
+        s.iter()
+            .fold(0u64, |acc, x| acc | u64::from(x.to_bits() & EXP == EXP))
+            == 0
+    };
     if finite(out.t) && finite(out.delta) && finite(out.v) && finite(out.force) {
         Ok(())
     } else {
@@ -507,14 +643,27 @@ mod tests {
                         *x = bad;
                     }
                     let [t, d, v, f] = &mut b;
-                    let out = TrajectoryOut { t, delta: d, v, force: f };
+                    let out = TrajectoryOut {
+                        t,
+                        delta: d,
+                        v,
+                        force: f,
+                    };
                     assert!(all_finite(&out).is_err(), "{bad} in buffer {buf} at {pos}");
                 }
             }
         }
         let mut b = [[1.0f64, -0.0, 5e-324, f64::MAX, -f64::MAX, 1e-300, 2.0]; 4];
         let [t, d, v, f] = &mut b;
-        assert!(all_finite(&TrajectoryOut { t, delta: d, v, force: f }).is_ok());
+        assert!(
+            all_finite(&TrajectoryOut {
+                t,
+                delta: d,
+                v,
+                force: f
+            })
+            .is_ok()
+        );
     }
     use crate::numerics::jacobi_cc::MAX_LEVEL;
 
@@ -530,7 +679,9 @@ mod tests {
         let mut at = String::new();
         let mut at_d = String::new();
         for &p in &[1.0f64, 1.25, 1.5, 2.0, 3.0, 5.0] {
-            for &z in &[0.0, 1e-3, 0.05, 0.2, 0.5, 0.7, 0.72, 0.9, 0.999, 1.0, 1.2, 4.0, 30.0] {
+            for &z in &[
+                0.0, 1e-3, 0.05, 0.2, 0.5, 0.7, 0.72, 0.9, 0.999, 1.0, 1.2, 4.0, 30.0,
+            ] {
                 let alpha = z * crate::powerlaw::damping_scale(p);
                 let c = Contact::new(p, alpha, 0.4, 30.0).unwrap_or_else(|_| unreachable!());
                 for crit in [EndCriterion::Overlap, EndCriterion::Force] {
@@ -538,9 +689,16 @@ mod tests {
                         continue;
                     }
                     for &n in &[41usize, 64, 65, 100, 401, 1000, 4000] {
-                        let (mut t, mut d, mut v, mut f) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
-                        let out = TrajectoryOut { t: &mut t, delta: &mut d, v: &mut v, force: &mut f };
-                        sample_trajectory(&c, crit, 2.5, MAX_LEVEL, out).unwrap_or_else(|e| panic!("{e:?}"));
+                        let (mut t, mut d, mut v, mut f) =
+                            (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+                        let out = TrajectoryOut {
+                            t: &mut t,
+                            delta: &mut d,
+                            v: &mut v,
+                            force: &mut f,
+                        };
+                        sample_trajectory(&c, crit, 2.5, MAX_LEVEL, out)
+                            .unwrap_or_else(|e| panic!("{e:?}"));
                         let u_end = match crit {
                             EndCriterion::Overlap => c.u_overlap().unwrap_or(f64::NAN),
                             EndCriterion::Force => c.u_force(),
@@ -552,13 +710,18 @@ mod tests {
                             // Beyond ωu = π/2 the direct value is T(π/ω) − tail, which loses
                             // digits as T(π/ω)/T(u) (≈ e^{κπ/ω}, ζ → 1): skip where > 1e2.
                             if let Regime::Under(w) = c.regime {
-                                let full = contact_duration(&c, EndCriterion::Overlap, MAX_LEVEL).unwrap_or(f64::NAN);
+                                let full = contact_duration(&c, EndCriterion::Overlap, MAX_LEVEL)
+                                    .unwrap_or(f64::NAN);
                                 if w * u > 0.5 * PI && full / want > 1e2 {
                                     continue;
                                 }
                             }
                             let e = ((t[j] - want) / want).abs();
-                                            assert!(e < 1e-10, "p={p} ζ={z} {crit:?} n={n} j={j}: t {} vs {want} ({e:.1e})", t[j]);
+                            assert!(
+                                e < 1e-10,
+                                "p={p} ζ={z} {crit:?} n={n} j={j}: t {} vs {want} ({e:.1e})",
+                                t[j]
+                            );
                             if e > worst_t {
                                 worst_t = e;
                                 at = format!("p={p} ζ={z} {crit:?} n={n} j={j}");
@@ -585,7 +748,9 @@ mod tests {
                 }
             }
         }
-        println!("trajectory vs direct: worst rel t {worst_t:.1e} ({at}), rel δ per conditioning {worst_d:.1e} ({at_d}), |Δv|/v0 {worst_v:.1e}");
+        println!(
+            "trajectory vs direct: worst rel t {worst_t:.1e} ({at}), rel δ per conditioning {worst_d:.1e} ({at_d}), |Δv|/v0 {worst_v:.1e}"
+        );
         assert!(worst_t < 2e-11 && worst_d < 1e-13 && worst_v < 1e-13);
     }
 }

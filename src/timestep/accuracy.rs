@@ -21,9 +21,9 @@
 //! Cost: at most ~6·10⁶ force evaluations (tens of ms; up to a few hundred ms on a loaded
 //! machine for e ≤ 0.1 and tol ≤ 1e-3), no allocation. Call it at set-up, once per pair.
 
-use super::integrator::{collide, Scheme};
-use crate::force::powerlaw::powerlaw_from_alpha;
+use super::integrator::{Scheme, collide};
 use crate::force::PairModel;
+use crate::force::powerlaw::powerlaw_from_alpha;
 use crate::powerlaw::{alpha_from_e, check_exponent};
 use crate::{EndCriterion, Error};
 
@@ -71,10 +71,25 @@ pub fn worst_restitution_error(pair: &PairModel, e: f64, tau: f64, h: f64, n_pha
 }
 
 /// Dimensionless step h = dt/t* (see the module docs) and the contact duration τ/t*.
-pub(crate) fn unit_step(p: f64, e: f64, criterion: EndCriterion, tol: f64) -> Result<(f64, f64), Error> {
+pub(crate) fn unit_step(
+    p: f64,
+    e: f64,
+    criterion: EndCriterion,
+    tol: f64,
+) -> Result<(f64, f64), Error> {
     let pair = unit_pair(p, e, criterion)?;
     // Reference duration from a fine run (1% is plenty: τ only scales the search grid).
-    let tau = collide(&pair, 1.0, 1.0, 1.0, 1e-3, 0.5, Scheme::VelocityVerlet, 10_000_000)?.duration;
+    let tau = collide(
+        &pair,
+        1.0,
+        1.0,
+        1.0,
+        1e-3,
+        0.5,
+        Scheme::VelocityVerlet,
+        10_000_000,
+    )?
+    .duration;
     if !(tau > 0.0 && tau.is_finite()) {
         return Err(Error::NoConvergence);
     }
@@ -96,7 +111,11 @@ pub(crate) fn unit_step(p: f64, e: f64, criterion: EndCriterion, tol: f64) -> Re
         }
         if h <= floor * 1.000001 {
             // Extrapolate E ∝ h^k from the two finest measurements.
-            let k = if e_fail.is_finite() && e_h > 0.0 { (e_fail / e_h).log2().clamp(0.5, 2.0) } else { 1.0 };
+            let k = if e_fail.is_finite() && e_h > 0.0 {
+                (e_fail / e_h).log2().clamp(0.5, 2.0)
+            } else {
+                1.0
+            };
             let h_ex = h * (tol / e_h).powf(1.0 / k);
             return Ok((h_ex, tau));
         }
@@ -118,8 +137,16 @@ pub(crate) fn unit_step(p: f64, e: f64, criterion: EndCriterion, tol: f64) -> Re
 /// The largest velocity-Verlet step [s] for which a power-law collision (exponent p, restitution
 /// e calibrated exactly for `criterion`, impact speed v0, ω0 = √(k/m)) realises e within relative
 /// tolerance `tol`, whatever the phase of first contact within a step. See the module docs.
-pub fn dt_for_accuracy(p: f64, e: f64, criterion: EndCriterion, v0: f64, omega0: f64, tol: f64) -> Result<f64, Error> {
-    if !(p.is_finite() && e.is_finite() && v0.is_finite() && omega0.is_finite() && tol.is_finite()) {
+pub fn dt_for_accuracy(
+    p: f64,
+    e: f64,
+    criterion: EndCriterion,
+    v0: f64,
+    omega0: f64,
+    tol: f64,
+) -> Result<f64, Error> {
+    if !(p.is_finite() && e.is_finite() && v0.is_finite() && omega0.is_finite() && tol.is_finite())
+    {
         return Err(Error::NotFinite);
     }
     check_exponent(p)?;

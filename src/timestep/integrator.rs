@@ -17,8 +17,8 @@
 //! between steps (δ = 0 for `Overlap`; the raw, unclamped force for `Force`); δ_max is the
 //! largest overlap seen at a step, as a host sees it. No allocation; the step count is bounded.
 
-use crate::force::pair::{normal_force_raw, unclamped};
 use crate::force::PairModel;
+use crate::force::pair::{normal_force_raw, unclamped};
 use crate::{EndCriterion, Error};
 
 /// The time integrator of the host code.
@@ -106,7 +106,11 @@ pub fn collide(
             if unloading && t_force_end.is_nan() {
                 let f = raw(d_new, v_f);
                 if !(f > 0.0) {
-                    let frac = if f_prev > 0.0 { f_prev / (f_prev - f) } else { 1.0 };
+                    let frac = if f_prev > 0.0 {
+                        f_prev / (f_prev - f)
+                    } else {
+                        1.0
+                    };
                     t_force_end = t + frac * dt;
                 }
                 f_prev = f;
@@ -121,7 +125,12 @@ pub fn collide(
                 EndCriterion::Force => t_force_end,
             };
             // From here on no force acts: the velocity of this step is the exit velocity.
-            return Ok(Collision { e: -v_new / v0, delta_max: d_max, duration: t_end - t0, steps: n + 1 });
+            return Ok(Collision {
+                e: -v_new / v0,
+                delta_max: d_max,
+                duration: t_end - t0,
+                steps: n + 1,
+            });
         }
         d = d_new;
         v = v_new;
@@ -181,10 +190,24 @@ mod tests {
     #[test]
     fn elastic_linear_spring_small_step() {
         // p = 1, e = 1: half a period π/ω0 and e = 1 up to the O(dt²) of Verlet.
-        let pair = powerlaw(1.0, 4.0, 1.0, EndCriterion::Overlap).unwrap_or_else(|_| unreachable!());
-        let c = collide(&pair, 1.0, 1.0, 0.3, 1e-4, 0.37, Scheme::VelocityVerlet, 1_000_000);
+        let pair =
+            powerlaw(1.0, 4.0, 1.0, EndCriterion::Overlap).unwrap_or_else(|_| unreachable!());
+        let c = collide(
+            &pair,
+            1.0,
+            1.0,
+            0.3,
+            1e-4,
+            0.37,
+            Scheme::VelocityVerlet,
+            1_000_000,
+        );
         let c = c.unwrap_or_else(|_| unreachable!());
-        assert!((c.duration - core::f64::consts::FRAC_PI_2).abs() < 1e-4, "{}", c.duration);
+        assert!(
+            (c.duration - core::f64::consts::FRAC_PI_2).abs() < 1e-4,
+            "{}",
+            c.duration
+        );
         assert!((c.e - 1.0).abs() < 1e-6, "{}", c.e);
         assert!((c.delta_max - 0.15).abs() < 1e-6, "{}", c.delta_max);
     }
@@ -195,8 +218,21 @@ mod tests {
         // (powerlaw::timestep::dt_static). Load g = 1, k = 1: δ_eq = 1.
         for &(p, e) in &[(1.0, 0.3), (1.5, 0.1), (1.5, 0.8), (3.0, 0.5)] {
             let pair = powerlaw(p, 1.0, e, EndCriterion::Force).unwrap_or_else(|_| unreachable!());
-            let lim = crate::powerlaw::timestep::dt_static(p, pair.alpha, 1.0, 1.0).unwrap_or(f64::NAN);
-            let stable = |dt: f64| resting_contact_stable(&pair, 1.0, 1.0, 1.0, 1.0, 1.001, dt, Scheme::VelocityVerlet, 20_000);
+            let lim =
+                crate::powerlaw::timestep::dt_static(p, pair.alpha, 1.0, 1.0).unwrap_or(f64::NAN);
+            let stable = |dt: f64| {
+                resting_contact_stable(
+                    &pair,
+                    1.0,
+                    1.0,
+                    1.0,
+                    1.0,
+                    1.001,
+                    dt,
+                    Scheme::VelocityVerlet,
+                    20_000,
+                )
+            };
             assert!(stable(0.99 * lim), "p={p} e={e}: unstable below the limit");
             assert!(!stable(1.01 * lim), "p={p} e={e}: stable above the limit");
         }

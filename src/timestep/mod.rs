@@ -12,4 +12,4 @@ pub mod accuracy;
 pub mod integrator;
 
 pub use accuracy::{dt_for_accuracy, worst_restitution_error};
-pub use integrator::{collide, resting_contact_stable, Collision, Scheme};
+pub use integrator::{Collision, Scheme, collide, resting_contact_stable};

@@ -35,7 +35,11 @@ pub fn b_from_e(e: f64, criterion: EndCriterion) -> Result<f64, Error> {
     // Bracket in s = ln b: e(tiny b) ≈ 1 - 1.15 b, and above, the asymptotic laws (inverted,
     // with a safety factor) give a b where e has fallen below the target.
     let b_small = (1.0 - e) / 1.2;
-    let lo_b = if b_small > 0.0 { b_small * 0.5 } else { f64::MIN_POSITIVE };
+    let lo_b = if b_small > 0.0 {
+        b_small * 0.5
+    } else {
+        f64::MIN_POSITIVE
+    };
     let hi_b = match criterion {
         EndCriterion::Force => (1.4 / e).powf(0.6).max(1.0) * 2.0,
         EndCriterion::Overlap => (5.2 / e).powf(0.2).max(1.0) * 2.0,
@@ -70,7 +74,11 @@ pub fn b_from_e(e: f64, criterion: EndCriterion) -> Result<f64, Error> {
         let h = 1e-6;
         let d = (f(s + h) - f(s - h)) / (2.0 * h);
         let newton = s - fs / d;
-        let next = if newton.is_finite() && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+        let next = if newton.is_finite() && newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
         let tol = 4.0 * f64::EPSILON * s.abs().max(1.0);
         let step = (next - s).abs();
         s = next;
@@ -83,7 +91,11 @@ pub fn b_from_e(e: f64, criterion: EndCriterion) -> Result<f64, Error> {
         return Err(Error::NoConvergence);
     }
     let b = s.exp();
-    if b.is_finite() { Ok(b) } else { Err(Error::ResultRange) }
+    if b.is_finite() {
+        Ok(b)
+    } else {
+        Err(Error::ResultRange)
+    }
 }
 
 /// β = γ k^{−3/5} that makes a collision at `v_ref` > 0 rebound with e ∈ (0, 1].
@@ -91,18 +103,32 @@ pub fn beta_from_e(e: f64, v_ref: f64, criterion: EndCriterion) -> Result<f64, E
     let b = b_from_e(e, criterion)?;
     let unit = scaling::b_from_beta_speed(1.0, v_ref)?;
     let beta = b / unit;
-    if beta.is_finite() { Ok(beta) } else { Err(Error::ResultRange) }
+    if beta.is_finite() {
+        Ok(beta)
+    } else {
+        Err(Error::ResultRange)
+    }
 }
 
 /// The dissipative constant A (a time) of the material law F = ρ ξ^{3/2} + (3/2) A ρ √ξ ξ' for
 /// which a collision at `v_ref` rebounds with e; ρ > 0, m_eff > 0.
-pub fn a_from_e(e: f64, v_ref: f64, rho: f64, m_eff: f64, criterion: EndCriterion) -> Result<f64, Error> {
+pub fn a_from_e(
+    e: f64,
+    v_ref: f64,
+    rho: f64,
+    m_eff: f64,
+    criterion: EndCriterion,
+) -> Result<f64, Error> {
     let beta = beta_from_e(e, v_ref, criterion)?;
     // β = (3/2) A ρ^{2/5} m^{−2/5}: β for A = 1 is the conversion factor.
     let (k, gamma1) = scaling::k_gamma_from_material(rho, 1.0, m_eff)?;
     let beta_per_a = scaling::beta_from_k_gamma(k, gamma1)?;
     let a = beta / beta_per_a;
-    if a.is_finite() { Ok(a) } else { Err(Error::ResultRange) }
+    if a.is_finite() {
+        Ok(a)
+    } else {
+        Err(Error::ResultRange)
+    }
 }
 
 /// The impact speed at which the restitution equals e ∈ (0, 1], for β > 0: v = (b(e)/β)^5
@@ -118,7 +144,11 @@ pub fn speed_for_e(e: f64, beta: f64, criterion: EndCriterion) -> Result<f64, Er
     let b = b_from_e(e, criterion)?;
     let r = b / beta;
     let v = (r * r) * (r * r) * r;
-    if v.is_finite() { Ok(v) } else { Err(Error::ResultRange) }
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(Error::ResultRange)
+    }
 }
 
 /// Restitution at impact speed v > 0 for stiffness and damping per unit mass k > 0, γ ≥ 0.

@@ -12,9 +12,9 @@
 //! [`calibration`] turns a measured e at a reference speed into β (or A), and finds the speed at
 //! which e reaches a given value.
 
-pub mod reference;
-pub mod scaling;
 pub mod calibration;
 pub mod full_range;
+pub mod reference;
+pub mod scaling;
 pub mod series;
 mod table;

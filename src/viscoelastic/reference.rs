@@ -23,7 +23,7 @@
 //! runs with complex b, which [`integrate_complex`] uses to obtain series coefficients by Cauchy
 //! integrals (the paper's tables, reproduced in the tests).
 
-use crate::numerics::taylor::{cauchy_term, horner, step_size, Scalar};
+use crate::numerics::taylor::{Scalar, cauchy_term, horner, step_size};
 use crate::{EndCriterion, Error};
 use num_complex::Complex64;
 
@@ -150,7 +150,11 @@ impl<T: Scalar> Jet<T> {
 }
 
 fn start<T: Scalar>() -> State<T> {
-    State { u: T::from_f64(0.0), v: T::from_f64(1.0), t: T::from_f64(0.0) }
+    State {
+        u: T::from_f64(0.0),
+        v: T::from_f64(1.0),
+        t: T::from_f64(0.0),
+    }
 }
 
 /// Integrates the regularised collision with real b ≥ 0 to the first occurrence of `ev`.
@@ -174,10 +178,18 @@ pub fn integrate(b: f64, ev: Event, tol: f64, max_steps: u32) -> Result<Hit<f64>
             // and at the overlap root g = bV < 0 closes the bracket.
             let passed = ev == Event::Force && jet.eval(d).0.u <= 0.0;
             if g <= 0.0 || passed {
-                let hi = if g <= 0.0 { d } else { locate_real(&jet, b, Event::Overlap, lo, d) };
+                let hi = if g <= 0.0 {
+                    d
+                } else {
+                    locate_real(&jet, b, Event::Overlap, lo, d)
+                };
                 let root = locate_real(&jet, b, ev, lo, hi);
                 let (st, _, _) = jet.eval(root);
-                return Ok(Hit { sigma: sigma + root, state: st, steps: steps + 1 });
+                return Ok(Hit {
+                    sigma: sigma + root,
+                    state: st,
+                    steps: steps + 1,
+                });
             }
             lo = d;
         }
@@ -201,7 +213,11 @@ fn locate_real(jet: &Jet<f64>, b: f64, ev: Event, mut lo: f64, mut hi: f64) -> f
             hi = x;
         }
         let newton = x - g / dg;
-        let next = if newton.is_finite() && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+        let next = if newton.is_finite() && newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
         if (next - x).abs() <= 2.0 * f64::EPSILON * x.abs() || hi - lo <= 2.0 * f64::EPSILON * hi {
             return next;
         }
@@ -217,7 +233,12 @@ fn locate_real(jet: &Jet<f64>, b: f64, ev: Event, mut lo: f64, mut hi: f64) -> f
 /// local polynomials. For the force end the root is taken on the branch continuous with
 /// √b = `w` > 0: near the overlap root σ_O, u ≈ (e/2)(σ_O − σ), so u² + bV = 0 at
 /// σ ≈ σ_O − 2w/√e. Returns `NoConvergence` when the walk fails (|b| too large).
-pub fn integrate_complex(w: Complex64, ev: Event, tol: f64, max_steps: u32) -> Result<Hit<Complex64>, Error> {
+pub fn integrate_complex(
+    w: Complex64,
+    ev: Event,
+    tol: f64,
+    max_steps: u32,
+) -> Result<Hit<Complex64>, Error> {
     let b = w * w;
     let mut s = start::<Complex64>();
     let mut sigma = Complex64::new(0.0, 0.0);
@@ -249,7 +270,11 @@ pub fn integrate_complex(w: Complex64, ev: Event, tol: f64, max_steps: u32) -> R
                     let e0 = -jet.eval(guess).0.v;
                     guess -= w * 2.0 / e0.sqrt();
                 }
-                return walk_newton(b, ev, s, sigma, guess, tol).map(|(sg, st)| Hit { sigma: sg, state: st, steps: steps + 1 });
+                return walk_newton(b, ev, s, sigma, guess, tol).map(|(sg, st)| Hit {
+                    sigma: sg,
+                    state: st,
+                    steps: steps + 1,
+                });
             }
         }
         s = jet.eval(Complex64::new(h, 0.0)).0;
@@ -339,14 +364,20 @@ mod tests {
     fn undamped_maximum_compression_is_exact() {
         // b = 0: X_max = (5/4)^(2/5) from energy conservation, V² + (4/5)X^(5/2) = 1.
         let hit = integrate(0.0, Event::MaxCompression, TOL_DEFAULT, 1000);
-        let hit = hit.unwrap_or(Hit { sigma: f64::NAN, state: start(), steps: 0 });
+        let hit = hit.unwrap_or(Hit {
+            sigma: f64::NAN,
+            state: start(),
+            steps: 0,
+        });
         let xmax = hit.state.u * hit.state.u;
         assert!((xmax - 1.25f64.powf(0.4)).abs() < 2e-15, "{xmax}");
     }
 
     #[test]
     fn undamped_collision_is_elastic() {
-        let e = integrate(0.0, Event::Overlap, TOL_DEFAULT, 1000).map(|h| -h.state.v).unwrap_or(f64::NAN);
+        let e = integrate(0.0, Event::Overlap, TOL_DEFAULT, 1000)
+            .map(|h| -h.state.v)
+            .unwrap_or(f64::NAN);
         assert!((e - 1.0).abs() < 1e-15, "{e}");
     }
 
@@ -354,11 +385,16 @@ mod tests {
     fn complex_path_agrees_with_real_path_for_real_b() {
         for &b in &[0.05f64, 0.3, 1.0] {
             for ev in [Event::Overlap, Event::Force, Event::MaxCompression] {
-                let r = integrate(b, ev, TOL_DEFAULT, 100_000).map(|h| h.state.v).unwrap_or(f64::NAN);
+                let r = integrate(b, ev, TOL_DEFAULT, 100_000)
+                    .map(|h| h.state.v)
+                    .unwrap_or(f64::NAN);
                 let c = integrate_complex(Complex64::new(b.sqrt(), 0.0), ev, TOL_DEFAULT, 100_000)
                     .map(|h| h.state.v)
                     .unwrap_or(Complex64::new(f64::NAN, 0.0));
-                assert!((c.re - r).abs() < 1e-14 && c.im.abs() < 1e-14, "{b} {ev:?} {r} {c}");
+                assert!(
+                    (c.re - r).abs() < 1e-14 && c.im.abs() < 1e-14,
+                    "{b} {ev:?} {r} {c}"
+                );
             }
         }
     }

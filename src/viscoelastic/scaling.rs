@@ -36,7 +36,11 @@ fn non_negative(x: f64) -> Result<f64, Error> {
 }
 
 fn finite(x: f64) -> Result<f64, Error> {
-    if x.is_finite() { Ok(x) } else { Err(Error::ResultRange) }
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(Error::ResultRange)
+    }
 }
 
 /// β = γ k^{−3/5} from the stiffness per unit mass k > 0 and damping per unit mass γ ≥ 0.

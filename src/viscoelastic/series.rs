@@ -106,6 +106,11 @@ pub fn e_series(b: f64, criterion: EndCriterion) -> Result<f64, Error> {
 }
 
 /// The paper's coefficient tables as printed: (h_0..h_20, c_1..c_10, a_1..a_10, b_0..b_10).
-pub fn paper_tables() -> (&'static [f64; 21], &'static [f64; 10], &'static [f64; 10], &'static [f64; 11]) {
+pub fn paper_tables() -> (
+    &'static [f64; 21],
+    &'static [f64; 10],
+    &'static [f64; 10],
+    &'static [f64; 11],
+) {
     (&H, &C, &A, &B)
 }
