@@ -86,6 +86,11 @@
 #define VISCOELASTIC 4
 
 /**
+ * Adhesive DMT: Hertz minus 2π w R*, attraction beyond touching ([`crate::force::dmt`]).
+ */
+#define DMT 5
+
+/**
  * Undamped (e_n = 1).
  */
 #define NONE 0
@@ -125,6 +130,13 @@
  * Normal law: viscoelastic Hertz (Brilliantov et al.) with damping constant visco_A.
  */
 #define DC_NORMAL_VISCOELASTIC 4
+
+/**
+ * Normal law: adhesive DMT, Hertz minus 2 pi w R* (w = work_of_adhesion), attraction also
+ * beyond touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of
+ * separation); never clamped: requires DC_END_OVERLAP.
+ */
+#define DC_NORMAL_DMT 5
 
 /**
  * Normal damping: none (e_n = 1).
@@ -191,6 +203,12 @@
  * dc_pair.model of a viscoelastic Hertz pair (Brilliantov et al.).
  */
 #define DC_MODEL_VISCOELASTIC 3
+
+/**
+ * dc_pair.model of an adhesive DMT pair (the normal law of a dc_contact_model built with
+ * DC_NORMAL_DMT; there is no dc_pair_* constructor for it).
+ */
+#define DC_MODEL_DMT 4
 
 /**
  * Lowest quadrature accuracy level (fastest; see docs/powerlaw.md for its measured error).
@@ -444,6 +462,10 @@ typedef struct dc_contact_spec {
      * enters only the damping calibrations (tangential mass m_t = kappa/(1 + kappa) m*).
      */
     double inertia_factor;
+    /**
+     * Work of adhesion w >= 0 [J/m^2] (DC_NORMAL_DMT: pull-off force 2 pi w R*).
+     */
+    double work_of_adhesion;
 } dc_contact_spec;
 
 /**

@@ -23,6 +23,7 @@ module demcontact_c
   integer(c_int32_t), parameter :: POWERLAW = 2
   integer(c_int32_t), parameter :: LINEAR = 3
   integer(c_int32_t), parameter :: VISCOELASTIC = 4
+  integer(c_int32_t), parameter :: DMT = 5
   integer(c_int32_t), parameter :: NONE = 0
   integer(c_int32_t), parameter :: RESTITUTION = 1
   integer(c_int32_t), parameter :: DC_CONTACT_SPEC_VERSION = 1
@@ -31,6 +32,7 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_NORMAL_POWERLAW = 2
   integer(c_int32_t), parameter :: DC_NORMAL_LINEAR = 3
   integer(c_int32_t), parameter :: DC_NORMAL_VISCOELASTIC = 4
+  integer(c_int32_t), parameter :: DC_NORMAL_DMT = 5
   integer(c_int32_t), parameter :: DC_DAMPING_NONE = 0
   integer(c_int32_t), parameter :: DC_DAMPING_RESTITUTION = 1
   integer(c_int32_t), parameter :: DC_TANGENTIAL_NONE = 0
@@ -44,6 +46,7 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_MODEL_POWERLAW = 1
   integer(c_int32_t), parameter :: DC_MODEL_HERTZ = 2
   integer(c_int32_t), parameter :: DC_MODEL_VISCOELASTIC = 3
+  integer(c_int32_t), parameter :: DC_MODEL_DMT = 4
   integer(c_int32_t), parameter :: DC_LEVEL_MIN = 0
   integer(c_int32_t), parameter :: DC_LEVEL_MAX = 4
   integer(c_int32_t), parameter :: DC_OK = 0
@@ -98,6 +101,7 @@ module demcontact_c
     real(c_double) :: k_tw
     real(c_double) :: eta_tw
     real(c_double) :: inertia_factor
+    real(c_double) :: work_of_adhesion
   end type dc_contact_spec
 
   type, bind(c) :: dc_pair

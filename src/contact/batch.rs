@@ -15,7 +15,7 @@ use super::model::{ContactModel, select};
 use super::tangential::{TangentialLaw, step};
 use super::tangential_linear::Linear;
 use super::tangential_mindlin::Mindlin;
-use super::vec3::{V3, add, cross, dot, scale, sub};
+use super::vec3::{V3, add, cross, dot, normal_vector, scale, sub};
 use super::{rolling_constant, rolling_epsd, twisting_sds};
 use crate::Error;
 use crate::force::pair::{Consts, Law, Visit, eval};
@@ -130,9 +130,7 @@ fn normal_pass<L: Law, const CLAMP: bool>(
         let vn = -dot(sub(v1, v2), n);
         let f = eval::<L, CLAMP>(&c, d, vn, harmonic(r1, r2), harmonic(m1, m2));
         *fo = f;
-        // Separated contacts get +0 (as the scalar call), not f·n = ±0.
-        let v = scale(f, n);
-        *fv = if d > 0.0 { v } else { [0.0; 3] };
+        *fv = normal_vector(f, n);
     }
 }
 

@@ -26,6 +26,10 @@ pub const DC_NORMAL_POWERLAW: i32 = 2;
 pub const DC_NORMAL_LINEAR: i32 = 3;
 /// Normal law: viscoelastic Hertz (Brilliantov et al.) with damping constant visco_A.
 pub const DC_NORMAL_VISCOELASTIC: i32 = 4;
+/// Normal law: adhesive DMT, Hertz minus 2 pi w R* (w = work_of_adhesion), attraction also
+/// beyond touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of
+/// separation); never clamped: requires DC_END_OVERLAP.
+pub const DC_NORMAL_DMT: i32 = 5;
 /// Normal damping: none (e_n = 1).
 pub const DC_DAMPING_NONE: i32 = 0;
 /// Normal damping: alpha calibrated exactly from e_n for the criterion.
@@ -52,6 +56,7 @@ const _: () = assert!(
         && DC_NORMAL_POWERLAW == normal::POWERLAW
         && DC_NORMAL_LINEAR == normal::LINEAR
         && DC_NORMAL_VISCOELASTIC == normal::VISCOELASTIC
+        && DC_NORMAL_DMT == normal::DMT
         && DC_DAMPING_NONE == damping::NONE
         && DC_DAMPING_RESTITUTION == damping::RESTITUTION
         && DC_TANGENTIAL_NONE == select::TANGENTIAL_NONE
@@ -131,6 +136,8 @@ pub struct dc_contact_spec {
     /// Inertia factor kappa = I/(m r^2) of the bodies, in (0, 1] (default 0.4: solid spheres);
     /// enters only the damping calibrations (tangential mass m_t = kappa/(1 + kappa) m*).
     pub inertia_factor: f64,
+    /// Work of adhesion w >= 0 [J/m^2] (DC_NORMAL_DMT: pull-off force 2 pi w R*).
+    pub work_of_adhesion: f64,
 }
 
 impl From<&dc_contact_spec> for ContactSpec {
@@ -160,6 +167,7 @@ impl From<&dc_contact_spec> for ContactSpec {
             k_tw: s.k_tw,
             eta_tw: s.eta_tw,
             inertia_factor: s.inertia_factor,
+            work_of_adhesion: s.work_of_adhesion,
         }
     }
 }
@@ -410,6 +418,7 @@ pub unsafe extern "C" fn dc_contact_spec_init(spec: *mut dc_contact_spec) -> i32
                 k_tw: d.k_tw,
                 eta_tw: d.eta_tw,
                 inertia_factor: d.inertia_factor,
+                work_of_adhesion: d.work_of_adhesion,
             })
         })
     }

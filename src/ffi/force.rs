@@ -16,12 +16,16 @@ pub const DC_MODEL_POWERLAW: i32 = 1;
 pub const DC_MODEL_HERTZ: i32 = 2;
 /// dc_pair.model of a viscoelastic Hertz pair (Brilliantov et al.).
 pub const DC_MODEL_VISCOELASTIC: i32 = 3;
+/// dc_pair.model of an adhesive DMT pair (the normal law of a dc_contact_model built with
+/// DC_NORMAL_DMT; there is no dc_pair_* constructor for it).
+pub const DC_MODEL_DMT: i32 = 4;
 
 // The C constants are literals (cbindgen cannot resolve paths); they must equal the core's.
 const _: () = assert!(
     DC_MODEL_POWERLAW == MODEL_POWERLAW
         && DC_MODEL_HERTZ == MODEL_HERTZ
         && DC_MODEL_VISCOELASTIC == MODEL_VISCOELASTIC
+        && DC_MODEL_DMT == crate::force::dmt::MODEL_DMT
 );
 
 /// A calibrated contact model for one material pair (type pair): plain data, owned by the
