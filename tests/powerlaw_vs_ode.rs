@@ -380,7 +380,8 @@ fn trajectory_matches_reference() {
     println!(
         "trajectory: {checked} samples; worst rel t {worst_t:.2e}, worst |Δv|/v0 {worst_v:.2e}"
     );
-    assert!(worst_t < 1e-10 && worst_v < 1e-10);
+    // Quoted in the README and docs/powerlaw.md (measured 4.5e-12 and 5.4e-12).
+    assert!(worst_t < 1e-11 && worst_v < 1e-11);
 }
 
 #[test]
