@@ -42,7 +42,10 @@ fn full_range_matches_reference_on_420_points() {
         // The contract is 1e-10; the bounds asserted are those of the measured figures quoted in
         // the README (6.2e-14 force, 3.7e-15 overlap).
         let bound = if c == Force { 1.5e-13 } else { 1e-14 };
-        assert!(used >= 200 && worst < bound, "{c:?}: {worst:.2e} above {bound:.0e}");
+        assert!(
+            used >= 200 && worst < bound,
+            "{c:?}: {worst:.2e} above {bound:.0e}"
+        );
     }
 }
 
