@@ -1,7 +1,7 @@
 //! Exports: full contact (normal, tangential, rolling, twisting) with caller-owned history.
 
 use super::status::*;
-use super::{status_of, write_result};
+use super::{dc_status, guard, write_result};
 use crate::contact::batch::{BatchIn, BatchOut, contact_force_batch};
 use crate::contact::evaluate::contact_force;
 use crate::contact::model::{HISTORY_MAX, Layout, select};
@@ -514,7 +514,7 @@ unsafe fn force_common(
     }
     let cm = match model_of(m) {
         Ok(cm) => cm,
-        Err(e) => return status_of(e),
+        Err(e) => return dc_status::of(e).code(),
     };
     let need = cm.layout.len;
     if need > 0 && history.is_null() {
@@ -717,7 +717,7 @@ pub unsafe extern "C" fn dc_contact_force_batch(
     };
     let cm = match model_of(m) {
         Ok(cm) => cm,
-        Err(e) => return status_of(e),
+        Err(e) => return dc_status::of(e).code(),
     };
     let len = cm.layout.len;
     let normal_only = len == 0 && cm.rolling == select::ROLLING_NONE;
@@ -839,9 +839,5 @@ pub unsafe extern "C" fn dc_contact_force_batch(
             contact_force_batch(&cm, &inp, dt, &mut o)
         }
     };
-    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(body)) {
-        Ok(Ok(())) => DC_OK,
-        Ok(Err(e)) => status_of(e),
-        Err(_) => DC_ERR_INTERNAL,
-    }
+    guard(|| Ok(body()?))
 }
