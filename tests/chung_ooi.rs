@@ -302,6 +302,6 @@ fn committed_reference_table_is_fresh() {
 fn table_parser_rejects_bad_input() {
     assert!(parse_csv("case,material\n").is_err());
     assert!(parse_csv(&format!("{CSV_HEADER}\nt4,Al2O3,1\n")).is_err());
-    let bad = format!("{CSV_HEADER}\nt4,Al2O3,x,0.23,4000,0.0025,3.9,5,0.092,0.98,1,1,1,1\n");
+    let bad = format!("{CSV_HEADER}\nt4,Al2O3,x,0.23,4000,0.0025,3.9,5,0.092,0.98,1,1,1,1,NaN\n");
     assert!(parse_csv(&bad).is_err());
 }

@@ -827,10 +827,13 @@ pub struct Row {
     pub e_t: f64,
     pub omega: f64,
     pub rebound_deg: f64,
+    /// "t4_stick" rows: the no-slip limit β0 of [`no_slip_beta`] (lever R, undamped), so that
+    /// e_t → (5 + 2 β0)/7; NaN on "t4" rows.
+    pub beta0: f64,
 }
 
 pub const CSV_HEADER: &str =
-    "case,material,E,nu,rho,R,v,theta_deg,mu,e_n_target,e_n,e_t,omega,rebound_deg";
+    "case,material,E,nu,rho,R,v,theta_deg,mu,e_n_target,e_n,e_t,omega,rebound_deg,beta0";
 
 /// demcontact's conventions for the reference (read from the library's src/contact: total spring
 /// displacement with k_t(δ), Coulomb limit μ|F_n| on the applied normal force, lever R − δ/2,
@@ -868,6 +871,12 @@ pub fn reference_rows(rtol: f64) -> Result<Vec<Row>, String> {
             };
             for th in angles {
                 let (e_n, e_t, omega, rebound_deg) = outcome_row(&sp, v, th, rtol)?;
+                let beta0 = if case == "t4" {
+                    f64::NAN
+                } else {
+                    let vn = v * th.to_radians().cos();
+                    no_slip_beta(k_ratio(&sp, vn), 0.0, End::Overlap, sp.rule, rtol)
+                };
                 rows.push(Row {
                     case: case.into(),
                     material: mat.name.into(),
@@ -883,6 +892,7 @@ pub fn reference_rows(rtol: f64) -> Result<Vec<Row>, String> {
                     e_t,
                     omega,
                     rebound_deg,
+                    beta0,
                 });
             }
         }
@@ -898,13 +908,14 @@ pub fn format_csv(rows: &[Row]) -> String {
          # demcontact conventions: Hertz + Tsuji damping calibrated for e_n (force-zero end, clamped),\n\
          # Mindlin k_t = 8 G* sqrt(R delta) on the total spring displacement, Coulomb mu*Fn on the applied\n\
          # normal force, lever R - delta/2, rigid wall (E = inf), no tangential damping, no initial spin.\n\
-         # Units: SI; omega in rad/s about +y (n = +z, u along +x); rebound angle of the contact point, deg.\n",
+         # Units: SI; omega in rad/s about +y (n = +z, u along +x); rebound angle of the contact point, deg.\n\
+         # beta0 (t4_stick rows): the no-slip limit of the contact-point velocity ratio, e_t -> (5 + 2 beta0)/7.\n",
     );
     s.push_str(CSV_HEADER);
     s.push('\n');
     for r in rows {
         s.push_str(&format!(
-            "{},{},{:e},{},{},{},{},{},{},{},{:.15e},{:.15e},{:.15e},{:.15e}\n",
+            "{},{},{:e},{},{},{},{},{},{},{},{:.15e},{:.15e},{:.15e},{:.15e},{:.15e}\n",
             r.case,
             r.material,
             r.young,
@@ -918,7 +929,8 @@ pub fn format_csv(rows: &[Row]) -> String {
             r.e_n,
             r.e_t,
             r.omega,
-            r.rebound_deg
+            r.rebound_deg,
+            r.beta0
         ));
     }
     s
@@ -939,7 +951,7 @@ pub fn parse_csv(text: &str) -> Result<Vec<Row>, String> {
             continue;
         }
         let c: Vec<&str> = line.split(',').collect();
-        if c.len() != 14 {
+        if c.len() != 15 {
             return Err(format!("line {}: {} fields", i + 1, c.len()));
         }
         let num = |k: usize| -> Result<f64, String> {
@@ -961,6 +973,7 @@ pub fn parse_csv(text: &str) -> Result<Vec<Row>, String> {
             e_t: num(11)?,
             omega: num(12)?,
             rebound_deg: num(13)?,
+            beta0: num(14)?,
         });
     }
     Ok(rows)
