@@ -272,20 +272,28 @@ pub enum End {
     Force,
 }
 
-/// One sphere on a rigid wall (or the reduced two-sphere problem, normal part).
+/// The second body: a sphere (two-sphere oblique impact, with a rotating normal).
+#[derive(Clone, Copy, Debug)]
+pub struct Body2 {
+    pub m: f64,
+    pub r: f64,
+    pub inertia: f64,
+}
+
+/// One sphere on a rigid wall (`body2: None`), or two spheres (`body2: Some`).
 #[derive(Clone, Copy, Debug)]
 pub struct Spec {
-    /// Mass of the sphere [kg] (the reduced mass for two spheres).
+    /// Mass of sphere 1 [kg] (for the reduced head-on problem: m*).
     pub m: f64,
-    /// Radius [m]: the Hertz radius and the lever arm of the tangential force.
+    /// Radius of sphere 1 [m] (its lever arm; the Hertz radius R* with the other body's).
     pub r: f64,
-    /// Moment of inertia [kg m²] (2/5 m R² for a solid sphere).
+    /// Moment of inertia of sphere 1 [kg m²] (2/5 m R² for a solid sphere).
     pub inertia: f64,
     /// Effective modulus E* [Pa]: 1/E* = Σ (1 − ν_i²)/E_i.
     pub e_star: f64,
     /// Effective shear modulus G* [Pa]: 1/G* = Σ (2 − ν_i)/G_i.
     pub g_star: f64,
-    /// Tsuji damping α: F_n = k δ^{3/2} + α √(m k) δ^{1/4} δ'.
+    /// Tsuji damping α: F_n = k δ^{3/2} + α √(m* k) δ^{1/4} δ'.
     pub alpha: f64,
     /// Friction coefficient (f64::INFINITY: no slip ever).
     pub mu: f64,
@@ -293,18 +301,22 @@ pub struct Spec {
     pub coulomb: CoulombOn,
     pub rule: TangentRule,
     pub lever: Lever,
+    pub body2: Option<Body2>,
 }
 
-/// What one collision gives.
+/// What one collision gives. Directions: the normal at first touch is +z, the initial tangential
+/// relative velocity is along +x; spins are about +y.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Outcome {
-    /// Realised normal restitution (separation speed / approach speed).
+    /// Realised normal restitution (separation speed / approach speed along the final normal).
     pub e_n: f64,
-    /// Tangential velocity of the centre after impact [m/s].
+    /// x velocity of sphere 1 relative to body 2 after impact [m/s] (wall: of the centre).
     pub u_out: f64,
-    /// Spin after impact [rad/s] (about +y; positive for u_in > 0).
+    /// Spin of sphere 1 after impact [rad/s] (positive for u_in > 0).
     pub w_out: f64,
-    /// Normal velocity after impact [m/s] (positive: away from the wall).
+    /// Spin of sphere 2 after impact [rad/s].
+    pub w2_out: f64,
+    /// z velocity of sphere 1 relative to body 2 after impact [m/s] (positive: separating).
     pub vn_out: f64,
     /// Contact duration [s].
     pub tau: f64,
@@ -315,6 +327,9 @@ pub struct Outcome {
     pub f_peak: f64,
     /// Tangential spring force left when the contact ended [N] (dropped by the host).
     pub f_t_end: f64,
+    /// Total angular momentum about the centre of mass (two spheres) before and after [kg m²/s].
+    pub l_in: f64,
+    pub l_out: f64,
     /// Number of stick/slip switches, and whether the contact began sliding.
     pub switches: u32,
     pub started_sliding: bool,
@@ -322,16 +337,24 @@ pub struct Outcome {
 }
 
 impl Spec {
-    /// Hertz constant k = (4/3) E* √R.
-    pub fn k(&self) -> f64 {
-        4.0 / 3.0 * self.e_star * self.r.sqrt()
+    /// R* (wall: r).
+    pub fn r_eff(&self) -> f64 {
+        self.body2.map_or(self.r, |b| self.r * b.r / (self.r + b.r))
     }
-    /// The undamped maximum overlap for approach speed v: (5 m v² / (4 k))^(2/5).
+    /// m* (wall: m).
+    pub fn m_eff(&self) -> f64 {
+        self.body2.map_or(self.m, |b| self.m * b.m / (self.m + b.m))
+    }
+    /// Hertz constant k = (4/3) E* √R*.
+    pub fn k(&self) -> f64 {
+        4.0 / 3.0 * self.e_star * self.r_eff().sqrt()
+    }
+    /// The undamped maximum overlap for approach speed v: (5 m* v² / (4 k))^(2/5).
     pub fn delta0(&self, v: f64) -> f64 {
-        (1.25 * self.m * v * v / self.k()).powf(0.4)
+        (1.25 * self.m_eff() * v * v / self.k()).powf(0.4)
     }
     fn damp(&self) -> f64 {
-        self.alpha * (self.m * self.k()).sqrt()
+        self.alpha * (self.m_eff() * self.k()).sqrt()
     }
     /// Total normal force (odd extension to δ < 0 so that trial stages stay finite).
     fn fn_total(&self, d: f64, w: f64) -> f64 {
@@ -345,8 +368,8 @@ impl Spec {
         }
         .max(0.0)
     }
-    /// Time derivative of the limit's normal force (δ > 0), with δ'' = −F_n/m.
-    fn fn_limit_rate(&self, d: f64, w: f64) -> f64 {
+    /// Time derivative of the limit's normal force (δ > 0), given δ'' = `acc`.
+    fn fn_limit_rate(&self, d: f64, w: f64, acc: f64) -> f64 {
         if !(d > 0.0) || self.fn_limit(d, w) <= 0.0 {
             return 0.0;
         }
@@ -354,19 +377,18 @@ impl Spec {
         match self.coulomb {
             CoulombOn::Elastic => el,
             CoulombOn::Total => {
-                let acc = -self.fn_total(d, w) / self.m;
                 el + self.damp() * (0.25 * d.powf(-0.75) * w * w + d.powf(0.25) * acc)
             }
         }
     }
-    fn arm(&self, d: f64) -> f64 {
+    fn lever(&self, r: f64, d: f64) -> f64 {
         match self.lever {
-            Lever::Radius => self.r,
-            Lever::MidOverlap => self.r - 0.5 * d,
+            Lever::Radius => r,
+            Lever::MidOverlap => r - 0.5 * d,
         }
     }
     fn kt(&self, d: f64) -> f64 {
-        8.0 * self.g_star * (self.r * d.abs()).sqrt()
+        8.0 * self.g_star * (self.r_eff() * d.abs()).sqrt()
     }
 }
 
@@ -376,24 +398,75 @@ enum Mode {
     Slip(f64),
 }
 
-/// State: [δ, δ' (approach rate), u, ω, s] with s = ξ (Displacement) or f (Incremental).
-type State = [f64; 5];
+/// State: [q_x, q_z, u_x, u_z, ω1, ω2, s]. q: position of sphere 1 relative to body 2 minus its
+/// value at first touch (0, L), L = r1 + r2 (wall: (0, r1)); u = dq/dt; s = ξ (Displacement) or
+/// f (Incremental), the spring's component along the tangent t (the spring turns with the
+/// normal, so in planar motion its tangent-plane component is this scalar).
+type State = [f64; 7];
+
+/// Contact geometry of a state: (n, t, δ, δ', distance) with n, t as (x, z) pairs.
+fn geometry(sp: &Spec, y: &State) -> ([f64; 2], [f64; 2], f64, f64, f64) {
+    match sp.body2 {
+        None => {
+            let d = -y[1];
+            ([0.0, 1.0], [1.0, 0.0], d, -y[3], sp.r - d)
+        }
+        Some(b) => {
+            let l = sp.r + b.r;
+            let (px, pz) = (y[0], l + y[1]);
+            let dist = px.hypot(pz);
+            // δ = L − |p|, without cancellation: |p| − L = (q_x² + 2 L q_z + q_z²)/(|p| + L).
+            let d = -(y[0] * y[0] + y[1] * (2.0 * l + y[1])) / (dist + l);
+            let n = [px / dist, pz / dist];
+            let t = [n[1], -n[0]];
+            (n, t, d, -(y[2] * n[0] + y[3] * n[1]), dist)
+        }
+    }
+}
 
 fn tangential_force(sp: &Spec, mode: Mode, y: &State) -> f64 {
+    let (_, _, d, w, _) = geometry(sp, y);
     match mode {
-        Mode::Slip(sigma) => sigma * sp.mu * sp.fn_limit(y[0], y[1]),
+        Mode::Slip(sigma) => sigma * sp.mu * sp.fn_limit(d, w),
         Mode::Stick => match sp.rule {
-            TangentRule::Displacement => -sp.kt(y[0]) * y[4],
-            TangentRule::Incremental => y[4],
+            TangentRule::Displacement => -sp.kt(d) * y[6],
+            TangentRule::Incremental => y[6],
         },
     }
 }
 
-fn rhs(sp: &Spec, mode: Mode, y: &State) -> State {
-    let (d, w, u, om) = (y[0], y[1], y[2], y[3]);
+/// Tangential velocity of the contact point, sphere 1 relative to body 2.
+fn slip_velocity(sp: &Spec, y: &State, t: [f64; 2], d: f64) -> f64 {
+    let spin = sp.lever(sp.r, d) * y[4] + sp.body2.map_or(0.0, |b| sp.lever(b.r, d) * y[5]);
+    y[2] * t[0] + y[3] * t[1] - spin
+}
+
+/// Accelerations (u', ω1', ω2') and δ''.
+fn dynamics(sp: &Spec, mode: Mode, y: &State) -> ([f64; 2], f64, f64, f64) {
+    let (n, t, d, w, dist) = geometry(sp, y);
+    let fnt = sp.fn_total(d, w);
     let f = tangential_force(sp, mode, y);
-    let a = sp.arm(d);
-    let vt = u - a * om;
+    let inv_m = 1.0 / sp.m_eff();
+    let acc = [
+        (fnt * n[0] + f * t[0]) * inv_m,
+        (fnt * n[1] + f * t[1]) * inv_m,
+    ];
+    let w1 = -sp.lever(sp.r, d) * f / sp.inertia;
+    let w2 = sp.body2.map_or(0.0, |b| -sp.lever(b.r, d) * f / b.inertia);
+    // δ = L − |p|: δ'' = −n·u' − (u·t)²/|p| (the second term: the normal turning).
+    let ut = y[2] * t[0] + y[3] * t[1];
+    let curv = if sp.body2.is_some() {
+        ut * ut / dist
+    } else {
+        0.0
+    };
+    (acc, w1, w2, -fnt * inv_m - curv)
+}
+
+fn rhs(sp: &Spec, mode: Mode, y: &State) -> State {
+    let (_, t, d, _, _) = geometry(sp, y);
+    let (acc, w1, w2, _) = dynamics(sp, mode, y);
+    let vt = slip_velocity(sp, y, t, d);
     let ds = match mode {
         Mode::Slip(_) => 0.0,
         Mode::Stick => match sp.rule {
@@ -401,34 +474,41 @@ fn rhs(sp: &Spec, mode: Mode, y: &State) -> State {
             TangentRule::Incremental => -sp.kt(d) * vt,
         },
     };
-    [
-        w,
-        -sp.fn_total(d, w) / sp.m,
-        f / sp.m,
-        -a * f / sp.inertia,
-        ds,
-    ]
+    [y[2], y[3], acc[0], acc[1], w1, w2, ds]
 }
 
 /// σ·ḟ_trial − L̇ in slip mode: ≥ 0 while the elastic trial keeps pushing past the limit.
 fn slip_margin(sp: &Spec, sigma: f64, y: &State) -> f64 {
-    let (d, w) = (y[0], y[1]);
+    let (_, t, d, w, _) = geometry(sp, y);
     if !(d > 0.0) {
         return 1.0;
     }
     let l = sp.mu * sp.fn_limit(d, w);
-    let vt = y[2] - sp.arm(d) * y[3];
+    let vt = slip_velocity(sp, y, t, d);
     let kt = sp.kt(d);
     let trial = match sp.rule {
         // f = −k_t ξ, ξ = −σL/k_t: σ ḟ = σ(−k_t' ξ − k_t v_t) = L δ'/(2δ) − σ k_t v_t.
         TangentRule::Displacement => l * w / (2.0 * d) - sigma * kt * vt,
         TangentRule::Incremental => -sigma * kt * vt,
     };
-    trial - sp.mu * sp.fn_limit_rate(d, w)
+    let (_, _, _, dd) = dynamics(sp, Mode::Slip(sigma), y);
+    trial - sp.mu * sp.fn_limit_rate(d, w, dd)
 }
 
-/// One collision from first touch (δ = 0) with approach speed `vn` > 0 and tangential speed `vt`
-/// (no initial spin), to the end criterion. `rtol` is the integrator's relative tolerance.
+/// Total angular momentum about the centre of mass (two spheres): I1 ω1 + I2 ω2 + m* (p × u)_y.
+fn angular_momentum(sp: &Spec, y: &State) -> f64 {
+    match sp.body2 {
+        None => f64::NAN,
+        Some(b) => {
+            let (px, pz) = (y[0], sp.r + b.r + y[1]);
+            sp.inertia * y[4] + b.inertia * y[5] + sp.m_eff() * (pz * y[2] - px * y[3])
+        }
+    }
+}
+
+/// One collision from first touch (δ = 0, normal +z) with approach speed `vn` > 0 and
+/// tangential relative speed `vt` along +x (no initial spin), to the end criterion. `rtol` is the
+/// integrator's relative tolerance.
 pub fn collide(sp: &Spec, vn: f64, vt: f64, rtol: f64) -> Result<Outcome, String> {
     let d0 = sp.delta0(vn);
     let t0 = d0 / vn;
@@ -437,22 +517,30 @@ pub fn collide(sp: &Spec, vn: f64, vt: f64, rtol: f64) -> Result<Outcome, String
         TangentRule::Displacement => d0 * (vs / vn),
         TangentRule::Incremental => sp.k() * d0.powf(1.5),
     };
+    let a = 1e-3 * rtol;
     let atol = [
-        1e-3 * rtol * d0,
-        1e-3 * rtol * vn,
-        1e-3 * rtol * vs,
-        1e-3 * rtol * vs / sp.r,
-        1e-3 * rtol * s_scale,
+        a * d0 * (vs / vn),
+        a * d0,
+        a * vs,
+        a * vs,
+        a * vs / sp.r,
+        a * vs / sp.body2.map_or(sp.r, |b| b.r),
+        a * s_scale,
     ];
-    let mut y: State = [0.0, vn, vt, 0.0, 0.0];
-    let mut out = Outcome::default();
+    let mut y: State = [0.0, 0.0, vt, -vn, 0.0, 0.0, 0.0];
+    let mut out = Outcome {
+        l_in: angular_momentum(sp, &y),
+        ..Outcome::default()
+    };
+    let overlap = |y: &State| geometry(sp, y).2;
+    let rate = |y: &State| geometry(sp, y).3;
     // Initial mode: both |f| and L grow from 0; compare them after a tiny stick interval.
     let mut mode = Mode::Stick;
     if sp.mu.is_finite() && vt != 0.0 {
         let eps = 1e-7 * t0;
-        let probe = integrate::<5, 1>(
+        let probe = integrate::<7, 1>(
             |y| rhs(sp, Mode::Stick, y),
-            |y| [eps - y[0] / vn],
+            |y| [eps - overlap(y) / vn],
             0.0,
             y,
             rtol,
@@ -461,7 +549,7 @@ pub fn collide(sp: &Spec, vn: f64, vt: f64, rtol: f64) -> Result<Outcome, String
             1_000_000,
         )?;
         let f = tangential_force(sp, Mode::Stick, &probe.y);
-        if f.abs() > sp.mu * sp.fn_limit(probe.y[0], probe.y[1]) {
+        if f.abs() > sp.mu * sp.fn_limit(overlap(&probe.y), rate(&probe.y)) {
             mode = Mode::Slip(-vt.signum());
             out.started_sliding = true;
         }
@@ -470,21 +558,22 @@ pub fn collide(sp: &Spec, vn: f64, vt: f64, rtol: f64) -> Result<Outcome, String
     let mut past_max = false;
     for _ in 0..10_000 {
         let m = mode;
-        let hit = integrate::<5, 4>(
+        let hit = integrate::<7, 4>(
             |y| rhs(sp, m, y),
             |y| {
-                let fnt = sp.fn_total(y[0], y[1]);
+                let (d, w) = (overlap(y), rate(y));
+                let fnt = sp.fn_total(d, w);
                 out.f_peak = out.f_peak.max(fnt);
                 let end = match sp.end {
-                    End::Overlap => y[0],
+                    End::Overlap => d,
                     End::Force => fnt,
                 };
                 [
-                    if past_max { 1.0 } else { y[1] },
+                    if past_max { 1.0 } else { w },
                     if past_max { end } else { 1.0 },
                     match m {
                         Mode::Stick if sp.mu.is_finite() => {
-                            sp.mu * sp.fn_limit(y[0], y[1]) - tangential_force(sp, m, y).abs()
+                            sp.mu * sp.fn_limit(d, w) - tangential_force(sp, m, y).abs()
                         }
                         _ => 1.0,
                     },
@@ -503,43 +592,29 @@ pub fn collide(sp: &Spec, vn: f64, vt: f64, rtol: f64) -> Result<Outcome, String
         )?;
         out.evals += hit.evals;
         (t, y, h) = (hit.t, hit.y, hit.h);
-        if std::env::var("OBLIQUE_DEBUG").is_ok() {
-            let l = sp.mu * sp.fn_limit(y[0], y[1]);
-            let f = tangential_force(sp, mode, &y);
-            let sig = match mode {
-                Mode::Slip(s) => s,
-                Mode::Stick => f.signum(),
-            };
-            eprintln!(
-                "t/t0={:.9} which={} stick={} L={:e} f={:e} margin={:e}",
-                t / t0,
-                hit.which,
-                mode == Mode::Stick,
-                l,
-                f,
-                slip_margin(sp, sig, &y)
-            );
-        }
+        let (d, w) = (overlap(&y), rate(&y));
         // An end of contact that coincides with a stick/slip switch (the limit L = μF_n reaches
         // 0 there too) may be reported as the switch; the end wins.
         let end_now = past_max
             && match sp.end {
-                End::Overlap => y[0] <= 0.0,
-                End::Force => sp.fn_total(y[0], y[1]) <= 0.0,
+                End::Overlap => d <= 0.0,
+                End::Force => sp.fn_total(d, w) <= 0.0,
             };
         match if end_now { 1 } else { hit.which } {
             0 => {
                 past_max = true;
-                out.delta_max = y[0];
-                out.f_at_max = sp.fn_total(y[0], y[1]);
+                out.delta_max = d;
+                out.f_at_max = sp.fn_total(d, w);
             }
             1 => {
-                out.e_n = -y[1] / vn;
-                out.vn_out = -y[1];
+                out.e_n = -w / vn;
+                out.vn_out = y[3];
                 out.u_out = y[2];
-                out.w_out = y[3];
+                out.w_out = y[4];
+                out.w2_out = y[5];
                 out.tau = t;
                 out.f_t_end = tangential_force(sp, mode, &y);
+                out.l_out = angular_momentum(sp, &y);
                 return Ok(out);
             }
             2 => {
@@ -549,9 +624,9 @@ pub fn collide(sp: &Spec, vn: f64, vt: f64, rtol: f64) -> Result<Outcome, String
             }
             _ => {
                 if let Mode::Slip(sigma) = mode {
-                    let l = sp.mu * sp.fn_limit(y[0], y[1]);
-                    y[4] = match sp.rule {
-                        TangentRule::Displacement => -sigma * l / sp.kt(y[0]),
+                    let l = sp.mu * sp.fn_limit(d, w);
+                    y[6] = match sp.rule {
+                        TangentRule::Displacement => -sigma * l / sp.kt(d),
                         TangentRule::Incremental => sigma * l,
                     };
                 }
@@ -582,6 +657,7 @@ pub fn alpha_for_e(e: f64, end: End, rtol: f64) -> Result<f64, String> {
             coulomb: CoulombOn::Total,
             rule: TangentRule::Displacement,
             lever: Lever::Radius,
+            body2: None,
         };
         Ok(collide(&sp, 1.0, 0.0, rtol)?.e_n)
     };
@@ -690,8 +766,10 @@ pub fn no_slip_beta(k_ratio: f64, alpha: f64, end: End, rule: TangentRule, rtol:
 /// K of [`no_slip_beta`] for a spec and approach speed.
 pub fn k_ratio(sp: &Spec, vn: f64) -> f64 {
     let d0 = sp.delta0(vn);
-    let inv_mt = 1.0 / sp.m + sp.r * sp.r / sp.inertia;
-    8.0 * sp.g_star * (sp.r * d0).sqrt() * (d0 / vn).powi(2) * inv_mt
+    let inv_mt = 1.0 / sp.m_eff()
+        + sp.r * sp.r / sp.inertia
+        + sp.body2.map_or(0.0, |b| b.r * b.r / b.inertia);
+    8.0 * sp.g_star * (sp.r_eff() * d0).sqrt() * (d0 / vn).powi(2) * inv_mt
 }
 
 /// Hertz closed forms for an elastic impact at approach speed v (mass m, radius R, E*):
@@ -782,6 +860,7 @@ impl Material {
             coulomb: CoulombOn::Total,
             rule,
             lever: Lever::MidOverlap,
+            body2: None,
         }
     }
     /// Two equal spheres, normal part: m* = m/2, R* = r/2, E* = E/(2(1−ν²)).
@@ -799,6 +878,27 @@ impl Material {
             coulomb: CoulombOn::Total,
             rule: TangentRule::Displacement,
             lever: Lever::Radius,
+            body2: None,
+        }
+    }
+    /// Two equal spheres of radius r (oblique two-sphere impact with a rotating normal):
+    /// E* = E/(2(1−ν²)), G* = G/(2(2−ν)).
+    pub fn pair(&self, r: f64, alpha: f64, mu: f64, end: End, rule: TangentRule) -> Spec {
+        let m = self.mass(r);
+        let inertia = 0.4 * m * r * r;
+        Spec {
+            m,
+            r,
+            inertia,
+            e_star: self.young / (2.0 * (1.0 - self.poisson * self.poisson)),
+            g_star: self.shear() / (2.0 * (2.0 - self.poisson)),
+            alpha,
+            mu,
+            end,
+            coulomb: CoulombOn::Total,
+            rule,
+            lever: Lever::MidOverlap,
+            body2: Some(Body2 { m, r, inertia }),
         }
     }
 }
@@ -809,8 +909,9 @@ impl Material {
 /// its reference outcome under demcontact's conventions.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Row {
-    /// "t4" (the benchmark: μ = 0.092, e_n = 0.98) or "t4_stick" (μ = 1000, e_n = 1: the
-    /// no-slip limit, for comparison with [`no_slip_beta`]).
+    /// "t4" (the benchmark: μ = 0.092, e_n = 0.98), "t4_stick" (μ = 1000, e_n = 1: the
+    /// no-slip limit, for comparison with [`no_slip_beta`]) or "t4_pair" (test 4's impact
+    /// between two equal spheres, relative speed v: the normal turns during the contact).
     pub case: String,
     pub material: String,
     pub young: f64,
@@ -852,8 +953,11 @@ pub fn outcome_row(
     let th = theta_deg.to_radians();
     let (vn, vt) = (v * th.cos(), v * th.sin());
     let o = collide(sp, vn, vt, rtol)?;
-    let reb = ((o.u_out - sp.r * o.w_out) / o.vn_out).atan().to_degrees();
-    Ok((o.e_n, o.u_out / vt, o.w_out, reb))
+    // Contact-point velocity in the first-touch frame: u − r (ω1 + ω2) (wall: ω2 = 0).
+    let reb = ((o.u_out - sp.r * (o.w_out + o.w2_out)) / o.vn_out)
+        .atan()
+        .to_degrees();
+    Ok((o.vn_out / vn, o.u_out / vt, o.w_out, reb))
 }
 
 /// Every row of the committed table, recomputed.
@@ -861,17 +965,30 @@ pub fn reference_rows(rtol: f64) -> Result<Vec<Row>, String> {
     let (r, v) = (0.0025, 3.9);
     let alpha = alpha_for_e(0.98, End::Force, 1e-13)?;
     let mut rows = Vec::new();
-    for (case, mu, e, a) in [("t4", 0.092, 0.98, alpha), ("t4_stick", 1000.0, 1.0, 0.0)] {
-        for mat in [AL2O3, AL_ALLOY_T4] {
-            let sp = library_spec(&mat, r, a, mu);
-            let angles: Vec<f64> = if case == "t4" {
-                (1..=17).map(|i| 5.0 * f64::from(i)).collect()
+    for (case, mu, e, a) in [
+        ("t4", 0.092, 0.98, alpha),
+        ("t4_stick", 1000.0, 1.0, 0.0),
+        ("t4_pair", 0.092, 0.98, alpha),
+    ] {
+        let mats: &[Material] = if case == "t4_pair" {
+            &[AL2O3]
+        } else {
+            &[AL2O3, AL_ALLOY_T4]
+        };
+        for &mat in mats {
+            let sp = if case == "t4_pair" {
+                mat.pair(r, a, mu, End::Force, TangentRule::Displacement)
             } else {
-                vec![5.0, 30.0, 60.0]
+                library_spec(&mat, r, a, mu)
+            };
+            let angles: Vec<f64> = match case {
+                "t4" => (1..=17).map(|i| 5.0 * f64::from(i)).collect(),
+                "t4_stick" => vec![5.0, 30.0, 60.0],
+                _ => vec![5.0, 20.0, 45.0, 80.0],
             };
             for th in angles {
                 let (e_n, e_t, omega, rebound_deg) = outcome_row(&sp, v, th, rtol)?;
-                let beta0 = if case == "t4" {
+                let beta0 = if case != "t4_stick" {
                     f64::NAN
                 } else {
                     let vn = v * th.to_radians().cos();
@@ -909,7 +1026,10 @@ pub fn format_csv(rows: &[Row]) -> String {
          # Mindlin k_t = 8 G* sqrt(R delta) on the total spring displacement, Coulomb mu*Fn on the applied\n\
          # normal force, lever R - delta/2, rigid wall (E = inf), no tangential damping, no initial spin.\n\
          # Units: SI; omega in rad/s about +y (n = +z, u along +x); rebound angle of the contact point, deg.\n\
-         # beta0 (t4_stick rows): the no-slip limit of the contact-point velocity ratio, e_t -> (5 + 2 beta0)/7.\n",
+         # beta0 (t4_stick rows): the no-slip limit of the contact-point velocity ratio, e_t -> (5 + 2 beta0)/7.\n\
+         # t4_pair rows: two equal spheres, relative speed v; velocities relative (sphere 1 - sphere 2) in\n\
+         # the first-touch frame, e_n = u_z,out/v_n, omega of sphere 1 (sphere 2 spins the same),\n\
+         # rebound = atan((u_x - R (omega1 + omega2))/u_z).\n",
     );
     s.push_str(CSV_HEADER);
     s.push('\n');
