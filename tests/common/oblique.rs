@@ -31,7 +31,7 @@
 
 // ------------------------------------------------------------------ Dormand–Prince 5(4), N-dim
 
-const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
+// The system is autonomous, so the nodes c_i are not needed.
 const A: [[f64; 6]; 7] = [
     [0.0; 6],
     [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0],
@@ -89,7 +89,6 @@ fn dp_step<const N: usize>(
     y: &[f64; N],
     h: f64,
 ) -> ([f64; N], [f64; N]) {
-    let _ = C;
     let mut k = [[0.0; N]; 7];
     k[0] = f(y);
     for s in 1..7 {
