@@ -266,8 +266,8 @@ approaching the no-slip limit as θ → 0.",
     )?;
     writeln!(
         md,
-        "Largest difference library − reference over the 34 impacts: e_t {:.1e}, ω {:.2} rad/s, rebound angle \
-{:.3}°. The figures the C test checks, with their tolerances, are in [benchmarks.md](benchmarks.md).\n",
+        "Largest difference library − reference over the 34 impacts: e_t {:.1e}, ω {:.1e} rad/s, rebound angle \
+{:.1e}°. The figures the C test checks, with their tolerances, are in [benchmarks.md](benchmarks.md).\n",
         worst[0], worst[1], worst[2]
     )?;
     rep.push(&md);
