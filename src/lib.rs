@@ -16,6 +16,7 @@
 //! * [`numerics`]: root finding and the reference ODE integrator used to check everything else.
 //! * [`ffi`]: the `extern "C"` functions exported as `include/demcontact.h`.
 
+pub mod builtin;
 pub mod criterion;
 pub mod error;
 pub mod ffi;

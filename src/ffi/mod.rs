@@ -10,6 +10,7 @@
 //!   `DC_ERR_INTERNAL` instead of unwinding into (and aborting) the host simulation;
 //! * no heap allocation, no global mutable state: callable from any thread at any time.
 
+pub mod builtin;
 pub mod calibration;
 pub mod force;
 pub mod material;
@@ -40,6 +41,10 @@ pub(crate) const fn status_of(err: Error) -> i32 {
         Error::BufferLayout => DC_ERR_BUFFER_LAYOUT,
         Error::Level => DC_ERR_LEVEL,
         Error::Plan => DC_ERR_PLAN,
+        Error::BuiltinModel => DC_ERR_BUILTIN_MODEL,
+        Error::BuiltinUnreachable => DC_ERR_BUILTIN_UNREACHABLE,
+        Error::FitTooFew => DC_ERR_FIT_TOO_FEW,
+        Error::FitDegenerate => DC_ERR_FIT_DEGENERATE,
     }
 }
 

@@ -41,6 +41,14 @@ pub const DC_ERR_LEVEL: i32 = 6112;
 /// A dc_duration_plan was not initialised by dc_duration_plan_init (or was modified afterwards),
 /// e.g. a zero-filled struct.
 pub const DC_ERR_PLAN: i32 = 6113;
+/// Unknown DC_BUILTIN_* model code, or an option the model does not have (no clamp for YADE).
+pub const DC_ERR_BUILTIN_MODEL: i32 = 6130;
+/// The builtin model cannot realise this restitution: its parameter saturates before it.
+pub const DC_ERR_BUILTIN_UNREACHABLE: i32 = 6131;
+/// A fit needs at least two data points.
+pub const DC_ERR_FIT_TOO_FEW: i32 = 6132;
+/// The data cannot determine the fit (all impact speeds equal, or all weights zero).
+pub const DC_ERR_FIT_DEGENERATE: i32 = 6133;
 /// An internal error was caught at the boundary (not expected; please report).
 pub const DC_ERR_INTERNAL: i32 = 6199;
 
@@ -68,6 +76,10 @@ const fn message(status: i32) -> &'static str {
         DC_ERR_BUFFER_LAYOUT => "a buffer is misaligned or an output overlaps an input\0",
         DC_ERR_LEVEL => "quadrature accuracy level out of range\0",
         DC_ERR_PLAN => "the dc_duration_plan was not initialised by dc_duration_plan_init\0",
+        DC_ERR_BUILTIN_MODEL => "unknown builtin model, or an option it does not have\0",
+        DC_ERR_BUILTIN_UNREACHABLE => "the builtin model cannot realise this restitution\0",
+        DC_ERR_FIT_TOO_FEW => "a fit needs at least two data points\0",
+        DC_ERR_FIT_DEGENERATE => "the data cannot determine the fit (all speeds equal)\0",
         DC_ERR_INTERNAL => "internal error caught at the C boundary (please report)\0",
         _ => "unknown demcontact status\0",
     }
@@ -103,6 +115,10 @@ mod tests {
             DC_ERR_BUFFER_LAYOUT,
             DC_ERR_LEVEL,
             DC_ERR_PLAN,
+            DC_ERR_BUILTIN_MODEL,
+            DC_ERR_BUILTIN_UNREACHABLE,
+            DC_ERR_FIT_TOO_FEW,
+            DC_ERR_FIT_DEGENERATE,
             DC_ERR_INTERNAL,
         ];
         let unknown = message(-1);
