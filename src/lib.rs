@@ -20,6 +20,7 @@ pub mod builtin;
 pub mod criterion;
 pub mod error;
 pub mod ffi;
+pub mod fit;
 pub mod force;
 pub mod lsd;
 pub mod material;

@@ -158,7 +158,7 @@ fn corrected_values_realise_the_target() {
     let mut worst: f64 = 0.0;
     let mut n = 0;
     let mut unreachable = 0;
-    for b in Builtin::ALL {
+    for b in Builtin::all() {
         for clamp in [false, true] {
             if b.always_clamps() && !clamp {
                 continue;

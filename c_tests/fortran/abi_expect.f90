@@ -7,75 +7,110 @@ contains
   subroutine expected_consts(v, n)
     integer(c_int64_t), intent(out) :: v(:)
     integer, intent(out) :: n
-    v(1) = DC_MODEL_POWERLAW
-    v(2) = DC_MODEL_HERTZ
-    v(3) = DC_MODEL_VISCOELASTIC
-    v(4) = DC_LEVEL_MIN
-    v(5) = DC_LEVEL_MAX
-    v(6) = DC_OK
-    v(7) = DC_ERR_NULL_POINTER
-    v(8) = DC_ERR_NOT_FINITE
-    v(9) = DC_ERR_RESTITUTION_RANGE
-    v(10) = DC_ERR_EXPONENT_RANGE
-    v(11) = DC_ERR_NOT_POSITIVE
-    v(12) = DC_ERR_NEGATIVE
-    v(13) = DC_ERR_CRITERION
-    v(14) = DC_ERR_RESULT_RANGE
-    v(15) = DC_ERR_NO_CONVERGENCE
-    v(16) = DC_ERR_BUFFER_TOO_SHORT
-    v(17) = DC_ERR_NO_EVENT
-    v(18) = DC_ERR_PAIR_INVALID
-    v(19) = DC_ERR_BUFFER_LAYOUT
-    v(20) = DC_ERR_LEVEL
-    v(21) = DC_ERR_PLAN
-    v(22) = DC_ERR_INTERNAL
-    v(23) = DC_END_OVERLAP
-    v(24) = DC_END_FORCE
-    n = 24
+    v(1) = DC_BUILTIN_LIGGGHTS_HOOKE
+    v(2) = DC_BUILTIN_LIGGGHTS_HERTZ
+    v(3) = DC_BUILTIN_LAMMPS_COEFF_RESTITUTION
+    v(4) = DC_BUILTIN_LAMMPS_TSUJI_HERTZ
+    v(5) = DC_BUILTIN_LAMMPS_TSUJI_HOOKE
+    v(6) = DC_BUILTIN_YADE_VISCEL_EN
+    v(7) = DC_BUILTIN_YADE_MINDLIN_EN
+    v(8) = DC_BUILTIN_YADE_MINDLIN_BETAN
+    v(9) = DC_FIT_MODEL_CONSTANT
+    v(10) = DC_FIT_MODEL_VISCOELASTIC
+    v(11) = DC_MODEL_POWERLAW
+    v(12) = DC_MODEL_HERTZ
+    v(13) = DC_MODEL_VISCOELASTIC
+    v(14) = DC_LEVEL_MIN
+    v(15) = DC_LEVEL_MAX
+    v(16) = DC_OK
+    v(17) = DC_ERR_NULL_POINTER
+    v(18) = DC_ERR_NOT_FINITE
+    v(19) = DC_ERR_RESTITUTION_RANGE
+    v(20) = DC_ERR_EXPONENT_RANGE
+    v(21) = DC_ERR_NOT_POSITIVE
+    v(22) = DC_ERR_NEGATIVE
+    v(23) = DC_ERR_CRITERION
+    v(24) = DC_ERR_RESULT_RANGE
+    v(25) = DC_ERR_NO_CONVERGENCE
+    v(26) = DC_ERR_BUFFER_TOO_SHORT
+    v(27) = DC_ERR_NO_EVENT
+    v(28) = DC_ERR_PAIR_INVALID
+    v(29) = DC_ERR_BUFFER_LAYOUT
+    v(30) = DC_ERR_LEVEL
+    v(31) = DC_ERR_PLAN
+    v(32) = DC_ERR_BUILTIN_MODEL
+    v(33) = DC_ERR_BUILTIN_UNREACHABLE
+    v(34) = DC_ERR_FIT_TOO_FEW
+    v(35) = DC_ERR_FIT_DEGENERATE
+    v(36) = DC_ERR_INTERNAL
+    v(37) = DC_END_OVERLAP
+    v(38) = DC_END_FORCE
+    n = 38
   end subroutine expected_consts
 
   subroutine expected_layout(v, n)
     integer(c_int64_t), intent(out) :: v(:)
     integer, intent(out) :: n
     block
+      type(dc_fit_result), target :: x_dc_fit_result
+      v(1) = c_sizeof(x_dc_fit_result)
+      v(2) = transfer(c_loc(x_dc_fit_result%beta), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(3) = transfer(c_loc(x_dc_fit_result%beta_se), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(4) = transfer(c_loc(x_dc_fit_result%e_const), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(5) = transfer(c_loc(x_dc_fit_result%e_const_se), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(6) = transfer(c_loc(x_dc_fit_result%chi2_viscoelastic), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(7) = transfer(c_loc(x_dc_fit_result%chi2_constant), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(8) = transfer(c_loc(x_dc_fit_result%max_residual_viscoelastic), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(9) = transfer(c_loc(x_dc_fit_result%max_residual_constant), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(10) = transfer(c_loc(x_dc_fit_result%v_min), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(11) = transfer(c_loc(x_dc_fit_result%v_max), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(12) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_min), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(13) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_max), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(14) = transfer(c_loc(x_dc_fit_result%max_model_deviation), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(15) = transfer(c_loc(x_dc_fit_result%model), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(16) = transfer(c_loc(x_dc_fit_result%se_from_scatter), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(17) = transfer(c_loc(x_dc_fit_result%iterations), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(18) = transfer(c_loc(x_dc_fit_result%robust), 0_c_intptr_t) - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+    end block
+    block
       type(dc_pair), target :: x_dc_pair
-      v(1) = c_sizeof(x_dc_pair)
-      v(2) = transfer(c_loc(x_dc_pair%model), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(3) = transfer(c_loc(x_dc_pair%kernel), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(4) = transfer(c_loc(x_dc_pair%criterion), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(5) = transfer(c_loc(x_dc_pair%clamp), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(6) = transfer(c_loc(x_dc_pair%p), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(7) = transfer(c_loc(x_dc_pair%stiffness), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(8) = transfer(c_loc(x_dc_pair%alpha), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(9) = transfer(c_loc(x_dc_pair%damping_a), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(10) = transfer(c_loc(x_dc_pair%e), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(11) = transfer(c_loc(x_dc_pair%k), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(12) = transfer(c_loc(x_dc_pair%c), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(13) = transfer(c_loc(x_dc_pair%h), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(19) = c_sizeof(x_dc_pair)
+      v(20) = transfer(c_loc(x_dc_pair%model), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(21) = transfer(c_loc(x_dc_pair%kernel), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(22) = transfer(c_loc(x_dc_pair%criterion), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(23) = transfer(c_loc(x_dc_pair%clamp), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(24) = transfer(c_loc(x_dc_pair%p), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(25) = transfer(c_loc(x_dc_pair%stiffness), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(26) = transfer(c_loc(x_dc_pair%alpha), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(27) = transfer(c_loc(x_dc_pair%damping_a), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(28) = transfer(c_loc(x_dc_pair%e), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(29) = transfer(c_loc(x_dc_pair%k), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(30) = transfer(c_loc(x_dc_pair%c), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(31) = transfer(c_loc(x_dc_pair%h), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
     end block
     block
       type(dc_duration_plan), target :: x_dc_duration_plan
-      v(14) = c_sizeof(x_dc_duration_plan)
-      v(15) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(16) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(17) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(18) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(19) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(20) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(21) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(22) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(23) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(24) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(32) = c_sizeof(x_dc_duration_plan)
+      v(33) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(34) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(35) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(36) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(37) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(38) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(39) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(40) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(41) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(42) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
     end block
     block
       type(dc_energy), target :: x_dc_energy
-      v(25) = c_sizeof(x_dc_energy)
-      v(26) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(27) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(28) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(29) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(30) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(43) = c_sizeof(x_dc_energy)
+      v(44) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(45) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(46) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(47) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(48) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
     end block
-    n = 30
+    n = 48
   end subroutine expected_layout
 end module abi_expect

@@ -3,69 +3,101 @@
 #include <stddef.h>
 #include <stdint.h>
 
-int32_t dc_probe_n_consts(void) { return 24; }
+int32_t dc_probe_n_consts(void) { return 38; }
 int64_t dc_probe_const(int32_t i) {
   switch (i) {
-  case 1: return (int64_t)(DC_MODEL_POWERLAW);
-  case 2: return (int64_t)(DC_MODEL_HERTZ);
-  case 3: return (int64_t)(DC_MODEL_VISCOELASTIC);
-  case 4: return (int64_t)(DC_LEVEL_MIN);
-  case 5: return (int64_t)(DC_LEVEL_MAX);
-  case 6: return (int64_t)(DC_OK);
-  case 7: return (int64_t)(DC_ERR_NULL_POINTER);
-  case 8: return (int64_t)(DC_ERR_NOT_FINITE);
-  case 9: return (int64_t)(DC_ERR_RESTITUTION_RANGE);
-  case 10: return (int64_t)(DC_ERR_EXPONENT_RANGE);
-  case 11: return (int64_t)(DC_ERR_NOT_POSITIVE);
-  case 12: return (int64_t)(DC_ERR_NEGATIVE);
-  case 13: return (int64_t)(DC_ERR_CRITERION);
-  case 14: return (int64_t)(DC_ERR_RESULT_RANGE);
-  case 15: return (int64_t)(DC_ERR_NO_CONVERGENCE);
-  case 16: return (int64_t)(DC_ERR_BUFFER_TOO_SHORT);
-  case 17: return (int64_t)(DC_ERR_NO_EVENT);
-  case 18: return (int64_t)(DC_ERR_PAIR_INVALID);
-  case 19: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
-  case 20: return (int64_t)(DC_ERR_LEVEL);
-  case 21: return (int64_t)(DC_ERR_PLAN);
-  case 22: return (int64_t)(DC_ERR_INTERNAL);
-  case 23: return (int64_t)(DC_END_OVERLAP);
-  case 24: return (int64_t)(DC_END_FORCE);
+  case 1: return (int64_t)(DC_BUILTIN_LIGGGHTS_HOOKE);
+  case 2: return (int64_t)(DC_BUILTIN_LIGGGHTS_HERTZ);
+  case 3: return (int64_t)(DC_BUILTIN_LAMMPS_COEFF_RESTITUTION);
+  case 4: return (int64_t)(DC_BUILTIN_LAMMPS_TSUJI_HERTZ);
+  case 5: return (int64_t)(DC_BUILTIN_LAMMPS_TSUJI_HOOKE);
+  case 6: return (int64_t)(DC_BUILTIN_YADE_VISCEL_EN);
+  case 7: return (int64_t)(DC_BUILTIN_YADE_MINDLIN_EN);
+  case 8: return (int64_t)(DC_BUILTIN_YADE_MINDLIN_BETAN);
+  case 9: return (int64_t)(DC_FIT_MODEL_CONSTANT);
+  case 10: return (int64_t)(DC_FIT_MODEL_VISCOELASTIC);
+  case 11: return (int64_t)(DC_MODEL_POWERLAW);
+  case 12: return (int64_t)(DC_MODEL_HERTZ);
+  case 13: return (int64_t)(DC_MODEL_VISCOELASTIC);
+  case 14: return (int64_t)(DC_LEVEL_MIN);
+  case 15: return (int64_t)(DC_LEVEL_MAX);
+  case 16: return (int64_t)(DC_OK);
+  case 17: return (int64_t)(DC_ERR_NULL_POINTER);
+  case 18: return (int64_t)(DC_ERR_NOT_FINITE);
+  case 19: return (int64_t)(DC_ERR_RESTITUTION_RANGE);
+  case 20: return (int64_t)(DC_ERR_EXPONENT_RANGE);
+  case 21: return (int64_t)(DC_ERR_NOT_POSITIVE);
+  case 22: return (int64_t)(DC_ERR_NEGATIVE);
+  case 23: return (int64_t)(DC_ERR_CRITERION);
+  case 24: return (int64_t)(DC_ERR_RESULT_RANGE);
+  case 25: return (int64_t)(DC_ERR_NO_CONVERGENCE);
+  case 26: return (int64_t)(DC_ERR_BUFFER_TOO_SHORT);
+  case 27: return (int64_t)(DC_ERR_NO_EVENT);
+  case 28: return (int64_t)(DC_ERR_PAIR_INVALID);
+  case 29: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
+  case 30: return (int64_t)(DC_ERR_LEVEL);
+  case 31: return (int64_t)(DC_ERR_PLAN);
+  case 32: return (int64_t)(DC_ERR_BUILTIN_MODEL);
+  case 33: return (int64_t)(DC_ERR_BUILTIN_UNREACHABLE);
+  case 34: return (int64_t)(DC_ERR_FIT_TOO_FEW);
+  case 35: return (int64_t)(DC_ERR_FIT_DEGENERATE);
+  case 36: return (int64_t)(DC_ERR_INTERNAL);
+  case 37: return (int64_t)(DC_END_OVERLAP);
+  case 38: return (int64_t)(DC_END_FORCE);
   default: return INT64_MIN;
   }
 }
-int32_t dc_probe_n_layout(void) { return 30; }
+int32_t dc_probe_n_layout(void) { return 48; }
 int64_t dc_probe_layout(int32_t i) {
   switch (i) {
-  case 1: return (int64_t)sizeof(dc_pair);
-  case 2: return (int64_t)offsetof(dc_pair, model);
-  case 3: return (int64_t)offsetof(dc_pair, kernel);
-  case 4: return (int64_t)offsetof(dc_pair, criterion);
-  case 5: return (int64_t)offsetof(dc_pair, clamp);
-  case 6: return (int64_t)offsetof(dc_pair, p);
-  case 7: return (int64_t)offsetof(dc_pair, stiffness);
-  case 8: return (int64_t)offsetof(dc_pair, alpha);
-  case 9: return (int64_t)offsetof(dc_pair, damping_a);
-  case 10: return (int64_t)offsetof(dc_pair, e);
-  case 11: return (int64_t)offsetof(dc_pair, k);
-  case 12: return (int64_t)offsetof(dc_pair, c);
-  case 13: return (int64_t)offsetof(dc_pair, h);
-  case 14: return (int64_t)sizeof(dc_duration_plan);
-  case 15: return (int64_t)offsetof(dc_duration_plan, tag);
-  case 16: return (int64_t)offsetof(dc_duration_plan, p);
-  case 17: return (int64_t)offsetof(dc_duration_plan, q);
-  case 18: return (int64_t)offsetof(dc_duration_plan, amp);
-  case 19: return (int64_t)offsetof(dc_duration_plan, lgamma_q);
-  case 20: return (int64_t)offsetof(dc_duration_plan, ln_aq);
-  case 21: return (int64_t)offsetof(dc_duration_plan, level);
-  case 22: return (int64_t)offsetof(dc_duration_plan, n);
-  case 23: return (int64_t)offsetof(dc_duration_plan, nodes);
-  case 24: return (int64_t)offsetof(dc_duration_plan, weights);
-  case 25: return (int64_t)sizeof(dc_energy);
-  case 26: return (int64_t)offsetof(dc_energy, e);
-  case 27: return (int64_t)offsetof(dc_energy, loading);
-  case 28: return (int64_t)offsetof(dc_energy, unloading);
-  case 29: return (int64_t)offsetof(dc_energy, returned);
-  case 30: return (int64_t)offsetof(dc_energy, clamped);
+  case 1: return (int64_t)sizeof(dc_fit_result);
+  case 2: return (int64_t)offsetof(dc_fit_result, beta);
+  case 3: return (int64_t)offsetof(dc_fit_result, beta_se);
+  case 4: return (int64_t)offsetof(dc_fit_result, e_const);
+  case 5: return (int64_t)offsetof(dc_fit_result, e_const_se);
+  case 6: return (int64_t)offsetof(dc_fit_result, chi2_viscoelastic);
+  case 7: return (int64_t)offsetof(dc_fit_result, chi2_constant);
+  case 8: return (int64_t)offsetof(dc_fit_result, max_residual_viscoelastic);
+  case 9: return (int64_t)offsetof(dc_fit_result, max_residual_constant);
+  case 10: return (int64_t)offsetof(dc_fit_result, v_min);
+  case 11: return (int64_t)offsetof(dc_fit_result, v_max);
+  case 12: return (int64_t)offsetof(dc_fit_result, e_viscoelastic_at_v_min);
+  case 13: return (int64_t)offsetof(dc_fit_result, e_viscoelastic_at_v_max);
+  case 14: return (int64_t)offsetof(dc_fit_result, max_model_deviation);
+  case 15: return (int64_t)offsetof(dc_fit_result, model);
+  case 16: return (int64_t)offsetof(dc_fit_result, se_from_scatter);
+  case 17: return (int64_t)offsetof(dc_fit_result, iterations);
+  case 18: return (int64_t)offsetof(dc_fit_result, robust);
+  case 19: return (int64_t)sizeof(dc_pair);
+  case 20: return (int64_t)offsetof(dc_pair, model);
+  case 21: return (int64_t)offsetof(dc_pair, kernel);
+  case 22: return (int64_t)offsetof(dc_pair, criterion);
+  case 23: return (int64_t)offsetof(dc_pair, clamp);
+  case 24: return (int64_t)offsetof(dc_pair, p);
+  case 25: return (int64_t)offsetof(dc_pair, stiffness);
+  case 26: return (int64_t)offsetof(dc_pair, alpha);
+  case 27: return (int64_t)offsetof(dc_pair, damping_a);
+  case 28: return (int64_t)offsetof(dc_pair, e);
+  case 29: return (int64_t)offsetof(dc_pair, k);
+  case 30: return (int64_t)offsetof(dc_pair, c);
+  case 31: return (int64_t)offsetof(dc_pair, h);
+  case 32: return (int64_t)sizeof(dc_duration_plan);
+  case 33: return (int64_t)offsetof(dc_duration_plan, tag);
+  case 34: return (int64_t)offsetof(dc_duration_plan, p);
+  case 35: return (int64_t)offsetof(dc_duration_plan, q);
+  case 36: return (int64_t)offsetof(dc_duration_plan, amp);
+  case 37: return (int64_t)offsetof(dc_duration_plan, lgamma_q);
+  case 38: return (int64_t)offsetof(dc_duration_plan, ln_aq);
+  case 39: return (int64_t)offsetof(dc_duration_plan, level);
+  case 40: return (int64_t)offsetof(dc_duration_plan, n);
+  case 41: return (int64_t)offsetof(dc_duration_plan, nodes);
+  case 42: return (int64_t)offsetof(dc_duration_plan, weights);
+  case 43: return (int64_t)sizeof(dc_energy);
+  case 44: return (int64_t)offsetof(dc_energy, e);
+  case 45: return (int64_t)offsetof(dc_energy, loading);
+  case 46: return (int64_t)offsetof(dc_energy, unloading);
+  case 47: return (int64_t)offsetof(dc_energy, returned);
+  case 48: return (int64_t)offsetof(dc_energy, clamped);
   default: return INT64_MIN;
   }
 }

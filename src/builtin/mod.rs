@@ -49,16 +49,18 @@ pub enum Builtin {
 
 impl Builtin {
     /// Every builtin, in C code order.
-    pub const ALL: [Builtin; 8] = [
-        Builtin::LiggghtsHooke,
-        Builtin::LiggghtsHertz,
-        Builtin::LammpsCoeffRestitution,
-        Builtin::LammpsTsujiHertz,
-        Builtin::LammpsTsujiHooke,
-        Builtin::YadeViscElEn,
-        Builtin::YadeMindlinEn,
-        Builtin::YadeMindlinBetan,
-    ];
+    pub const fn all() -> [Builtin; 8] {
+        [
+            Builtin::LiggghtsHooke,
+            Builtin::LiggghtsHertz,
+            Builtin::LammpsCoeffRestitution,
+            Builtin::LammpsTsujiHertz,
+            Builtin::LammpsTsujiHooke,
+            Builtin::YadeViscElEn,
+            Builtin::YadeMindlinEn,
+            Builtin::YadeMindlinBetan,
+        ]
+    }
 
     /// The C code (`DC_BUILTIN_*`, 1..=8).
     pub const fn code(self) -> i32 {
@@ -219,7 +221,7 @@ mod tests {
 
     #[test]
     fn codes_round_trip() {
-        for b in Builtin::ALL {
+        for b in Builtin::all() {
             assert_eq!(Builtin::from_code(b.code()), Some(b));
         }
         assert_eq!(Builtin::from_code(0), None);
@@ -228,7 +230,7 @@ mod tests {
 
     #[test]
     fn forward_of_inverse_is_identity() {
-        for b in Builtin::ALL {
+        for b in Builtin::all() {
             for clamp in [false, true] {
                 if b.always_clamps() && !clamp {
                     assert_eq!(value_for_e(b, clamp, 0.5), Err(Error::BuiltinModel));

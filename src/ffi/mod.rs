@@ -12,6 +12,7 @@
 
 pub mod builtin;
 pub mod calibration;
+pub mod fit;
 pub mod force;
 pub mod material;
 pub mod powerlaw;
