@@ -14,6 +14,9 @@
 //!   22 Jul 2025 release (the PyPI wheel the harness runs, measured 0.616 for 0.5); later development
 //!   versions multiply η by √2, which this module does not model.
 //! * `limit_damping`: `if (Fntot < 0) Fntot = 0` — the force-end criterion.
+//!
+//! Reachable with `tsuji` (e typed in (0, 1]): Hertz e ∈ (0.1136, 0.99958), with `limit_damping`
+//! (0.2628, 0.99958); hooke (0.0749, 0.99953) and (0.2337, 0.99953).
 
 use super::check_typed_e;
 use crate::numerics::newton_bracketed;

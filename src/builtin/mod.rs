@@ -180,6 +180,37 @@ pub fn value_for_e(builtin: Builtin, clamp: bool, e: f64) -> Result<f64, Error> 
     builtin.value_of_zeta(zeta)
 }
 
+/// The value a user types without this correction: e itself, or for `betan` the textbook
+/// |ln e|/√(π² + ln²e) (the β YADE's own `en` path computes).
+pub fn naive_value(builtin: Builtin, e: f64) -> Result<f64, Error> {
+    let e = check_typed_e(e)?;
+    Ok(match builtin {
+        Builtin::YadeMindlinBetan => lsd::zeta_overlap(e),
+        _ => e,
+    })
+}
+
+/// Why a target is unreachable, in words (for messages): the range the builtin can realise.
+pub fn reachable_range(builtin: Builtin, clamp: bool) -> &'static str {
+    match (builtin, clamp) {
+        (Builtin::LammpsTsujiHertz, false) => {
+            "e in (0.1136, 0.99958) (Tsuji's damping 0.0003 <= alpha < 1.2728)"
+        }
+        (Builtin::LammpsTsujiHertz, true) => {
+            "e in (0.2628, 0.99958) (Tsuji's damping 0.0003 <= alpha < 1.2728)"
+        }
+        (Builtin::LammpsTsujiHooke, false) => {
+            "e in (0.0749, 0.99953) (Tsuji's damping 0.0003 <= alpha < 1.2728)"
+        }
+        (Builtin::LammpsTsujiHooke, true) => {
+            "e in (0.2337, 0.99953) (Tsuji's damping 0.0003 <= alpha < 1.2728)"
+        }
+        (Builtin::YadeMindlinBetan, _) => "every e in (0, 1]",
+        (_, true) => "e > exp(-2) = 0.1353 (its damping ratio stays below 1 for every typed e)",
+        (_, false) => "every e in (0, 1]",
+    }
+}
+
 /// The restitution `builtin` realises (exactly, in continuous time) when `value` is typed.
 pub fn realised_e(builtin: Builtin, clamp: bool, value: f64) -> Result<f64, Error> {
     let criterion = criterion(builtin, clamp)?;
@@ -258,6 +289,33 @@ mod tests {
         assert!((r(Builtin::LiggghtsHertz, true, 0.5) - 0.5503).abs() < 1e-3);
         assert!((r(Builtin::LammpsTsujiHertz, false, 0.5) - 0.616).abs() < 1e-3);
         assert!((r(Builtin::LammpsTsujiHertz, true, 0.5) - 0.646).abs() < 1e-3);
+    }
+
+    #[test]
+    fn stated_ranges_are_the_real_ones() {
+        // The bounds printed by reachable_range, recomputed from the builtins' formulas.
+        use Builtin::*;
+        let lo_hi = |b: Builtin, c: bool| {
+            let r = |v| realised_e(b, c, v).unwrap_or(f64::NAN);
+            (r(1e-300_f64.max(f64::MIN_POSITIVE)), r(1.0))
+        };
+        let (lo, hi) = lo_hi(LammpsTsujiHertz, false);
+        assert!(
+            (lo - 0.1136).abs() < 1e-4 && (hi - 0.99958).abs() < 1e-5,
+            "{lo} {hi}"
+        );
+        let (lo, hi) = lo_hi(LammpsTsujiHertz, true);
+        assert!(
+            (lo - 0.2628).abs() < 1e-4 && (hi - 0.99958).abs() < 1e-5,
+            "{lo} {hi}"
+        );
+        let (lo, hi) = lo_hi(LammpsTsujiHooke, false);
+        assert!(
+            (lo - 0.0749).abs() < 1e-4 && (hi - 0.99953).abs() < 1e-5,
+            "{lo} {hi}"
+        );
+        let (lo, _) = lo_hi(LammpsTsujiHooke, true);
+        assert!((lo - 0.2337).abs() < 1e-4, "{lo}");
     }
 
     #[test]

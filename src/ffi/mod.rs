@@ -49,6 +49,11 @@ pub(crate) const fn status_of(err: Error) -> i32 {
     }
 }
 
+/// The C status code of a core error (for Rust callers that report statuses, e.g. the CLI).
+pub fn status_code(err: Error) -> i32 {
+    status_of(err)
+}
+
 /// Parses a C criterion code.
 pub(crate) fn parse_criterion(code: i32) -> Result<EndCriterion, Error> {
     EndCriterion::from_code(code).ok_or(Error::Criterion)
