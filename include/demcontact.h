@@ -463,7 +463,8 @@ extern "C" {
  *         DC_ERR_BUILTIN_MODEL (unknown model, clamp not 0/1, or 0 for YADE),
  *         DC_ERR_BUILTIN_UNREACHABLE (the builtin's parameter saturates before e: with a clamp,
  *         the e-typed models of LIGGGHTS, LAMMPS coeff_restitution and YADE en cannot go below
- *         e = exp(-2) = 0.1353; LAMMPS tsuji covers damping 0.0003 <= alpha < 1.2728 only).
+ *         e = exp(-2) = 0.1353; LAMMPS tsuji covers damping 0.0003 <= alpha < 1.2728 only: Hertz
+ *         e in (0.1136, 0.99958), (0.2628, 0.99958) with limit_damping).
  *
  * Precision: the builtin's own formula applied to the value realises e within 1e-13.
  *

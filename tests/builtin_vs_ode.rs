@@ -94,15 +94,23 @@ fn force_law(b: Builtin, value: f64, young: f64) -> (Box<dyn Fn(f64, f64) -> f64
             (Box::new(move |d: f64, v: f64| kn * d + cn * v), m)
         }
         Builtin::YadeMindlinEn => {
-            let l = value.ln();
-            let alpha = -(5.0f64 / 6.0).sqrt() * 2.0 * l / (l * l + PI * PI).sqrt()
-                * (2.0 * y * r.sqrt()).sqrt();
-            (
-                Box::new(move |d: f64, v: f64| {
-                    kh * d.powf(1.5) + alpha * m.sqrt() * d.powf(0.25) * v
-                }),
-                m,
-            )
+            // YADE 2023.02a: Thornton et al. (2013) B6-B7, written here as YADE writes it.
+            let h = [
+                -6.918798, -16.41105, 146.8049, -796.4559, 2928.711, -7206.864, 11494.29,
+                -11342.18, 6276.757, -1489.915,
+            ];
+            let en = value;
+            let alphan = en * h.iter().rev().fold(0.0, |acc, c| acc * en + c);
+            let betan = if en == 1.0 {
+                0.0
+            } else {
+                (1.0 / (1.0 - (1.0 + en).powi(2) * alphan.exp()) - 1.0).sqrt()
+            };
+            let f = move |d: f64, v: f64| {
+                let kn = 1.5 * kh * d.sqrt();
+                kh * d.powf(1.5) + 2.0 * (m * kn).sqrt() * betan * v
+            };
+            (Box::new(f), m)
         }
         Builtin::YadeMindlinBetan => {
             let f = move |d: f64, v: f64| {

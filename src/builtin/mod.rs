@@ -128,8 +128,8 @@ impl Builtin {
             Builtin::LiggghtsHooke
             | Builtin::LiggghtsHertz
             | Builtin::LammpsCoeffRestitution
-            | Builtin::YadeViscElEn
-            | Builtin::YadeMindlinEn => overlap_formula_value(zeta),
+            | Builtin::YadeViscElEn => overlap_formula_value(zeta),
+            Builtin::YadeMindlinEn => yade::mindlin_en_of_zeta(zeta),
             Builtin::LammpsTsujiHertz => lammps::tsuji_value(zeta, 1.5),
             Builtin::LammpsTsujiHooke => lammps::tsuji_value(zeta, 1.0),
             Builtin::YadeMindlinBetan => Ok(yade::mindlin_betan_of_zeta(zeta)),
@@ -206,6 +206,9 @@ pub fn reachable_range(builtin: Builtin, clamp: bool) -> &'static str {
             "e in (0.2337, 0.99953) (Tsuji's damping 0.0003 <= alpha < 1.2728)"
         }
         (Builtin::YadeMindlinBetan, _) => "every e in (0, 1]",
+        (Builtin::YadeMindlinEn, _) => {
+            "e in (0, 0.98459) and e = 1 (Thornton's fit tends to betan = 0.0045267 as en -> 1)"
+        }
         (_, true) => "e > exp(-2) = 0.1353 (its damping ratio stays below 1 for every typed e)",
         (_, false) => "every e in (0, 1]",
     }
@@ -316,6 +319,13 @@ mod tests {
         );
         let (lo, _) = lo_hi(LammpsTsujiHooke, true);
         assert!((lo - 0.2337).abs() < 1e-4, "{lo}");
+        let top = realised_e(YadeMindlinEn, true, 1.0 - f64::EPSILON).unwrap_or(f64::NAN);
+        assert!((top - 0.98459).abs() < 1e-5, "{top}");
+        assert_eq!(
+            value_for_e(YadeMindlinEn, true, 0.985),
+            Err(Error::BuiltinUnreachable)
+        );
+        assert_eq!(value_for_e(YadeMindlinEn, true, 1.0), Ok(1.0));
     }
 
     #[test]
