@@ -240,7 +240,7 @@ fn contact_bad_input() {
     assert_eq!(o.status.code(), Some(1));
     assert_eq!(json_of(&o)["error"]["status"].as_i64(), Some(6105));
     let o = run(&[
-        "contact", "--E1", "7e10", "--nu1", "0.2", "--rho1", "2500", "--R1", "1e-3", "--v", "-2",
+        "contact", "--E1", "7e10", "--nu1", "0.2", "--rho1", "2500", "--R1", "1e-3", "--v=-2",
         "--e", "0.5",
     ]);
     assert_eq!(o.status.code(), Some(1));
