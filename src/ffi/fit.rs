@@ -1,6 +1,6 @@
 //! Export: fit measured restitution against the viscoelastic and the constant-e models.
 
-use super::{parse_criterion, status::*, status_of};
+use super::{guard, parse_criterion, status::*};
 use crate::Error;
 use crate::fit::{self, Data, Fit, FitOptions, ModelChoice};
 
@@ -208,9 +208,5 @@ pub unsafe extern "C" fn dc_fit_restitution(
         unsafe { out.write_unaligned(dc_fit_result::from(&f, robust)) };
         Ok(())
     };
-    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(body)) {
-        Ok(Ok(())) => DC_OK,
-        Ok(Err(err)) => status_of(err),
-        Err(_) => DC_ERR_INTERNAL,
-    }
+    guard(|| body().map_err(dc_status::of))
 }

@@ -78,7 +78,7 @@ impl Failure {
         let (kind, extra) = match &self.kind {
             Kind::Refused(e) => (
                 "refused",
-                json!({ "status": demcontact::ffi::status_code(*e) }),
+                json!({ "status": demcontact::ffi::dc_status::of(*e).code() }),
             ),
             Kind::Input { file, line, column } => (
                 "input",
@@ -99,7 +99,7 @@ impl Failure {
 
 /// The library's message for an error (the C status message, without its NUL).
 pub fn describe(e: Error) -> String {
-    let code = demcontact::ffi::status_code(e);
+    let code = demcontact::ffi::dc_status::of(e).code();
     let p = demcontact::ffi::status::dc_status_str(code);
     // SAFETY: dc_status_str returns a static NUL-terminated string, never NULL.
     let s = unsafe { std::ffi::CStr::from_ptr(p) };
