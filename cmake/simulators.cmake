@@ -5,3 +5,5 @@
 
 add_subdirectory(examples_cpp/liggghts)
 add_subdirectory(examples_cpp/lammps)
+# The corrected builtin inputs of LIGGGHTS, LAMMPS and YADE in the real codes.
+include(examples_cpp/sim/builtin_tests.cmake)
