@@ -23,6 +23,9 @@ pub struct Pair {
     reads: [bool; 3],
 }
 
+/// Contacts per block of the checked batch (5 arrays x 16 KiB: stays in L2).
+const BLOCK: usize = 2048;
+
 const INPUTS: [&str; 3] = ["vn", "r_eff", "m_eff"];
 
 impl Pair {
@@ -558,25 +561,79 @@ fn batch<'py>(
     let raw = pair.raw;
     let ptr = |r: &Option<Run<'_>>| r.as_ref().map_or(std::ptr::null(), |r| r.slice().as_ptr());
     let (pd, pv, pr, pm) = (rd.slice(), &ro[0], &ro[1], &ro[2]);
+    let clamp = raw.clamp != 0;
+    let reads = pair.reads;
     let outcome = py.detach(|| {
-        // SAFETY: every non-NULL input points to n doubles (a run of the broadcast shape), the
-        // output to n writable doubles; the pair is a live local.
-        let s = unsafe {
-            c::force::dc_normal_force_batch(
-                &raw,
-                n,
-                pd.as_ptr(),
-                ptr(pv),
-                ptr(pr),
-                ptr(pm),
-                out_slice.as_mut_ptr(),
-            )
-        };
-        if s != c::status::DC_OK {
-            return Err((s, None));
+        if !check {
+            // SAFETY: every non-NULL input points to n doubles (a run of the broadcast shape),
+            // the output to n writable doubles; the pair is a live local.
+            let s = unsafe {
+                c::force::dc_normal_force_batch(
+                    &raw,
+                    n,
+                    pd.as_ptr(),
+                    ptr(pv),
+                    ptr(pr),
+                    ptr(pm),
+                    out_slice.as_mut_ptr(),
+                )
+            };
+            return if s == c::status::DC_OK {
+                Ok(())
+            } else {
+                Err((s, None))
+            };
         }
-        if check && let Some(i) = out_slice.iter().position(|f| !f.is_finite()) {
-            return Err((s, Some(i)));
+        // Checked: blocks small enough to stay in cache, each computed by the C batch and then
+        // screened; a screened contact is judged by the library's checked kernel (its status is
+        // the answer; the screen only has to catch a superset of what that kernel rejects).
+        let mut start = 0;
+        while start < n {
+            let len = BLOCK.min(n - start);
+            let sub = |r: &Option<Run<'_>>| {
+                r.as_ref()
+                    .map_or(std::ptr::null(), |r| r.slice()[start..].as_ptr())
+            };
+            let out_block = &mut out_slice[start..start + len];
+            // SAFETY: as above, for the block [start, start + len) of every array.
+            let s = unsafe {
+                c::force::dc_normal_force_batch(
+                    &raw,
+                    len,
+                    pd[start..].as_ptr(),
+                    sub(pv),
+                    sub(pr),
+                    sub(pm),
+                    out_block.as_mut_ptr(),
+                )
+            };
+            if s != c::status::DC_OK {
+                return Err((s, None));
+            }
+            let at = |r: &Option<Run<'_>>, i: usize| {
+                r.as_ref()
+                    .map_or(1.0, |r| r.slice().get(i).copied().unwrap_or(f64::NAN))
+            };
+            for (j, f) in out_block.iter().enumerate() {
+                let i = start + j;
+                let d = pd.get(i).copied().unwrap_or(f64::NAN);
+                let (v, r, m) = (at(pv, i), at(pr, i), at(pm, i));
+                let suspicious = !d.is_finite()
+                    || (reads[0] && !v.is_finite())
+                    || (reads[1] && !(r.is_finite() && r > 0.0))
+                    || (reads[2] && !(m.is_finite() && m > 0.0))
+                    || !f.is_finite()
+                    || (clamp && *f == 0.0 && d > 0.0);
+                if suspicious {
+                    let mut g = 0.0;
+                    // SAFETY: live locals.
+                    let s = unsafe { c::force::dc_normal_force_checked(&raw, d, v, r, m, &mut g) };
+                    if s != c::status::DC_OK {
+                        return Err((s, Some(i)));
+                    }
+                }
+            }
+            start += len;
         }
         Ok(())
     });
@@ -584,8 +641,7 @@ fn batch<'py>(
     match outcome {
         Ok(()) => Ok(out_array.into_any()),
         Err((s, None)) => Err(status_error(py, s, F, "")),
-        Err((_, Some(i))) => {
-            // Ask the checked kernel why this contact has no finite force.
+        Err((s, Some(i))) => {
             let at = |r: &Option<Run<'_>>| {
                 r.as_ref()
                     .and_then(|r| r.slice().get(i).copied())
@@ -597,15 +653,6 @@ fn batch<'py>(
                 at(pr),
                 at(pm),
             ];
-            let mut f = 0.0;
-            // SAFETY: live locals.
-            let s =
-                unsafe { c::force::dc_normal_force_checked(&raw, x[0], x[1], x[2], x[3], &mut f) };
-            let s = if s == c::status::DC_OK {
-                c::status::DC_ERR_RESULT_RANGE
-            } else {
-                s
-            };
             Err(status_error(
                 py,
                 s,
