@@ -23,6 +23,41 @@ pub struct Pair {
     reads: [bool; 3],
 }
 
+/// The block [start, start + len) of an optional run.
+fn block<'a>(r: &'a Option<Run<'_>>, start: usize, len: usize) -> Option<&'a [f64]> {
+    r.as_ref().and_then(|r| r.slice().get(start..start + len))
+}
+
+/// True if every value is finite: x * 0 is NaN exactly for NaN and ±inf; eight lanes so the
+/// compiler vectorises the sum.
+fn all_finite(s: &[f64]) -> bool {
+    let mut acc = [0.0f64; 8];
+    let mut chunks = s.chunks_exact(8);
+    for c in &mut chunks {
+        for (a, x) in acc.iter_mut().zip(c) {
+            *a += x * 0.0;
+        }
+    }
+    let rest: f64 = chunks.remainder().iter().map(|x| x * 0.0).sum();
+    acc.iter().sum::<f64>() + rest == 0.0
+}
+
+/// True if every value is finite and > 0.
+fn all_positive(s: &[f64]) -> bool {
+    let mut bad = [false; 8];
+    let mut chunks = s.chunks_exact(8);
+    for c in &mut chunks {
+        for (b, &x) in bad.iter_mut().zip(c) {
+            *b |= !(x > 0.0) | (x == f64::INFINITY);
+        }
+    }
+    let rest = chunks
+        .remainder()
+        .iter()
+        .any(|&x| !(x > 0.0) || x == f64::INFINITY);
+    !(rest || bad.iter().any(|&b| b))
+}
+
 /// Contacts per block of the checked batch (5 arrays x 16 KiB: stays in L2).
 const BLOCK: usize = 2048;
 
@@ -561,7 +596,6 @@ fn batch<'py>(
     let raw = pair.raw;
     let ptr = |r: &Option<Run<'_>>| r.as_ref().map_or(std::ptr::null(), |r| r.slice().as_ptr());
     let (pd, pv, pr, pm) = (rd.slice(), &ro[0], &ro[1], &ro[2]);
-    let clamp = raw.clamp != 0;
     let reads = pair.reads;
     let outcome = py.detach(|| {
         if !check {
@@ -610,26 +644,37 @@ fn batch<'py>(
             if s != c::status::DC_OK {
                 return Err((s, None));
             }
-            let at = |r: &Option<Run<'_>>, i: usize| {
-                r.as_ref()
-                    .map_or(1.0, |r| r.slice().get(i).copied().unwrap_or(f64::NAN))
-            };
-            for (j, f) in out_block.iter().enumerate() {
-                let i = start + j;
-                let d = pd.get(i).copied().unwrap_or(f64::NAN);
-                let (v, r, m) = (at(pv, i), at(pr, i), at(pm, i));
-                let suspicious = !d.is_finite()
-                    || (reads[0] && !v.is_finite())
-                    || (reads[1] && !(r.is_finite() && r > 0.0))
-                    || (reads[2] && !(m.is_finite() && m > 0.0))
-                    || !f.is_finite()
-                    || (clamp && *f == 0.0 && d > 0.0);
-                if suspicious {
-                    let mut g = 0.0;
-                    // SAFETY: live locals.
-                    let s = unsafe { c::force::dc_normal_force_checked(&raw, d, v, r, m, &mut g) };
-                    if s != c::status::DC_OK {
-                        return Err((s, Some(i)));
+            // Fast screen over the block (vectorised, in cache): every input the kernel reads
+            // finite (r_eff, m_eff also > 0) and every force finite. Only a failing block is
+            // examined contact by contact.
+
+            let clean = all_finite(pd.get(start..start + len).unwrap_or(&[]))
+                && all_finite(out_block)
+                && (!reads[0] || block(pv, start, len).is_some_and(all_finite))
+                && (!reads[1] || block(pr, start, len).is_some_and(all_positive))
+                && (!reads[2] || block(pm, start, len).is_some_and(all_positive));
+            if !clean {
+                let at = |r: &Option<Run<'_>>, i: usize| {
+                    r.as_ref()
+                        .map_or(1.0, |r| r.slice().get(i).copied().unwrap_or(f64::NAN))
+                };
+                for (j, f) in out_block.iter().enumerate() {
+                    let i = start + j;
+                    let d = pd.get(i).copied().unwrap_or(f64::NAN);
+                    let (v, r, m) = (at(pv, i), at(pr, i), at(pm, i));
+                    let suspicious = !d.is_finite()
+                        || (reads[0] && !v.is_finite())
+                        || (reads[1] && !(r.is_finite() && r > 0.0))
+                        || (reads[2] && !(m.is_finite() && m > 0.0))
+                        || !f.is_finite();
+                    if suspicious {
+                        let mut g = 0.0;
+                        // SAFETY: live locals.
+                        let s =
+                            unsafe { c::force::dc_normal_force_checked(&raw, d, v, r, m, &mut g) };
+                        if s != c::status::DC_OK {
+                            return Err((s, Some(i)));
+                        }
                     }
                 }
             }
@@ -676,9 +721,12 @@ fn batch<'py>(
 /// float64 C-contiguous inputs of the broadcast shape are read in place; any other input
 /// (another dtype, strided, or smaller and broadcast) is copied once. `out`, if given, must be
 /// a float64 C-contiguous array of the broadcast shape and not overlap an input. The kernel
-/// checks no value (that is its speed); with check=True (default) a non-finite force raises
-/// the status the checked kernel gives for that contact, naming its index; check=False returns
-/// whatever the kernel computed (NaN for r_eff <= 0 etc., as in C). An empty input gives an
+/// checks no value (that is its speed). check=True (default): every input the pair reads must
+/// be finite (r_eff, m_eff > 0) and every force finite, else the status the checked kernel
+/// gives for the first such contact is raised with its index (`out` then holds partial
+/// results); the one case left to the kernel is a clamped pair whose force terms overflow
+/// (> 1e308 N), which gives 0 as in C (normal_force checks that too). check=False is the C
+/// batch exactly (NaN or, for clamped pairs, 0 for r_eff <= 0 etc.). An empty input gives an
 /// empty result.
 #[pyfunction]
 #[pyo3(signature = (pair, overlap, vn=None, r_eff=None, m_eff=None, *, out=None, check=true))]
