@@ -53,6 +53,7 @@ from ._native import (
     pair_powerlaw,
     pair_powerlaw_alpha,
     pair_viscoelastic,
+    status_known,
     status_str,
     time_of_max_overlap,
     version,
@@ -147,6 +148,7 @@ __all__ = [
     "normal_force_batch",
     "normal_force_3d",
     "status_str",
+    "status_known",
     "version",
     *_errors_all,
 ]

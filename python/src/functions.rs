@@ -307,6 +307,12 @@ pub fn status_str(status: i64) -> String {
     crate::error::status_message(i32::try_from(status).unwrap_or(i32::MIN))
 }
 
+/// True if `status` is DC_OK or one of the documented DC_ERR_* codes (C: dc_status_known).
+#[pyfunction]
+pub fn status_known(status: i64) -> bool {
+    i32::try_from(status).is_ok_and(|s| c::status::dc_status_known(s) == 1)
+}
+
 /// The library version, e.g. "0.1.0" (C: dc_version).
 #[pyfunction]
 pub fn version() -> String {

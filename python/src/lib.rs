@@ -48,6 +48,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(viscoelastic_a_from_e, m)?,
         wrap_pyfunction!(viscoelastic_speed_for_e, m)?,
         wrap_pyfunction!(status_str, m)?,
+        wrap_pyfunction!(status_known, m)?,
         wrap_pyfunction!(version, m)?,
         wrap_pyfunction!(force::pair_powerlaw, m)?,
         wrap_pyfunction!(force::pair_powerlaw_alpha, m)?,
@@ -75,28 +76,11 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("MODEL_POWERLAW", c::force::DC_MODEL_POWERLAW)?;
     m.add("MODEL_HERTZ", c::force::DC_MODEL_HERTZ)?;
     m.add("MODEL_VISCOELASTIC", c::force::DC_MODEL_VISCOELASTIC)?;
+    // Every status, from the library's own table (no hand-kept list).
     let statuses = PyDict::new(py);
-    use c::status::*;
-    for (name, code) in [
-        ("OK", DC_OK),
-        ("ERR_NULL_POINTER", DC_ERR_NULL_POINTER),
-        ("ERR_NOT_FINITE", DC_ERR_NOT_FINITE),
-        ("ERR_RESTITUTION_RANGE", DC_ERR_RESTITUTION_RANGE),
-        ("ERR_EXPONENT_RANGE", DC_ERR_EXPONENT_RANGE),
-        ("ERR_NOT_POSITIVE", DC_ERR_NOT_POSITIVE),
-        ("ERR_NEGATIVE", DC_ERR_NEGATIVE),
-        ("ERR_CRITERION", DC_ERR_CRITERION),
-        ("ERR_RESULT_RANGE", DC_ERR_RESULT_RANGE),
-        ("ERR_NO_CONVERGENCE", DC_ERR_NO_CONVERGENCE),
-        ("ERR_BUFFER_TOO_SHORT", DC_ERR_BUFFER_TOO_SHORT),
-        ("ERR_NO_EVENT", DC_ERR_NO_EVENT),
-        ("ERR_LEVEL", DC_ERR_LEVEL),
-        ("ERR_PLAN", DC_ERR_PLAN),
-        ("ERR_PAIR_INVALID", DC_ERR_PAIR_INVALID),
-        ("ERR_BUFFER_LAYOUT", DC_ERR_BUFFER_LAYOUT),
-        ("ERR_INTERNAL", DC_ERR_INTERNAL),
-    ] {
-        statuses.set_item(name, code)?;
+    for st in c::status::dc_status::all() {
+        let name = format!("{st:?}");
+        statuses.set_item(name.trim_start_matches("DC_"), st.code())?;
     }
     m.add("STATUS_CODES", statuses)?;
     Ok(())

@@ -29,6 +29,8 @@ def test_enums_match_header_constants():
     import re
 
     consts = dict((m.group(1), int(m.group(2))) for m in re.finditer(r"#define DC_(\w+) (-?\d+)", header))
+    # statuses: `enum dc_status { DC_OK = 0, ... }` (or #defines in older headers)
+    consts.update((m.group(1), int(m.group(2))) for m in re.finditer(r"^\s*DC_((?:OK|ERR_\w+)) = (-?\d+),?$", header, re.M))
     assert int(dc.Criterion.OVERLAP) == consts["END_OVERLAP"] and int(dc.Criterion.FORCE) == consts["END_FORCE"]
     assert dc.LEVEL_MIN == consts["LEVEL_MIN"] and dc.LEVEL_MAX == consts["LEVEL_MAX"]
     for m in dc.Model:

@@ -343,3 +343,8 @@ def test_status_strings_and_version_equal_c():
     for code in list(dc.Status) + [1, 6100, 6198, -5]:
         assert dc.status_str(int(code)) == lib.dc_status_str(int(code)).decode()
     assert dc.version() == lib.dc_version().decode() == dc.__version__
+    lib.dc_status_known.argtypes = [I32]
+    lib.dc_status_known.restype = I32
+    for code in list(dc.Status) + [1, 6100, 6114, 6198, -5, 2**31 - 1, -(2**31)]:
+        assert dc.status_known(int(code)) == bool(lib.dc_status_known(int(code)))
+    assert dc.status_known(2**40) is False
