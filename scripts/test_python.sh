@@ -15,7 +15,7 @@ if [ ! -x "$VENV/bin/python" ]; then
     "$PY" -m venv "$VENV"
 fi
 "$VENV/bin/python" -m pip install -q --upgrade pip
-"$VENV/bin/python" -m pip install -q "maturin>=1.9.4,<2" numpy pytest matplotlib
+"$VENV/bin/python" -m pip install -q "maturin>=1.9.4,<2" numpy pytest matplotlib mypy
 # The package, built by maturin through pip from the workspace (release profile).
 "$VENV/bin/python" -m pip install -q --force-reinstall --no-deps ./python
 # The C library the tests compare against, bit for bit.

@@ -3,7 +3,7 @@
 # numpy ufuncs: all-scalar calls return float, otherwise an ndarray of the broadcast shape.
 
 import enum
-from typing import List, NamedTuple, Optional, Sequence, Union
+from typing import List, NamedTuple, Optional, Sequence, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -32,12 +32,83 @@ from ._errors import (
     UsageError as UsageError,
 )
 
-Real = Union[float, int, np.floating, np.integer]
-ArrayLike = Union[Real, npt.ArrayLike]
-FloatOrArray = Union[float, npt.NDArray[np.float64]]
-Code = Union[int, enum.IntEnum]
+_Real = Union[float, int, np.floating, np.integer]
+_ArrayLike = Union[_Real, npt.ArrayLike]
+_FloatOrArray = Union[float, npt.NDArray[np.float64]]
+_Code = Union[int, enum.IntEnum]
 
 __version__: str
+__all__: list[str] = [
+    "Criterion",
+    "Model",
+    "Status",
+    "LEVEL_MIN",
+    "LEVEL_MAX",
+    "EnergyPartition",
+    "Trajectory",
+    "Pair",
+    "DurationPlan",
+    "alpha_from_e",
+    "e_from_alpha",
+    "max_overlap",
+    "time_of_max_overlap",
+    "contact_duration",
+    "contact_duration_level",
+    "duration_plan_init",
+    "contact_duration_planned",
+    "energy_partition",
+    "contact_trajectory",
+    "omega0",
+    "hertz_stiffness",
+    "effective_modulus",
+    "dt_crit",
+    "dt_linearised",
+    "dt_static",
+    "dt_for_accuracy",
+    "viscoelastic_e",
+    "viscoelastic_e_series",
+    "viscoelastic_e_reference",
+    "viscoelastic_b",
+    "viscoelastic_e_of_speed",
+    "viscoelastic_k_gamma",
+    "viscoelastic_b_from_e",
+    "viscoelastic_beta_from_e",
+    "viscoelastic_a_from_e",
+    "viscoelastic_speed_for_e",
+    "pair_powerlaw",
+    "pair_powerlaw_alpha",
+    "pair_linear",
+    "pair_hertz",
+    "pair_viscoelastic",
+    "normal_force",
+    "normal_force_checked",
+    "normal_force_batch",
+    "normal_force_3d",
+    "status_str",
+    "status_known",
+    "version",
+    "DemcontactError",
+    "InputError",
+    "ResultRangeError",
+    "NoEventError",
+    "UsageError",
+    "InternalError",
+    "NotFiniteError",
+    "RestitutionRangeError",
+    "ExponentRangeError",
+    "NotPositiveError",
+    "NegativeError",
+    "CriterionError",
+    "LevelError",
+    "NullPointerError",
+    "BufferTooShortError",
+    "BufferLayoutError",
+    "PairInvalidError",
+    "PlanError",
+    "NoConvergenceError",
+    "PanicError",
+    "STATUS_CLASSES",
+]
 LEVEL_MIN: int
 LEVEL_MAX: int
 
@@ -70,11 +141,11 @@ class Status(enum.IntEnum):
     ERR_INTERNAL = 6199
 
 class EnergyPartition(NamedTuple):
-    e: FloatOrArray
-    loading: FloatOrArray
-    unloading: FloatOrArray
-    returned: FloatOrArray
-    clamped: FloatOrArray
+    e: _FloatOrArray
+    loading: _FloatOrArray
+    unloading: _FloatOrArray
+    returned: _FloatOrArray
+    clamped: _FloatOrArray
 
 class Trajectory(NamedTuple):
     t: npt.NDArray[np.float64]
@@ -82,6 +153,7 @@ class Trajectory(NamedTuple):
     v: npt.NDArray[np.float64]
     force: npt.NDArray[np.float64]
 
+@final
 class Pair:
     @property
     def model(self) -> Model: ...
@@ -111,92 +183,93 @@ class Pair:
     def reads(self) -> List[str]: ...
     def normal_force(
         self,
-        overlap: ArrayLike,
-        vn: Optional[ArrayLike] = None,
-        r_eff: Optional[ArrayLike] = None,
-        m_eff: Optional[ArrayLike] = None,
-    ) -> FloatOrArray: ...
+        overlap: _ArrayLike,
+        vn: Optional[_ArrayLike] = None,
+        r_eff: Optional[_ArrayLike] = None,
+        m_eff: Optional[_ArrayLike] = None,
+    ) -> _FloatOrArray: ...
     def normal_force_batch(
         self,
-        overlap: ArrayLike,
-        vn: Optional[ArrayLike] = None,
-        r_eff: Optional[ArrayLike] = None,
-        m_eff: Optional[ArrayLike] = None,
+        overlap: _ArrayLike,
+        vn: Optional[_ArrayLike] = None,
+        r_eff: Optional[_ArrayLike] = None,
+        m_eff: Optional[_ArrayLike] = None,
         *,
         out: Optional[npt.NDArray[np.float64]] = None,
         check: bool = True,
     ) -> npt.NDArray[np.float64]: ...
 
+@final
 class DurationPlan:
     @property
     def p(self) -> float: ...
     @property
     def level(self) -> int: ...
-    def contact_duration(self, alpha: ArrayLike, v0: ArrayLike, omega0: ArrayLike, criterion: Code) -> FloatOrArray: ...
+    def contact_duration(self, alpha: _ArrayLike, v0: _ArrayLike, omega0: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
 
 # calibration
-def alpha_from_e(e: ArrayLike, p: ArrayLike, criterion: Code) -> FloatOrArray: ...
-def e_from_alpha(alpha: ArrayLike, p: ArrayLike, criterion: Code) -> FloatOrArray: ...
+def alpha_from_e(e: _ArrayLike, p: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
+def e_from_alpha(alpha: _ArrayLike, p: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
 
 # material
-def hertz_stiffness(E1: ArrayLike, nu1: ArrayLike, R1: ArrayLike, E2: ArrayLike, nu2: ArrayLike, R2: ArrayLike) -> FloatOrArray: ...
-def effective_modulus(E1: ArrayLike, nu1: ArrayLike, E2: ArrayLike, nu2: ArrayLike) -> FloatOrArray: ...
-def omega0(k: ArrayLike, m: ArrayLike) -> FloatOrArray: ...
+def hertz_stiffness(E1: _ArrayLike, nu1: _ArrayLike, R1: _ArrayLike, E2: _ArrayLike, nu2: _ArrayLike, R2: _ArrayLike) -> _FloatOrArray: ...
+def effective_modulus(E1: _ArrayLike, nu1: _ArrayLike, E2: _ArrayLike, nu2: _ArrayLike) -> _FloatOrArray: ...
+def omega0(k: _ArrayLike, m: _ArrayLike) -> _FloatOrArray: ...
 
 # observables
-def max_overlap(p: ArrayLike, alpha: ArrayLike, v0: ArrayLike, omega0: ArrayLike) -> FloatOrArray: ...
-def time_of_max_overlap(p: ArrayLike, alpha: ArrayLike, v0: ArrayLike, omega0: ArrayLike) -> FloatOrArray: ...
-def contact_duration(p: ArrayLike, alpha: ArrayLike, v0: ArrayLike, omega0: ArrayLike, criterion: Code) -> FloatOrArray: ...
-def contact_duration_level(p: ArrayLike, alpha: ArrayLike, v0: ArrayLike, omega0: ArrayLike, criterion: Code, level: int) -> FloatOrArray: ...
-def duration_plan_init(p: Real, level: Optional[int] = None) -> DurationPlan: ...
-def contact_duration_planned(plan: DurationPlan, alpha: ArrayLike, v0: ArrayLike, omega0: ArrayLike, criterion: Code) -> FloatOrArray: ...
-def energy_partition(p: ArrayLike, alpha: ArrayLike, criterion: Code) -> EnergyPartition: ...
+def max_overlap(p: _ArrayLike, alpha: _ArrayLike, v0: _ArrayLike, omega0: _ArrayLike) -> _FloatOrArray: ...
+def time_of_max_overlap(p: _ArrayLike, alpha: _ArrayLike, v0: _ArrayLike, omega0: _ArrayLike) -> _FloatOrArray: ...
+def contact_duration(p: _ArrayLike, alpha: _ArrayLike, v0: _ArrayLike, omega0: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
+def contact_duration_level(p: _ArrayLike, alpha: _ArrayLike, v0: _ArrayLike, omega0: _ArrayLike, criterion: _Code, level: int) -> _FloatOrArray: ...
+def duration_plan_init(p: _Real, level: Optional[int] = None) -> DurationPlan: ...
+def contact_duration_planned(plan: DurationPlan, alpha: _ArrayLike, v0: _ArrayLike, omega0: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
+def energy_partition(p: _ArrayLike, alpha: _ArrayLike, criterion: _Code) -> EnergyPartition: ...
 def contact_trajectory(
-    p: Real, alpha: Real, v0: Real, omega0: Real, mass: Real, criterion: Code, level: Optional[int] = None, n: int = 256
+    p: _Real, alpha: _Real, v0: _Real, omega0: _Real, mass: _Real, criterion: _Code, level: Optional[int] = None, n: int = 256
 ) -> Trajectory: ...
 
 # time steps
-def dt_crit(p: ArrayLike, v0: ArrayLike, omega0: ArrayLike) -> FloatOrArray: ...
-def dt_linearised(p: ArrayLike, v0: ArrayLike, omega0: ArrayLike) -> FloatOrArray: ...
-def dt_static(p: ArrayLike, alpha: ArrayLike, omega0: ArrayLike, accel: ArrayLike) -> FloatOrArray: ...
-def dt_for_accuracy(p: ArrayLike, e: ArrayLike, criterion: Code, v0: ArrayLike, omega0: ArrayLike, tol: ArrayLike) -> FloatOrArray: ...
+def dt_crit(p: _ArrayLike, v0: _ArrayLike, omega0: _ArrayLike) -> _FloatOrArray: ...
+def dt_linearised(p: _ArrayLike, v0: _ArrayLike, omega0: _ArrayLike) -> _FloatOrArray: ...
+def dt_static(p: _ArrayLike, alpha: _ArrayLike, omega0: _ArrayLike, accel: _ArrayLike) -> _FloatOrArray: ...
+def dt_for_accuracy(p: _ArrayLike, e: _ArrayLike, criterion: _Code, v0: _ArrayLike, omega0: _ArrayLike, tol: _ArrayLike) -> _FloatOrArray: ...
 
 # viscoelastic spheres
-def viscoelastic_e(b: ArrayLike, criterion: Code) -> FloatOrArray: ...
-def viscoelastic_e_series(b: ArrayLike, criterion: Code) -> FloatOrArray: ...
-def viscoelastic_e_reference(b: ArrayLike, criterion: Code) -> FloatOrArray: ...
-def viscoelastic_b(k: ArrayLike, gamma: ArrayLike, v: ArrayLike) -> FloatOrArray: ...
-def viscoelastic_e_of_speed(k: ArrayLike, gamma: ArrayLike, v: ArrayLike, criterion: Code) -> FloatOrArray: ...
-def viscoelastic_k_gamma(rho: ArrayLike, a: ArrayLike, m_eff: ArrayLike) -> tuple[FloatOrArray, FloatOrArray]: ...
-def viscoelastic_b_from_e(e: ArrayLike, criterion: Code) -> FloatOrArray: ...
-def viscoelastic_beta_from_e(e: ArrayLike, v_ref: ArrayLike, criterion: Code) -> FloatOrArray: ...
-def viscoelastic_a_from_e(e: ArrayLike, v_ref: ArrayLike, rho: ArrayLike, m_eff: ArrayLike, criterion: Code) -> FloatOrArray: ...
-def viscoelastic_speed_for_e(e: ArrayLike, beta: ArrayLike, criterion: Code) -> FloatOrArray: ...
+def viscoelastic_e(b: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
+def viscoelastic_e_series(b: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
+def viscoelastic_e_reference(b: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
+def viscoelastic_b(k: _ArrayLike, gamma: _ArrayLike, v: _ArrayLike) -> _FloatOrArray: ...
+def viscoelastic_e_of_speed(k: _ArrayLike, gamma: _ArrayLike, v: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
+def viscoelastic_k_gamma(rho: _ArrayLike, a: _ArrayLike, m_eff: _ArrayLike) -> tuple[_FloatOrArray, _FloatOrArray]: ...
+def viscoelastic_b_from_e(e: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
+def viscoelastic_beta_from_e(e: _ArrayLike, v_ref: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
+def viscoelastic_a_from_e(e: _ArrayLike, v_ref: _ArrayLike, rho: _ArrayLike, m_eff: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
+def viscoelastic_speed_for_e(e: _ArrayLike, beta: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
 
 # force kernels
-def pair_powerlaw(p: Real, k: Real, e: Real, criterion: Code) -> Pair: ...
-def pair_powerlaw_alpha(p: Real, k: Real, alpha: Real, criterion: Code) -> Pair: ...
-def pair_linear(k: Real, e: Real, criterion: Code) -> Pair: ...
-def pair_hertz(E1: Real, nu1: Real, E2: Real, nu2: Real, e: Real, criterion: Code) -> Pair: ...
-def pair_viscoelastic(E1: Real, nu1: Real, E2: Real, nu2: Real, A: Real, criterion: Code) -> Pair: ...
+def pair_powerlaw(p: _Real, k: _Real, e: _Real, criterion: _Code) -> Pair: ...
+def pair_powerlaw_alpha(p: _Real, k: _Real, alpha: _Real, criterion: _Code) -> Pair: ...
+def pair_linear(k: _Real, e: _Real, criterion: _Code) -> Pair: ...
+def pair_hertz(E1: _Real, nu1: _Real, E2: _Real, nu2: _Real, e: _Real, criterion: _Code) -> Pair: ...
+def pair_viscoelastic(E1: _Real, nu1: _Real, E2: _Real, nu2: _Real, A: _Real, criterion: _Code) -> Pair: ...
 def normal_force(
-    pair: Pair, overlap: ArrayLike, vn: Optional[ArrayLike] = None, r_eff: Optional[ArrayLike] = None, m_eff: Optional[ArrayLike] = None
-) -> FloatOrArray: ...
+    pair: Pair, overlap: _ArrayLike, vn: Optional[_ArrayLike] = None, r_eff: Optional[_ArrayLike] = None, m_eff: Optional[_ArrayLike] = None
+) -> _FloatOrArray: ...
 def normal_force_checked(
-    pair: Pair, overlap: ArrayLike, vn: Optional[ArrayLike] = None, r_eff: Optional[ArrayLike] = None, m_eff: Optional[ArrayLike] = None
-) -> FloatOrArray: ...
+    pair: Pair, overlap: _ArrayLike, vn: Optional[_ArrayLike] = None, r_eff: Optional[_ArrayLike] = None, m_eff: Optional[_ArrayLike] = None
+) -> _FloatOrArray: ...
 def normal_force_batch(
     pair: Pair,
-    overlap: ArrayLike,
-    vn: Optional[ArrayLike] = None,
-    r_eff: Optional[ArrayLike] = None,
-    m_eff: Optional[ArrayLike] = None,
+    overlap: _ArrayLike,
+    vn: Optional[_ArrayLike] = None,
+    r_eff: Optional[_ArrayLike] = None,
+    m_eff: Optional[_ArrayLike] = None,
     *,
     out: Optional[npt.NDArray[np.float64]] = None,
     check: bool = True,
 ) -> npt.NDArray[np.float64]: ...
 def normal_force_3d(
-    pair: Pair, x1: Sequence[float], v1: Sequence[float], R1: Real, m1: Real, x2: Sequence[float], v2: Sequence[float], R2: Real, m2: Real
+    pair: Pair, x1: Sequence[float], v1: Sequence[float], R1: _Real, m1: _Real, x2: Sequence[float], v2: Sequence[float], R2: _Real, m2: _Real
 ) -> npt.NDArray[np.float64]: ...
 
 # status
