@@ -73,6 +73,20 @@ pub fn arg<'py>(function: &str, name: &str, obj: &Bound<'py, PyAny>) -> PyResult
         array.call_method1("astype", ("float64",))?
     };
     let typed = f64_array.cast::<PyArrayDyn<f64>>()?;
+    if typed.ndim() == 0 {
+        // A 0-d array (or numpy scalar of another dtype) is a scalar, as for ufuncs.
+        let ro = typed.try_readonly().map_err(|_| {
+            status_error(
+                py,
+                demcontact::ffi::status::DC_ERR_BUFFER_LAYOUT,
+                function,
+                &format!("(argument '{name}' is being written elsewhere)"),
+            )
+        })?;
+        return Ok(Arg::Scalar(
+            ro.as_array().iter().next().copied().unwrap_or(f64::NAN),
+        ));
+    }
     match typed.try_readonly() {
         Ok(ro) => Ok(Arg::Array(ro)),
         // Another thread holds this array writable (e.g. as the `out` of a running batch call).

@@ -1,14 +1,13 @@
 //! Ufunc-like application of a scalar C export over broadcast arguments.
 //!
 //! The arguments broadcast with numpy's rules; the result has the broadcast shape (a Python
-//! float when every argument is a scalar or a 0-d array). Arrays are read in place through
-//! strided views, so broadcasting never materialises a copy. The loop runs with the GIL
-//! released. The first element whose status is not DC_OK stops the loop and raises the
+//! float when every argument is a scalar or a 0-d array). The loop runs with the GIL released. The first element whose status is not DC_OK stops the loop and raises the
 //! `DemcontactError` subclass for that status, naming the element and its inputs; no partial
-//! result is ever returned.
+//! result is ever returned. Arrays are read in place when C-contiguous and of the broadcast
+//! shape; a strided or partially broadcast input is first copied once by numpy.
 
-use ndarray::{ArrayD, ArrayViewD, IxDyn, aview0};
-use numpy::IntoPyArray;
+use ndarray::{ArrayD, IxDyn};
+use numpy::{IntoPyArray, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyFloat;
 
@@ -119,30 +118,53 @@ where
         ));
     };
     let dim = IxDyn(&shape);
-    let plain: Vec<ArrayViewD<'_, f64>> = args
-        .iter()
-        .zip(&scalars)
-        .map(|(a, s)| match a {
-            Arg::Scalar(_) => aview0(s).into_dyn(),
-            Arg::Array(ro) => ro.as_array(),
-        })
-        .collect();
-    let mut views: Vec<ArrayViewD<'_, f64>> = Vec::with_capacity(K);
-    for v in &plain {
-        match v.broadcast(dim.clone()) {
-            Some(b) => views.push(b),
-            None => return Err(value_error(function, "internal broadcast failure")),
-        }
-    }
     let n: usize = shape.iter().product();
-
+    // Each input as a constant (a scalar, or an array of one element), a slice (a C-contiguous
+    // array of the full shape: read in place), or else one contiguous copy of its broadcast made
+    // by numpy (strided views and partial broadcasts), so the loop only ever reads slices.
+    let np = py.import("numpy")?;
+    let mut copies: Vec<Option<PyReadonlyArrayDyn<'py, f64>>> = Vec::with_capacity(K);
+    for a in &args {
+        let copy = match a {
+            Arg::Array(ro)
+                if ro.len() > 1 && !(ro.shape() == shape.as_slice() && ro.is_c_contiguous()) =>
+            {
+                let b = np
+                    .getattr("broadcast_to")?
+                    .call1((ro.as_any(), shape.clone()))?;
+                let c = np.getattr("ascontiguousarray")?.call1((b,))?;
+                Some(c.cast_into::<PyArrayDyn<f64>>()?.readonly())
+            }
+            _ => None,
+        };
+        copies.push(copy);
+    }
+    let mut src: Vec<Src<'_>> = Vec::with_capacity(K);
+    for ((a, s), c) in args.iter().zip(&scalars).zip(&copies) {
+        src.push(match (a, c) {
+            (Arg::Scalar(_), _) => Src::Const(*s),
+            (Arg::Array(_), Some(c)) => Src::Slice(
+                c.as_slice()
+                    .map_err(|e| value_error(function, &e.to_string()))?,
+            ),
+            (Arg::Array(ro), None) if ro.len() == 1 => {
+                Src::Const(ro.as_array().iter().next().copied().unwrap_or(f64::NAN))
+            }
+            (Arg::Array(ro), None) => Src::Slice(
+                ro.as_slice()
+                    .map_err(|e| value_error(function, &e.to_string()))?,
+            ),
+        });
+    }
     let run = || -> Result<[Vec<f64>; M], (usize, i32, [f64; K])> {
         let mut outs: [Vec<f64>; M] = std::array::from_fn(|_| Vec::with_capacity(n));
-        let mut iters: Vec<_> = views.iter().map(|v| v.iter()).collect();
         for i in 0..n {
             let mut x = [f64::NAN; K];
-            for (xk, it) in x.iter_mut().zip(iters.iter_mut()) {
-                *xk = it.next().copied().unwrap_or(f64::NAN);
+            for (xk, s) in x.iter_mut().zip(&src) {
+                *xk = match s {
+                    Src::Const(c) => *c,
+                    Src::Slice(sl) => sl.get(i).copied().unwrap_or(f64::NAN),
+                };
             }
             match f(x) {
                 Ok(y) => {
@@ -183,6 +205,12 @@ where
             ),
         )),
     }
+}
+
+/// A broadcast input in a form the loop reads cheaply.
+enum Src<'a> {
+    Const(f64),
+    Slice(&'a [f64]),
 }
 
 /// One C call with one double output: DC_OK gives the value, any other status the code.
