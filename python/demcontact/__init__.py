@@ -91,8 +91,28 @@ class Model(_enum.IntEnum):
     VISCOELASTIC = _native.MODEL_VISCOELASTIC
 
 
-#: Status codes of the C ABI (Status.OK = 0, Status.ERR_RESTITUTION_RANGE = 6103, ...).
+#: Status codes of the C ABI (Status.OK = 0, Status.ERR_RESTITUTION_RANGE = 6103, ...), from
+#: the library's own table.
 Status = _enum.IntEnum("Status", dict(_native.STATUS_CODES), module=__name__)
+
+
+def _class_for_new_statuses() -> None:
+    # A status the library knows but _errors.py does not name yet (added by a newer core) still
+    # gets its own class, a direct DemcontactError subclass named after it
+    # (ERR_BUILTIN_MODEL -> BuiltinModelError), so `except` by code class always works.
+    from . import _errors
+
+    for name, code in _native.STATUS_CODES.items():
+        if code == 0 or code in _errors.STATUS_CLASSES:
+            continue
+        cls_name = "".join(w.capitalize() for w in name.removeprefix("ERR_").split("_")) + "Error"
+        cls = type(cls_name, (_errors.DemcontactError,), {"status": code, "__module__": "demcontact._errors"})
+        setattr(_errors, cls_name, cls)
+        _errors.STATUS_CLASSES[code] = cls
+        globals()[cls_name] = cls
+
+
+_class_for_new_statuses()
 
 #: Quadrature accuracy levels accepted by contact_duration_level, duration_plan_init and
 #: contact_trajectory (fastest .. most accurate; the functions without a level use LEVEL_MAX).
