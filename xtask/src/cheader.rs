@@ -313,13 +313,12 @@ pub fn parse(header: &str) -> Result<Api, ParseError> {
             if let Some(name) = s.rsplit(' ').next() {
                 types.named.push(name.to_string());
             }
-        } else if let Some(rest) = s
+        } else if let Some(name) = s
             .strip_prefix("enum ")
             .or_else(|| s.strip_prefix("struct "))
+            .and_then(|rest| rest.split([' ', '{']).next())
         {
-            if let Some(name) = rest.split([' ', '{']).next() {
-                types.named.push(name.to_string());
-            }
+            types.named.push(name.to_string());
         }
     }
     for s in &stmts {
