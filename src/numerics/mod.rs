@@ -15,6 +15,7 @@ pub mod gauss_jacobi;
 pub mod jacobi_cc;
 pub mod ode;
 pub(crate) mod pow;
+pub(crate) mod pow_dd;
 pub mod roots;
 pub mod taylor;
 
