@@ -11,8 +11,8 @@
  *  - dc_alpha_from_e / dc_e_from_alpha / dc_effective_modulus: bits over grids that include the
  *    extremes (e down to 1e-300 and 1, overdamped force calibration, p = 1..1000), and the same
  *    statuses for bad input with outputs untouched;
- *  - dc_pow_inline within 1 ulp of libm's pow over the overlap range (an independent check of
- *    the power kernel's transcription).
+ *  - dc_pow_inline within its documented bound of libm's pow over the overlap range (2 ulp for
+ *    q <= 2, 1 + q beyond; an independent check of the power kernel's transcription).
  * Prints "test_inline[...]: N passed, M failed". */
 #include "../check.h"
 #include <demcontact_inline.h>
@@ -317,16 +317,19 @@ static double ulps(double a, double b) {
 
 static void power(void) {
     double worst = 0.0;
-    long n = 0;
+    long n = 0, fails = 0;
     const double qs[] = {0.05, 0.25, 0.35, 0.5, 0.75, 1.0, 2.0, 4.5};
     for (size_t iq = 0; iq < sizeof qs / sizeof qs[0]; iq++)
         for (int i = 0; i < 200000; i++) {
             const double x = logu(-15.0, 0.0);
             const double u = ulps(dc_pow_inline(x, qs[iq]), pow(x, qs[iq]));
+            /* the documented bound: 2 ulp for q <= 2 (p <= 5), 1 + q beyond */
+            const double bound = qs[iq] <= 2.0 ? 2.0 : 1.0 + qs[iq];
+            if (u > bound) fails++;
             worst = u > worst ? u : worst;
             n++;
         }
-    CHECK(worst <= 1.0, "dc_pow_inline: worst %g ulp from pow", worst);
+    CHECK(fails == 0, "dc_pow_inline: %ld beyond the bound, worst %g ulp from pow", fails, worst);
     printf("dc_pow_inline: %ld points, worst %g ulp from libm pow\n", n, worst);
 }
 

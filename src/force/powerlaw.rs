@@ -7,7 +7,7 @@
 //! * p = 3/2: with q = √δ, k δ q + c √(m q) vn   (δ^(1/4) √m = √(m √δ): two square roots)
 //! * p = 2:   k δ² + c √(m δ) vn
 //! * other p: with s = δ^((p−1)/2) (the one power), k δ s² + c √m s vn. The power is
-//!   [`crate::numerics::pow_dd`]'s branch-free double-double kernel (≤ 1 ulp from libm's `pow`,
+//!   [`crate::numerics::pow_dd`]'s branch-free kernel (≤ 2 ulp from libm's `pow`,
 //!   no libm call), so the batch loop vectorises it like the square roots.
 //!
 //! α comes from the exact calibration [`crate::powerlaw::alpha_from_e`] for the pair's end
@@ -96,7 +96,7 @@ impl Law for GenElastic {
     #[inline(always)]
     fn raw(c: &Consts, d: f64, _vn: f64, _r: f64, _m: f64) -> f64 {
         // δ^p = δ (δ^h)², h = (p−1)/2: the same single power as the damped law.
-        let s = pow_dd::<false>(d, c.h);
+        let s = pow_dd(d, c.h);
         c.k * d * s * s
     }
 }
@@ -107,7 +107,7 @@ impl Law for GenDamped {
     const NEEDS_M: bool = true;
     #[inline(always)]
     fn raw(c: &Consts, d: f64, vn: f64, _r: f64, m: f64) -> f64 {
-        let s = pow_dd::<false>(d, c.h);
+        let s = pow_dd(d, c.h);
         c.k * d * s * s + c.c * m.sqrt() * s * vn
     }
 }
