@@ -8,6 +8,8 @@
  *   dc_pair pair;                          // from dc_pair_hertz() or dc_pair_hertz_inline()
  *   dc_pair_hertz_inline(63e9, 0.23, 63e9, 0.23, 0.5, DC_END_FORCE, &pair);
  *   double F = dc_normal_force_inline(&pair, overlap, vn, r_eff, m_eff);
+ *   // in a loop over contacts of one pair, with the kernel code as a constant (vectorises):
+ *   F = dc_normal_force_kernel_inline(DC_KERNEL_HERTZ_DAMPED_CLAMPED, &pair, d, vn, r, m);
  *
  * Contract: the same meaning, statuses and results as the library's functions of the same name
  * without `_inline` (dc_normal_force, dc_alpha_from_e, dc_e_from_alpha, dc_effective_modulus,
@@ -261,15 +263,19 @@ DC_INLINE_FN double dci_visco(double k, double c, double d, double vn, double r)
     return k * sqrt(r * d) * (d + DCI_M(c, vn));
 }
 
-/* Normal force [N] of one contact, positive = repulsive: the library's dc_normal_force (same
- * sign conventions, same behaviour on every input: overlap <= 0 or NaN -> 0, pair NULL or not
- * made by a constructor -> NaN), bit for bit. A switch on pair->kernel, then branch-free code;
- * in a host loop over contacts of one pair the compiler can hoist the switch. */
-DC_INLINE_FN double dc_normal_force_inline(const dc_pair *pair, double overlap, double vn,
-                                           double r_eff, double m_eff) {
+/* dc_normal_force_inline with the kernel code given separately (it must be pair->kernel, e.g.
+ * DC_KERNEL_HERTZ_DAMPED_CLAMPED for a dc_pair_hertz(..., e < 1, DC_END_FORCE) pair): with a
+ * constant `kernel` the switch folds away when inlined, and a host loop over contacts compiles to
+ * the hand-written formula, vectorised where the flags allow (-fno-math-errno). A host that picks
+ * the pair at run time switches once outside its loop: `switch (pair.kernel) { case
+ * DC_KERNEL_HERTZ_DAMPED_CLAMPED: for (...) F[i] = dc_normal_force_kernel_inline(
+ * DC_KERNEL_HERTZ_DAMPED_CLAMPED, &pair, ...); break; ... }`. */
+DC_INLINE_FN double dc_normal_force_kernel_inline(int32_t kernel, const dc_pair *pair,
+                                                  double overlap, double vn, double r_eff,
+                                                  double m_eff) {
     if (!pair) return (double)NAN;
     const double k = pair->k, c = pair->c, h = pair->h, d = overlap;
-    switch (pair->kernel) {
+    switch (kernel) {
     case DC_KERNEL_LIN_ELASTIC: return dci_finish(dci_lin_elastic(k, d), d, 0);
     case DC_KERNEL_LIN_DAMPED: return dci_finish(dci_lin_damped(k, c, d, vn, m_eff), d, 0);
     case DC_KERNEL_LIN_DAMPED_CLAMPED: return dci_finish(dci_lin_damped(k, c, d, vn, m_eff), d, 1);
@@ -292,6 +298,17 @@ DC_INLINE_FN double dc_normal_force_inline(const dc_pair *pair, double overlap, 
     case DC_KERNEL_VISCO_DAMPED_CLAMPED: return dci_finish(dci_visco(k, c, d, vn, r_eff), d, 1);
     default: return (double)NAN;
     }
+}
+
+/* Normal force [N] of one contact, positive = repulsive: the library's dc_normal_force (same
+ * sign conventions, same behaviour on every input: overlap <= 0 or NaN -> 0, pair NULL or not
+ * made by a constructor -> NaN), bit for bit. A switch on pair->kernel, then branch-free code.
+ * In a loop over many contacts of one pair prefer dc_normal_force_kernel_inline (the switch per
+ * call keeps compilers from vectorising the loop). */
+DC_INLINE_FN double dc_normal_force_inline(const dc_pair *pair, double overlap, double vn,
+                                           double r_eff, double m_eff) {
+    if (!pair) return (double)NAN;
+    return dc_normal_force_kernel_inline(pair->kernel, pair, overlap, vn, r_eff, m_eff);
 }
 
 /* ------------------------------------------------------------------ calibrations (set-up time)
