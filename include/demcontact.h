@@ -46,95 +46,6 @@
 #define DC_LEVEL_MAX 4
 
 /**
- * Success.
- */
-#define DC_OK 0
-
-/**
- * A required pointer argument was NULL.
- */
-#define DC_ERR_NULL_POINTER 6101
-
-/**
- * An input was NaN or ±infinity.
- */
-#define DC_ERR_NOT_FINITE 6102
-
-/**
- * The restitution coefficient e is outside (0, 1].
- */
-#define DC_ERR_RESTITUTION_RANGE 6103
-
-/**
- * The force-law exponent p is below 1.
- */
-#define DC_ERR_EXPONENT_RANGE 6104
-
-/**
- * A quantity that must be strictly positive (speed, stiffness, mass, omega0) was not.
- */
-#define DC_ERR_NOT_POSITIVE 6105
-
-/**
- * A quantity that must not be negative (damping coefficient alpha, ...) was negative.
- */
-#define DC_ERR_NEGATIVE 6106
-
-/**
- * The end-of-contact criterion is neither DC_END_OVERLAP nor DC_END_FORCE.
- */
-#define DC_ERR_CRITERION 6107
-
-/**
- * The result overflows a double (inputs valid but extreme).
- */
-#define DC_ERR_RESULT_RANGE 6108
-
-/**
- * An iteration failed to converge (not expected for valid input; please report).
- */
-#define DC_ERR_NO_CONVERGENCE 6109
-
-/**
- * A caller-provided buffer is too short, or a requested sample count is zero.
- */
-#define DC_ERR_BUFFER_TOO_SHORT 6110
-
-/**
- * The requested event never happens for these inputs, e.g. the overlap of an overdamped contact
- * never returns to zero under DC_END_OVERLAP.
- */
-#define DC_ERR_NO_EVENT 6111
-
-/**
- * A dc_pair was not initialised by a dc_pair_* constructor (unknown kernel code), e.g. a
- * zero-filled struct.
- */
-#define DC_ERR_PAIR_INVALID 6120
-
-/**
- * A caller buffer is misaligned for double, too large to address, or an output array overlaps an
- * input array.
- */
-#define DC_ERR_BUFFER_LAYOUT 6121
-
-/**
- * A quadrature accuracy level is outside DC_LEVEL_MIN..=DC_LEVEL_MAX.
- */
-#define DC_ERR_LEVEL 6112
-
-/**
- * A dc_duration_plan was not initialised by dc_duration_plan_init (or was modified afterwards),
- * e.g. a zero-filled struct.
- */
-#define DC_ERR_PLAN 6113
-
-/**
- * An internal error was caught at the boundary (not expected; please report).
- */
-#define DC_ERR_INTERNAL 6199
-
-/**
  * Contact ends when the overlap returns to zero (solvers that do not clamp the normal force).
  */
 #define DC_END_OVERLAP 0
@@ -144,6 +55,96 @@
  * attractive normal forces to zero: LIGGGHTS limitForce, LAMMPS limit_damping, Chrono, YADE).
  */
 #define DC_END_FORCE 1
+
+/**
+ * Status of a demcontact call: DC_OK (0) or a DC_ERR_* code in 6101..6199.
+ * Functions return it as int32_t; dc_status_str() gives its message.
+ */
+enum dc_status
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+    /**
+     * Success.
+     */
+    DC_OK = 0,
+    /**
+     * A required pointer argument was NULL.
+     */
+    DC_ERR_NULL_POINTER = 6101,
+    /**
+     * An input was NaN or ±infinity.
+     */
+    DC_ERR_NOT_FINITE = 6102,
+    /**
+     * The restitution coefficient e is outside (0, 1].
+     */
+    DC_ERR_RESTITUTION_RANGE = 6103,
+    /**
+     * The force-law exponent p is below 1.
+     */
+    DC_ERR_EXPONENT_RANGE = 6104,
+    /**
+     * A quantity that must be strictly positive (speed, stiffness, mass, omega0) was not.
+     */
+    DC_ERR_NOT_POSITIVE = 6105,
+    /**
+     * A quantity that must not be negative (damping coefficient alpha, ...) was negative.
+     */
+    DC_ERR_NEGATIVE = 6106,
+    /**
+     * The end-of-contact criterion is neither DC_END_OVERLAP nor DC_END_FORCE.
+     */
+    DC_ERR_CRITERION = 6107,
+    /**
+     * The result overflows a double (inputs valid but extreme).
+     */
+    DC_ERR_RESULT_RANGE = 6108,
+    /**
+     * An iteration failed to converge (not expected for valid input; please report).
+     */
+    DC_ERR_NO_CONVERGENCE = 6109,
+    /**
+     * A caller-provided buffer is too short, or a requested sample count is zero.
+     */
+    DC_ERR_BUFFER_TOO_SHORT = 6110,
+    /**
+     * The requested event never happens for these inputs, e.g. the overlap of an overdamped
+     * contact never returns to zero under DC_END_OVERLAP.
+     */
+    DC_ERR_NO_EVENT = 6111,
+    /**
+     * A quadrature accuracy level is outside DC_LEVEL_MIN..=DC_LEVEL_MAX.
+     */
+    DC_ERR_LEVEL = 6112,
+    /**
+     * A dc_duration_plan was not initialised by dc_duration_plan_init (or was modified
+     * afterwards), e.g. a zero-filled struct.
+     */
+    DC_ERR_PLAN = 6113,
+    /**
+     * A dc_pair was not initialised by a dc_pair_* constructor (unknown kernel code), e.g. a
+     * zero-filled struct.
+     */
+    DC_ERR_PAIR_INVALID = 6120,
+    /**
+     * A caller buffer is misaligned for double, too large to address, or an output array
+     * overlaps an input array.
+     */
+    DC_ERR_BUFFER_LAYOUT = 6121,
+    /**
+     * An internal error was caught at the boundary (not expected; please report).
+     */
+    DC_ERR_INTERNAL = 6199,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum dc_status dc_status;
+#else
+typedef int32_t dc_status;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
 
 /**
  * A calibrated contact model for one material pair (type pair): plain data, owned by the
@@ -689,7 +690,8 @@ int32_t dc_duration_plan_init(double p, int32_t level, struct dc_duration_plan *
  * @param plan       a plan from dc_duration_plan_init (its p is the exponent used).
  * @param alpha, v0, omega0, criterion, tau_out  as dc_contact_duration.
  * @return as dc_contact_duration, plus DC_ERR_NULL_POINTER (plan NULL), DC_ERR_PLAN (plan not
- *         made by dc_duration_plan_init, or modified), DC_ERR_BUFFER_LAYOUT (plan misaligned).
+ *         made by dc_duration_plan_init, or modified). The plan is read by value: any alignment
+ *         works (earlier versions returned DC_ERR_BUFFER_LAYOUT for a misaligned plan).
  *
  * # Safety
  * `plan` must be NULL or point to a readable dc_duration_plan; `tau_out` NULL or writable.
@@ -773,6 +775,12 @@ int32_t dc_omega0(double k, double m, double *omega0_out);
  * Unknown codes give "unknown demcontact status".
  */
 const char *dc_status_str(int32_t status);
+
+/**
+ * 1 if `status` is DC_OK or one of the documented DC_ERR_* codes, else 0 (for hosts and test
+ * harnesses that check a status without hard-coding the code range).
+ */
+int32_t dc_status_known(int32_t status);
 
 /**
  * The largest velocity-Verlet time step for which a power-law Tsuji collision realises its

@@ -15,6 +15,8 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_MODEL_VISCOELASTIC = 3
   integer(c_int32_t), parameter :: DC_LEVEL_MIN = 0
   integer(c_int32_t), parameter :: DC_LEVEL_MAX = 4
+  integer(c_int32_t), parameter :: DC_END_OVERLAP = 0
+  integer(c_int32_t), parameter :: DC_END_FORCE = 1
   integer(c_int32_t), parameter :: DC_OK = 0
   integer(c_int32_t), parameter :: DC_ERR_NULL_POINTER = 6101
   integer(c_int32_t), parameter :: DC_ERR_NOT_FINITE = 6102
@@ -27,13 +29,11 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_ERR_NO_CONVERGENCE = 6109
   integer(c_int32_t), parameter :: DC_ERR_BUFFER_TOO_SHORT = 6110
   integer(c_int32_t), parameter :: DC_ERR_NO_EVENT = 6111
-  integer(c_int32_t), parameter :: DC_ERR_PAIR_INVALID = 6120
-  integer(c_int32_t), parameter :: DC_ERR_BUFFER_LAYOUT = 6121
   integer(c_int32_t), parameter :: DC_ERR_LEVEL = 6112
   integer(c_int32_t), parameter :: DC_ERR_PLAN = 6113
+  integer(c_int32_t), parameter :: DC_ERR_PAIR_INVALID = 6120
+  integer(c_int32_t), parameter :: DC_ERR_BUFFER_LAYOUT = 6121
   integer(c_int32_t), parameter :: DC_ERR_INTERNAL = 6199
-  integer(c_int32_t), parameter :: DC_END_OVERLAP = 0
-  integer(c_int32_t), parameter :: DC_END_FORCE = 1
 
   type, bind(c) :: dc_pair
     integer(c_int32_t) :: model
@@ -303,6 +303,11 @@ module demcontact_c
       integer(c_int32_t), value, intent(in) :: status
       type(c_ptr) :: dc_status_str
     end function dc_status_str
+    pure function dc_status_known(status) bind(c, name='dc_status_known')
+      import
+      integer(c_int32_t), value, intent(in) :: status
+      integer(c_int32_t) :: dc_status_known
+    end function dc_status_known
     function dc_dt_for_accuracy(p, e, criterion, v0, omega0, tol, dt_out) bind(c, &
         name='dc_dt_for_accuracy')
       import

@@ -18,10 +18,10 @@ enum class status : std::int32_t {
     no_convergence = DC_ERR_NO_CONVERGENCE,
     buffer_too_short = DC_ERR_BUFFER_TOO_SHORT,
     no_event = DC_ERR_NO_EVENT,
-    pair_invalid = DC_ERR_PAIR_INVALID,
-    buffer_layout = DC_ERR_BUFFER_LAYOUT,
     level = DC_ERR_LEVEL,
     plan = DC_ERR_PLAN,
+    pair_invalid = DC_ERR_PAIR_INVALID,
+    buffer_layout = DC_ERR_BUFFER_LAYOUT,
     internal = DC_ERR_INTERNAL,
 };
 
@@ -232,6 +232,11 @@ inline double omega0(double k, double m) {
 /// dc_omega0: returns the status; `out` is written only on status::ok.
 inline status omega0(double k, double m, double& out) noexcept {
     return static_cast<status>(::dc_omega0(k, m, &out));
+}
+
+/// dc_status_known (no status: see the C documentation).
+inline std::int32_t status_known(std::int32_t status) noexcept {
+    return ::dc_status_known(status);
 }
 
 /// dc_dt_for_accuracy: throws demcontact::error on a non-OK status.

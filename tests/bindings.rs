@@ -126,7 +126,58 @@ fn parse_decl(decl: &str, api_types: &[String]) -> (Ty, String) {
     )
 }
 
+/// The status constants come from `enum dc_status { DC_OK = 0, ... };` (one table in
+/// src/ffi/status.rs); the generators take them as `#define NAME VALUE` lines, each after its
+/// doc comment, as the header had them before, and drop the enum's typedef block.
+fn enum_constants_as_defines(header: &str) -> String {
+    let mut out = String::new();
+    let mut lines = header.lines().peekable();
+    while let Some(line) = lines.next() {
+        if line.starts_with("enum dc_status") {
+            for l in lines.by_ref() {
+                let t = l.trim();
+                if t == "};" {
+                    break;
+                }
+                if t.starts_with('#') || t == ":" || t.starts_with(": ") || t == "{" {
+                    continue;
+                }
+                if let Some((n, v)) = t.trim_end_matches(',').split_once(" = ") {
+                    out.push_str(&format!("#define {n} {v}\n\n"));
+                } else {
+                    // Doc-comment lines, re-indented as at top level (" * text", " */").
+                    if t.starts_with('*') {
+                        out.push(' ');
+                    }
+                    out.push_str(t);
+                    out.push('\n');
+                }
+            }
+            // The typedef block that follows: `#ifndef __cplusplus` ... `#endif // __cplusplus`.
+            while let Some(l) = lines.peek() {
+                let t = l.trim();
+                if t.starts_with('#')
+                    || t.starts_with("typedef enum dc_status")
+                    || t.starts_with("typedef int32_t dc_status")
+                {
+                    lines.next();
+                    if t == "#endif // __cplusplus" {
+                        break;
+                    }
+                } else {
+                    break;
+                }
+            }
+            continue;
+        }
+        out.push_str(line);
+        out.push('\n');
+    }
+    out
+}
+
 fn parse(header: &str) -> Api {
+    let header = &enum_constants_as_defines(header);
     let mut api = Api::default();
     // Drop the C++ extern "C" guards and every preprocessor line but the value #defines.
     let mut body = String::new();
@@ -747,6 +798,7 @@ fn cpp(api: &Api) -> String {
 /// docs/api.md: every constant and function of the header with its doc comment (the written
 /// contract: ranges, units, statuses, precision), in header order.
 fn api_doc(header: &str) -> String {
+    let header = &enum_constants_as_defines(header);
     let mut o = String::new();
     o.push_str("# C API reference\n\n");
     o.push_str(

@@ -2,8 +2,8 @@
 //! as a function of b = beta v^(1/5), beta = gamma k^(-3/5), in three accuracy tiers, the
 //! physical-units form, and the calibrations.
 
-use super::status::{DC_ERR_INTERNAL, DC_ERR_NULL_POINTER, DC_OK};
-use super::{parse_criterion, status_of, write_result};
+use super::status::DC_ERR_NULL_POINTER;
+use super::{guard, parse_criterion, write_result};
 use crate::viscoelastic::{calibration, full_range, reference, scaling, series};
 
 /// Restitution e(b) of colliding viscoelastic spheres, full-range tier.
@@ -158,18 +158,15 @@ pub unsafe extern "C" fn dc_viscoelastic_k_gamma(
     if k_out.is_null() || gamma_out.is_null() {
         return DC_ERR_NULL_POINTER;
     }
-    match std::panic::catch_unwind(|| scaling::k_gamma_from_material(rho, a, m_eff)) {
-        Ok(Ok((k, g))) => {
-            // SAFETY: both non-null; validity for writes is the caller's contract.
-            unsafe {
-                k_out.write_unaligned(k);
-                gamma_out.write_unaligned(g);
-            }
-            DC_OK
+    guard(|| {
+        let (k, g) = scaling::k_gamma_from_material(rho, a, m_eff)?;
+        // SAFETY: both non-null; validity for writes is the caller's contract.
+        unsafe {
+            k_out.write_unaligned(k);
+            gamma_out.write_unaligned(g);
         }
-        Ok(Err(e)) => status_of(e),
-        Err(_) => DC_ERR_INTERNAL,
-    }
+        Ok(())
+    })
 }
 
 /// The b at which the restitution equals e (inverse of dc_viscoelastic_e).
