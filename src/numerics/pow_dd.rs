@@ -129,13 +129,7 @@ pub(crate) fn pow_dd(x: f64, q: f64) -> f64 {
     let p = 1.0 + (r + r * r * exp_tail(r));
     // 2^(n + k) as two factors, clamped where the result is 0 or ∞ anyway (p < 2).
     let total = n + kf;
-    let total = if total < -K_CLAMP {
-        -K_CLAMP
-    } else if total > K_CLAMP {
-        K_CLAMP
-    } else {
-        total
-    };
+    let total = total.clamp(-K_CLAMP, K_CLAMP);
     let k1 = (0.5 * total + SHIFTER) - SHIFTER;
     let v = (p * exp2i(k1)) * exp2i(total - k1);
     if x == 0.0 {
