@@ -32,6 +32,7 @@
  * larger force term. Value-changing options (-ffast-math, -Ofast) void the bit-identity.
  *
  * Kernel codes (dc_pair.kernel, ABI): 1..17 as listed below; any other value gives NaN.
+ * Not here yet: the tangential (Hertz-Mindlin) update of the full-contact ABI.
  */
 #ifndef DEMCONTACT_INLINE_H
 #define DEMCONTACT_INLINE_H
