@@ -7,7 +7,7 @@
  *
  * (atom_style sphere, comm_modify vel yes). Normal contact only (frictionless): the power-law
  * Tsuji force F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn from demcontact's dc_pair_hertz (default
- * p = 1.5, k = 4/3 E* sqrt(R*)) or dc_pair_powerlaw (k = 4/3 E* R*^(2-p)) and dc_normal_force, see
+ * p = 1.5, k = 4/3 E* sqrt(R*)) or dc_pair_powerlaw (k = 4/3 E* R*^(2-p)) and dc_normal_force_inline, see
  * ../sim/tsuji_force.h; alpha calibrated with DC_END_FORCE when `limit_damping` clamps attractive
  * forces to zero, DC_END_OVERLAP otherwise.
  * Unset cross pairs I != J take E*, nu from both types and e = sqrt(e_I e_J).
