@@ -1,7 +1,7 @@
 //! The boundary contract of every export: status codes for bad input, output untouched on error,
 //! finite outputs on success.
 
-use demcontact::ffi::{calibration::*, status::*, timestep::*, version::*};
+use demcontact::ffi::{calibration::*, powerlaw::*, status::*, timestep::*, version::*};
 use std::ffi::CStr;
 
 const SENTINEL: f64 = -12345.678;
@@ -141,4 +141,37 @@ fn unaligned_output_is_written() {
     );
     let a = unsafe { ptr.read_unaligned() };
     assert!(a > 0.0);
+}
+
+/// Found by the fuzzer: a trajectory whose samples overflow is refused with DC_ERR_RESULT_RANGE
+/// after sampling; its first n samples are then NaN in every buffer (no plausible half result)
+/// and nothing beyond n is touched.
+#[test]
+fn trajectory_overflow_leaves_nan_not_half_results() {
+    let (n, len) = (5usize, 6usize);
+    let sentinel = -7.25e101;
+    let mut b = [[sentinel; 6]; 4];
+    let [t, d, v, f] = &mut b;
+    let s = unsafe {
+        dc_contact_trajectory(
+            1.07e155,
+            3.3e-308,
+            1.41e277,
+            3.9e-317,
+            1.40e277,
+            DC_END_FORCE,
+            0,
+            n,
+            t.as_mut_ptr(),
+            d.as_mut_ptr(),
+            v.as_mut_ptr(),
+            f.as_mut_ptr(),
+            len,
+        )
+    };
+    assert_eq!(s, DC_ERR_RESULT_RANGE);
+    for buf in &b {
+        assert!(buf[..n].iter().all(|x| x.is_nan()), "{buf:?}");
+        assert!(buf[n..].iter().all(|&x| x == sentinel), "{buf:?}");
+    }
 }

@@ -43,8 +43,8 @@ pub struct TrajectoryOut<'a> {
 
 /// Fills `out` with n samples over the contact ending by `criterion`; `mass` > 0 scales the force.
 /// Errors are detected before anything is written, except `ResultRange` from a sample that
-/// overflowed or whose state underflowed (found after sampling; the buffers then hold no valid
-/// data).
+/// overflowed or whose state underflowed (found after sampling; every sample of the four buffers
+/// is then set to NaN, so no partial result can pass for data).
 pub fn sample_trajectory(
     c: &Contact,
     criterion: EndCriterion,
@@ -70,7 +70,12 @@ pub fn sample_trajectory(
     values::fill_values(c, criterion, k, damp, &mut out);
     // Pass 2: times.
     times::fill_times(c, criterion, level, tau, u_end, out.t);
-    all_finite(&out)
+    all_finite(&out).inspect_err(|_| {
+        // No plausible-looking half result: every sample of every buffer becomes NaN.
+        for b in [&mut *out.t, &mut *out.delta, &mut *out.v, &mut *out.force] {
+            b.fill(f64::NAN);
+        }
+    })
 }
 
 /// `mass` finite and > 0; all four buffers of one length n ≥ 2.
