@@ -21,4 +21,4 @@ fi
 # The C library the tests compare against, bit for bit.
 cargo build --release --locked --lib -p demcontact
 # Run from the repository root so that `import demcontact` is the installed package.
-"$VENV/bin/pytest" -q python/tests "$@"
+"$VENV/bin/pytest" -q -rs python/tests "$@"

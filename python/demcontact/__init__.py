@@ -26,6 +26,10 @@ from . import _native
 from ._errors import *  # noqa: F401,F403  (the exception hierarchy)
 from ._errors import __all__ as _errors_all
 from ._native import (
+    builtin_realised_e,
+    builtin_value_for_e,
+    builtin_yade_viscel_cn,
+    fit_restitution,
     DurationPlan,
     Pair,
     alpha_from_e,
@@ -68,7 +72,7 @@ from ._native import (
     viscoelastic_k_gamma,
     viscoelastic_speed_for_e,
 )
-from ._types import EnergyPartition, Trajectory
+from ._types import EnergyPartition, FitResult, Trajectory
 
 
 class Criterion(_enum.IntEnum):
@@ -89,6 +93,18 @@ class Model(_enum.IntEnum):
     POWERLAW = _native.MODEL_POWERLAW
     HERTZ = _native.MODEL_HERTZ
     VISCOELASTIC = _native.MODEL_VISCOELASTIC
+
+
+#: Simulators' builtin contact models (C: DC_BUILTIN_*), for builtin_value_for_e and
+#: builtin_realised_e.
+Builtin = _enum.IntEnum("Builtin", dict(_native.BUILTIN_CODES), module=__name__)
+
+
+class FitModel(_enum.IntEnum):
+    """Which model fit_restitution says the data require (C: DC_FIT_MODEL_*)."""
+
+    CONSTANT = _native.FIT_MODEL_CONSTANT
+    VISCOELASTIC = _native.FIT_MODEL_VISCOELASTIC
 
 
 #: Status codes of the C ABI (Status.OK = 0, Status.ERR_RESTITUTION_RANGE = 6103, ...), from
@@ -125,6 +141,9 @@ __all__ = [
     "Criterion",
     "Model",
     "Status",
+    "Builtin",
+    "FitModel",
+    "FitResult",
     "LEVEL_MIN",
     "LEVEL_MAX",
     "EnergyPartition",
@@ -167,6 +186,10 @@ __all__ = [
     "normal_force_checked",
     "normal_force_batch",
     "normal_force_3d",
+    "builtin_value_for_e",
+    "builtin_realised_e",
+    "builtin_yade_viscel_cn",
+    "fit_restitution",
     "status_str",
     "status_known",
     "version",

@@ -11,6 +11,10 @@ import numpy.typing as npt
 from ._errors import (
     STATUS_CLASSES as STATUS_CLASSES,
     BufferLayoutError as BufferLayoutError,
+    FitDegenerateError as FitDegenerateError,
+    FitTooFewError as FitTooFewError,
+    BuiltinUnreachableError as BuiltinUnreachableError,
+    BuiltinModelError as BuiltinModelError,
     BufferTooShortError as BufferTooShortError,
     CriterionError as CriterionError,
     DemcontactError as DemcontactError,
@@ -42,6 +46,9 @@ __all__: list[str] = [
     "Criterion",
     "Model",
     "Status",
+    "Builtin",
+    "FitModel",
+    "FitResult",
     "LEVEL_MIN",
     "LEVEL_MAX",
     "EnergyPartition",
@@ -84,6 +91,10 @@ __all__: list[str] = [
     "normal_force_checked",
     "normal_force_batch",
     "normal_force_3d",
+    "builtin_value_for_e",
+    "builtin_realised_e",
+    "builtin_yade_viscel_cn",
+    "fit_restitution",
     "status_str",
     "status_known",
     "version",
@@ -100,6 +111,10 @@ __all__: list[str] = [
     "NegativeError",
     "CriterionError",
     "LevelError",
+    "BuiltinModelError",
+    "BuiltinUnreachableError",
+    "FitTooFewError",
+    "FitDegenerateError",
     "NullPointerError",
     "BufferTooShortError",
     "BufferLayoutError",
@@ -121,6 +136,41 @@ class Model(enum.IntEnum):
     HERTZ = 2
     VISCOELASTIC = 3
 
+class Builtin(enum.IntEnum):
+    LIGGGHTS_HOOKE = 1
+    LIGGGHTS_HERTZ = 2
+    LAMMPS_COEFF_RESTITUTION = 3
+    LAMMPS_TSUJI_HERTZ = 4
+    LAMMPS_TSUJI_HOOKE = 5
+    YADE_VISCEL_EN = 6
+    YADE_MINDLIN_EN = 7
+    YADE_MINDLIN_BETAN = 8
+
+class FitModel(enum.IntEnum):
+    CONSTANT = 0
+    VISCOELASTIC = 1
+
+class FitResult(NamedTuple):
+    beta: float
+    beta_se: float
+    e_const: float
+    e_const_se: float
+    chi2_viscoelastic: float
+    chi2_constant: float
+    max_residual_viscoelastic: float
+    max_residual_constant: float
+    v_min: float
+    v_max: float
+    e_viscoelastic_at_v_min: float
+    e_viscoelastic_at_v_max: float
+    max_model_deviation: float
+    model: int
+    se_from_scatter: bool
+    iterations: int
+    robust: bool
+    resid_viscoelastic: npt.NDArray[np.float64]
+    resid_constant: npt.NDArray[np.float64]
+
 class Status(enum.IntEnum):
     OK = 0
     ERR_NULL_POINTER = 6101
@@ -138,6 +188,15 @@ class Status(enum.IntEnum):
     ERR_PLAN = 6113
     ERR_PAIR_INVALID = 6120
     ERR_BUFFER_LAYOUT = 6121
+    ERR_SPEC_VERSION = 6122
+    ERR_SPEC_MODEL = 6123
+    ERR_SPEC_UNSET = 6124
+    ERR_CONTACT_MODEL_INVALID = 6125
+    ERR_NOT_UNIT = 6126
+    ERR_BUILTIN_MODEL = 6130
+    ERR_BUILTIN_UNREACHABLE = 6131
+    ERR_FIT_TOO_FEW = 6132
+    ERR_FIT_DEGENERATE = 6133
     ERR_INTERNAL = 6199
 
 class EnergyPartition(NamedTuple):
@@ -271,6 +330,19 @@ def normal_force_batch(
 def normal_force_3d(
     pair: Pair, x1: Sequence[float], v1: Sequence[float], R1: _Real, m1: _Real, x2: Sequence[float], v2: Sequence[float], R2: _Real, m2: _Real
 ) -> npt.NDArray[np.float64]: ...
+
+# corrected builtin inputs and the data fit
+def builtin_value_for_e(model: _Code, clamp: Union[bool, int], e: _ArrayLike) -> _FloatOrArray: ...
+def builtin_realised_e(model: _Code, clamp: Union[bool, int], value: _ArrayLike) -> _FloatOrArray: ...
+def builtin_yade_viscel_cn(e: _ArrayLike, kn: _ArrayLike, m_reduced: _ArrayLike) -> _FloatOrArray: ...
+def fit_restitution(
+    v: _ArrayLike,
+    e: _ArrayLike,
+    sigma: Optional[_ArrayLike] = None,
+    criterion: Optional[_Code] = None,
+    tol: Optional[_Real] = None,
+    robust: bool = False,
+) -> FitResult: ...
 
 # status
 def status_str(status: int) -> str: ...

@@ -105,6 +105,30 @@ class LevelError(InputError):
     status = 6112
 
 
+class BuiltinModelError(InputError):
+    """Unknown Builtin code, or an option the builtin model does not have (6130)."""
+
+    status = 6130
+
+
+class BuiltinUnreachableError(InputError):
+    """The builtin's own parameter saturates before the target e (6131)."""
+
+    status = 6131
+
+
+class FitTooFewError(InputError):
+    """Fewer than two data points to fit (6132)."""
+
+    status = 6132
+
+
+class FitDegenerateError(InputError):
+    """All measured speeds are equal: the speed dependence cannot be fitted (6133)."""
+
+    status = 6133
+
+
 class NullPointerError(UsageError):
     """A required buffer was missing (6101)."""
 
@@ -157,6 +181,10 @@ STATUS_CLASSES: Dict[int, Type[DemcontactError]] = {
         NegativeError,
         CriterionError,
         LevelError,
+        BuiltinModelError,
+        BuiltinUnreachableError,
+        FitTooFewError,
+        FitDegenerateError,
         ResultRangeError,
         NoEventError,
         NullPointerError,
@@ -191,6 +219,10 @@ __all__ = [
     "NegativeError",
     "CriterionError",
     "LevelError",
+    "BuiltinModelError",
+    "BuiltinUnreachableError",
+    "FitTooFewError",
+    "FitDegenerateError",
     "NullPointerError",
     "BufferTooShortError",
     "BufferLayoutError",

@@ -29,3 +29,31 @@ class Trajectory(NamedTuple):
     delta: np.ndarray
     v: np.ndarray
     force: np.ndarray
+
+
+class FitResult(NamedTuple):
+    """Result of fit_restitution: the C dc_fit_result's fields and the residuals.
+
+    Viscoelastic model e(v) = viscoelastic_e(beta v^(1/5)); constant model e(v) = e_const;
+    model is FitModel.CONSTANT when the two differ by at most tol over [v_min, v_max].
+    """
+
+    beta: float
+    beta_se: float
+    e_const: float
+    e_const_se: float
+    chi2_viscoelastic: float
+    chi2_constant: float
+    max_residual_viscoelastic: float
+    max_residual_constant: float
+    v_min: float
+    v_max: float
+    e_viscoelastic_at_v_min: float
+    e_viscoelastic_at_v_max: float
+    max_model_deviation: float
+    model: int
+    se_from_scatter: bool
+    iterations: int
+    robust: bool
+    resid_viscoelastic: np.ndarray
+    resid_constant: np.ndarray

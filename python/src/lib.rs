@@ -8,6 +8,7 @@
 //! (demcontact/*.py) adds the enums, the exception classes and the named tuples.
 
 mod args;
+mod builtin;
 mod error;
 mod force;
 mod functions;
@@ -62,6 +63,10 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(powerlaw::duration_plan_init, m)?,
         wrap_pyfunction!(powerlaw::contact_duration_planned, m)?,
         wrap_pyfunction!(powerlaw::contact_trajectory, m)?,
+        wrap_pyfunction!(builtin::builtin_value_for_e, m)?,
+        wrap_pyfunction!(builtin::builtin_realised_e, m)?,
+        wrap_pyfunction!(builtin::builtin_yade_viscel_cn, m)?,
+        wrap_pyfunction!(builtin::fit_restitution, m)?,
     ] {
         m.add_function(f)?;
     }
@@ -76,6 +81,26 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("MODEL_POWERLAW", c::force::DC_MODEL_POWERLAW)?;
     m.add("MODEL_HERTZ", c::force::DC_MODEL_HERTZ)?;
     m.add("MODEL_VISCOELASTIC", c::force::DC_MODEL_VISCOELASTIC)?;
+    let builtins = PyDict::new(py);
+    use c::builtin::*;
+    for (name, code) in [
+        ("LIGGGHTS_HOOKE", DC_BUILTIN_LIGGGHTS_HOOKE),
+        ("LIGGGHTS_HERTZ", DC_BUILTIN_LIGGGHTS_HERTZ),
+        (
+            "LAMMPS_COEFF_RESTITUTION",
+            DC_BUILTIN_LAMMPS_COEFF_RESTITUTION,
+        ),
+        ("LAMMPS_TSUJI_HERTZ", DC_BUILTIN_LAMMPS_TSUJI_HERTZ),
+        ("LAMMPS_TSUJI_HOOKE", DC_BUILTIN_LAMMPS_TSUJI_HOOKE),
+        ("YADE_VISCEL_EN", DC_BUILTIN_YADE_VISCEL_EN),
+        ("YADE_MINDLIN_EN", DC_BUILTIN_YADE_MINDLIN_EN),
+        ("YADE_MINDLIN_BETAN", DC_BUILTIN_YADE_MINDLIN_BETAN),
+    ] {
+        builtins.set_item(name, code)?;
+    }
+    m.add("BUILTIN_CODES", builtins)?;
+    m.add("FIT_MODEL_CONSTANT", c::fit::DC_FIT_MODEL_CONSTANT)?;
+    m.add("FIT_MODEL_VISCOELASTIC", c::fit::DC_FIT_MODEL_VISCOELASTIC)?;
     // Every status, from the library's own table (no hand-kept list).
     let statuses = PyDict::new(py);
     for st in c::status::dc_status::all() {

@@ -44,6 +44,9 @@ SPECS = [
     ("viscoelastic_beta_from_e", "ddi", [CRIT], 200, GOOD),
     ("viscoelastic_a_from_e", "ddddi", [CRIT], 200, GOOD),
     ("viscoelastic_speed_for_e", "ddi", [CRIT], 200, GOOD),
+    ("builtin_value_for_e", "iid", [[1, 2, 3, 4, 5, 6, 7, 8, 0, 9], [0, 1, 1, 2]], 300, GOOD + [0.05, 0.1353, 0.2]),
+    ("builtin_realised_e", "iid", [[1, 2, 3, 4, 5, 6, 7, 8, 0, 9], [0, 1, 1, 2]], 300, GOOD + [0.05, 0.1353, 0.2]),
+    ("builtin_yade_viscel_cn", "ddd", [], 200, GOOD),
 ]
 
 
@@ -348,3 +351,55 @@ def test_status_strings_and_version_equal_c():
     for code in list(dc.Status) + [1, 6100, 6114, 6198, -5, 2**31 - 1, -(2**31)]:
         assert dc.status_known(int(code)) == bool(lib.dc_status_known(int(code)))
     assert dc.status_known(2**40) is False
+
+
+class FitResultC(C.Structure):
+    _fields_ = [
+        (name, D)
+        for name in (
+            "beta", "beta_se", "e_const", "e_const_se", "chi2_viscoelastic", "chi2_constant",
+            "max_residual_viscoelastic", "max_residual_constant", "v_min", "v_max",
+            "e_viscoelastic_at_v_min", "e_viscoelastic_at_v_max", "max_model_deviation",
+        )
+    ] + [("model", I32), ("se_from_scatter", I32), ("iterations", I32), ("robust", I32)]
+
+
+def test_fit_restitution_equals_c():
+    f = fn("fit_restitution", [C.c_size_t, PD, PD, PD, I32, D, I32, PD, PD, C.POINTER(FitResultC)])
+    rng = np.random.default_rng(5)
+    v = np.geomspace(0.05, 5.0, 12)
+    e_visc = np.array([dc.viscoelastic_e(0.4 * x**0.2, dc.Criterion.FORCE) for x in v]) + rng.normal(0, 0.003, v.size)
+    e_const = 0.7 + rng.normal(0, 0.002, v.size)
+    ptr = lambda a: None if a is None else a.ctypes.data_as(PD)  # noqa: E731
+    cases = [
+        (v, e_visc, None, 1, 0.01, False),
+        (v, e_visc, np.full(v.size, 0.003), 1, 0.01, True),
+        (v, e_const, None, 0, 0.05, False),
+        (v[:1], e_const[:1], None, 1, 0.01, False),  # too few
+        (np.full(5, 1.0), e_const[:5], None, 1, 0.01, False),  # degenerate
+        (v, np.where(np.arange(v.size) == 3, 1.5, e_const), None, 1, 0.01, False),  # e > 1
+        (v, e_const, None, 1, -1.0, False),  # tol <= 0
+        (v, e_const, None, 5, 0.01, False),  # bad criterion
+    ]
+    ok = 0
+    for vv, ee, ss, crit, tol, robust in cases:
+        vv, ee = np.ascontiguousarray(vv), np.ascontiguousarray(ee)
+        rv, rc, out = np.empty(vv.size), np.empty(vv.size), FitResultC()
+        st = f(vv.size, ptr(vv), ptr(ee), ptr(ss), crit, tol, int(robust), ptr(rv), ptr(rc), C.byref(out))
+        if st == 0:
+            got = dc.fit_restitution(vv, ee, ss, dc.Criterion(crit), tol, robust)
+            for name, _ in FitResultC._fields_:
+                g, w = getattr(got, name), getattr(out, name)
+                if isinstance(w, float):
+                    assert bits(g) == bits(w), name
+                else:
+                    assert int(g) == w, name
+            assert got.model in (dc.FitModel.CONSTANT, dc.FitModel.VISCOELASTIC)
+            assert got.resid_viscoelastic.tobytes() == rv.tobytes()
+            assert got.resid_constant.tobytes() == rc.tobytes()
+            ok += 1
+        else:
+            with pytest.raises(dc.DemcontactError) as ei:
+                dc.fit_restitution(vv, ee, ss, crit, tol, robust)
+            assert ei.value.code == st
+    assert ok == 3

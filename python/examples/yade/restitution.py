@@ -111,6 +111,13 @@ def main(targets):
             tau = math.pi / omega0
             mat = ViscElMat(tc=tau, en=e, et=1.0, frictionAngle=0.0, density=RHO)
             print(f"RESULT {scene} yade_tc_en {e:.6f} {run(scene, mat, dt):.9f}", flush=True)
+            builtin_en = getattr(dc, "builtin_value_for_e", None)
+            if builtin_en is not None and e >= 0.14:
+                # issue 17's corrected en for ViscElMat(tc, en): right where YADE's reduced mass
+                # is the true one (two spheres), see the wall case in python/README.md.
+                en = builtin_en(dc.Builtin.YADE_VISCEL_EN, True, e)
+                mat = ViscElMat(tc=tau, en=en, et=1.0, frictionAngle=0.0, density=RHO)
+                print(f"RESULT {scene} yade_tc_en_corrected {e:.6f} {run(scene, mat, dt):.9f}", flush=True)
             young = KN / R  # kn_i = 2 E R per material, in series: kn = E R
             mat = ViscElMat(young=young, poisson=0.0, en=e, frictionAngle=0.0, density=RHO)
             print(f"RESULT {scene} yade_young_en {e:.6f} {run(scene, mat, dt):.9f}", flush=True)
