@@ -20,6 +20,163 @@
 #include <stddef.h>
 
 /**
+ * Doubles per contact of the largest model: normal of the last step (3), tangential spring (3),
+ * rolling spring torque (3), twisting spring torque (1).
+ */
+#define HISTORY_MAX 10
+
+/**
+ * No tangential force.
+ */
+#define TANGENTIAL_NONE 0
+
+/**
+ * Cundall–Strack linear history spring k_t with dashpot and Coulomb limit.
+ */
+#define TANGENTIAL_LINEAR 1
+
+/**
+ * Mindlin no-slip spring k_t = 8 G* a, a = √(R* δ), dashpot, Coulomb limit.
+ */
+#define TANGENTIAL_MINDLIN 2
+
+/**
+ * No rolling resistance.
+ */
+#define ROLLING_NONE 0
+
+/**
+ * Constant directional torque μ_r R* |Fn| opposing the rolling angular velocity.
+ */
+#define ROLLING_CONSTANT 1
+
+/**
+ * Elastic–plastic spring–dashpot (Ai et al. 2011, type C), own history, limit μ_r R* |Fn|.
+ */
+#define ROLLING_EPSD 2
+
+/**
+ * No twisting resistance.
+ */
+#define TWISTING_NONE 0
+
+/**
+ * Spring–dashpot–slider about the normal, limit μ_tw |Fn|.
+ */
+#define TWISTING_SDS 1
+
+/**
+ * Hertz from E, ν of both bodies: k = (4/3) E* √R* per contact.
+ */
+#define HERTZ 1
+
+/**
+ * Power law F = k_n δ^p (fixed k_n, p ≥ 1).
+ */
+#define POWERLAW 2
+
+/**
+ * Linear spring F = k_n δ.
+ */
+#define LINEAR 3
+
+/**
+ * Viscoelastic Hertz (Brilliantov et al.), damping constant A.
+ */
+#define VISCOELASTIC 4
+
+/**
+ * Undamped (e_n = 1).
+ */
+#define NONE 0
+
+/**
+ * α calibrated exactly from e_n for the end criterion.
+ */
+#define RESTITUTION 1
+
+/**
+ * Version of dc_contact_spec this library reads (dc_contact_spec_init sets it).
+ */
+#define DC_CONTACT_SPEC_VERSION 1
+
+/**
+ * Doubles of history per contact for the largest contact model
+ * (dc_contact_history_len gives the exact, usually smaller, figure of one model).
+ */
+#define DC_CONTACT_HISTORY_MAX 10
+
+/**
+ * Normal law: Hertz from E, nu of both bodies, k = (4/3) E* sqrt(R*) per contact.
+ */
+#define DC_NORMAL_HERTZ 1
+
+/**
+ * Normal law: power law F = k_n d^p (fixed k_n, exponent p >= 1).
+ */
+#define DC_NORMAL_POWERLAW 2
+
+/**
+ * Normal law: linear spring F = k_n d.
+ */
+#define DC_NORMAL_LINEAR 3
+
+/**
+ * Normal law: viscoelastic Hertz (Brilliantov et al.) with damping constant visco_A.
+ */
+#define DC_NORMAL_VISCOELASTIC 4
+
+/**
+ * Normal damping: none (e_n = 1).
+ */
+#define DC_DAMPING_NONE 0
+
+/**
+ * Normal damping: alpha calibrated exactly from e_n for the criterion.
+ */
+#define DC_DAMPING_RESTITUTION 1
+
+/**
+ * Tangential: none.
+ */
+#define DC_TANGENTIAL_NONE 0
+
+/**
+ * Tangential: Cundall-Strack linear history spring k_t, dashpot from e_t, Coulomb limit.
+ */
+#define DC_TANGENTIAL_LINEAR 1
+
+/**
+ * Tangential: Mindlin k_t = 8 G* a, a = sqrt(R* d), dashpot from e_t, Coulomb limit.
+ */
+#define DC_TANGENTIAL_MINDLIN 2
+
+/**
+ * Rolling resistance: none.
+ */
+#define DC_ROLLING_NONE 0
+
+/**
+ * Rolling resistance: constant torque mu_r R* |Fn| opposing the rolling angular velocity.
+ */
+#define DC_ROLLING_CONSTANT 1
+
+/**
+ * Rolling resistance: elastic-plastic spring-dashpot (Ai et al. 2011), limit mu_r R* |Fn|.
+ */
+#define DC_ROLLING_EPSD 2
+
+/**
+ * Twisting resistance: none.
+ */
+#define DC_TWISTING_NONE 0
+
+/**
+ * Twisting resistance: spring-dashpot-slider about n, limit mu_tw |Fn|.
+ */
+#define DC_TWISTING_SDS 1
+
+/**
  * dc_pair.model of a power-law Tsuji pair with fixed stiffness (including the linear
  * spring-dashpot, p = 1).
  */
@@ -130,6 +287,31 @@
 #define DC_ERR_PLAN 6113
 
 /**
+ * A dc_contact_spec has an unsupported version or size (fill it with dc_contact_spec_init).
+ */
+#define DC_ERR_SPEC_VERSION 6122
+
+/**
+ * A dc_contact_spec names an unknown sub-model or an invalid combination.
+ */
+#define DC_ERR_SPEC_MODEL 6123
+
+/**
+ * A parameter the chosen sub-models need was left unset (NaN) in the dc_contact_spec.
+ */
+#define DC_ERR_SPEC_UNSET 6124
+
+/**
+ * A dc_contact_model was not initialised by dc_contact_model_init (or was modified afterwards).
+ */
+#define DC_ERR_CONTACT_MODEL_INVALID 6125
+
+/**
+ * A contact normal is not a unit vector (| |n|^2 - 1 | > 1e-6).
+ */
+#define DC_ERR_NOT_UNIT 6126
+
+/**
  * An internal error was caught at the boundary (not expected; please report).
  */
 #define DC_ERR_INTERNAL 6199
@@ -144,6 +326,125 @@
  * attractive normal forces to zero: LIGGGHTS limitForce, LAMMPS limit_damping, Chrono, YADE).
  */
 #define DC_END_FORCE 1
+
+/**
+ * What a contact model is made of, named field by field: fill it with dc_contact_spec_init,
+ * then set the fields your scene needs (by name: never positionally), then call
+ * dc_contact_model_init. Parameters of sub-models you do not choose are ignored; a parameter a
+ * chosen sub-model needs that is left unset (NaN) gives DC_ERR_SPEC_UNSET.
+ *
+ * Versioned: `version` and `size` (set by dc_contact_spec_init) let later library versions
+ * append fields without breaking callers compiled against this one.
+ */
+typedef struct dc_contact_spec {
+    /**
+     * DC_CONTACT_SPEC_VERSION.
+     */
+    uint32_t version;
+    /**
+     * sizeof(dc_contact_spec) as the caller compiled it.
+     */
+    uint32_t size;
+    /**
+     * DC_NORMAL_* (required: no default).
+     */
+    int32_t normal;
+    /**
+     * DC_DAMPING_NONE (default) or DC_DAMPING_RESTITUTION (reads e_n). Viscoelastic: NONE only.
+     */
+    int32_t damping;
+    /**
+     * DC_END_FORCE (default: attractive normal force clamped to zero) or DC_END_OVERLAP.
+     */
+    int32_t criterion;
+    /**
+     * DC_TANGENTIAL_* (default NONE).
+     */
+    int32_t tangential;
+    /**
+     * DC_ROLLING_* (default NONE).
+     */
+    int32_t rolling;
+    /**
+     * DC_TWISTING_* (default NONE).
+     */
+    int32_t twisting;
+    /**
+     * Young's modulus of body 1 [Pa], > 0; +INFINITY for a rigid body (Hertz, viscoelastic,
+     * Mindlin). Not both bodies rigid.
+     */
+    double E1;
+    /**
+     * Poisson ratio of body 1, in (-1, 0.5].
+     */
+    double nu1;
+    /**
+     * Young's modulus of body 2 [Pa] (+INFINITY: rigid, e.g. a wall).
+     */
+    double E2;
+    /**
+     * Poisson ratio of body 2.
+     */
+    double nu2;
+    /**
+     * Exponent p >= 1 of DC_NORMAL_POWERLAW.
+     */
+    double p;
+    /**
+     * Stiffness k_n > 0 of DC_NORMAL_POWERLAW [N m^-p] and DC_NORMAL_LINEAR [N/m].
+     */
+    double k_n;
+    /**
+     * Target normal restitution in (0, 1] (DC_DAMPING_RESTITUTION).
+     */
+    double e_n;
+    /**
+     * Viscoelastic damping constant A >= 0 [s] (DC_NORMAL_VISCOELASTIC).
+     */
+    double visco_A;
+    /**
+     * Sliding friction coefficient mu >= 0 (any tangential law).
+     */
+    double mu;
+    /**
+     * Tangential stiffness k_t > 0 [N/m] (DC_TANGENTIAL_LINEAR).
+     */
+    double k_t;
+    /**
+     * Target tangential restitution in (0, 1] in the sticking regime (default 1: undamped).
+     */
+    double e_t;
+    /**
+     * Rolling friction coefficient mu_r >= 0 (torque limit mu_r R* |Fn|).
+     */
+    double mu_r;
+    /**
+     * Rolling stiffness k_r >= 0 [N m/rad] (EPSD); 0 (default) = Ai et al.'s rule
+     * k_r = 2.25 k_n mu_r^2 R*^2 with k_n the normal law's elastic tangent stiffness.
+     */
+    double k_r;
+    /**
+     * Rolling damping ratio eta_r >= 0 (EPSD; default 0).
+     */
+    double eta_r;
+    /**
+     * Twisting friction coefficient mu_tw >= 0 [m] (torque limit mu_tw |Fn|).
+     */
+    double mu_tw;
+    /**
+     * Twisting stiffness k_tw > 0 [N m/rad].
+     */
+    double k_tw;
+    /**
+     * Twisting damping ratio eta_tw >= 0 (default 0).
+     */
+    double eta_tw;
+    /**
+     * Inertia factor kappa = I/(m r^2) of the bodies, in (0, 1] (default 0.4: solid spheres);
+     * enters only the damping calibrations (tangential mass m_t = kappa/(1 + kappa) m*).
+     */
+    double inertia_factor;
+} dc_contact_spec;
 
 /**
  * A calibrated contact model for one material pair (type pair): plain data, owned by the
@@ -216,6 +517,248 @@ typedef struct dc_pair {
      */
     double h;
 } dc_pair;
+
+/**
+ * A composed contact model for one material pair: plain data built by dc_contact_model_init,
+ * then only read (copy it freely; keep one per type pair). Do not edit the fields: they are
+ * checked on every call (DC_ERR_CONTACT_MODEL_INVALID). A zero-filled one is invalid.
+ */
+typedef struct dc_contact_model {
+    /**
+     * Set by dc_contact_model_init.
+     */
+    uint32_t magic;
+    /**
+     * Doubles of history per contact (as dc_contact_history_len).
+     */
+    uint32_t history_len;
+    /**
+     * DC_TANGENTIAL_* chosen.
+     */
+    int32_t tangential;
+    /**
+     * DC_ROLLING_* chosen.
+     */
+    int32_t rolling;
+    /**
+     * DC_TWISTING_* chosen.
+     */
+    int32_t twisting;
+    /**
+     * Reserved (0).
+     */
+    int32_t reserved_i;
+    /**
+     * The normal law (usable on its own with dc_normal_force*).
+     */
+    struct dc_pair normal;
+    /**
+     * Friction coefficient mu.
+     */
+    double mu;
+    /**
+     * k_t [N/m] (linear) or 8 G* [Pa] (Mindlin, k_t = 8 G* sqrt(R* d)).
+     */
+    double kt;
+    /**
+     * Tangential damping ratio zeta_t from e_t.
+     */
+    double zeta_t;
+    /**
+     * Inertia factor kappa.
+     */
+    double kappa;
+    /**
+     * Rolling friction coefficient.
+     */
+    double mu_r;
+    /**
+     * Rolling stiffness (0: Ai's rule).
+     */
+    double k_r;
+    /**
+     * Rolling damping ratio.
+     */
+    double eta_r;
+    /**
+     * Twisting friction coefficient [m].
+     */
+    double mu_tw;
+    /**
+     * Twisting stiffness.
+     */
+    double k_tw;
+    /**
+     * Twisting damping ratio.
+     */
+    double eta_tw;
+    /**
+     * Reserved for later sub-models (0).
+     */
+    double reserved[6];
+} dc_contact_model;
+
+/**
+ * One contact's bodies. n is the unit normal pointing from body 2 to body 1; overlap > 0 in
+ * contact (<= 0: no force, and the history is reset to zero). The contact point is at
+ * a_i = r_i - overlap/2 from each centre. A plane wall is body 2 with r2 = +INFINITY (its
+ * mass m2 may be +INFINITY: fixed): v2 is then the wall's velocity at the contact point, w2
+ * its angular velocity (it only turns the spring with the wall; zero for a fixed wall), and
+ * torque2 is 0. A fixed sphere: m2 = +INFINITY with finite r2.
+ */
+typedef struct dc_contact_state {
+    /**
+     * Unit normal from body 2 to body 1 (| |n|^2 - 1 | <= 1e-6).
+     */
+    double n[3];
+    /**
+     * Overlap [m], > 0 in contact.
+     */
+    double overlap;
+    /**
+     * Centre velocity of body 1 [m/s].
+     */
+    double v1[3];
+    /**
+     * Centre velocity of body 2 [m/s] (wall: its velocity at the contact point).
+     */
+    double v2[3];
+    /**
+     * Angular velocity of body 1 [rad/s].
+     */
+    double w1[3];
+    /**
+     * Angular velocity of body 2 [rad/s].
+     */
+    double w2[3];
+    /**
+     * Radius of body 1 [m], finite > 0.
+     */
+    double r1;
+    /**
+     * Radius of body 2 [m], > 0 (+INFINITY: plane wall).
+     */
+    double r2;
+    /**
+     * Mass of body 1 [kg], finite > 0.
+     */
+    double m1;
+    /**
+     * Mass of body 2 [kg], > 0 (+INFINITY: fixed body or wall).
+     */
+    double m2;
+} dc_contact_state;
+
+/**
+ * Forces and torques of one contact.
+ */
+typedef struct dc_contact_result {
+    /**
+     * Total force on body 1 [N] (body 2 receives -force).
+     */
+    double force[3];
+    /**
+     * Torque on body 1 [N m] (tangential force about its centre + rolling + twisting).
+     */
+    double torque1[3];
+    /**
+     * Torque on body 2 [N m] (0 for a wall).
+     */
+    double torque2[3];
+    /**
+     * Normal force [N] as applied (positive repulsive; >= 0 when clamped).
+     */
+    double f_n;
+    /**
+     * Tangential force on body 1 [N].
+     */
+    double ft[3];
+    /**
+     * 1 if the Coulomb limit was reached this step, else 0.
+     */
+    int32_t sliding;
+    /**
+     * 1 if the rolling or twisting limit was reached (or the constant rolling torque acts).
+     */
+    int32_t rolling_sliding;
+} dc_contact_result;
+
+/**
+ * n contacts of one model as a structure of arrays (one dc_contact_force_batch call). Vectors
+ * are 3 consecutive doubles per contact (x, y, z; contact i at [3i, 3i+3)); scalars one double
+ * per contact. Conventions per contact as in dc_contact_state / dc_contact_result.
+ */
+typedef struct dc_contact_batch {
+    /**
+     * Number of contacts, > 0.
+     */
+    size_t n;
+    /**
+     * Doubles per contact in `history` (>= dc_contact_history_len); contact i's history is at
+     * history[i * history_stride].
+     */
+    size_t history_stride;
+    /**
+     * Unit normals, 3n.
+     */
+    const double *normal;
+    /**
+     * Overlaps, n.
+     */
+    const double *overlap;
+    /**
+     * Velocities of body 1, 3n.
+     */
+    const double *v1;
+    /**
+     * Velocities of body 2, 3n.
+     */
+    const double *v2;
+    /**
+     * Angular velocities of body 1, 3n (may be NULL for a normal-only model).
+     */
+    const double *w1;
+    /**
+     * Angular velocities of body 2, 3n (idem).
+     */
+    const double *w2;
+    /**
+     * Radii of body 1, n.
+     */
+    const double *r1;
+    /**
+     * Radii of body 2, n (+INFINITY: wall).
+     */
+    const double *r2;
+    /**
+     * Masses of body 1, n.
+     */
+    const double *m1;
+    /**
+     * Masses of body 2, n (+INFINITY: fixed).
+     */
+    const double *m2;
+    /**
+     * History, n * history_stride doubles, updated in place (NULL if the model needs none).
+     */
+    double *history;
+    /**
+     * Out: normal forces, n.
+     */
+    double *f_n;
+    /**
+     * Out: forces on body 1, 3n.
+     */
+    double *force;
+    /**
+     * Out: torques on body 1, 3n (may be NULL for a normal-only model).
+     */
+    double *torque1;
+    /**
+     * Out: torques on body 2, 3n (idem).
+     */
+    double *torque2;
+} dc_contact_batch;
 
 /**
  * A contact-duration plan: everything dc_contact_duration_level computes from the exponent p and
@@ -350,6 +893,120 @@ int32_t dc_alpha_from_e(double e,
  * `e_out` must be NULL or point to writable memory for one double.
  */
 int32_t dc_e_from_alpha(double alpha, double p, int32_t criterion, double *e_out);
+
+/**
+ * Fills a dc_contact_spec with its version, size and defaults: no normal law yet (you must
+ * set `normal`), DC_DAMPING_NONE, DC_END_FORCE, no tangential/rolling/twisting, every
+ * parameter unset (NaN) except e_t = 1, k_r = 0, eta_r = eta_tw = 0, inertia_factor = 0.4.
+ *
+ * @return DC_OK or DC_ERR_NULL_POINTER.
+ *
+ * # Safety
+ * `spec` must be NULL or point to writable memory for one dc_contact_spec.
+ */
+int32_t dc_contact_spec_init(struct dc_contact_spec *spec);
+
+/**
+ * Builds a contact model from a spec (once per material pair, at set-up): validates every
+ * parameter the chosen sub-models read and calibrates the damping (normal: exact for the
+ * criterion; tangential: from e_t, see docs/force.md).
+ *
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_SPEC_VERSION (version != DC_CONTACT_SPEC_VERSION or
+ *         size != sizeof(dc_contact_spec)), DC_ERR_SPEC_MODEL (unknown selector, viscoelastic with
+ *         restitution damping, inertia_factor > 1), DC_ERR_SPEC_UNSET, DC_ERR_CRITERION,
+ *         DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE, DC_ERR_NEGATIVE, DC_ERR_RESTITUTION_RANGE,
+ *         DC_ERR_EXPONENT_RANGE, DC_ERR_RESULT_RANGE. `out` is untouched on error.
+ *
+ * # Safety
+ * `spec` NULL or readable for its `size` bytes (at least the version and size fields); `out`
+ * NULL or writable for one dc_contact_model.
+ */
+int32_t dc_contact_model_init(const struct dc_contact_spec *spec, struct dc_contact_model *out);
+
+/**
+ * The number of doubles of history one contact of this model needs (0 for a normal-only or
+ * constant-rolling model; at most DC_CONTACT_HISTORY_MAX). Layout (for inspection only):
+ * normal of the last step (3), tangential spring [m] (3), rolling spring torque [N m] (3),
+ * twisting spring torque [N m] (1), each present only if its sub-model is.
+ *
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID.
+ *
+ * # Safety
+ * `model` NULL or readable; `len_out` NULL or writable for a size_t.
+ */
+int32_t dc_contact_history_len(const struct dc_contact_model *model, size_t *len_out);
+
+/**
+ * Force and torques of one sphere-sphere or sphere-wall contact, with the sub-models of
+ * `model`, advancing its history by one step of the host's time step dt.
+ *
+ * Sign conventions: see dc_contact_state. Per step (details and derivations: docs/force.md):
+ * normal force from the model's normal law (clamped if built with DC_END_FORCE); the history
+ * springs are turned into the current tangent plane (frame indifference), incremented by the
+ * contact point's tangential velocity times dt, and truncated at the Coulomb limit mu |Fn|
+ * (rolling: mu_r R* |Fn|; twisting: mu_tw |Fn|), Fn the normal force applied.
+ *
+ * @param model        from dc_contact_model_init.
+ * @param state        the two bodies of this contact.
+ * @param dt           the host's time step [s], finite > 0.
+ * @param history      this contact's history: history_len doubles, all zero for a new contact;
+ *                     updated in place on success (reset to zero when overlap <= 0). May be NULL
+ *                     when the model needs none (dc_contact_history_len = 0).
+ * @param history_len  the number of doubles at `history` (>= dc_contact_history_len).
+ * @param out          receives the forces and torques on success.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_BUFFER_TOO_SHORT
+ *         (history_len), DC_ERR_BUFFER_LAYOUT (history misaligned), DC_ERR_NOT_FINITE (NaN/inf
+ *         in the state, dt or the history), DC_ERR_NOT_POSITIVE (radius, mass or dt <= 0),
+ *         DC_ERR_NOT_UNIT (n), DC_ERR_RESULT_RANGE. On error `out` and `history` are untouched.
+ *
+ * # Safety
+ * `model`, `state` NULL or readable; `out` NULL or writable; `history` NULL or valid for
+ * history_len doubles.
+ */
+int32_t dc_contact_force(const struct dc_contact_model *model,
+                         const struct dc_contact_state *state,
+                         double dt,
+                         double *history,
+                         size_t history_len,
+                         struct dc_contact_result *out);
+
+/**
+ * dc_contact_force for two spheres given by their centres: n = (x1 - x2)/|x1 - x2| and
+ * overlap = r1 + r2 - |x1 - x2| are computed here; the `n` and `overlap` fields of `state` are
+ * ignored (velocities, radii and masses are read from it). Spheres only (finite r2).
+ *
+ * @return as dc_contact_force; DC_ERR_NOT_FINITE also for non-finite x1, x2 or r2 = +INFINITY,
+ *         DC_ERR_NOT_POSITIVE for overlapping spheres with coincident centres.
+ *
+ * # Safety
+ * As dc_contact_force; `x1`, `x2` NULL or readable for 3 doubles.
+ */
+int32_t dc_contact_force_spheres(const struct dc_contact_model *model,
+                                 const double *x1,
+                                 const double *x2,
+                                 const struct dc_contact_state *state,
+                                 double dt,
+                                 double *history,
+                                 size_t history_len,
+                                 struct dc_contact_result *out);
+
+/**
+ * dc_contact_force for n contacts of one model (group contacts by type pair): one pass per
+ * stage the model has (normal, tangential, rolling, twisting), each a loop with no branch on
+ * the model. Every value is checked first (as dc_contact_force); on any error nothing is
+ * written (outputs and history untouched).
+ *
+ * @return DC_OK, DC_ERR_NULL_POINTER (model, batch, a required array), DC_ERR_CONTACT_MODEL_INVALID,
+ *         DC_ERR_BUFFER_TOO_SHORT (n = 0, history_stride too small), DC_ERR_BUFFER_LAYOUT (a
+ *         misaligned array, n too large, or an output overlapping an input or another output),
+ *         DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE, DC_ERR_NOT_UNIT, DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `model`, `batch` NULL or readable; every non-NULL array valid for its documented length.
+ */
+int32_t dc_contact_force_batch(const struct dc_contact_model *model,
+                               const struct dc_contact_batch *batch,
+                               double dt);
 
 /**
  * Power-law Tsuji pair F = k d^p + alpha sqrt(m_eff k) d^((p-1)/2) vn with alpha calibrated so

@@ -32,4 +32,14 @@ pub enum Error {
     Level,
     /// A duration plan was not made by `dc_duration_plan_init` (or was modified afterwards).
     Plan,
+    /// A contact specification has an unsupported version or size.
+    SpecVersion,
+    /// A contact specification names an unknown sub-model or an invalid combination.
+    SpecModel,
+    /// A parameter the chosen sub-models need was left unset (NaN).
+    SpecUnset,
+    /// A contact model was not made by `dc_contact_model_init` (or was modified afterwards).
+    ContactModelInvalid,
+    /// A contact normal is not a unit vector.
+    NotUnit,
 }

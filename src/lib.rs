@@ -8,6 +8,7 @@
 //!   maps exactly onto it, so its restitution functions are the heart of the calibration.
 //! * [`powerlaw`]: the power-law Tsuji contact `m δ'' + α √(m k) δ^((p-1)/2) δ' + k δ^p = 0`.
 //! * [`force`]: per-contact normal-force kernels (scalar, batch, 3D), monomorphised per model.
+//! * [`contact`]: full contact (normal, tangential, rolling, twisting) with caller-owned history.
 //! * [`material`]: Hertz stiffness from two spheres' E, ν, R.
 //! * [`timestep`]: a contact integrated as DEM hosts do (velocity-Verlet, symplectic Euler) with
 //!   the library's kernels, and the largest step for a tolerance on the realised restitution.
@@ -16,6 +17,7 @@
 //! * [`numerics`]: root finding and the reference ODE integrator used to check everything else.
 //! * [`ffi`]: the `extern "C"` functions exported as `include/demcontact.h`.
 
+pub mod contact;
 pub mod criterion;
 pub mod error;
 pub mod ffi;

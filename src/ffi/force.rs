@@ -4,9 +4,8 @@ use super::status::*;
 use super::{parse_criterion, status_of, write_result};
 use crate::force::batch::normal_force_batch;
 use crate::force::geometry3d::{Sphere, normal_force_3d};
-use crate::force::pair::{
-    MODEL_HERTZ, MODEL_POWERLAW, MODEL_VISCOELASTIC, needs, normal_force_raw, unclamped,
-};
+use crate::force::pair::{MODEL_HERTZ, MODEL_POWERLAW, MODEL_VISCOELASTIC};
+use crate::force::registry::{needs, normal_force_raw, unclamped};
 use crate::force::{Consts, PairModel, hertz, powerlaw, viscoelastic};
 use crate::{EndCriterion, Error};
 

@@ -11,6 +11,7 @@
 //! * no heap allocation, no global mutable state: callable from any thread at any time.
 
 pub mod calibration;
+pub mod contact;
 pub mod force;
 pub mod material;
 pub mod powerlaw;
@@ -40,6 +41,11 @@ pub(crate) const fn status_of(err: Error) -> i32 {
         Error::BufferLayout => DC_ERR_BUFFER_LAYOUT,
         Error::Level => DC_ERR_LEVEL,
         Error::Plan => DC_ERR_PLAN,
+        Error::SpecVersion => DC_ERR_SPEC_VERSION,
+        Error::SpecModel => DC_ERR_SPEC_MODEL,
+        Error::SpecUnset => DC_ERR_SPEC_UNSET,
+        Error::ContactModelInvalid => DC_ERR_CONTACT_MODEL_INVALID,
+        Error::NotUnit => DC_ERR_NOT_UNIT,
     }
 }
 

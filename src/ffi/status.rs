@@ -41,6 +41,16 @@ pub const DC_ERR_LEVEL: i32 = 6112;
 /// A dc_duration_plan was not initialised by dc_duration_plan_init (or was modified afterwards),
 /// e.g. a zero-filled struct.
 pub const DC_ERR_PLAN: i32 = 6113;
+/// A dc_contact_spec has an unsupported version or size (fill it with dc_contact_spec_init).
+pub const DC_ERR_SPEC_VERSION: i32 = 6122;
+/// A dc_contact_spec names an unknown sub-model or an invalid combination.
+pub const DC_ERR_SPEC_MODEL: i32 = 6123;
+/// A parameter the chosen sub-models need was left unset (NaN) in the dc_contact_spec.
+pub const DC_ERR_SPEC_UNSET: i32 = 6124;
+/// A dc_contact_model was not initialised by dc_contact_model_init (or was modified afterwards).
+pub const DC_ERR_CONTACT_MODEL_INVALID: i32 = 6125;
+/// A contact normal is not a unit vector (| |n|^2 - 1 | > 1e-6).
+pub const DC_ERR_NOT_UNIT: i32 = 6126;
 /// An internal error was caught at the boundary (not expected; please report).
 pub const DC_ERR_INTERNAL: i32 = 6199;
 
@@ -68,6 +78,17 @@ const fn message(status: i32) -> &'static str {
         DC_ERR_BUFFER_LAYOUT => "a buffer is misaligned or an output overlaps an input\0",
         DC_ERR_LEVEL => "quadrature accuracy level out of range\0",
         DC_ERR_PLAN => "the dc_duration_plan was not initialised by dc_duration_plan_init\0",
+        DC_ERR_SPEC_VERSION => {
+            "dc_contact_spec version or size unsupported (use dc_contact_spec_init)\0"
+        }
+        DC_ERR_SPEC_MODEL => "dc_contact_spec: unknown sub-model or invalid combination\0",
+        DC_ERR_SPEC_UNSET => {
+            "dc_contact_spec: a parameter the chosen sub-models need is unset (NaN)\0"
+        }
+        DC_ERR_CONTACT_MODEL_INVALID => {
+            "the dc_contact_model was not initialised by dc_contact_model_init\0"
+        }
+        DC_ERR_NOT_UNIT => "the contact normal is not a unit vector\0",
         DC_ERR_INTERNAL => "internal error caught at the C boundary (please report)\0",
         _ => "unknown demcontact status\0",
     }
@@ -103,6 +124,11 @@ mod tests {
             DC_ERR_BUFFER_LAYOUT,
             DC_ERR_LEVEL,
             DC_ERR_PLAN,
+            DC_ERR_SPEC_VERSION,
+            DC_ERR_SPEC_MODEL,
+            DC_ERR_SPEC_UNSET,
+            DC_ERR_CONTACT_MODEL_INVALID,
+            DC_ERR_NOT_UNIT,
             DC_ERR_INTERNAL,
         ];
         let unknown = message(-1);

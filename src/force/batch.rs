@@ -1,7 +1,8 @@
 //! Structure-of-arrays batches: one dispatch per batch, then a plain loop over slices that the
 //! compiler vectorises (square roots are IEEE instructions in Rust, never `errno` calls).
 
-use super::pair::{Consts, Law, Visit, dispatch, eval};
+use super::pair::{Consts, Law, Visit, eval};
+use super::registry::dispatch;
 use crate::Error;
 
 struct Batch<'a> {

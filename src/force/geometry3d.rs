@@ -6,7 +6,8 @@
 //! R* = R1 R2/(R1 + R2), m* = m1 m2/(m1 + m2). The result F n is the force on sphere 1 (repulsive:
 //! along n); sphere 2 receives −F n.
 
-use super::pair::{PairModel, needs, normal_force_raw};
+use super::pair::PairModel;
+use super::registry::{needs, normal_force_raw};
 use crate::Error;
 use nalgebra::Vector3;
 

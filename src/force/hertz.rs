@@ -8,7 +8,7 @@
 //! So one contact costs two square roots (q and √(m q)) and no `pow`; c = α √kf per pair. α is
 //! the exact p = 3/2 calibration (speed independent: one α per pair).
 
-use super::pair::{Consts, Law, MODEL_HERTZ, PairModel, code, pick};
+use super::pair::{Consts, Law, MODEL_HERTZ, PairModel, pick};
 use crate::material::effective_modulus;
 use crate::powerlaw::alpha_from_e;
 use crate::{EndCriterion, Error};
@@ -55,19 +55,17 @@ pub fn hertz(
     e: f64,
     criterion: EndCriterion,
 ) -> Result<PairModel, Error> {
-    let kf = hertz_factor(e1, nu1, e2, nu2)?;
+    hertz_from_factor(hertz_factor(e1, nu1, e2, nu2)?, e, criterion)
+}
+
+/// A Hertz pair from kf = (4/3) E* (finite, > 0; checked by the caller) calibrated to e.
+pub fn hertz_from_factor(kf: f64, e: f64, criterion: EndCriterion) -> Result<PairModel, Error> {
     let alpha = alpha_from_e(e, 1.5, criterion)?;
     let c = alpha * kf.sqrt();
     if !c.is_finite() {
         return Err(Error::ResultRange);
     }
-    let kernel = pick(
-        alpha > 0.0,
-        criterion,
-        code::HERTZ_ELASTIC,
-        code::HERTZ_DAMPED,
-        code::HERTZ_DAMPED_CLAMPED,
-    );
+    let kernel = pick::<HertzElastic, HertzDamped>(alpha > 0.0, criterion);
     Ok(PairModel {
         model: MODEL_HERTZ,
         kernel,

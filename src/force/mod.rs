@@ -11,7 +11,9 @@
 //! with or without clamping. Scalar calls dispatch once per call, batches once per batch
 //! ([`batch`]): no loop ever branches on the model kind.
 //!
-//! * [`pair`]: the kernel codes, the constants, the shared overlap/clamp finish, dispatch.
+//! * [`pair`]: the constants, the [`pair::Law`] trait, the shared overlap/clamp finish (a leaf:
+//!   imports no sibling).
+//! * [`registry`]: the one table of kernel codes; generates the dispatch.
 //! * [`powerlaw`]: Tsuji power-law contact with a fixed stiffness (linear spring-dashpot = p 1).
 //! * [`hertz`]: Hertz from material data, k = (4/3) E* √R* per contact.
 //! * [`viscoelastic`]: Brilliantov et al. viscoelastic Hertz, damping constant A.
@@ -23,6 +25,8 @@ pub mod geometry3d;
 pub mod hertz;
 pub mod pair;
 pub mod powerlaw;
+pub mod registry;
 pub mod viscoelastic;
 
-pub use pair::{Consts, PairModel, normal_force};
+pub use pair::{Consts, PairModel};
+pub use registry::normal_force;

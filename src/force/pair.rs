@@ -1,39 +1,16 @@
-//! The pair model: kernel codes, per-pair constants, and the one place that turns a law's raw
-//! force into the contact force (zero without overlap, optional clamp of attraction).
+//! The pair model and what every law shares: per-pair constants, the [`Law`] trait, the one
+//! place that turns a law's raw force into the contact force (zero without overlap, optional
+//! clamp of attraction), and the [`Coded`] trait through which a law learns its kernel codes.
+//!
+//! This module imports no other module of `force`: the laws import it, the registry
+//! ([`super::registry`]) imports the laws, and nothing imports back (no cycle).
 
-use super::hertz::{HertzDamped, HertzElastic};
-use super::powerlaw::{
-    GenDamped, GenElastic, LinDamped, LinElastic, P2Damped, P2Elastic, P15Damped, P15Elastic,
-};
-use super::viscoelastic::Viscoelastic;
 use crate::EndCriterion;
 
 /// Model families, as stored in `dc_pair.model` (the C constants `DC_MODEL_*` equal these).
 pub(crate) const MODEL_POWERLAW: i32 = 1;
 pub(crate) const MODEL_HERTZ: i32 = 2;
 pub(crate) const MODEL_VISCOELASTIC: i32 = 3;
-
-/// Kernel codes: one per (law, damping, clamping) combination that a pair can need. Zero is
-/// deliberately invalid so that a zero-initialised `dc_pair` is rejected, not silently elastic.
-pub(crate) mod code {
-    pub(crate) const LIN_ELASTIC: i32 = 1;
-    pub(crate) const LIN_DAMPED: i32 = 2;
-    pub(crate) const LIN_DAMPED_CLAMPED: i32 = 3;
-    pub(crate) const P15_ELASTIC: i32 = 4;
-    pub(crate) const P15_DAMPED: i32 = 5;
-    pub(crate) const P15_DAMPED_CLAMPED: i32 = 6;
-    pub(crate) const P2_ELASTIC: i32 = 7;
-    pub(crate) const P2_DAMPED: i32 = 8;
-    pub(crate) const P2_DAMPED_CLAMPED: i32 = 9;
-    pub(crate) const GEN_ELASTIC: i32 = 10;
-    pub(crate) const GEN_DAMPED: i32 = 11;
-    pub(crate) const GEN_DAMPED_CLAMPED: i32 = 12;
-    pub(crate) const HERTZ_ELASTIC: i32 = 13;
-    pub(crate) const HERTZ_DAMPED: i32 = 14;
-    pub(crate) const HERTZ_DAMPED_CLAMPED: i32 = 15;
-    pub(crate) const VISCO_DAMPED: i32 = 16;
-    pub(crate) const VISCO_DAMPED_CLAMPED: i32 = 17;
-}
 
 /// The three numbers a kernel needs per pair (their meaning depends on the law; see each law).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -99,100 +76,22 @@ pub(crate) trait Visit {
     fn visit<L: Law, const CLAMP: bool>(self) -> Self::Out;
 }
 
-/// The only branch on the model kind: picks the monomorphised kernel for `kernel` once.
-/// `None` for an unknown code (a `dc_pair` not made by a constructor).
-#[inline(always)]
-pub(crate) fn dispatch<V: Visit>(kernel: i32, v: V) -> Option<V::Out> {
-    use code::*;
-    Some(match kernel {
-        LIN_ELASTIC => v.visit::<LinElastic, false>(),
-        LIN_DAMPED => v.visit::<LinDamped, false>(),
-        LIN_DAMPED_CLAMPED => v.visit::<LinDamped, true>(),
-        P15_ELASTIC => v.visit::<P15Elastic, false>(),
-        P15_DAMPED => v.visit::<P15Damped, false>(),
-        P15_DAMPED_CLAMPED => v.visit::<P15Damped, true>(),
-        P2_ELASTIC => v.visit::<P2Elastic, false>(),
-        P2_DAMPED => v.visit::<P2Damped, false>(),
-        P2_DAMPED_CLAMPED => v.visit::<P2Damped, true>(),
-        GEN_ELASTIC => v.visit::<GenElastic, false>(),
-        GEN_DAMPED => v.visit::<GenDamped, false>(),
-        GEN_DAMPED_CLAMPED => v.visit::<GenDamped, true>(),
-        HERTZ_ELASTIC => v.visit::<HertzElastic, false>(),
-        HERTZ_DAMPED => v.visit::<HertzDamped, false>(),
-        HERTZ_DAMPED_CLAMPED => v.visit::<HertzDamped, true>(),
-        VISCO_DAMPED => v.visit::<Viscoelastic, false>(),
-        VISCO_DAMPED_CLAMPED => v.visit::<Viscoelastic, true>(),
-        _ => return None,
-    })
+/// The kernel codes of a law, assigned in one place: the registry line of the law
+/// ([`super::registry`]) implements this trait. `CLAMPED` is 0 (invalid) for laws that have no
+/// clamped variant (undamped laws, whose force is never attractive).
+pub(crate) trait Coded {
+    /// Code of the law without clamping.
+    const CODE: i32;
+    /// Code of the law with attractive forces clamped to zero.
+    const CLAMPED: i32;
 }
 
-/// The same law without clamping (for checks of the raw force); other codes unchanged.
-pub(crate) const fn unclamped(kernel: i32) -> i32 {
-    use code::*;
-    match kernel {
-        LIN_DAMPED_CLAMPED => LIN_DAMPED,
-        P15_DAMPED_CLAMPED => P15_DAMPED,
-        P2_DAMPED_CLAMPED => P2_DAMPED,
-        GEN_DAMPED_CLAMPED => GEN_DAMPED,
-        HERTZ_DAMPED_CLAMPED => HERTZ_DAMPED,
-        VISCO_DAMPED_CLAMPED => VISCO_DAMPED,
-        k => k,
-    }
-}
-
-/// Which per-contact inputs a kernel reads: (vn, r_eff, m_eff). `None` for an unknown code.
-pub(crate) fn needs(kernel: i32) -> Option<(bool, bool, bool)> {
-    struct Needs;
-    impl Visit for Needs {
-        type Out = (bool, bool, bool);
-        fn visit<L: Law, const CLAMP: bool>(self) -> Self::Out {
-            (L::NEEDS_VN, L::NEEDS_R, L::NEEDS_M)
-        }
-    }
-    dispatch(kernel, Needs)
-}
-
-struct Scalar {
-    c: Consts,
-    d: f64,
-    vn: f64,
-    r: f64,
-    m: f64,
-}
-
-impl Visit for Scalar {
-    type Out = f64;
-    #[inline(always)]
-    fn visit<L: Law, const CLAMP: bool>(self) -> f64 {
-        eval::<L, CLAMP>(&self.c, self.d, self.vn, self.r, self.m)
-    }
-}
-
-/// The normal force of one contact for kernel code `kernel` and constants `c`: the unchecked hot
-/// path. Unknown kernel codes give NaN (never undefined behaviour).
-#[inline(always)]
-pub fn normal_force_raw(kernel: i32, c: Consts, d: f64, vn: f64, r: f64, m: f64) -> f64 {
-    dispatch(kernel, Scalar { c, d, vn, r, m }).unwrap_or(f64::NAN)
-}
-
-/// The normal force of one contact [N] (repulsive positive): see [`normal_force_raw`].
-#[inline]
-pub fn normal_force(pair: &PairModel, d: f64, vn: f64, r: f64, m: f64) -> f64 {
-    normal_force_raw(pair.kernel, pair.consts, d, vn, r, m)
-}
-
-/// Chooses the kernel code for a Tsuji-type law family: `elastic` when there is no damping,
-/// otherwise the damped law with or without clamping.
-pub(crate) fn pick(
-    damped: bool,
-    criterion: EndCriterion,
-    elastic: i32,
-    free: i32,
-    clamped: i32,
-) -> i32 {
+/// Chooses the kernel code of a law family: the elastic law `E` when there is no damping,
+/// otherwise the damped law `D` with clamping for the force criterion.
+pub(crate) fn pick<E: Coded, D: Coded>(damped: bool, criterion: EndCriterion) -> i32 {
     match (damped, criterion) {
-        (false, _) => elastic,
-        (true, EndCriterion::Overlap) => free,
-        (true, EndCriterion::Force) => clamped,
+        (false, _) => E::CODE,
+        (true, EndCriterion::Overlap) => D::CODE,
+        (true, EndCriterion::Force) => D::CLAMPED,
     }
 }

@@ -12,7 +12,7 @@
 //! criterion, which also decides clamping: `Force` clamps attractive force to zero, and its α is
 //! the force-zero one, so a clamping solver realises the target e.
 
-use super::pair::{Consts, Law, MODEL_POWERLAW, PairModel, code, pick};
+use super::pair::{Consts, Law, MODEL_POWERLAW, PairModel, pick};
 use crate::powerlaw::{alpha_from_e, check_exponent, e_from_alpha};
 use crate::{EndCriterion, Error};
 
@@ -136,37 +136,13 @@ pub fn powerlaw_from_alpha(
     }
     let damped = alpha > 0.0;
     let kernel = if p == 1.0 {
-        pick(
-            damped,
-            criterion,
-            code::LIN_ELASTIC,
-            code::LIN_DAMPED,
-            code::LIN_DAMPED_CLAMPED,
-        )
+        pick::<LinElastic, LinDamped>(damped, criterion)
     } else if p == 1.5 {
-        pick(
-            damped,
-            criterion,
-            code::P15_ELASTIC,
-            code::P15_DAMPED,
-            code::P15_DAMPED_CLAMPED,
-        )
+        pick::<P15Elastic, P15Damped>(damped, criterion)
     } else if p == 2.0 {
-        pick(
-            damped,
-            criterion,
-            code::P2_ELASTIC,
-            code::P2_DAMPED,
-            code::P2_DAMPED_CLAMPED,
-        )
+        pick::<P2Elastic, P2Damped>(damped, criterion)
     } else {
-        pick(
-            damped,
-            criterion,
-            code::GEN_ELASTIC,
-            code::GEN_DAMPED,
-            code::GEN_DAMPED_CLAMPED,
-        )
+        pick::<GenElastic, GenDamped>(damped, criterion)
     };
     Ok(PairModel {
         model: MODEL_POWERLAW,

@@ -11,8 +11,8 @@
 //! clamping (`Force`: attractive force clamped to zero, the physically consistent choice of
 //! Schwager & Pöschel).
 
-use super::hertz::hertz_factor;
-use super::pair::{Consts, Law, MODEL_VISCOELASTIC, PairModel, code, pick};
+use super::hertz::{HertzElastic, hertz_factor};
+use super::pair::{Consts, Law, MODEL_VISCOELASTIC, PairModel, pick};
 use crate::{EndCriterion, Error};
 
 pub(crate) struct Viscoelastic;
@@ -37,7 +37,15 @@ pub fn viscoelastic(
     a: f64,
     criterion: EndCriterion,
 ) -> Result<PairModel, Error> {
-    let kf = hertz_factor(e1, nu1, e2, nu2)?;
+    viscoelastic_from_factor(hertz_factor(e1, nu1, e2, nu2)?, a, criterion)
+}
+
+/// A viscoelastic pair from kf = (4/3) E* (finite, > 0; checked by the caller) and A ≥ 0 [s].
+pub fn viscoelastic_from_factor(
+    kf: f64,
+    a: f64,
+    criterion: EndCriterion,
+) -> Result<PairModel, Error> {
     if !a.is_finite() {
         return Err(Error::NotFinite);
     }
@@ -48,13 +56,7 @@ pub fn viscoelastic(
     if !c.is_finite() {
         return Err(Error::ResultRange);
     }
-    let kernel = pick(
-        a > 0.0,
-        criterion,
-        code::HERTZ_ELASTIC,
-        code::VISCO_DAMPED,
-        code::VISCO_DAMPED_CLAMPED,
-    );
+    let kernel = pick::<HertzElastic, Viscoelastic>(a > 0.0, criterion);
     Ok(PairModel {
         model: MODEL_VISCOELASTIC,
         kernel,

@@ -18,7 +18,7 @@
 //! largest overlap seen at a step, as a host sees it. No allocation; the step count is bounded.
 
 use crate::force::PairModel;
-use crate::force::pair::{normal_force_raw, unclamped};
+use crate::force::registry::{normal_force_raw, unclamped};
 use crate::{EndCriterion, Error};
 
 /// The time integrator of the host code.

@@ -1,0 +1,109 @@
+//! One contact's geometry and relative motion, from the bodies' state.
+//!
+//! Conventions (stated once, in the header on `dc_contact_state`): n is the unit normal from
+//! body 2 to body 1, δ > 0 the overlap, vn = (v2 − v1)·n the overlap rate (positive while
+//! approaching). The contact point lies at distance a_i = r_i − δ/2 from centre i (mid-overlap,
+//! LAMMPS's choice), so the relative velocity of the contact point of body 1 with respect to
+//! body 2 is
+//!   v_c = v1 − v2 − (a1 ω1 + a2 ω2) × n,
+//! and its tangential part v_t = v_c − (v_c·n) n drives the tangential spring. A wall is body 2
+//! with r2 = +∞: v2 is the wall's velocity at the contact point, ω2 only enters the twist of the
+//! frame (see [`super::frame`]) and the relative rolling/twisting rates.
+//!
+//! R* = 1/(1/r1 + 1/r2) and m* = 1/(1/m1 + 1/m2), written as harmonic sums so that an infinite
+//! radius or mass (wall, fixed body) gives R* = r1, m* = m1 without inf/inf.
+
+use super::frame::FrameStep;
+use super::vec3::{V3, add, cross, dot, scale, sub};
+
+/// The bodies' state of one contact (see the module conventions).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactState {
+    /// Unit normal from body 2 to body 1.
+    pub n: V3,
+    /// Overlap δ [m], > 0 in contact.
+    pub overlap: f64,
+    /// Centre velocities [m/s].
+    pub v1: V3,
+    /// Centre velocity of body 2 (a wall: its velocity at the contact point).
+    pub v2: V3,
+    /// Angular velocities [rad/s].
+    pub w1: V3,
+    /// Angular velocity of body 2.
+    pub w2: V3,
+    /// Radii [m]; r2 = +∞ for a plane wall.
+    pub r1: f64,
+    /// Radius of body 2.
+    pub r2: f64,
+    /// Masses [kg]; m2 = +∞ for a fixed body or wall.
+    pub m1: f64,
+    /// Mass of body 2.
+    pub m2: f64,
+}
+
+/// What the stages need of one contact in contact (δ > 0).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Kin {
+    pub n: V3,
+    pub d: f64,
+    pub vn: f64,
+    pub r_eff: f64,
+    pub m_eff: f64,
+    /// Lever arms a1, a2 (a2 infinite for a wall).
+    pub a1: f64,
+    pub a2: f64,
+    pub wall: bool,
+    /// Tangential relative velocity of the contact point, body 1 relative to body 2 (mid-step
+    /// plane, carried into the current one: see [`super::frame`]).
+    pub vt: V3,
+    /// Rolling part of ω1 − ω2 (idem).
+    pub w_roll: V3,
+    /// Relative angular velocity ω1 − ω2.
+    pub w_rel: V3,
+    pub m1: f64,
+    pub m2: f64,
+    pub r1: f64,
+    pub r2: f64,
+}
+
+impl Kin {
+    /// Kinematics of a state with overlap > 0 (checked by the caller), and the frame step from
+    /// the stored normal `n_old` (zeros: new contact or no history).
+    #[inline(always)]
+    pub(crate) fn of(s: &ContactState, n_old: V3, dt: f64) -> (Kin, FrameStep) {
+        let n = s.n;
+        let frame = FrameStep::new(n_old, n, 0.5 * dot(add(s.w1, s.w2), n) * dt);
+        let nm = frame.n_mid;
+        let d = s.overlap;
+        let wall = s.r2 == f64::INFINITY;
+        let a1 = s.r1 - 0.5 * d;
+        let a2 = s.r2 - 0.5 * d;
+        let vr = sub(s.v1, s.v2);
+        let vn = -dot(vr, n);
+        let arm = if wall {
+            scale(a1, s.w1)
+        } else {
+            add(scale(a1, s.w1), scale(a2, s.w2))
+        };
+        let vc = sub(vr, cross(arm, nm));
+        let w_rel = sub(s.w1, s.w2);
+        let kin = Kin {
+            n,
+            d,
+            vn,
+            r_eff: 1.0 / (1.0 / s.r1 + 1.0 / s.r2),
+            m_eff: 1.0 / (1.0 / s.m1 + 1.0 / s.m2),
+            a1,
+            a2,
+            wall,
+            vt: frame.carry_mid(vc),
+            w_roll: frame.carry_mid(w_rel),
+            w_rel,
+            m1: s.m1,
+            m2: s.m2,
+            r1: s.r1,
+            r2: s.r2,
+        };
+        (kin, frame)
+    }
+}

@@ -1,0 +1,37 @@
+//! Full contact of spheres and walls: the normal law of [`crate::force`] composed with
+//! tangential friction, rolling and twisting resistance, with per-contact history owned by the
+//! caller.
+//!
+//! One file per sub-model, and a stage per kind of sub-model (normal kernel → tangential →
+//! rolling → twisting). Each stage is a monomorphised function chosen once per call (scalar) or
+//! once per batch, so the number of compiled kernels is the *sum* of the sub-model counts, not
+//! their product, and a scene pays only for the stages it switches on.
+//!
+//! * [`spec`]: the specification (sub-models and parameters by field) → validated model.
+//! * [`model`]: the composed model, selectors and history layout.
+//! * [`kinematics`]: contact geometry and relative motion from the bodies' state.
+//! * [`frame`]: carries history vectors into the current tangent plane (frame indifference).
+//! * [`tangential`]: the Coulomb-limited history spring step shared by the tangential laws, and
+//!   the damping calibrated from a tangential restitution; laws [`tangential_linear`]
+//!   (Cundall–Strack) and [`tangential_mindlin`] (k_t = 8 G* a).
+//! * [`rolling_constant`], [`rolling_epsd`]: rolling resistance; [`twisting_sds`]: twisting.
+//! * [`evaluate`]: one contact through every stage; [`batch`]: structure-of-arrays batches.
+
+pub mod batch;
+pub mod evaluate;
+pub mod frame;
+pub mod kinematics;
+pub mod model;
+pub mod rolling_constant;
+pub mod rolling_epsd;
+pub mod spec;
+pub mod tangential;
+pub mod tangential_linear;
+pub mod tangential_mindlin;
+pub mod twisting_sds;
+pub mod vec3;
+
+pub use evaluate::{ContactForce, contact_force};
+pub use kinematics::ContactState;
+pub use model::{ContactModel, HISTORY_MAX, Layout};
+pub use spec::{ContactSpec, contact_model};

@@ -1,0 +1,105 @@
+//! The composed contact model: one normal law (a force kernel) plus optional tangential,
+//! rolling and twisting sub-models, with the layout of the caller-owned history.
+
+use crate::force::PairModel;
+
+/// Sub-model selectors (the C constants `DC_TANGENTIAL_*`, `DC_ROLLING_*`, `DC_TWISTING_*`
+/// equal these).
+pub mod select {
+    /// No tangential force.
+    pub const TANGENTIAL_NONE: i32 = 0;
+    /// Cundall–Strack linear history spring k_t with dashpot and Coulomb limit.
+    pub const TANGENTIAL_LINEAR: i32 = 1;
+    /// Mindlin no-slip spring k_t = 8 G* a, a = √(R* δ), dashpot, Coulomb limit.
+    pub const TANGENTIAL_MINDLIN: i32 = 2;
+    /// No rolling resistance.
+    pub const ROLLING_NONE: i32 = 0;
+    /// Constant directional torque μ_r R* |Fn| opposing the rolling angular velocity.
+    pub const ROLLING_CONSTANT: i32 = 1;
+    /// Elastic–plastic spring–dashpot (Ai et al. 2011, type C), own history, limit μ_r R* |Fn|.
+    pub const ROLLING_EPSD: i32 = 2;
+    /// No twisting resistance.
+    pub const TWISTING_NONE: i32 = 0;
+    /// Spring–dashpot–slider about the normal, limit μ_tw |Fn|.
+    pub const TWISTING_SDS: i32 = 1;
+}
+
+/// Doubles per contact of the largest model: normal of the last step (3), tangential spring (3),
+/// rolling spring torque (3), twisting spring torque (1).
+pub const HISTORY_MAX: usize = 10;
+
+/// Where each sub-model keeps its state in the caller's history array (offsets in doubles).
+/// Only the parts a model uses are present, so a model's history is as short as it can be.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Layout {
+    /// Total doubles per contact (0 for a normal-only model).
+    pub len: usize,
+    /// Offset of the tangential spring ξ [m] (3 doubles), if any.
+    pub tangential: Option<usize>,
+    /// Offset of the rolling spring torque [N m] (3 doubles), if any.
+    pub rolling: Option<usize>,
+    /// Offset of the twisting spring torque [N m] (1 double), if any.
+    pub twisting: Option<usize>,
+}
+
+impl Layout {
+    /// The layout for the given selectors: the normal of the last step first (at offset 0,
+    /// needed to rotate any vector spring), then each present spring in stage order.
+    pub fn of(tangential: i32, rolling: i32, twisting: i32) -> Layout {
+        let has_t = tangential != select::TANGENTIAL_NONE;
+        let has_r = rolling == select::ROLLING_EPSD;
+        let has_tw = twisting != select::TWISTING_NONE;
+        let mut len = if has_t || has_r || has_tw { 3 } else { 0 };
+        let mut take = |on: bool, n: usize| {
+            on.then(|| {
+                let at = len;
+                len += n;
+                at
+            })
+        };
+        let t = take(has_t, 3);
+        let r = take(has_r, 3);
+        let tw = take(has_tw, 1);
+        Layout {
+            len,
+            tangential: t,
+            rolling: r,
+            twisting: tw,
+        }
+    }
+}
+
+/// A complete, validated contact model (what `dc_contact_model` carries, in Rust form).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactModel {
+    /// The normal law: kernel code and constants (as `dc_pair`).
+    pub normal: PairModel,
+    /// `select::TANGENTIAL_*`.
+    pub tangential: i32,
+    /// `select::ROLLING_*`.
+    pub rolling: i32,
+    /// `select::TWISTING_*`.
+    pub twisting: i32,
+    /// Sliding friction coefficient μ ≥ 0.
+    pub mu: f64,
+    /// Tangential stiffness constant: k_t [N/m] (linear) or 8 G* [Pa] (Mindlin: k_t = 8 G* a).
+    pub kt: f64,
+    /// Tangential damping ratio ζ_t from the target e_t (0: undamped).
+    pub zeta_t: f64,
+    /// Inertia factor κ = I/(m r²) of both bodies (2/5: solid spheres).
+    pub kappa: f64,
+    /// Rolling friction coefficient μ_r ≥ 0 (dimensionless; torque limit μ_r R* |Fn|).
+    pub mu_r: f64,
+    /// Rolling stiffness k_r [N m/rad]; 0 selects Ai et al.'s rule k_r = 2.25 k_n μ_r² R*².
+    pub k_r: f64,
+    /// Rolling damping ratio η_r ≥ 0 (EPSD).
+    pub eta_r: f64,
+    /// Twisting friction coefficient μ_tw [m] (torque limit μ_tw |Fn|).
+    pub mu_tw: f64,
+    /// Twisting stiffness k_tw [N m/rad].
+    pub k_tw: f64,
+    /// Twisting damping ratio η_tw ≥ 0.
+    pub eta_tw: f64,
+    /// History layout.
+    pub layout: Layout,
+}

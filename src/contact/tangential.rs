@@ -1,0 +1,95 @@
+//! The tangential stage shared by every tangential law: carry the spring into the current
+//! frame, integrate it with the contact point's tangential velocity, add the calibrated dashpot,
+//! and truncate at the Coulomb limit.
+//!
+//! Per step (LAMMPS/LIGGGHTS order: the spring is incremented before the force is formed):
+//!   ξ ← R ξ + v_t dt                       (R: the frame rotation of the step, [`super::frame`])
+//!   F_t* = −k_t ξ − c_t v_t
+//!   |F_t*| ≤ μ |Fn|: F_t = F_t*                       (sticking)
+//!   else:           F_t = μ |Fn| F_t*/|F_t*|,  ξ ← −(F_t + c_t v_t)/k_t   (sliding; LAMMPS's
+//!                   reset, so the spring alone plus the dashpot equals the applied force)
+//! Fn is the normal force actually applied (after clamping). A law only supplies k_t for the
+//! contact ([`TangentialLaw`]); the "total" form F = −k_t(δ) ξ is used for Mindlin's varying k_t
+//! (LAMMPS `mindlin`, LIGGGHTS `tangential history` with Hertz): see docs/force.md.
+//!
+//! Damping calibrated from a target tangential restitution e_t (derivation in docs/force.md):
+//! while sticking, the contact point's tangential motion is the damped oscillator
+//! m_t ξ'' + c_t ξ' + k_t ξ = 0 with m_t = m*/(1 + m* a1²/I1 + m* a2²/I2) = κ/(1 + κ) m* for
+//! bodies with I = κ m r² (a ≈ r; 2/7 m* for solid spheres), and
+//!   c_t = 2 ζ_t √(m_t k_t),  ζ_t = L/√(π² + L²),  L = −ln e_t,
+//! makes one half period of that oscillator reverse the tangential velocity with factor e_t.
+
+use super::frame::FrameStep;
+use super::kinematics::Kin;
+use super::model::ContactModel;
+use super::vec3::{V3, add, norm2, scale, sub};
+use crate::Error;
+
+/// A tangential law: its spring stiffness for one contact.
+pub(crate) trait TangentialLaw {
+    /// k_t [N/m] of this contact (δ > 0).
+    fn stiffness(m: &ContactModel, k: &Kin) -> f64;
+}
+
+/// The damping ratio ζ_t = L/√(π² + L²), L = −ln e_t, for a target tangential restitution
+/// e_t ∈ (0, 1] in the sticking regime.
+pub fn zeta_from_e_t(e_t: f64) -> Result<f64, Error> {
+    if !e_t.is_finite() {
+        return Err(Error::NotFinite);
+    }
+    if !(e_t > 0.0 && e_t <= 1.0) {
+        return Err(Error::RestitutionRange);
+    }
+    let l = -e_t.ln();
+    Ok(l / (core::f64::consts::PI * core::f64::consts::PI + l * l).sqrt())
+}
+
+/// Effective tangential mass factor m_t/m* = κ/(1 + κ) for bodies with I = κ m r².
+#[inline(always)]
+pub(crate) fn mass_factor(kappa: f64) -> f64 {
+    kappa / (1.0 + kappa)
+}
+
+/// Result of the tangential stage.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct TangentialOut {
+    pub ft: V3,
+    pub sliding: bool,
+}
+
+/// One tangential step of law `T`; `xi` is the stored spring, updated in place.
+#[inline(always)]
+pub(crate) fn step<T: TangentialLaw>(
+    m: &ContactModel,
+    k: &Kin,
+    f_normal: f64,
+    dt: f64,
+    frame: &FrameStep,
+    xi: &mut V3,
+) -> TangentialOut {
+    let kt = T::stiffness(m, k);
+    let ct = if m.zeta_t > 0.0 {
+        2.0 * m.zeta_t * (mass_factor(m.kappa) * k.m_eff * kt).sqrt()
+    } else {
+        0.0
+    };
+    let spring = add(frame.carry(*xi), scale(dt, k.vt));
+    let trial = sub(scale(-kt, spring), scale(ct, k.vt));
+    let limit = m.mu * f_normal.abs();
+    let t2 = norm2(trial);
+    if t2 > limit * limit {
+        let ft = scale(limit / t2.sqrt(), trial);
+        *xi = if kt > 0.0 {
+            scale(-1.0 / kt, add(ft, scale(ct, k.vt)))
+        } else {
+            spring
+        };
+        TangentialOut { ft, sliding: true }
+    } else {
+        *xi = spring;
+        TangentialOut {
+            ft: trial,
+            sliding: false,
+        }
+    }
+}

@@ -1,0 +1,834 @@
+//! Exports: full contact (normal, tangential, rolling, twisting) with caller-owned history.
+
+use super::status::*;
+use super::{status_of, write_result};
+use crate::contact::batch::{BatchIn, BatchOut, contact_force_batch};
+use crate::contact::evaluate::contact_force;
+use crate::contact::model::{HISTORY_MAX, Layout, select};
+use crate::contact::spec::{ContactSpec, contact_model, damping, normal};
+use crate::contact::{ContactForce, ContactModel, ContactState};
+use crate::force::{Consts, PairModel};
+use crate::{EndCriterion, Error};
+
+use super::force::dc_pair;
+
+/// Version of dc_contact_spec this library reads (dc_contact_spec_init sets it).
+pub const DC_CONTACT_SPEC_VERSION: u32 = 1;
+/// Doubles of history per contact for the largest contact model
+/// (dc_contact_history_len gives the exact, usually smaller, figure of one model).
+pub const DC_CONTACT_HISTORY_MAX: usize = 10;
+
+/// Normal law: Hertz from E, nu of both bodies, k = (4/3) E* sqrt(R*) per contact.
+pub const DC_NORMAL_HERTZ: i32 = 1;
+/// Normal law: power law F = k_n d^p (fixed k_n, exponent p >= 1).
+pub const DC_NORMAL_POWERLAW: i32 = 2;
+/// Normal law: linear spring F = k_n d.
+pub const DC_NORMAL_LINEAR: i32 = 3;
+/// Normal law: viscoelastic Hertz (Brilliantov et al.) with damping constant visco_A.
+pub const DC_NORMAL_VISCOELASTIC: i32 = 4;
+/// Normal damping: none (e_n = 1).
+pub const DC_DAMPING_NONE: i32 = 0;
+/// Normal damping: alpha calibrated exactly from e_n for the criterion.
+pub const DC_DAMPING_RESTITUTION: i32 = 1;
+/// Tangential: none.
+pub const DC_TANGENTIAL_NONE: i32 = 0;
+/// Tangential: Cundall-Strack linear history spring k_t, dashpot from e_t, Coulomb limit.
+pub const DC_TANGENTIAL_LINEAR: i32 = 1;
+/// Tangential: Mindlin k_t = 8 G* a, a = sqrt(R* d), dashpot from e_t, Coulomb limit.
+pub const DC_TANGENTIAL_MINDLIN: i32 = 2;
+/// Rolling resistance: none.
+pub const DC_ROLLING_NONE: i32 = 0;
+/// Rolling resistance: constant torque mu_r R* |Fn| opposing the rolling angular velocity.
+pub const DC_ROLLING_CONSTANT: i32 = 1;
+/// Rolling resistance: elastic-plastic spring-dashpot (Ai et al. 2011), limit mu_r R* |Fn|.
+pub const DC_ROLLING_EPSD: i32 = 2;
+/// Twisting resistance: none.
+pub const DC_TWISTING_NONE: i32 = 0;
+/// Twisting resistance: spring-dashpot-slider about n, limit mu_tw |Fn|.
+pub const DC_TWISTING_SDS: i32 = 1;
+
+const _: () = assert!(
+    DC_NORMAL_HERTZ == normal::HERTZ
+        && DC_NORMAL_POWERLAW == normal::POWERLAW
+        && DC_NORMAL_LINEAR == normal::LINEAR
+        && DC_NORMAL_VISCOELASTIC == normal::VISCOELASTIC
+        && DC_DAMPING_NONE == damping::NONE
+        && DC_DAMPING_RESTITUTION == damping::RESTITUTION
+        && DC_TANGENTIAL_NONE == select::TANGENTIAL_NONE
+        && DC_TANGENTIAL_LINEAR == select::TANGENTIAL_LINEAR
+        && DC_TANGENTIAL_MINDLIN == select::TANGENTIAL_MINDLIN
+        && DC_ROLLING_NONE == select::ROLLING_NONE
+        && DC_ROLLING_CONSTANT == select::ROLLING_CONSTANT
+        && DC_ROLLING_EPSD == select::ROLLING_EPSD
+        && DC_TWISTING_NONE == select::TWISTING_NONE
+        && DC_TWISTING_SDS == select::TWISTING_SDS
+        && DC_CONTACT_HISTORY_MAX == HISTORY_MAX
+);
+
+/// What a contact model is made of, named field by field: fill it with dc_contact_spec_init,
+/// then set the fields your scene needs (by name: never positionally), then call
+/// dc_contact_model_init. Parameters of sub-models you do not choose are ignored; a parameter a
+/// chosen sub-model needs that is left unset (NaN) gives DC_ERR_SPEC_UNSET.
+///
+/// Versioned: `version` and `size` (set by dc_contact_spec_init) let later library versions
+/// append fields without breaking callers compiled against this one.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[allow(non_camel_case_types, non_snake_case)]
+pub struct dc_contact_spec {
+    /// DC_CONTACT_SPEC_VERSION.
+    pub version: u32,
+    /// sizeof(dc_contact_spec) as the caller compiled it.
+    pub size: u32,
+    /// DC_NORMAL_* (required: no default).
+    pub normal: i32,
+    /// DC_DAMPING_NONE (default) or DC_DAMPING_RESTITUTION (reads e_n). Viscoelastic: NONE only.
+    pub damping: i32,
+    /// DC_END_FORCE (default: attractive normal force clamped to zero) or DC_END_OVERLAP.
+    pub criterion: i32,
+    /// DC_TANGENTIAL_* (default NONE).
+    pub tangential: i32,
+    /// DC_ROLLING_* (default NONE).
+    pub rolling: i32,
+    /// DC_TWISTING_* (default NONE).
+    pub twisting: i32,
+    /// Young's modulus of body 1 [Pa], > 0; +INFINITY for a rigid body (Hertz, viscoelastic,
+    /// Mindlin). Not both bodies rigid.
+    pub E1: f64,
+    /// Poisson ratio of body 1, in (-1, 0.5].
+    pub nu1: f64,
+    /// Young's modulus of body 2 [Pa] (+INFINITY: rigid, e.g. a wall).
+    pub E2: f64,
+    /// Poisson ratio of body 2.
+    pub nu2: f64,
+    /// Exponent p >= 1 of DC_NORMAL_POWERLAW.
+    pub p: f64,
+    /// Stiffness k_n > 0 of DC_NORMAL_POWERLAW [N m^-p] and DC_NORMAL_LINEAR [N/m].
+    pub k_n: f64,
+    /// Target normal restitution in (0, 1] (DC_DAMPING_RESTITUTION).
+    pub e_n: f64,
+    /// Viscoelastic damping constant A >= 0 [s] (DC_NORMAL_VISCOELASTIC).
+    pub visco_A: f64,
+    /// Sliding friction coefficient mu >= 0 (any tangential law).
+    pub mu: f64,
+    /// Tangential stiffness k_t > 0 [N/m] (DC_TANGENTIAL_LINEAR).
+    pub k_t: f64,
+    /// Target tangential restitution in (0, 1] in the sticking regime (default 1: undamped).
+    pub e_t: f64,
+    /// Rolling friction coefficient mu_r >= 0 (torque limit mu_r R* |Fn|).
+    pub mu_r: f64,
+    /// Rolling stiffness k_r >= 0 [N m/rad] (EPSD); 0 (default) = Ai et al.'s rule
+    /// k_r = 2.25 k_n mu_r^2 R*^2 with k_n the normal law's elastic tangent stiffness.
+    pub k_r: f64,
+    /// Rolling damping ratio eta_r >= 0 (EPSD; default 0).
+    pub eta_r: f64,
+    /// Twisting friction coefficient mu_tw >= 0 [m] (torque limit mu_tw |Fn|).
+    pub mu_tw: f64,
+    /// Twisting stiffness k_tw > 0 [N m/rad].
+    pub k_tw: f64,
+    /// Twisting damping ratio eta_tw >= 0 (default 0).
+    pub eta_tw: f64,
+    /// Inertia factor kappa = I/(m r^2) of the bodies, in (0, 1] (default 0.4: solid spheres);
+    /// enters only the damping calibrations (tangential mass m_t = kappa/(1 + kappa) m*).
+    pub inertia_factor: f64,
+}
+
+impl From<&dc_contact_spec> for ContactSpec {
+    fn from(s: &dc_contact_spec) -> Self {
+        ContactSpec {
+            normal: s.normal,
+            damping: s.damping,
+            criterion: s.criterion,
+            tangential: s.tangential,
+            rolling: s.rolling,
+            twisting: s.twisting,
+            e1: s.E1,
+            nu1: s.nu1,
+            e2: s.E2,
+            nu2: s.nu2,
+            p: s.p,
+            k_n: s.k_n,
+            e_n: s.e_n,
+            visco_a: s.visco_A,
+            mu: s.mu,
+            k_t: s.k_t,
+            e_t: s.e_t,
+            mu_r: s.mu_r,
+            k_r: s.k_r,
+            eta_r: s.eta_r,
+            mu_tw: s.mu_tw,
+            k_tw: s.k_tw,
+            eta_tw: s.eta_tw,
+            inertia_factor: s.inertia_factor,
+        }
+    }
+}
+
+/// A composed contact model for one material pair: plain data built by dc_contact_model_init,
+/// then only read (copy it freely; keep one per type pair). Do not edit the fields: they are
+/// checked on every call (DC_ERR_CONTACT_MODEL_INVALID). A zero-filled one is invalid.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[allow(non_camel_case_types)]
+pub struct dc_contact_model {
+    /// Set by dc_contact_model_init.
+    pub magic: u32,
+    /// Doubles of history per contact (as dc_contact_history_len).
+    pub history_len: u32,
+    /// DC_TANGENTIAL_* chosen.
+    pub tangential: i32,
+    /// DC_ROLLING_* chosen.
+    pub rolling: i32,
+    /// DC_TWISTING_* chosen.
+    pub twisting: i32,
+    /// Reserved (0).
+    pub reserved_i: i32,
+    /// The normal law (usable on its own with dc_normal_force*).
+    pub normal: dc_pair,
+    /// Friction coefficient mu.
+    pub mu: f64,
+    /// k_t [N/m] (linear) or 8 G* [Pa] (Mindlin, k_t = 8 G* sqrt(R* d)).
+    pub kt: f64,
+    /// Tangential damping ratio zeta_t from e_t.
+    pub zeta_t: f64,
+    /// Inertia factor kappa.
+    pub kappa: f64,
+    /// Rolling friction coefficient.
+    pub mu_r: f64,
+    /// Rolling stiffness (0: Ai's rule).
+    pub k_r: f64,
+    /// Rolling damping ratio.
+    pub eta_r: f64,
+    /// Twisting friction coefficient [m].
+    pub mu_tw: f64,
+    /// Twisting stiffness.
+    pub k_tw: f64,
+    /// Twisting damping ratio.
+    pub eta_tw: f64,
+    /// Reserved for later sub-models (0).
+    pub reserved: [f64; 6],
+}
+
+const MAGIC: u32 = 0x4443_4d31;
+
+impl From<ContactModel> for dc_contact_model {
+    fn from(m: ContactModel) -> Self {
+        dc_contact_model {
+            magic: MAGIC,
+            history_len: m.layout.len as u32,
+            tangential: m.tangential,
+            rolling: m.rolling,
+            twisting: m.twisting,
+            reserved_i: 0,
+            normal: m.normal.into(),
+            mu: m.mu,
+            kt: m.kt,
+            zeta_t: m.zeta_t,
+            kappa: m.kappa,
+            mu_r: m.mu_r,
+            k_r: m.k_r,
+            eta_r: m.eta_r,
+            mu_tw: m.mu_tw,
+            k_tw: m.k_tw,
+            eta_tw: m.eta_tw,
+            reserved: [0.0; 6],
+        }
+    }
+}
+
+/// The core model of a C model, structurally checked (the values are checked by the core).
+fn model_of(m: &dc_contact_model) -> Result<ContactModel, Error> {
+    let layout = Layout::of(m.tangential, m.rolling, m.twisting);
+    let p = &m.normal;
+    let criterion = match (p.criterion, p.clamp) {
+        (0, 0) => EndCriterion::Overlap,
+        (1, 1) => EndCriterion::Force,
+        _ => return Err(Error::ContactModelInvalid),
+    };
+    if m.magic != MAGIC
+        || m.history_len as usize != layout.len
+        || m.reserved_i != 0
+        || m.reserved.iter().any(|x| x.to_bits() != 0)
+    {
+        return Err(Error::ContactModelInvalid);
+    }
+    Ok(ContactModel {
+        normal: PairModel {
+            model: p.model,
+            kernel: p.kernel,
+            criterion,
+            p: p.p,
+            stiffness: p.stiffness,
+            alpha: p.alpha,
+            damping_a: p.damping_a,
+            e: p.e,
+            consts: Consts {
+                k: p.k,
+                c: p.c,
+                h: p.h,
+            },
+        },
+        tangential: m.tangential,
+        rolling: m.rolling,
+        twisting: m.twisting,
+        mu: m.mu,
+        kt: m.kt,
+        zeta_t: m.zeta_t,
+        kappa: m.kappa,
+        mu_r: m.mu_r,
+        k_r: m.k_r,
+        eta_r: m.eta_r,
+        mu_tw: m.mu_tw,
+        k_tw: m.k_tw,
+        eta_tw: m.eta_tw,
+        layout,
+    })
+}
+
+/// One contact's bodies. n is the unit normal pointing from body 2 to body 1; overlap > 0 in
+/// contact (<= 0: no force, and the history is reset to zero). The contact point is at
+/// a_i = r_i - overlap/2 from each centre. A plane wall is body 2 with r2 = +INFINITY (its
+/// mass m2 may be +INFINITY: fixed): v2 is then the wall's velocity at the contact point, w2
+/// its angular velocity (it only turns the spring with the wall; zero for a fixed wall), and
+/// torque2 is 0. A fixed sphere: m2 = +INFINITY with finite r2.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[allow(non_camel_case_types)]
+pub struct dc_contact_state {
+    /// Unit normal from body 2 to body 1 (| |n|^2 - 1 | <= 1e-6).
+    pub n: [f64; 3],
+    /// Overlap [m], > 0 in contact.
+    pub overlap: f64,
+    /// Centre velocity of body 1 [m/s].
+    pub v1: [f64; 3],
+    /// Centre velocity of body 2 [m/s] (wall: its velocity at the contact point).
+    pub v2: [f64; 3],
+    /// Angular velocity of body 1 [rad/s].
+    pub w1: [f64; 3],
+    /// Angular velocity of body 2 [rad/s].
+    pub w2: [f64; 3],
+    /// Radius of body 1 [m], finite > 0.
+    pub r1: f64,
+    /// Radius of body 2 [m], > 0 (+INFINITY: plane wall).
+    pub r2: f64,
+    /// Mass of body 1 [kg], finite > 0.
+    pub m1: f64,
+    /// Mass of body 2 [kg], > 0 (+INFINITY: fixed body or wall).
+    pub m2: f64,
+}
+
+impl From<&dc_contact_state> for ContactState {
+    fn from(s: &dc_contact_state) -> Self {
+        ContactState {
+            n: s.n,
+            overlap: s.overlap,
+            v1: s.v1,
+            v2: s.v2,
+            w1: s.w1,
+            w2: s.w2,
+            r1: s.r1,
+            r2: s.r2,
+            m1: s.m1,
+            m2: s.m2,
+        }
+    }
+}
+
+/// Forces and torques of one contact.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[allow(non_camel_case_types)]
+pub struct dc_contact_result {
+    /// Total force on body 1 [N] (body 2 receives -force).
+    pub force: [f64; 3],
+    /// Torque on body 1 [N m] (tangential force about its centre + rolling + twisting).
+    pub torque1: [f64; 3],
+    /// Torque on body 2 [N m] (0 for a wall).
+    pub torque2: [f64; 3],
+    /// Normal force [N] as applied (positive repulsive; >= 0 when clamped).
+    pub f_n: f64,
+    /// Tangential force on body 1 [N].
+    pub ft: [f64; 3],
+    /// 1 if the Coulomb limit was reached this step, else 0.
+    pub sliding: i32,
+    /// 1 if the rolling or twisting limit was reached (or the constant rolling torque acts).
+    pub rolling_sliding: i32,
+}
+
+impl From<ContactForce> for dc_contact_result {
+    fn from(f: ContactForce) -> Self {
+        dc_contact_result {
+            force: f.force,
+            torque1: f.torque1,
+            torque2: f.torque2,
+            f_n: f.fn_,
+            ft: f.ft,
+            sliding: i32::from(f.sliding),
+            rolling_sliding: i32::from(f.rolling_sliding),
+        }
+    }
+}
+
+/// Fills a dc_contact_spec with its version, size and defaults: no normal law yet (you must
+/// set `normal`), DC_DAMPING_NONE, DC_END_FORCE, no tangential/rolling/twisting, every
+/// parameter unset (NaN) except e_t = 1, k_r = 0, eta_r = eta_tw = 0, inertia_factor = 0.4.
+///
+/// @return DC_OK or DC_ERR_NULL_POINTER.
+///
+/// # Safety
+/// `spec` must be NULL or point to writable memory for one dc_contact_spec.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_contact_spec_init(spec: *mut dc_contact_spec) -> i32 {
+    // SAFETY: forwarded caller contract on spec.
+    unsafe {
+        write_result(spec, || {
+            let d = ContactSpec::default();
+            Ok(dc_contact_spec {
+                version: DC_CONTACT_SPEC_VERSION,
+                size: core::mem::size_of::<dc_contact_spec>() as u32,
+                normal: d.normal,
+                damping: d.damping,
+                criterion: d.criterion,
+                tangential: d.tangential,
+                rolling: d.rolling,
+                twisting: d.twisting,
+                E1: d.e1,
+                nu1: d.nu1,
+                E2: d.e2,
+                nu2: d.nu2,
+                p: d.p,
+                k_n: d.k_n,
+                e_n: d.e_n,
+                visco_A: d.visco_a,
+                mu: d.mu,
+                k_t: d.k_t,
+                e_t: d.e_t,
+                mu_r: d.mu_r,
+                k_r: d.k_r,
+                eta_r: d.eta_r,
+                mu_tw: d.mu_tw,
+                k_tw: d.k_tw,
+                eta_tw: d.eta_tw,
+                inertia_factor: d.inertia_factor,
+            })
+        })
+    }
+}
+
+/// Builds a contact model from a spec (once per material pair, at set-up): validates every
+/// parameter the chosen sub-models read and calibrates the damping (normal: exact for the
+/// criterion; tangential: from e_t, see docs/force.md).
+///
+/// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_SPEC_VERSION (version != DC_CONTACT_SPEC_VERSION or
+///         size != sizeof(dc_contact_spec)), DC_ERR_SPEC_MODEL (unknown selector, viscoelastic with
+///         restitution damping, inertia_factor > 1), DC_ERR_SPEC_UNSET, DC_ERR_CRITERION,
+///         DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE, DC_ERR_NEGATIVE, DC_ERR_RESTITUTION_RANGE,
+///         DC_ERR_EXPONENT_RANGE, DC_ERR_RESULT_RANGE. `out` is untouched on error.
+///
+/// # Safety
+/// `spec` NULL or readable for its `size` bytes (at least the version and size fields); `out`
+/// NULL or writable for one dc_contact_model.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_contact_model_init(
+    spec: *const dc_contact_spec,
+    out: *mut dc_contact_model,
+) -> i32 {
+    if spec.is_null() {
+        return DC_ERR_NULL_POINTER;
+    }
+    // SAFETY: non-null; the two leading u32 fields are readable per the caller contract.
+    let (version, size) = unsafe {
+        let head = spec.cast::<[u32; 2]>().read_unaligned();
+        (head[0], head[1])
+    };
+    if version != DC_CONTACT_SPEC_VERSION
+        || size as usize != core::mem::size_of::<dc_contact_spec>()
+    {
+        return if out.is_null() {
+            DC_ERR_NULL_POINTER
+        } else {
+            DC_ERR_SPEC_VERSION
+        };
+    }
+    // SAFETY: the caller declared `size` = our struct size readable.
+    let s = unsafe { spec.read_unaligned() };
+    // SAFETY: forwarded caller contract on out.
+    unsafe { write_result(out, || Ok(contact_model(&ContactSpec::from(&s))?.into())) }
+}
+
+/// The number of doubles of history one contact of this model needs (0 for a normal-only or
+/// constant-rolling model; at most DC_CONTACT_HISTORY_MAX). Layout (for inspection only):
+/// normal of the last step (3), tangential spring [m] (3), rolling spring torque [N m] (3),
+/// twisting spring torque [N m] (1), each present only if its sub-model is.
+///
+/// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID.
+///
+/// # Safety
+/// `model` NULL or readable; `len_out` NULL or writable for a size_t.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_contact_history_len(
+    model: *const dc_contact_model,
+    len_out: *mut usize,
+) -> i32 {
+    // SAFETY: null checked; any bit pattern of dc_contact_model is a valid value.
+    let Some(m) = (unsafe { model.as_ref() }) else {
+        return DC_ERR_NULL_POINTER;
+    };
+    // SAFETY: forwarded caller contract on len_out.
+    unsafe {
+        write_result(len_out, || {
+            let cm = model_of(m)?;
+            crate::contact::evaluate::check_model(&cm)?;
+            Ok(cm.layout.len)
+        })
+    }
+}
+
+/// Shared body of dc_contact_force and dc_contact_force_spheres.
+///
+/// # Safety
+/// As dc_contact_force.
+unsafe fn force_common(
+    model: *const dc_contact_model,
+    state: ContactState,
+    dt: f64,
+    history: *mut f64,
+    history_len: usize,
+    out: *mut dc_contact_result,
+) -> i32 {
+    // SAFETY: null checked; any bit pattern is a valid value.
+    let Some(m) = (unsafe { model.as_ref() }) else {
+        return DC_ERR_NULL_POINTER;
+    };
+    if out.is_null() {
+        return DC_ERR_NULL_POINTER;
+    }
+    let cm = match model_of(m) {
+        Ok(cm) => cm,
+        Err(e) => return status_of(e),
+    };
+    let need = cm.layout.len;
+    if need > 0 && history.is_null() {
+        return DC_ERR_NULL_POINTER;
+    }
+    if history_len < need {
+        return DC_ERR_BUFFER_TOO_SHORT;
+    }
+    if need > 0 && !history.is_aligned() {
+        return DC_ERR_BUFFER_LAYOUT;
+    }
+    let body = || {
+        let mut empty = [0.0f64; 0];
+        let hist: &mut [f64] = if need > 0 {
+            // SAFETY: non-null, aligned, valid for history_len >= need doubles (caller
+            // contract); nothing else refers to it during the call.
+            unsafe { core::slice::from_raw_parts_mut(history, need) }
+        } else {
+            &mut empty
+        };
+        contact_force(&cm, &state, dt, hist).map(dc_contact_result::from)
+    };
+    // SAFETY: forwarded caller contract on out (non-null).
+    unsafe { write_result(out, body) }
+}
+
+/// Force and torques of one sphere-sphere or sphere-wall contact, with the sub-models of
+/// `model`, advancing its history by one step of the host's time step dt.
+///
+/// Sign conventions: see dc_contact_state. Per step (details and derivations: docs/force.md):
+/// normal force from the model's normal law (clamped if built with DC_END_FORCE); the history
+/// springs are turned into the current tangent plane (frame indifference), incremented by the
+/// contact point's tangential velocity times dt, and truncated at the Coulomb limit mu |Fn|
+/// (rolling: mu_r R* |Fn|; twisting: mu_tw |Fn|), Fn the normal force applied.
+///
+/// @param model        from dc_contact_model_init.
+/// @param state        the two bodies of this contact.
+/// @param dt           the host's time step [s], finite > 0.
+/// @param history      this contact's history: history_len doubles, all zero for a new contact;
+///                     updated in place on success (reset to zero when overlap <= 0). May be NULL
+///                     when the model needs none (dc_contact_history_len = 0).
+/// @param history_len  the number of doubles at `history` (>= dc_contact_history_len).
+/// @param out          receives the forces and torques on success.
+/// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_BUFFER_TOO_SHORT
+///         (history_len), DC_ERR_BUFFER_LAYOUT (history misaligned), DC_ERR_NOT_FINITE (NaN/inf
+///         in the state, dt or the history), DC_ERR_NOT_POSITIVE (radius, mass or dt <= 0),
+///         DC_ERR_NOT_UNIT (n), DC_ERR_RESULT_RANGE. On error `out` and `history` are untouched.
+///
+/// # Safety
+/// `model`, `state` NULL or readable; `out` NULL or writable; `history` NULL or valid for
+/// history_len doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_contact_force(
+    model: *const dc_contact_model,
+    state: *const dc_contact_state,
+    dt: f64,
+    history: *mut f64,
+    history_len: usize,
+    out: *mut dc_contact_result,
+) -> i32 {
+    // SAFETY: null checked; any bit pattern of dc_contact_state is a valid value.
+    let Some(s) = (unsafe { state.as_ref() }) else {
+        return DC_ERR_NULL_POINTER;
+    };
+    // SAFETY: forwarded caller contract.
+    unsafe { force_common(model, ContactState::from(s), dt, history, history_len, out) }
+}
+
+/// dc_contact_force for two spheres given by their centres: n = (x1 - x2)/|x1 - x2| and
+/// overlap = r1 + r2 - |x1 - x2| are computed here; the `n` and `overlap` fields of `state` are
+/// ignored (velocities, radii and masses are read from it). Spheres only (finite r2).
+///
+/// @return as dc_contact_force; DC_ERR_NOT_FINITE also for non-finite x1, x2 or r2 = +INFINITY,
+///         DC_ERR_NOT_POSITIVE for overlapping spheres with coincident centres.
+///
+/// # Safety
+/// As dc_contact_force; `x1`, `x2` NULL or readable for 3 doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_contact_force_spheres(
+    model: *const dc_contact_model,
+    x1: *const f64,
+    x2: *const f64,
+    state: *const dc_contact_state,
+    dt: f64,
+    history: *mut f64,
+    history_len: usize,
+    out: *mut dc_contact_result,
+) -> i32 {
+    if x1.is_null() || x2.is_null() {
+        return DC_ERR_NULL_POINTER;
+    }
+    // SAFETY: null checked; any bit pattern is a valid value.
+    let Some(s) = (unsafe { state.as_ref() }) else {
+        return DC_ERR_NULL_POINTER;
+    };
+    // SAFETY: non-null, readable for 3 doubles (caller contract); unaligned reads.
+    let (a, b) = unsafe {
+        (
+            x1.cast::<[f64; 3]>().read_unaligned(),
+            x2.cast::<[f64; 3]>().read_unaligned(),
+        )
+    };
+    let mut st = ContactState::from(s);
+    if !(a.iter().chain(b.iter()).all(|x| x.is_finite()) && st.r2.is_finite()) {
+        return DC_ERR_NOT_FINITE;
+    }
+    let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+    let dist = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    if !dist.is_finite() {
+        return DC_ERR_RESULT_RANGE;
+    }
+    st.overlap = st.r1 + st.r2 - dist;
+    if dist > 0.0 {
+        st.n = [d[0] / dist, d[1] / dist, d[2] / dist];
+    } else if st.overlap > 0.0 {
+        return DC_ERR_NOT_POSITIVE;
+    } else {
+        st.n = [1.0, 0.0, 0.0];
+    }
+    // SAFETY: forwarded caller contract.
+    unsafe { force_common(model, st, dt, history, history_len, out) }
+}
+
+/// n contacts of one model as a structure of arrays (one dc_contact_force_batch call). Vectors
+/// are 3 consecutive doubles per contact (x, y, z; contact i at [3i, 3i+3)); scalars one double
+/// per contact. Conventions per contact as in dc_contact_state / dc_contact_result.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+#[allow(non_camel_case_types)]
+pub struct dc_contact_batch {
+    /// Number of contacts, > 0.
+    pub n: usize,
+    /// Doubles per contact in `history` (>= dc_contact_history_len); contact i's history is at
+    /// history[i * history_stride].
+    pub history_stride: usize,
+    /// Unit normals, 3n.
+    pub normal: *const f64,
+    /// Overlaps, n.
+    pub overlap: *const f64,
+    /// Velocities of body 1, 3n.
+    pub v1: *const f64,
+    /// Velocities of body 2, 3n.
+    pub v2: *const f64,
+    /// Angular velocities of body 1, 3n (may be NULL for a normal-only model).
+    pub w1: *const f64,
+    /// Angular velocities of body 2, 3n (idem).
+    pub w2: *const f64,
+    /// Radii of body 1, n.
+    pub r1: *const f64,
+    /// Radii of body 2, n (+INFINITY: wall).
+    pub r2: *const f64,
+    /// Masses of body 1, n.
+    pub m1: *const f64,
+    /// Masses of body 2, n (+INFINITY: fixed).
+    pub m2: *const f64,
+    /// History, n * history_stride doubles, updated in place (NULL if the model needs none).
+    pub history: *mut f64,
+    /// Out: normal forces, n.
+    pub f_n: *mut f64,
+    /// Out: forces on body 1, 3n.
+    pub force: *mut f64,
+    /// Out: torques on body 1, 3n (may be NULL for a normal-only model).
+    pub torque1: *mut f64,
+    /// Out: torques on body 2, 3n (idem).
+    pub torque2: *mut f64,
+}
+
+/// Byte range of `count` doubles at `p`: None if misaligned or too large.
+fn span(p: *const f64, count: usize) -> Option<(usize, usize)> {
+    let bytes = count.checked_mul(core::mem::size_of::<f64>())?;
+    if p.is_null() || !p.is_aligned() || bytes > isize::MAX as usize {
+        return None;
+    }
+    let s = p as usize;
+    Some((s, s.checked_add(bytes)?))
+}
+
+/// dc_contact_force for n contacts of one model (group contacts by type pair): one pass per
+/// stage the model has (normal, tangential, rolling, twisting), each a loop with no branch on
+/// the model. Every value is checked first (as dc_contact_force); on any error nothing is
+/// written (outputs and history untouched).
+///
+/// @return DC_OK, DC_ERR_NULL_POINTER (model, batch, a required array), DC_ERR_CONTACT_MODEL_INVALID,
+///         DC_ERR_BUFFER_TOO_SHORT (n = 0, history_stride too small), DC_ERR_BUFFER_LAYOUT (a
+///         misaligned array, n too large, or an output overlapping an input or another output),
+///         DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE, DC_ERR_NOT_UNIT, DC_ERR_RESULT_RANGE.
+///
+/// # Safety
+/// `model`, `batch` NULL or readable; every non-NULL array valid for its documented length.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_contact_force_batch(
+    model: *const dc_contact_model,
+    batch: *const dc_contact_batch,
+    dt: f64,
+) -> i32 {
+    // SAFETY: null checked; any bit pattern of these plain structs is a valid value.
+    let (Some(m), Some(b)) = (unsafe { model.as_ref() }, unsafe { batch.as_ref() }) else {
+        return DC_ERR_NULL_POINTER;
+    };
+    let cm = match model_of(m) {
+        Ok(cm) => cm,
+        Err(e) => return status_of(e),
+    };
+    let len = cm.layout.len;
+    let normal_only = len == 0 && cm.rolling == select::ROLLING_NONE;
+    let n = b.n;
+    let (w1, w2) = if normal_only && (b.w1.is_null() || b.w2.is_null()) {
+        (b.v1, b.v1) // never read by a normal-only model
+    } else {
+        (b.w1, b.w2)
+    };
+    let reqs = [
+        b.normal, b.overlap, b.v1, b.v2, w1, w2, b.r1, b.r2, b.m1, b.m2,
+    ];
+    if reqs.iter().any(|p| p.is_null())
+        || b.f_n.is_null()
+        || b.force.is_null()
+        || (!normal_only && (b.torque1.is_null() || b.torque2.is_null()))
+        || (len > 0 && b.history.is_null())
+    {
+        return DC_ERR_NULL_POINTER;
+    }
+    if n == 0 || b.history_stride < len {
+        return DC_ERR_BUFFER_TOO_SHORT;
+    }
+    let Some(n3) = n.checked_mul(3) else {
+        return DC_ERR_BUFFER_LAYOUT;
+    };
+    let hist_n = if len > 0 {
+        n.checked_mul(b.history_stride)
+    } else {
+        Some(0)
+    };
+    let Some(hist_n) = hist_n else {
+        return DC_ERR_BUFFER_LAYOUT;
+    };
+    let ins = [
+        (b.normal, n3),
+        (b.overlap, n),
+        (b.v1, n3),
+        (b.v2, n3),
+        (w1, n3),
+        (w2, n3),
+        (b.r1, n),
+        (b.r2, n),
+        (b.m1, n),
+        (b.m2, n),
+    ];
+    let t1 = (!b.torque1.is_null()).then_some(b.torque1);
+    let t2 = (!b.torque2.is_null()).then_some(b.torque2);
+    let outs: [Option<(*mut f64, usize)>; 5] = [
+        Some((b.f_n, n)),
+        Some((b.force, n3)),
+        t1.map(|p| (p, n3)),
+        t2.map(|p| (p, n3)),
+        (len > 0).then_some((b.history, hist_n)),
+    ];
+    let mut in_spans = [(0usize, 0usize); 10];
+    for (s, &(p, c)) in in_spans.iter_mut().zip(ins.iter()) {
+        match span(p, c) {
+            Some(x) => *s = x,
+            None => return DC_ERR_BUFFER_LAYOUT,
+        }
+    }
+    let mut out_spans = [None; 5];
+    for (s, o) in out_spans.iter_mut().zip(outs.iter()) {
+        if let Some((p, c)) = o {
+            match span(p.cast_const(), *c) {
+                Some(x) => *s = Some(x),
+                None => return DC_ERR_BUFFER_LAYOUT,
+            }
+        }
+    }
+    let disjoint = |a: (usize, usize), b: (usize, usize)| a.1 <= b.0 || b.1 <= a.0;
+    for (i, o) in out_spans.iter().enumerate() {
+        let Some(o) = *o else { continue };
+        if in_spans.iter().any(|&s| !disjoint(o, s))
+            || out_spans
+                .iter()
+                .skip(i + 1)
+                .flatten()
+                .any(|&s| !disjoint(o, s))
+        {
+            return DC_ERR_BUFFER_LAYOUT;
+        }
+    }
+    let body = || {
+        // SAFETY: every pointer is non-null, aligned and valid for its length (caller contract),
+        // byte sizes fit isize (checked); outputs overlap no input and no other output
+        // (checked), so the shared and the exclusive slices never alias.
+        unsafe {
+            let sl = |p: *const f64, c: usize| core::slice::from_raw_parts(p, c);
+            let inp = BatchIn {
+                normal: sl(b.normal, n3),
+                overlap: sl(b.overlap, n),
+                v1: sl(b.v1, n3),
+                v2: sl(b.v2, n3),
+                w1: sl(w1, n3),
+                w2: sl(w2, n3),
+                r1: sl(b.r1, n),
+                r2: sl(b.r2, n),
+                m1: sl(b.m1, n),
+                m2: sl(b.m2, n),
+            };
+            let mut empty: [f64; 0] = [];
+            let mut o = BatchOut {
+                f_n: core::slice::from_raw_parts_mut(b.f_n, n),
+                force: core::slice::from_raw_parts_mut(b.force, n3),
+                torque1: t1.map(|p| core::slice::from_raw_parts_mut(p, n3)),
+                torque2: t2.map(|p| core::slice::from_raw_parts_mut(p, n3)),
+                history: if len > 0 {
+                    core::slice::from_raw_parts_mut(b.history, hist_n)
+                } else {
+                    &mut empty
+                },
+                stride: b.history_stride.max(1),
+            };
+            contact_force_batch(&cm, &inp, dt, &mut o)
+        }
+    };
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(body)) {
+        Ok(Ok(())) => DC_OK,
+        Ok(Err(e)) => status_of(e),
+        Err(_) => DC_ERR_INTERNAL,
+    }
+}
