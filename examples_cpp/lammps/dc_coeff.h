@@ -17,10 +17,21 @@
  *                                      and density rho_ref colliding head-on at v_ref rebound with e
  *   limit_damping                      clamp attractive normal force (also a pair_style keyword);
  *                                      alpha then comes from the force-zero calibration
+ *   tangential mindlin NULL e_t mu     Mindlin k_t = 8 G* a from E, nu; tangential restitution e_t
+ *                                      in the sticking regime (1: undamped), Coulomb limit mu
+ *   tangential linear_history k_t e_t mu    fixed k_t [force/length]
+ *   rolling sds k_r eta_r mu_r         elastic-plastic spring-dashpot (EPSD), limit mu_r R* Fn;
+ *                                      k_r = NULL or 0: Ai et al.'s rule from the normal stiffness
+ *   rolling constant mu_r              constant torque mu_r R* Fn against the relative rolling
+ *   twisting sds k_tw eta_tw mu_tw     twisting spring-dashpot-slider, limit mu_tw Fn
+ *
+ * With any tangential/rolling/twisting keyword the contact is demcontact's full contact
+ * (dc_contact_model_init / dc_contact_force, per-contact history); without, the normal law alone
+ * (dc_pair / dc_normal_force, no history). The full contact needs the Hertz exponent 1.5.
  *
  * Mixing (pair_coeff I J not given, I != J): each body keeps its own type's E and nu (combined
- * exactly into E*); e, and the viscoelastic A, are the geometric means of the two types' values;
- * the exponent and damping law must agree.
+ * exactly into E*); e, A, e_t, mu, k_t, mu_r, k_r, eta_r, mu_tw, k_tw, eta_tw are the geometric
+ * means of the two types' values; the exponent and the sub-model choices must agree.
  */
 #ifndef DEMCONTACT_LAMMPS_COEFF_H
 #define DEMCONTACT_LAMMPS_COEFF_H
@@ -29,7 +40,7 @@
 #include "lammps.h"
 #include "utils.h"
 
-#include <demcontact.h>
+#include "dc_include.h"
 #include "tsuji_force.h"
 
 #include <cmath>
@@ -50,7 +61,50 @@ struct Coeff {
     double A = 0;                              // viscoelastic damping constant [s] (calibrated)
     bool clamp = false;                        // limit_damping
     bool set = false;
+    // full contact (issue 13 sub-models); NaN = unset
+    int tangential = DC_TANGENTIAL_NONE, rolling = DC_ROLLING_NONE, twisting = DC_TWISTING_NONE;
+    double mu = 0, k_t = NAN, e_t = 1, mu_r = 0, k_r = 0, eta_r = 0, mu_tw = 0, k_tw = NAN, eta_tw = 0;
+    bool full() const
+    {
+        return tangential != DC_TANGENTIAL_NONE || rolling != DC_ROLLING_NONE || twisting != DC_TWISTING_NONE;
+    }
 };
+
+/* dc_contact_spec of a contact between materials a (body 1) and b (body 2); the per-pair values
+   (e, A, friction...) from m. */
+inline dc_contact_spec full_spec(const Coeff &a, const Coeff &b, const Coeff &m)
+{
+    dc_contact_spec s;
+    dc_contact_spec_init(&s);
+    const bool clamp = a.clamp || b.clamp;
+    s.criterion = clamp ? DC_END_FORCE : DC_END_OVERLAP;
+    s.E1 = a.E;
+    s.nu1 = a.nu;
+    s.E2 = b.E;
+    s.nu2 = b.nu;
+    if (m.damping == DAMP_VISCOELASTIC) {
+        s.normal = DC_NORMAL_VISCOELASTIC;
+        s.damping = DC_DAMPING_NONE;
+        s.visco_A = m.A;
+    } else {
+        s.normal = DC_NORMAL_HERTZ;
+        s.damping = DC_DAMPING_RESTITUTION;
+        s.e_n = m.e;
+    }
+    s.tangential = m.tangential;
+    s.rolling = m.rolling;
+    s.twisting = m.twisting;
+    s.mu = m.mu;
+    s.k_t = m.k_t;
+    s.e_t = m.e_t;
+    s.mu_r = m.mu_r;
+    s.k_r = m.k_r;
+    s.eta_r = m.eta_r;
+    s.mu_tw = m.mu_tw;
+    s.k_tw = m.k_tw;
+    s.eta_tw = m.eta_tw;
+    return s;
+}
 
 /* The viscoelastic damping constant A for which two equal spheres (r_ref, rho_ref) of material
    (E, nu) colliding at v_ref rebound with e under the criterion of `clamp`. */
@@ -120,6 +174,44 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
             } else {
                 error->all(FLERR, "{}: unknown damping law '{}' (restitution or viscoelastic)", what, law);
             }
+        } else if (k == "tangential") {
+            const std::string law = i + 1 < narg ? arg[i + 1] : "";
+            if (law == "mindlin") {
+                c.tangential = DC_TANGENTIAL_MINDLIN;
+                if (i + 2 >= narg || std::strcmp(arg[i + 2], "NULL") != 0)
+                    error->all(FLERR, "{}: tangential mindlin takes k_t from E and nu: write 'tangential mindlin NULL e_t mu'", what);
+            } else if (law == "linear_history") {
+                c.tangential = DC_TANGENTIAL_LINEAR;
+                c.k_t = num(i + 2, "k_t");
+            } else {
+                error->all(FLERR, "{}: unknown tangential model '{}' (mindlin or linear_history)", what, law);
+            }
+            c.e_t = num(i + 3, "e_t");
+            c.mu = num(i + 4, "mu");
+            i += 5;
+        } else if (k == "rolling") {
+            const std::string law = i + 1 < narg ? arg[i + 1] : "";
+            if (law == "sds") {
+                c.rolling = DC_ROLLING_EPSD;
+                c.k_r = (i + 2 < narg && std::strcmp(arg[i + 2], "NULL") == 0) ? 0.0 : num(i + 2, "k_r");
+                c.eta_r = num(i + 3, "eta_r");
+                c.mu_r = num(i + 4, "mu_r");
+                i += 5;
+            } else if (law == "constant") {
+                c.rolling = DC_ROLLING_CONSTANT;
+                c.mu_r = num(i + 2, "mu_r");
+                i += 3;
+            } else {
+                error->all(FLERR, "{}: unknown rolling model '{}' (sds or constant)", what, law);
+            }
+        } else if (k == "twisting") {
+            if (i + 1 >= narg || std::strcmp(arg[i + 1], "sds") != 0)
+                error->all(FLERR, "{}: unknown twisting model (sds k_tw eta_tw mu_tw)", what);
+            c.twisting = DC_TWISTING_SDS;
+            c.k_tw = num(i + 2, "k_tw");
+            c.eta_tw = num(i + 3, "eta_tw");
+            c.mu_tw = num(i + 4, "mu_tw");
+            i += 5;
         } else {
             error->all(FLERR, "{}: unknown keyword '{}'", what, k);
         }
@@ -148,51 +240,108 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
         s = viscoelastic_A(c, c.clamp, &c.A);
         if (s != DC_OK) reject("e (viscoelastic calibration)", c.e, s);
     }
+    if (c.full()) {
+        if (c.p != 1.5) error->all(FLERR, "{}: tangential/rolling/twisting need the Hertz exponent 1.5 (got {})", what, c.p);
+        // the library validates the whole spec; on failure, name the first parameter that fails
+        // on its own (each substituted into a spec known to be valid)
+        dc_contact_model cm;
+        dc_contact_spec sp = full_spec(c, c, c);
+        s = dc_contact_model_init(&sp, &cm);
+        if (s != DC_OK) {
+            Coeff ok = c;
+            ok.mu = 0.5;
+            ok.k_t = 1.0;
+            ok.e_t = 1.0;
+            ok.mu_r = 0.1;
+            ok.k_r = 0.0;
+            ok.eta_r = 0.0;
+            ok.mu_tw = 0.1;
+            ok.k_tw = 1.0;
+            ok.eta_tw = 0.0;
+            struct { const char *name; double Coeff::*field; } fields[] = {
+                {"mu", &Coeff::mu},       {"k_t", &Coeff::k_t},     {"e_t", &Coeff::e_t},
+                {"mu_r", &Coeff::mu_r},   {"k_r", &Coeff::k_r},     {"eta_r", &Coeff::eta_r},
+                {"mu_tw", &Coeff::mu_tw}, {"k_tw", &Coeff::k_tw},   {"eta_tw", &Coeff::eta_tw}};
+            for (auto &f : fields) {
+                Coeff t = ok;
+                t.*(f.field) = c.*(f.field);
+                dc_contact_spec ts = full_spec(t, t, t);
+                const int32_t st = dc_contact_model_init(&ts, &cm);
+                if (st != DC_OK) reject(f.name, c.*(f.field), st);
+            }
+            error->all(FLERR, "{}: contact model rejected by demcontact: {}", what, dc_status_str(s));
+        }
+    }
     c.set = true;
 }
 
-/* The calibrated normal law of one contact between materials a and b (a == b for one type). */
-inline int32_t make_pair(const Coeff &a, const Coeff &b, double e, double A, dc_pair *out)
-{
-    const bool clamp = a.clamp || b.clamp;
-    if (a.damping == DAMP_VISCOELASTIC)
-        return dc_pair_viscoelastic(a.E, a.nu, b.E, b.nu, A, clamp ? DC_END_FORCE : DC_END_OVERLAP, out);
-    return demcontact_sim::contact_setup(a.E, a.nu, b.E, b.nu, e, a.p, clamp, out);
-}
-
-/* One contact's kinematics, in the layout of demcontact's full-contact state: n points from body 2
-   to body 1; a wall is body 2 with r2 = m2 = +inf. */
-struct State {
-    double n[3];
-    double overlap;
-    double v1[3], v2[3];
-    double w1[3], w2[3];
-    double r1, r2, m1, m2;
+/* The model of one type pair: the normal law alone (dc_pair, no history) or demcontact's full
+   contact (dc_contact_model, history of nh doubles per contact). */
+struct Model {
+    bool full = false;
+    int nh = 0;
+    dc_pair pair{};
+    dc_contact_model cm{};
 };
 
+/* Build the model of a contact between materials a (body 1) and b (body 2), per-pair values from m. */
+inline int32_t make_model(const Coeff &a, const Coeff &b, const Coeff &m, Model &out)
+{
+    const bool clamp = a.clamp || b.clamp;
+    out.full = m.full();
+    if (out.full) {
+        dc_contact_spec sp = full_spec(a, b, m);
+        int32_t s = dc_contact_model_init(&sp, &out.cm);
+        if (s != DC_OK) return s;
+        size_t len = 0;
+        s = dc_contact_history_len(&out.cm, &len);
+        out.nh = static_cast<int>(len);
+        out.pair = out.cm.normal;
+        return s;
+    }
+    out.nh = 0;
+    if (m.damping == DAMP_VISCOELASTIC)
+        return dc_pair_viscoelastic(a.E, a.nu, b.E, b.nu, m.A, clamp ? DC_END_FORCE : DC_END_OVERLAP, &out.pair);
+    return demcontact_sim::contact_setup(a.E, a.nu, b.E, b.nu, m.e, a.p, clamp, &out.pair);
+}
+
+/* One contact's kinematics (demcontact's dc_contact_state): n points from body 2 to body 1; a wall
+   is body 2 with r2 = m2 = +inf. */
+typedef dc_contact_state State;
+
 struct Result {
-    double force[3];   // on body 1
+    double force[3];   // on body 1 (body 2: minus)
     double torque1[3]; // on body 1
     double torque2[3]; // on body 2
 };
 
-/* The one per-contact call of both styles. Normal force only: F n on body 1. `history` (not read:
-   the normal law has none) is the caller-owned per-contact storage, zero for a new contact. */
-inline void contact_eval(const dc_pair &pair, const State &s, double /*dt*/, double * /*history*/, Result &out)
+/* THE per-contact call of both styles (pair and wall). `history`: the caller-owned nh doubles of
+   this contact, zero for a new contact, advanced in place. Returns the library status (the normal
+   path cannot fail). */
+inline int32_t contact_eval(const Model &m, const State &s, double dt, double *history, Result &out)
 {
+    if (m.full) {
+        dc_contact_result r;
+        const int32_t st = dc_contact_force(&m.cm, &s, dt, history, static_cast<size_t>(m.nh), &r);
+        if (st != DC_OK) return st;
+        for (int k = 0; k < 3; k++) {
+            out.force[k] = r.force[k];
+            out.torque1[k] = r.torque1[k];
+            out.torque2[k] = r.torque2[k];
+        }
+        return DC_OK;
+    }
     const double vn = (s.v2[0] - s.v1[0]) * s.n[0] + (s.v2[1] - s.v1[1]) * s.n[1] + (s.v2[2] - s.v1[2]) * s.n[2];
     const double reff = std::isinf(s.r2) ? s.r1 : s.r1 * s.r2 / (s.r1 + s.r2);
     const double meff = std::isinf(s.m2) ? s.m1 : s.m1 * s.m2 / (s.m1 + s.m2);
-    const double F = demcontact_sim::contact_force(pair, s.overlap, vn, reff, meff);
+    const double F = demcontact_sim::contact_force(m.pair, s.overlap, vn, reff, meff);
     for (int k = 0; k < 3; k++) {
         out.force[k] = F * s.n[k];
         out.torque1[k] = 0.0;
         out.torque2[k] = 0.0;
     }
+    return DC_OK;
 }
-
-/* Doubles of per-contact history the model needs (0: normal law only). */
-inline int history_len() { return 0; }
 
 } // namespace demcontact_lammps
 

@@ -41,7 +41,7 @@ public:
         if (w == narg) error->all(FLERR, "fix demcontact/wall: missing wall style (xplane, yplane, zplane, zcylinder)");
         Coeff c;
         parse_coeff(lmp, error, fmt::format("fix {} demcontact/wall", id), w - 3, arg + 3, false, c);
-        const int32_t s = make_pair(c, c, c.e, c.A, &pair);
+        const int32_t s = make_model(c, c, c, model);
         if (s != DC_OK) error->all(FLERR, "fix {} demcontact/wall: {}", id, dc_status_str(s));
         const std::string ws = arg[w];
         if (ws == "zcylinder") {
@@ -59,7 +59,7 @@ public:
             if (has_hi) hi = utils::numeric(FLERR, arg[w + 2], false, lmp);
             if (!has_lo && !has_hi) error->all(FLERR, "fix demcontact/wall: both {} walls NULL", ws);
         }
-        nh = history_len();
+        nh = model.nh;
         if (nh > 32) error->all(FLERR, "fix demcontact/wall: history of {} doubles exceeds 32", nh);
         if (nh > 0) {
             create_attribute = 1;
@@ -146,7 +146,9 @@ public:
                     }
                 }
                 Result out;
-                contact_eval(pair, s, dt, h, out);
+                const int32_t st = contact_eval(model, s, dt, h, out);
+                if (st != DC_OK)
+                    error->one(FLERR, "fix {} demcontact/wall: atom {}: {}", id, atom->tag[i], dc_status_str(st));
                 for (int k = 0; k < 3; k++) {
                     f[i][k] += out.force[k];
                     torque[i][k] += out.torque1[k];
@@ -204,7 +206,7 @@ private:
     int dim = 2;
     bool has_lo = false, has_hi = false;
     double lo = 0.0, hi = 0.0, cyl_r = 0.0;
-    dc_pair pair{};
+    Model model;
     int nh = 0;
     double **hist = nullptr;
     int **touch = nullptr;

@@ -52,7 +52,7 @@ PairDemcontact::~PairDemcontact()
         memory->destroy(setflag);
         memory->destroy(cutsq);
         delete[] coeffs;
-        delete[] pairs;
+        delete[] models;
         delete[] onerad;
     }
     if (history && modify->get_fix_by_id("DEMCONTACT_HISTORY")) modify->delete_fix("DEMCONTACT_HISTORY");
@@ -101,13 +101,22 @@ void PairDemcontact::init_style()
     if (!atom->tag_enable) error->all(FLERR, "pair_style demcontact requires atom IDs");
     neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_NEWTON_OFF);
 
-    // history storage (created once; survives between runs)
-    nh = history_len();
-    if (nh > 0 && !history) {
+    build_models();
+    // history storage (created once, kept between runs while its size fits)
+    if (nh > 0) {
         auto f = modify->get_fix_by_id("DEMCONTACT_HISTORY");
-        if (!f) f = modify->add_fix(fmt::format("DEMCONTACT_HISTORY all demcontact/history {} {}", nh, maxpartner));
-        history = dynamic_cast<FixDemcontactHistory *>(f);
-        if (!history) error->all(FLERR, "pair demcontact: fix DEMCONTACT_HISTORY is not a demcontact/history fix");
+        auto h = dynamic_cast<FixDemcontactHistory *>(f);
+        if (f && (!h || h->nh != nh || h->maxp != maxpartner)) {
+            modify->delete_fix("DEMCONTACT_HISTORY"); // the model changed: contact histories restart at zero
+            h = nullptr;
+        }
+        if (!h)
+            h = dynamic_cast<FixDemcontactHistory *>(
+                modify->add_fix(fmt::format("DEMCONTACT_HISTORY all demcontact/history {} {}", nh, maxpartner)));
+        if (!h) error->all(FLERR, "pair demcontact: could not create its fix demcontact/history");
+        history = h;
+    } else {
+        history = nullptr;
     }
 
     // Largest radius per type: atoms present now and particles inserted later by fix pour/deposit.
@@ -128,35 +137,60 @@ void PairDemcontact::init_style()
     delete[] all;
 }
 
-double PairDemcontact::init_one(int i, int j)
+/* Every type pair's model, both body orders (body 1 = the atom of smaller ID may be of either
+   type), and nh = the largest history any of them needs. */
+void PairDemcontact::build_models()
 {
-    const int N = n1();
-    dc_pair &pr = pairs[i * N + j];
-    int32_t s;
-    if (setflag[i][j]) {
-        const Coeff &c = coeffs[i * N + j];
-        s = make_pair(c, c, c.e, c.A, &pr);
-    } else { // mixed: each body its own type's material
-        if (!setflag[i][i] || !setflag[j][j]) error->all(FLERR, "pair_style demcontact: pair_coeff {} {} missing", i, j);
-        const Coeff &a = coeffs[i * N + i], &b = coeffs[j * N + j];
-        if (a.p != b.p || a.damping != b.damping)
-            error->all(FLERR, "pair_style demcontact: types {} and {} differ in exponent or damping law: "
-                              "give pair_coeff {} {} explicitly", i, j, i, j);
-        Coeff &m = coeffs[i * N + j];
-        m = a;
-        m.e = std::sqrt(a.e * b.e);
-        m.A = std::sqrt(a.A * b.A);
-        s = make_pair(a, b, m.e, m.A, &pr);
+    const int N = n1(), n = atom->ntypes;
+    nh = 0;
+    for (int i = 1; i <= n; i++)
+        for (int j = i; j <= n; j++) {
+            Coeff &m = coeffs[i * N + j];
+            const Coeff *a = &m, *b = &m;
+            if (!setflag[i][j]) { // mixed: each body its own type's material
+                if (!setflag[i][i] || !setflag[j][j]) error->all(FLERR, "pair_style demcontact: pair_coeff {} {} missing", i, j);
+                a = &coeffs[i * N + i];
+                b = &coeffs[j * N + j];
+                if (a->p != b->p || a->damping != b->damping || a->tangential != b->tangential ||
+                    a->rolling != b->rolling || a->twisting != b->twisting)
+                    error->all(FLERR, "pair_style demcontact: types {} and {} differ in exponent or sub-models: "
+                                      "give pair_coeff {} {} explicitly", i, j, i, j);
+                const Coeff A = *a, B = *b;
+                m = A;
+                auto gm = [](double x, double y) { return std::sqrt(x * y); };
+                m.e = gm(A.e, B.e);
+                m.A = gm(A.A, B.A);
+                m.e_t = gm(A.e_t, B.e_t);
+                m.mu = gm(A.mu, B.mu);
+                m.k_t = gm(A.k_t, B.k_t);
+                m.mu_r = gm(A.mu_r, B.mu_r);
+                m.k_r = gm(A.k_r, B.k_r);
+                m.eta_r = gm(A.eta_r, B.eta_r);
+                m.mu_tw = gm(A.mu_tw, B.mu_tw);
+                m.k_tw = gm(A.k_tw, B.k_tw);
+                m.eta_tw = gm(A.eta_tw, B.eta_tw);
+                a = &coeffs[i * N + i];
+                b = &coeffs[j * N + j];
+            }
+            for (int order = 0; order < 2; order++) {
+                const int s1 = order ? j : i, s2 = order ? i : j;
+                const int32_t s = make_model(order ? *b : *a, order ? *a : *b, m, models[s1 * N + s2]);
+                if (s != DC_OK)
+                    error->all(FLERR, "pair_style demcontact: types {} {} (e = {}): {}", s1, s2, m.e, dc_status_str(s));
+                nh = std::max(nh, models[s1 * N + s2].nh);
+            }
+        }
+    if (comm->me == 0) {
+        const Model &m11 = models[N + 1];
+        utils::logmesg(lmp, "pair demcontact: {} {}, limit_damping {}, alpha(1,1) = {:.15g}, A(1,1) = {:.6g} s, "
+                            "history {} doubles per contact\n",
+                       m11.full ? "full contact" : "normal only",
+                       m11.pair.model == DC_MODEL_VISCOELASTIC ? "viscoelastic" : "restitution",
+                       m11.pair.clamp ? "on" : "off", m11.pair.alpha, m11.pair.damping_a, nh);
     }
-    if (s != DC_OK)
-        error->all(FLERR, "pair_style demcontact: types {} {} (e = {}): {}", i, j, coeffs[i * N + j].e, dc_status_str(s));
-    pairs[j * N + i] = pr;
-    if (i == 1 && j == 1 && comm->me == 0)
-        utils::logmesg(lmp, "pair demcontact: {} limit_damping {}, alpha(1,1) = {:.15g}, A(1,1) = {:.6g} s\n",
-                       pr.model == DC_MODEL_VISCOELASTIC ? "viscoelastic" : "restitution",
-                       pr.clamp ? "on" : "off", pr.alpha, pr.damping_a);
-    return onerad[i] + onerad[j];
 }
+
+double PairDemcontact::init_one(int i, int j) { return onerad[i] + onerad[j]; }
 
 void PairDemcontact::compute(int eflag, int vflag)
 {
@@ -216,7 +250,9 @@ void PairDemcontact::compute(int eflag, int vflag)
                 }
             }
             Result out;
-            contact_eval(pairs[type[a] * N + type[b]], s, dt, h, out);
+            const int32_t st = contact_eval(models[type[a] * N + type[b]], s, dt, h, out);
+            if (st != DC_OK)
+                error->one(FLERR, "pair demcontact: atoms {} {}: {}", tag[a], tag[b], dc_status_str(st));
             if (history && sj >= 0 && advance) {
                 const double *hi = history->history(i, si);
                 std::copy(hi, hi + nh, history->history(j, sj));
@@ -250,7 +286,7 @@ void PairDemcontact::allocate()
         for (int j = i; j <= n; j++) setflag[i][j] = 0;
     memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
     coeffs = new Coeff[(n + 1) * (n + 1)];
-    pairs = new dc_pair[(n + 1) * (n + 1)]();
+    models = new Model[(n + 1) * (n + 1)]();
     onerad = new double[n + 1]();
 }
 

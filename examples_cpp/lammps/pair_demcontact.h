@@ -26,12 +26,13 @@ public:
 private:
     int n1() const { return atom->ntypes + 1; }
     void allocate();
+    void build_models();
 
     bool clamp = false;
     int maxpartner = 32;
     int nh = 0;
     Coeff *coeffs = nullptr; // (ntypes+1)^2, [i*(ntypes+1)+j], i <= j given or mixed
-    dc_pair *pairs = nullptr; // calibrated law per type pair, both orders
+    Model *models = nullptr;  // calibrated model per type pair [type1*(ntypes+1)+type2], both orders
     double *onerad = nullptr; // largest radius per type (present and future particles)
     FixDemcontactHistory *history = nullptr;
     std::vector<unsigned char> touched;

@@ -33,13 +33,15 @@
 #include "comm.h"
 #include "error.h"
 #include "force.h"
+#include "update.h"
 
-#include <demcontact.h>
+#include "dc_include.h"
 #include "tsuji_force.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -54,7 +56,7 @@ class NormalModel<DEMCONTACT> : public NormalModelBase
 {
 public:
     NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c)
-        : NormalModelBase(lmp, hsetup, c), Y(NULL), nu(NULL), Yeff(NULL), Geff(NULL), coeffRest(NULL),
+        : NormalModelBase(lmp, hsetup, c), owner(c), Y(NULL), nu(NULL), Yeff(NULL), Geff(NULL), coeffRest(NULL),
           tangential_damping(true), limitForce(false), exponent(1.5), ntypes(0) {}
 
     void registerSettings(Settings &settings)
@@ -70,7 +72,36 @@ public:
         settings.registerDoubleSetting("densityRef", rho_ref, 0.0);
     }
 
-    void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+    // The tangential/rolling models of the same contact model find this normal model here.
+    void postSettings(IContactHistorySetup *, ContactModelBase *) { demcontact_normals()[owner] = this; }
+    ~NormalModel()
+    {
+        if (demcontact_normals().count(owner) && demcontact_normals()[owner] == this) demcontact_normals().erase(owner);
+    }
+
+    /* The normal part of a full-contact spec for types i, j (body 1 of type i): the same law as
+       this model's force (Hertz or viscoelastic Hertz; not other exponents). */
+    bool full_spec(int i, int j, dc_contact_spec &s) const
+    {
+        if (exponent != 1.5) return false;
+        const dc_pair &pr = pairs[i * (ntypes + 1) + j];
+        dc_contact_spec_init(&s);
+        s.criterion = limitForce ? DC_END_FORCE : DC_END_OVERLAP;
+        s.E1 = Y[i];
+        s.nu1 = nu[i];
+        s.E2 = Y[j];
+        s.nu2 = nu[j];
+        if (viscoelastic) {
+            s.normal = DC_NORMAL_VISCOELASTIC;
+            s.damping = DC_DAMPING_NONE;
+            s.visco_A = pr.damping_a;
+        } else {
+            s.normal = DC_NORMAL_HERTZ;
+            s.damping = DC_DAMPING_RESTITUTION;
+            s.e_n = coeffRest[i][j];
+        }
+        return true;
+    }
 
     void connectToProperties(PropertyRegistry &registry)
     {
@@ -92,6 +123,11 @@ public:
     }
 
     double stressStrainExponent() { return exponent; }
+    static std::map<const void *, const NormalModel *> &demcontact_normals()
+    {
+        static std::map<const void *, const NormalModel *> m;
+        return m;
+    }
 
     void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
@@ -232,6 +268,7 @@ private:
         ntypes = n;
     }
 
+    const void *owner;
     double *Y, *nu;
     double **Yeff, **Geff, **coeffRest;
     std::vector<double> beta; // LIGGGHTS' betaeff = ln e / sqrt(ln^2 e + pi^2), per type pair
@@ -243,6 +280,8 @@ private:
 
 } // namespace ContactModels
 } // namespace LIGGGHTS
+
+#include "friction_models_demcontact.h"
 
 namespace {
 
@@ -281,6 +320,12 @@ struct RegisterDemcontact {
         register_combination<TANGENTIAL_HISTORY, ROLLING_OFF>();
         register_combination<TANGENTIAL_HISTORY, ROLLING_CDT>();
         register_combination<TANGENTIAL_HISTORY, ROLLING_EPSD2>();
+        // demcontact's own tangential and rolling models (friction_models_demcontact.h)
+        f.addTangentialModel("demcontact", DEMCONTACT_TANGENTIAL);
+        f.addRollingModel("demcontact", DEMCONTACT_ROLLING);
+        register_combination<DEMCONTACT_TANGENTIAL, ROLLING_OFF>();
+        register_combination<DEMCONTACT_TANGENTIAL, DEMCONTACT_ROLLING>();
+        register_combination<DEMCONTACT_TANGENTIAL, ROLLING_CDT>();
     }
 };
 

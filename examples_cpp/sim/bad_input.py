@@ -24,6 +24,7 @@ import harness as H  # noqa: E402
 
 # status codes (include/demcontact.h)
 NOT_POSITIVE, NEGATIVE, RESTITUTION, EXPONENT = 6105, 6106, 6103, 6104
+FULL = "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.0 0.5 rolling sds NULL 0 0.1"
 
 
 def status_texts(plugin):
@@ -56,6 +57,13 @@ LAMMPS_CASES = [
     ("unknown damping law", "", "hertz/material 5e6 0.5 0.3 damping tsuji", None, "'tsuji'", None),
     ("viscoelastic v_ref <= 0", "", "hertz/material 5e6 0.5 0.3 damping viscoelastic 0 0.001 2500", None,
      "v_ref = 0", NOT_POSITIVE),
+    ("mu < 0", "", "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.0 -0.5", None, "mu = -0.5", NEGATIVE),
+    ("e_t > 1", "", "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.5 0.5", None, "e_t = 1.5", RESTITUTION),
+    ("mu_r < 0", "", "hertz/material 5e6 0.5 0.3 rolling sds NULL 0 -0.1", None, "mu_r = -0.1", NEGATIVE),
+    ("unknown tangential model", "", "hertz/material 5e6 0.5 0.3 tangential sticky NULL 1 0.5", None,
+     "'sticky'", None),
+    ("wall mu < 0", "", FULL, "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.0 -0.2 zplane -0.01 NULL",
+     "mu = -0.2", NEGATIVE),
     ("wall e > 1", "", LAMMPS_GOOD, "hertz/material 5e6 1.2 0.3 zplane -0.01 NULL", "e = 1.2", RESTITUTION),
     ("wall E < 0", "", LAMMPS_GOOD, "hertz/material -1 0.5 0.3 zplane -0.01 NULL", "E = -1", NOT_POSITIVE),
     ("wall unknown keyword", "", LAMMPS_GOOD, "hertz/material 5e6 0.5 0.3 sticky zplane -0.01 NULL", "'sticky'", None),
@@ -77,7 +85,7 @@ def lammps_deck(plugin, style, coeff, wall):
 
 
 # ------------------------------------------------------------------ LIGGGHTS
-LIGGGHTS_GOOD = dict(Y="5e6", nu="0.3", e="0.5", mu="0.5", extra="")
+LIGGGHTS_GOOD = dict(Y="5e6", nu="0.3", e="0.5", mu="0.5", mur="0.1", extra="")
 LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
     ("youngsModulus = 0", dict(Y="0"), "youngsModulus of type 1 = 0", NOT_POSITIVE),
     ("youngsModulus < 0", dict(Y="-5e6"), "youngsModulus of type 1 = -5e+06", NOT_POSITIVE),
@@ -88,12 +96,16 @@ LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
     ("exponent < 1", dict(extra="exponent 0.5"), "exponent (all types) of type 1 = 0.5", EXPONENT),
     ("viscoelastic without rRef", dict(extra="viscoelastic on densityRef 2500"),
      "rRef (set it with viscoelastic on) of type 1 = 0", NOT_POSITIVE),
+    ("coefficientFriction < 0", dict(mu="-0.5"), "coefficientFriction = -0.5", NEGATIVE),
+    ("coefficientRollingFriction < 0", dict(mur="-0.1"), "coefficientRollingFriction = -0.1", NEGATIVE),
+    ("tangentialRestitution > 1", dict(extra="tangentialRestitution 1.5"), "tangentialRestitution = 1.5",
+     RESTITUTION),
     ("unknown keyword", dict(extra="frobnicate on"), "'frobnicate'", None),
 ]
 
 
 def liggghts_deck(v):
-    model = ("model demcontact tangential history " + v["extra"]).strip()
+    model = ("model demcontact tangential demcontact rolling_friction demcontact " + v["extra"]).strip()
     L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
          "communicate single vel yes", "units si",
          "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box", "create_box 1 box",
@@ -102,9 +114,11 @@ def liggghts_deck(v):
          "fix m2 all property/global poissonsRatio peratomtype " + v["nu"],
          "fix m3 all property/global coefficientRestitution peratomtypepair 1 " + v["e"],
          "fix m4 all property/global coefficientFriction peratomtypepair 1 " + v["mu"],
+         "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 " + v["mur"],
          "pair_style gran " + model, "pair_coeff * *",
          # the wall takes its own model settings: the plain model here
-         "fix w all wall/gran model demcontact tangential history primitive type 1 zplane -0.01",
+         "fix w all wall/gran model demcontact tangential demcontact rolling_friction demcontact "
+         "primitive type 1 zplane -0.01",
          "create_atoms 1 single 0 0 0 units box", "create_atoms 1 single 0.00199 0 0 units box",
          "set group all diameter 0.002 density 2500", "velocity all set 0.1 0 0",
          "fix integr all nve/sphere", "timestep 1e-7", "thermo 100", "thermo_style custom step ke",
@@ -134,7 +148,7 @@ def main():
         exe = lammps_runs.find_lmp(a.lmp)
         env = H.mpi_env()
         cases = [(lab, lammps_deck(a.plugin, st, co, wa), bad, code) for lab, st, co, wa, bad, code in LAMMPS_CASES]
-        control = lammps_deck(a.plugin, "", LAMMPS_GOOD, "hertz/material 5e6 0.5 0.3 zplane -0.01 NULL")
+        control = lammps_deck(a.plugin, "", FULL, FULL + " zplane -0.01 NULL")
         cmd = [exe, "-in", "in.deck", "-log", "none"]
     else:
         exe, env = H.liggghts_cmd(a.plugin)

@@ -23,12 +23,14 @@ energy; wall time from the code's "Loop time". Timing: the settled bed of the bu
 
 Models:
   LIGGGHTS builtin   pair_style gran model hertz tangential history rolling_friction cdt
-  LIGGGHTS ours      pair_style gran model demcontact tangential history rolling_friction cdt
-  LAMMPS builtin     pair_style granular, hertz/material ... tangential mindlin NULL 1.0 mu
-                     rolling sds k_r gamma_r mu_r damping coeff_restitution (+ fix wall/gran granular)
-  LAMMPS ours        pair_style demcontact, hertz/material E e nu (+ fix demcontact/wall)
-                     (frictionless until the full contact is wired: compared with the builtin
-                      frictionless `tangential linear_nohistory 0 0` instead, see FRICTIONLESS)
+  LIGGGHTS ours      pair_style gran model demcontact tangential demcontact rolling_friction demcontact
+                     tangentialRestitution 0.5 rollingConstant on   (constant rolling torque, as cdt)
+  LAMMPS builtin     pair_style granular, hertz/material E e nu tangential mindlin NULL 1.0 mu
+                     rolling sds 3.0 0 mu_r damping coeff_restitution (+ fix wall/gran granular)
+  LAMMPS ours        pair_style demcontact, hertz/material E e nu tangential mindlin NULL 0.5 mu
+                     rolling sds NULL 0 mu_r (EPSD, Ai's stiffness rule) (+ fix demcontact/wall)
+The tangential damping differs in form (builtin: the normal damping coefficient; ours: e_t = 0.5
+calibrated in the sticking regime), so "same input" means same materials, e, mu, mu_r.
 Exit 77 (ctest SKIP) when the simulator is not installed.
 """
 import argparse
@@ -51,7 +53,9 @@ TOL_Z = 0.03        # relative mean height of the centres
 TOL_CN = 0.35       # absolute mean coordination number in the window
 # --smoke (300 spheres, ~45 in the window): statistical noise is larger, tolerances too
 SMOKE_TOL = dict(phi=0.08, z=0.05, cn=0.6)
-FRICTIONLESS = True  # LAMMPS: our pair style has no tangential model yet (issue 13)
+FRICTIONLESS = False  # True: LAMMPS runs without friction/rolling (both models)
+E_T = 0.5            # ours: tangential restitution in the sticking regime (= e_n)
+K_ROLL = 3.0         # LAMMPS builtin sds rolling stiffness [N/m] ~ Ai's rule 2.25 k_n mu_r^2 at k_n ~ 135 N/m
 
 
 def geometry(smoke):
@@ -72,12 +76,13 @@ def geometry(smoke):
 # ------------------------------------------------------------------ LAMMPS
 def lammps_models():
     c = "hertz/material %g %g %g" % (E, REST, NU)
-    fric = " tangential mindlin NULL 1.0 %g rolling sds %g %g %g" % (MU, 1000.0, 0.0, MU_R)
+    ours = " tangential mindlin NULL %g %g rolling sds NULL 0 %g" % (E_T, MU, MU_R)
+    fric = " tangential mindlin NULL 1.0 %g rolling sds %g %g %g" % (MU, K_ROLL, 0.0, MU_R)
     if FRICTIONLESS:
         return [("demcontact", "demcontact", c, "demcontact/wall " + c),
                 ("granular", "granular", c + " tangential linear_nohistory 0 0 damping coeff_restitution",
                  "wall/gran granular " + c + " tangential linear_nohistory 0 0 damping coeff_restitution")]
-    return [("demcontact", "demcontact", c + fric, "demcontact/wall " + c + fric),
+    return [("demcontact", "demcontact", c + ours, "demcontact/wall " + c + ours),
             ("granular", "granular", c + fric + " damping coeff_restitution",
              "wall/gran granular " + c + fric + " damping coeff_restitution")]
 
@@ -115,11 +120,13 @@ def lammps_timing_deck(plugin, style, coeff, wall, g, data, steps):
 
 # ------------------------------------------------------------------ LIGGGHTS
 def liggghts_models():
-    return [("demcontact", "model demcontact tangential history rolling_friction cdt"),
-            ("hertz", "model hertz tangential history rolling_friction cdt")]
+    # (label, model, settings): a wall/gran takes the settings after its wall definition
+    return [("demcontact", "model demcontact tangential demcontact rolling_friction demcontact",
+             "tangentialRestitution %g rollingConstant on" % E_T),
+            ("hertz", "model hertz tangential history rolling_friction cdt", "")]
 
 
-def liggghts_head(model, g, box):
+def liggghts_head(model, settings, g, box):
     L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
          "communicate single vel yes", "units si", "processors * 1 1"] + box + [
         "neighbor 0.0005 bin", "neigh_modify delay 0",
@@ -128,17 +135,17 @@ def liggghts_head(model, g, box):
         "fix m3 all property/global coefficientRestitution peratomtypepair 1 %g" % REST,
         "fix m4 all property/global coefficientFriction peratomtypepair 1 %g" % MU,
         "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 %g" % MU_R,
-        "pair_style gran " + model, "pair_coeff * *", "timestep %.17g" % DT,
+        ("pair_style gran %s %s" % (model, settings)).strip(), "pair_coeff * *", "timestep %.17g" % DT,
         "fix gravi all gravity 9.81 vector 0.0 0.0 -1.0",
-        "fix wf all wall/gran %s primitive type 1 zplane 0.0" % model,
-        "fix wc all wall/gran %s primitive type 1 zcylinder %.17g 0 0" % (model, g["rc"]),
+        ("fix wf all wall/gran %s primitive type 1 zplane 0.0 %s" % (model, settings)).strip(),
+        ("fix wc all wall/gran %s primitive type 1 zcylinder %.17g 0 0 %s" % (model, g["rc"], settings)).strip(),
         "fix integr all nve/sphere"]
     return L
 
 
-def liggghts_deck(model, g):
+def liggghts_deck(model, settings, g):
     b = g["rc"] + 0.001
-    L = liggghts_head(model, g, ["region box block %g %g %g %g 0 %g units box" % (-b, b, -b, b, g["top"]),
+    L = liggghts_head(model, settings, g, ["region box block %g %g %g %g 0 %g units box" % (-b, b, -b, b, g["top"]),
                                  "create_box 1 box"])
     primes = [15485863, 15485867, 32452843, 32452867, 49979687]
     radii = [RMIN + k * (RMAX - RMIN) / 4 for k in range(5)]
@@ -157,8 +164,8 @@ def liggghts_deck(model, g):
     return "\n".join(L) + "\n"
 
 
-def liggghts_timing_deck(model, g, data, steps):
-    L = liggghts_head(model, g, ["read_data %s" % data])
+def liggghts_timing_deck(model, settings, g, data, steps):
+    L = liggghts_head(model, settings, g, ["read_data %s" % data])
     L += ["thermo %d" % steps, "run %d" % steps]
     return "\n".join(L) + "\n"
 
@@ -215,8 +222,9 @@ def main():
     else:
         exe, env = H.liggghts_cmd(a.plugin)
         mpirun = "mpirun"
-        models = [(lab, liggghts_deck(mo, g), lambda data, steps, mo=mo: liggghts_timing_deck(mo, g, data, steps))
-                  for lab, mo in liggghts_models()]
+        models = [(lab, liggghts_deck(mo, se, g),
+                   lambda data, steps, mo=mo, se=se: liggghts_timing_deck(mo, se, g, data, steps))
+                  for lab, mo, se in liggghts_models()]
         ref_label = "hertz"
     nps = [1] + ([a.np] if a.np > 1 else [])
     rows = {}

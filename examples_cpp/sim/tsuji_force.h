@@ -17,7 +17,7 @@
 #ifndef DEMCONTACT_SIM_TSUJI_FORCE_H
 #define DEMCONTACT_SIM_TSUJI_FORCE_H
 
-#include <demcontact.h>
+#include "dc_include.h"
 #include <cmath>
 
 namespace demcontact_sim {
