@@ -6,9 +6,10 @@ demcontact/wall, serial and under mpirun -np 2, next to the unchanged deck.
   lammps_example.py --plugin demcontact_lammps.so [--lmp lmp] [--np 2] [--deck in.pour.flatwall]
 
 The changes (printed): a `plugin load` line before the first pair_coeff, `pair_style demcontact`,
-one `pair_coeff * * hertz/material E e nu` (E, nu of the example's type 1; its cohesive JKR has no
-demcontact counterpart; e = 0.5), and each `fix ... wall/gran granular hertz/material E d nu ...`
-becomes `fix ... demcontact/wall hertz/material E 0.5 nu <same wall>`. Every other line is the example's.
+one `pair_coeff * * hertz/material E e nu tangential mindlin NULL 0.5 0.5 rolling sds NULL 0 0.5`
+(E, nu, mu, mu_r of the example's type 1; its cohesive JKR has no demcontact counterpart; e = 0.5),
+and each `fix ... wall/gran granular hertz/material E d nu tangential mindlin NULL 1.0 0.5 ...`
+becomes `fix ... demcontact/wall hertz/material E 0.5 nu tangential mindlin NULL 0.5 0.5 <same wall>`. Every other line is the example's.
 
 Checks: both runs end normally ("Loop time"), the same number of atoms as the unchanged deck
 (fix pour inserts the same particles whatever the contact model), all thermo values finite.
@@ -26,9 +27,13 @@ import harness as H  # noqa: E402
 DECK = "/usr/share/lammps/examples/granular/in.pour.flatwall"
 OURS = "hertz/material 1000.0 0.5 0.3"  # pair: E and nu of the example's type-1 material, e = 0.5
 E_REST = 0.5                            # walls: the wall line's own E and nu, e = 0.5
+# the example's friction and rolling resistance (mu = 0.5, mu_r = 0.5) with our sub-models
+# (tangential restitution 0.5, EPSD rolling with Ai's stiffness rule)
+FRICTION = " tangential mindlin NULL 0.5 0.5 rolling sds NULL 0 0.5"
+WALL_FRICTION = " tangential mindlin NULL 0.5 0.5"
 
 
-def convert(text, plugin, extra=""):
+def convert(text, plugin, extra="", wall_extra=""):
     out, changed, loaded = [], [], False
     for line in text.splitlines():
         f = line.split()
@@ -42,7 +47,7 @@ def convert(text, plugin, extra=""):
             m = re.search(r"\b(xplane|yplane|zplane|zcylinder)\b.*$", line)
             k = f.index("hertz/material")  # hertz/material E damping nu
             wall = "hertz/material %s %g %s" % (f[k + 1], E_REST, f[k + 3])
-            new = "fix %s %s demcontact/wall %s%s %s" % (f[1], f[2], wall, extra, m.group(0))
+            new = "fix %s %s demcontact/wall %s%s %s" % (f[1], f[2], wall, wall_extra, m.group(0))
         if new != line:
             changed.append((line, new))
         if new is not None:
@@ -83,7 +88,7 @@ def main():
     env = H.mpi_env()
     mpirun = os.path.join(os.path.dirname(exe), "mpirun")
     text = open(a.deck).read()
-    ours, changed = convert(text, a.plugin)
+    ours, changed = convert(text, a.plugin, FRICTION, WALL_FRICTION)
     print("Changed lines of %s:" % a.deck)
     for old, new in changed:
         print("  - %s\n  + %s" % (old, (new or "(removed)").replace("\n", "\n  + ")))
