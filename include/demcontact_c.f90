@@ -10,6 +10,37 @@ module demcontact_c
   implicit none
   private :: ieee_value, ieee_quiet_nan
 
+  integer(c_int32_t), parameter :: HISTORY_MAX = 10
+  integer(c_int32_t), parameter :: TANGENTIAL_NONE = 0
+  integer(c_int32_t), parameter :: TANGENTIAL_LINEAR = 1
+  integer(c_int32_t), parameter :: TANGENTIAL_MINDLIN = 2
+  integer(c_int32_t), parameter :: ROLLING_NONE = 0
+  integer(c_int32_t), parameter :: ROLLING_CONSTANT = 1
+  integer(c_int32_t), parameter :: ROLLING_EPSD = 2
+  integer(c_int32_t), parameter :: TWISTING_NONE = 0
+  integer(c_int32_t), parameter :: TWISTING_SDS = 1
+  integer(c_int32_t), parameter :: HERTZ = 1
+  integer(c_int32_t), parameter :: POWERLAW = 2
+  integer(c_int32_t), parameter :: LINEAR = 3
+  integer(c_int32_t), parameter :: VISCOELASTIC = 4
+  integer(c_int32_t), parameter :: NONE = 0
+  integer(c_int32_t), parameter :: RESTITUTION = 1
+  integer(c_int32_t), parameter :: DC_CONTACT_SPEC_VERSION = 1
+  integer(c_int32_t), parameter :: DC_CONTACT_HISTORY_MAX = 10
+  integer(c_int32_t), parameter :: DC_NORMAL_HERTZ = 1
+  integer(c_int32_t), parameter :: DC_NORMAL_POWERLAW = 2
+  integer(c_int32_t), parameter :: DC_NORMAL_LINEAR = 3
+  integer(c_int32_t), parameter :: DC_NORMAL_VISCOELASTIC = 4
+  integer(c_int32_t), parameter :: DC_DAMPING_NONE = 0
+  integer(c_int32_t), parameter :: DC_DAMPING_RESTITUTION = 1
+  integer(c_int32_t), parameter :: DC_TANGENTIAL_NONE = 0
+  integer(c_int32_t), parameter :: DC_TANGENTIAL_LINEAR = 1
+  integer(c_int32_t), parameter :: DC_TANGENTIAL_MINDLIN = 2
+  integer(c_int32_t), parameter :: DC_ROLLING_NONE = 0
+  integer(c_int32_t), parameter :: DC_ROLLING_CONSTANT = 1
+  integer(c_int32_t), parameter :: DC_ROLLING_EPSD = 2
+  integer(c_int32_t), parameter :: DC_TWISTING_NONE = 0
+  integer(c_int32_t), parameter :: DC_TWISTING_SDS = 1
   integer(c_int32_t), parameter :: DC_MODEL_POWERLAW = 1
   integer(c_int32_t), parameter :: DC_MODEL_HERTZ = 2
   integer(c_int32_t), parameter :: DC_MODEL_VISCOELASTIC = 3
@@ -31,9 +62,43 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_ERR_BUFFER_LAYOUT = 6121
   integer(c_int32_t), parameter :: DC_ERR_LEVEL = 6112
   integer(c_int32_t), parameter :: DC_ERR_PLAN = 6113
+  integer(c_int32_t), parameter :: DC_ERR_SPEC_VERSION = 6122
+  integer(c_int32_t), parameter :: DC_ERR_SPEC_MODEL = 6123
+  integer(c_int32_t), parameter :: DC_ERR_SPEC_UNSET = 6124
+  integer(c_int32_t), parameter :: DC_ERR_CONTACT_MODEL_INVALID = 6125
+  integer(c_int32_t), parameter :: DC_ERR_NOT_UNIT = 6126
   integer(c_int32_t), parameter :: DC_ERR_INTERNAL = 6199
   integer(c_int32_t), parameter :: DC_END_OVERLAP = 0
   integer(c_int32_t), parameter :: DC_END_FORCE = 1
+
+  type, bind(c) :: dc_contact_spec
+    integer(c_int32_t) :: version
+    integer(c_int32_t) :: size
+    integer(c_int32_t) :: normal
+    integer(c_int32_t) :: damping
+    integer(c_int32_t) :: criterion
+    integer(c_int32_t) :: tangential
+    integer(c_int32_t) :: rolling
+    integer(c_int32_t) :: twisting
+    real(c_double) :: E1
+    real(c_double) :: nu1
+    real(c_double) :: E2
+    real(c_double) :: nu2
+    real(c_double) :: p
+    real(c_double) :: k_n
+    real(c_double) :: e_n
+    real(c_double) :: visco_A
+    real(c_double) :: mu
+    real(c_double) :: k_t
+    real(c_double) :: e_t
+    real(c_double) :: mu_r
+    real(c_double) :: k_r
+    real(c_double) :: eta_r
+    real(c_double) :: mu_tw
+    real(c_double) :: k_tw
+    real(c_double) :: eta_tw
+    real(c_double) :: inertia_factor
+  end type dc_contact_spec
 
   type, bind(c) :: dc_pair
     integer(c_int32_t) :: model
@@ -49,6 +114,70 @@ module demcontact_c
     real(c_double) :: c
     real(c_double) :: h
   end type dc_pair
+
+  type, bind(c) :: dc_contact_model
+    integer(c_int32_t) :: magic
+    integer(c_int32_t) :: history_len
+    integer(c_int32_t) :: tangential
+    integer(c_int32_t) :: rolling
+    integer(c_int32_t) :: twisting
+    integer(c_int32_t) :: reserved_i
+    type(dc_pair) :: normal
+    real(c_double) :: mu
+    real(c_double) :: kt
+    real(c_double) :: zeta_t
+    real(c_double) :: kappa
+    real(c_double) :: mu_r
+    real(c_double) :: k_r
+    real(c_double) :: eta_r
+    real(c_double) :: mu_tw
+    real(c_double) :: k_tw
+    real(c_double) :: eta_tw
+    real(c_double) :: reserved(6)
+  end type dc_contact_model
+
+  type, bind(c) :: dc_contact_state
+    real(c_double) :: n(3)
+    real(c_double) :: overlap
+    real(c_double) :: v1(3)
+    real(c_double) :: v2(3)
+    real(c_double) :: w1(3)
+    real(c_double) :: w2(3)
+    real(c_double) :: r1
+    real(c_double) :: r2
+    real(c_double) :: m1
+    real(c_double) :: m2
+  end type dc_contact_state
+
+  type, bind(c) :: dc_contact_result
+    real(c_double) :: force(3)
+    real(c_double) :: torque1(3)
+    real(c_double) :: torque2(3)
+    real(c_double) :: f_n
+    real(c_double) :: ft(3)
+    integer(c_int32_t) :: sliding
+    integer(c_int32_t) :: rolling_sliding
+  end type dc_contact_result
+
+  type, bind(c) :: dc_contact_batch
+    integer(c_size_t) :: n
+    integer(c_size_t) :: history_stride
+    type(c_ptr) :: normal
+    type(c_ptr) :: overlap
+    type(c_ptr) :: v1
+    type(c_ptr) :: v2
+    type(c_ptr) :: w1
+    type(c_ptr) :: w2
+    type(c_ptr) :: r1
+    type(c_ptr) :: r2
+    type(c_ptr) :: m1
+    type(c_ptr) :: m2
+    type(c_ptr) :: history
+    type(c_ptr) :: f_n
+    type(c_ptr) :: force
+    type(c_ptr) :: torque1
+    type(c_ptr) :: torque2
+  end type dc_contact_batch
 
   type, bind(c) :: dc_duration_plan
     integer(c_int64_t) :: tag
@@ -88,6 +217,54 @@ module demcontact_c
       real(c_double), intent(out) :: e_out
       integer(c_int32_t) :: dc_e_from_alpha
     end function dc_e_from_alpha
+    function dc_contact_spec_init(spec) bind(c, name='dc_contact_spec_init')
+      import
+      type(dc_contact_spec), intent(inout) :: spec
+      integer(c_int32_t) :: dc_contact_spec_init
+    end function dc_contact_spec_init
+    function dc_contact_model_init(spec, out) bind(c, name='dc_contact_model_init')
+      import
+      type(dc_contact_spec), intent(in) :: spec
+      type(dc_contact_model), intent(out) :: out
+      integer(c_int32_t) :: dc_contact_model_init
+    end function dc_contact_model_init
+    function dc_contact_history_len(model, len_out) bind(c, name='dc_contact_history_len')
+      import
+      type(dc_contact_model), intent(in) :: model
+      integer(c_size_t), intent(out) :: len_out
+      integer(c_int32_t) :: dc_contact_history_len
+    end function dc_contact_history_len
+    function dc_contact_force(model, state, dt, history, history_len, out) bind(c, &
+        name='dc_contact_force')
+      import
+      type(dc_contact_model), intent(in) :: model
+      type(dc_contact_state), intent(in) :: state
+      real(c_double), value, intent(in) :: dt
+      real(c_double), intent(inout) :: history(*)
+      integer(c_size_t), value, intent(in) :: history_len
+      type(dc_contact_result), intent(out) :: out
+      integer(c_int32_t) :: dc_contact_force
+    end function dc_contact_force
+    function dc_contact_force_spheres(model, x1, x2, state, dt, history, history_len, out) bind(c, &
+        name='dc_contact_force_spheres')
+      import
+      type(dc_contact_model), intent(in) :: model
+      real(c_double), intent(in) :: x1(*)
+      real(c_double), intent(in) :: x2(*)
+      type(dc_contact_state), intent(in) :: state
+      real(c_double), value, intent(in) :: dt
+      real(c_double), intent(inout) :: history(*)
+      integer(c_size_t), value, intent(in) :: history_len
+      type(dc_contact_result), intent(out) :: out
+      integer(c_int32_t) :: dc_contact_force_spheres
+    end function dc_contact_force_spheres
+    pure function dc_contact_force_batch(model, batch, dt) bind(c, name='dc_contact_force_batch')
+      import
+      type(dc_contact_model), intent(in) :: model
+      type(dc_contact_batch), intent(in) :: batch
+      real(c_double), value, intent(in) :: dt
+      integer(c_int32_t) :: dc_contact_force_batch
+    end function dc_contact_force_batch
     function dc_pair_powerlaw(p, k, e, criterion, out) bind(c, name='dc_pair_powerlaw')
       import
       real(c_double), value, intent(in) :: p
@@ -459,6 +636,16 @@ contains
     if (present(stat)) stat = s
     if (s /= DC_OK) e_out = ieee_value(e_out, ieee_quiet_nan)
   end subroutine e_from_alpha
+
+  !> Elemental form of dc_contact_model_init: on error `out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine contact_model_init(spec, out, stat)
+    type(dc_contact_spec), intent(in) :: spec
+    type(dc_contact_model), intent(out) :: out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_contact_model_init(spec, out)
+    if (present(stat)) stat = s
+  end subroutine contact_model_init
 
   !> Elemental form of dc_pair_powerlaw: on error `out` is NaN (numeric) and `stat` the status.
   impure elemental subroutine pair_powerlaw(p, k, e, criterion, out, stat)

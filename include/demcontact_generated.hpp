@@ -22,6 +22,11 @@ enum class status : std::int32_t {
     buffer_layout = DC_ERR_BUFFER_LAYOUT,
     level = DC_ERR_LEVEL,
     plan = DC_ERR_PLAN,
+    spec_version = DC_ERR_SPEC_VERSION,
+    spec_model = DC_ERR_SPEC_MODEL,
+    spec_unset = DC_ERR_SPEC_UNSET,
+    contact_model_invalid = DC_ERR_CONTACT_MODEL_INVALID,
+    not_unit = DC_ERR_NOT_UNIT,
     internal = DC_ERR_INTERNAL,
 };
 
@@ -51,6 +56,22 @@ inline double e_from_alpha(double alpha, double p, criterion criterion_) {
 /// dc_e_from_alpha: returns the status; `out` is written only on status::ok.
 inline status e_from_alpha(double alpha, double p, criterion criterion_, double& out) noexcept {
     return static_cast<status>(::dc_e_from_alpha(alpha, p, static_cast<std::int32_t>(criterion_), &out));
+}
+
+/// dc_contact_model_init: throws demcontact::error on a non-OK status.
+inline ::dc_contact_model contact_model_init(const ::dc_contact_spec& spec) {
+    ::dc_contact_model out{};
+    detail::check(::dc_contact_model_init(&spec, &out));
+    return out;
+}
+/// dc_contact_model_init: returns the status; `out` is written only on status::ok.
+inline status contact_model_init(const ::dc_contact_spec& spec, ::dc_contact_model& out) noexcept {
+    return static_cast<status>(::dc_contact_model_init(&spec, &out));
+}
+
+/// dc_contact_force_batch (no status: see the C documentation).
+inline std::int32_t contact_force_batch(const ::dc_contact_model& model, const ::dc_contact_batch& batch, double dt) noexcept {
+    return ::dc_contact_force_batch(&model, &batch, dt);
 }
 
 /// dc_pair_powerlaw: throws demcontact::error on a non-OK status.

@@ -132,7 +132,9 @@ fn normal_pass<L: Law, const CLAMP: bool>(
         let m = 1.0 / (1.0 / m1 + 1.0 / m2);
         let f = eval::<L, CLAMP>(&c, d, vn, r, m);
         *fo = f;
-        fv.copy_from_slice(&scale(f, n));
+        // Separated contacts get +0 (as the scalar call), not f·n = ±0.
+        let v = scale(f, n);
+        fv.copy_from_slice(&if d > 0.0 { v } else { [0.0; 3] });
     }
 }
 

@@ -134,7 +134,10 @@ pub(crate) fn evaluate(
     if m.layout.len > 0 {
         put3(h, 0, k.n);
     }
-    let mut m1 = [0.0; 3];
+    // Operations in the order of the batch passes, so that both give the same bits (down to
+    // the sign of zero).
+    out.force = scale(f, k.n);
+    let (mut t1, mut t2) = ([0.0; 3], [0.0; 3]);
     if let Some(at) = m.layout.tangential {
         let mut xi = get3(h, at);
         let t = match m.tangential {
@@ -148,11 +151,26 @@ pub(crate) fn evaluate(
         put3(h, at, xi);
         out.ft = t.ft;
         out.sliding = t.sliding;
+        out.force = add(out.force, t.ft);
+        // Torques of the tangential force about each centre: the contact point is at −a1 n
+        // from centre 1 and +a2 n from centre 2, so τ_i = −a_i n × F_t for both (body 2 gets
+        // −F_t).
+        let nft = cross(k.n, t.ft);
+        t1 = scale(-k.a1, nft);
+        if !k.wall {
+            t2 = scale(-k.a2, nft);
+        }
     }
+    let mut moment = |mr: V3| {
+        t1 = add(t1, mr);
+        if !k.wall {
+            t2 = sub(t2, mr);
+        }
+    };
     match m.rolling {
         select::ROLLING_CONSTANT => {
             let (t, on) = rolling_constant::torque(m, &k, f);
-            m1 = t;
+            moment(t);
             out.rolling_sliding = on;
         }
         select::ROLLING_EPSD => {
@@ -167,7 +185,7 @@ pub(crate) fn evaluate(
                 let mut mk = get3(h, at);
                 let (t, lim) = rolling_epsd::step(m, &k, f, kn, dt, &frame, &mut mk);
                 put3(h, at, mk);
-                m1 = t;
+                moment(t);
                 out.rolling_sliding = lim;
             }
         }
@@ -175,19 +193,11 @@ pub(crate) fn evaluate(
     }
     if let Some(mk) = m.layout.twisting.and_then(|at| h.get_mut(at)) {
         let (t, lim) = twisting_sds::step(m, &k, f, dt, mk);
-        m1 = add(m1, scale(t, k.n));
+        moment(scale(t, k.n));
         out.rolling_sliding |= lim;
     }
-    // Torques of the tangential force about each centre: the contact point is at −a1 n from
-    // centre 1 and +a2 n from centre 2, so τ_i = −a_i n × F_t for both (body 2 gets −F_t).
-    let nft = cross(k.n, out.ft);
-    out.force = add(scale(f, k.n), out.ft);
-    out.torque1 = sub(m1, scale(k.a1, nft));
-    out.torque2 = if k.wall {
-        [0.0; 3]
-    } else {
-        sub(scale(-k.a2, nft), m1)
-    };
+    out.torque1 = t1;
+    out.torque2 = t2;
     out
 }
 

@@ -12,14 +12,14 @@
 //!    θ = ½ (ω1 + ω2)·n dt (YADE's choice; LAMMPS and LIGGGHTS omit it), applied as the Cayley
 //!    rotation by 2 atan(θ/2) = θ − θ³/12 + …, an exact rotation that needs no sin/cos.
 //!
-//! The increment of a step (v_t dt) is formed at mid-step, as velocity-Verlet hosts supply the
-//! velocities (v^{n+1/2}): the relative velocity is projected on the plane normal to the
-//! mid-step normal n_mid = (n_old + n)/|n_old + n| and then carried to the current plane by the
-//! remaining half of the frame rotation, which makes the increment a midpoint rule in the
-//! rotating frame. Projecting on the end-of-step plane instead (the usual choice) leaks
-//! v_n ω dt/2 of normal motion into the spring every step; in the elastic sticking collision of
-//! tests/contact_physics.rs it raises the energy error during contact by 3–22 % and lets the
-//! order drift from 3.97–3.90 to 3.87–3.56 (error ratios per halving of dt, tc/200…tc/1600).
+//! The increment of a step (v_t dt) is the contact point's relative velocity projected on the
+//! current tangent plane, with the lever-arm term (a1 ω1 + a2 ω2) × n formed with the current
+//! normal too. Then a rigid rotation Ω superposed on any contact (v_i → R v_i + Ω × R x_i,
+//! ω_i → R ω_i + Ω) leaves the contact point's relative velocity exactly R v_c (the Ω terms
+//! cancel because |x1 − x2| = a1 + a2), so with an axis perpendicular to n the whole update is
+//! exactly objective. (Forming the increment on the mid-step plane n_old + n, a midpoint rule,
+//! was tried: it lowers the energy error of an elastic sticking collision by 3–22 % but breaks
+//! this exact cancellation, so it was dropped.)
 //!
 //! For a rigid rotation whose axis has a component along n, tilt-then-twist differs from the
 //! true step rotation by O(dt²) per step; see docs/force.md for the measured figure.
@@ -33,15 +33,10 @@ pub(crate) struct FrameStep {
     c: f64,
     k: V3,
     tilt: bool,
-    /// Tilt mid → new.
-    cm: f64,
-    km: V3,
-    /// Cayley half-angle of the full twist and of the half twist.
+    /// Cayley half-angle of the twist.
     t: f64,
-    th: f64,
-    /// Current and mid-step normals.
-    pub n: V3,
-    pub n_mid: V3,
+    /// Current normal.
+    n: V3,
 }
 
 /// Rodrigues about k = a × b (|k| = sin φ, c = a·b = cos φ), exact for unit a, b:
@@ -77,22 +72,12 @@ impl FrameStep {
         // A new contact (n_old = 0) or a normal turned by more than 120° in one step (no unique
         // minimal rotation): no tilt, the projection alone applies.
         let tilt = c > -0.5 && norm2(n_old) > 0.25;
-        let (k, n_mid) = if tilt {
-            let s = add(n_old, n);
-            (cross(n_old, n), scale(1.0 / norm2(s).sqrt(), s))
-        } else {
-            ([0.0; 3], n)
-        };
         FrameStep {
             c,
-            k,
+            k: cross(n_old, n),
             tilt,
-            cm: dot(n_mid, n),
-            km: cross(n_mid, n),
             t: 0.5 * theta,
-            th: 0.25 * theta,
             n,
-            n_mid,
         }
     }
 
@@ -105,18 +90,5 @@ impl FrameStep {
             v
         };
         tangential(twist(self.n, self.t, v), self.n)
-    }
-
-    /// The tangential part (in the mid-step plane) of a mid-step vector, carried into the
-    /// current tangent plane.
-    #[inline(always)]
-    pub(crate) fn carry_mid(&self, v: V3) -> V3 {
-        let v = tangential(v, self.n_mid);
-        let v = if self.tilt {
-            tilt(self.cm, self.km, v)
-        } else {
-            v
-        };
-        tangential(twist(self.n, self.th, v), self.n)
     }
 }

@@ -14,7 +14,7 @@
 //! radius or mass (wall, fixed body) gives R* = r1, m* = m1 without inf/inf.
 
 use super::frame::FrameStep;
-use super::vec3::{V3, add, cross, dot, scale, sub};
+use super::vec3::{V3, add, cross, dot, scale, sub, tangential};
 
 /// The bodies' state of one contact (see the module conventions).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -53,10 +53,9 @@ pub(crate) struct Kin {
     pub a1: f64,
     pub a2: f64,
     pub wall: bool,
-    /// Tangential relative velocity of the contact point, body 1 relative to body 2 (mid-step
-    /// plane, carried into the current one: see [`super::frame`]).
+    /// Tangential relative velocity of the contact point, body 1 relative to body 2.
     pub vt: V3,
-    /// Rolling part of ω1 − ω2 (idem).
+    /// Rolling part of ω1 − ω2 (tangential to n).
     pub w_roll: V3,
     /// Relative angular velocity ω1 − ω2.
     pub w_rel: V3,
@@ -73,7 +72,6 @@ impl Kin {
     pub(crate) fn of(s: &ContactState, n_old: V3, dt: f64) -> (Kin, FrameStep) {
         let n = s.n;
         let frame = FrameStep::new(n_old, n, 0.5 * dot(add(s.w1, s.w2), n) * dt);
-        let nm = frame.n_mid;
         let d = s.overlap;
         let wall = s.r2 == f64::INFINITY;
         let a1 = s.r1 - 0.5 * d;
@@ -85,7 +83,7 @@ impl Kin {
         } else {
             add(scale(a1, s.w1), scale(a2, s.w2))
         };
-        let vc = sub(vr, cross(arm, nm));
+        let vc = sub(vr, cross(arm, n));
         let w_rel = sub(s.w1, s.w2);
         let kin = Kin {
             n,
@@ -96,8 +94,8 @@ impl Kin {
             a1,
             a2,
             wall,
-            vt: frame.carry_mid(vc),
-            w_roll: frame.carry_mid(w_rel),
+            vt: tangential(vc, n),
+            w_roll: tangential(w_rel, n),
             w_rel,
             m1: s.m1,
             m2: s.m2,

@@ -82,6 +82,10 @@ pub enum Other {
 #[derive(Clone, Copy, Debug)]
 pub struct Sample {
     pub t: f64,
+    /// The state the kernel was called with, and the centres at that moment.
+    pub state: dc_contact_state,
+    pub x1: V,
+    pub x2: V,
     pub res: dc_contact_result,
     pub overlap: f64,
     pub hist: [f64; DC_CONTACT_HISTORY_MAX],
@@ -168,6 +172,12 @@ pub fn collide(
             each(
                 &Sample {
                     t: step as f64 * dt,
+                    state: st,
+                    x1: b1.x,
+                    x2: match other {
+                        Other::Sphere(b2) => b2.x,
+                        Other::Wall => [b1.x[0], 0.0, b1.x[2]],
+                    },
                     res,
                     overlap: st.overlap,
                     hist,

@@ -1,0 +1,267 @@
+//! Property tests of the full-contact exports through the C ABI: for any bit pattern of every
+//! spec field and state value, no export panics or returns DC_ERR_INTERNAL, errors leave
+//! outputs and history untouched, successes are finite; on valid input the Coulomb, rolling and
+//! twisting limits hold at every step and the batch equals the scalar bit for bit.
+#![allow(clippy::indexing_slicing)]
+
+use demcontact::ffi::contact::*;
+use demcontact::ffi::status::*;
+use proptest::prelude::*;
+
+fn known(s: i32) -> bool {
+    s == DC_OK || (6101..=6139).contains(&s)
+}
+
+fn config(cases: u32) -> ProptestConfig {
+    let mut c = ProptestConfig {
+        cases,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    };
+    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
+        c.rng_seed = proptest::test_runner::RngSeed::Fixed(20_261_123);
+    }
+    c
+}
+
+fn any_f64() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        any::<u64>().prop_map(f64::from_bits),
+        prop::num::f64::ANY,
+        Just(0.0),
+        Just(-0.0),
+        Just(1.0),
+        Just(f64::INFINITY),
+        Just(f64::NAN),
+        1e-6f64..1e11,
+    ]
+}
+
+fn bytes<T>(x: &T) -> Vec<u8> {
+    unsafe { std::slice::from_raw_parts((x as *const T).cast::<u8>(), std::mem::size_of::<T>()) }
+        .to_vec()
+}
+
+fn v3() -> impl Strategy<Value = [f64; 3]> {
+    [any_f64(), any_f64(), any_f64()]
+}
+
+fn state_any() -> impl Strategy<Value = dc_contact_state> {
+    (
+        v3(),
+        any_f64(),
+        v3(),
+        v3(),
+        v3(),
+        v3(),
+        [any_f64(), any_f64(), any_f64(), any_f64()],
+    )
+        .prop_map(
+            |(n, overlap, v1, v2, w1, w2, [r1, r2, m1, m2])| dc_contact_state {
+                n,
+                overlap,
+                v1,
+                v2,
+                w1,
+                w2,
+                r1,
+                r2,
+                m1,
+                m2,
+            },
+        )
+}
+
+fn unit() -> impl Strategy<Value = [f64; 3]> {
+    (0.0f64..std::f64::consts::TAU, -1.0f64..1.0).prop_map(|(phi, z)| {
+        let s = (1.0 - z * z).sqrt();
+        [s * phi.cos(), s * phi.sin(), z]
+    })
+}
+
+fn vel() -> impl Strategy<Value = [f64; 3]> {
+    [-2.0f64..2.0, -2.0f64..2.0, -2.0f64..2.0]
+}
+
+fn spin() -> impl Strategy<Value = [f64; 3]> {
+    [-500.0f64..500.0, -500.0f64..500.0, -500.0f64..500.0]
+}
+
+/// Valid states: spheres of 0.1–10 mm, walls, fixed bodies, overlaps up to 1 % of the radius
+/// (and some separated).
+fn state_valid() -> impl Strategy<Value = dc_contact_state> {
+    (
+        unit(),
+        -1e-6f64..1e-5,
+        vel(),
+        vel(),
+        spin(),
+        spin(),
+        1e-4f64..1e-2,
+        prop_oneof![Just(f64::INFINITY), 1e-4f64..1e-2],
+        1e-9f64..1e-2,
+        prop_oneof![Just(f64::INFINITY), 1e-9f64..1e-2],
+    )
+        .prop_map(|(n, d, v1, v2, w1, w2, r1, r2, m1, m2)| dc_contact_state {
+            n,
+            overlap: d * r1 / 1e-3,
+            v1,
+            v2,
+            w1,
+            w2,
+            r1,
+            r2,
+            m1,
+            m2,
+        })
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Choice {
+    normal: i32,
+    damping: i32,
+    criterion: i32,
+    tangential: i32,
+    rolling: i32,
+    twisting: i32,
+}
+
+fn choice_valid() -> impl Strategy<Value = Choice> {
+    (1i32..5, 0i32..2, 0i32..2, 0i32..3, 0i32..3, 0i32..2).prop_map(
+        |(normal, damping, criterion, tangential, rolling, twisting)| Choice {
+            normal,
+            damping: if normal == DC_NORMAL_VISCOELASTIC {
+                0
+            } else {
+                damping
+            },
+            criterion,
+            tangential,
+            rolling,
+            twisting,
+        },
+    )
+}
+
+fn model_valid(c: Choice, mu: f64, e: f64) -> dc_contact_model {
+    let mut s: dc_contact_spec = unsafe { std::mem::zeroed() };
+    assert_eq!(unsafe { dc_contact_spec_init(&mut s) }, DC_OK);
+    s.normal = c.normal;
+    s.damping = c.damping;
+    s.criterion = c.criterion;
+    s.tangential = c.tangential;
+    s.rolling = c.rolling;
+    s.twisting = c.twisting;
+    s.E1 = 7e10;
+    s.nu1 = 0.3;
+    s.E2 = f64::INFINITY;
+    s.nu2 = 0.25;
+    s.p = 1.7;
+    s.k_n = 1e7;
+    s.e_n = e;
+    s.visco_A = 1e-6;
+    s.mu = mu;
+    s.k_t = 1e6;
+    s.e_t = e;
+    s.mu_r = 0.5 * mu;
+    s.eta_r = 0.3;
+    s.mu_tw = 1e-4 * mu;
+    s.k_tw = 1e-3;
+    s.eta_tw = 0.3;
+    let mut m: dc_contact_model = unsafe { std::mem::zeroed() };
+    assert_eq!(unsafe { dc_contact_model_init(&s, &mut m) }, DC_OK, "{c:?}");
+    m
+}
+
+proptest! {
+    #![proptest_config(config(3_000))]
+
+    #[test]
+    fn model_init_any_bits(sel in prop::array::uniform6(-2i32..6), x in prop::collection::vec(any_f64(), 18), ver in 0u32..3) {
+        let mut s: dc_contact_spec = unsafe { std::mem::zeroed() };
+        unsafe { dc_contact_spec_init(&mut s) };
+        s.version = ver;
+        [s.normal, s.damping, s.criterion, s.tangential, s.rolling, s.twisting] = sel;
+        [s.E1, s.nu1, s.E2, s.nu2, s.p, s.k_n, s.e_n, s.visco_A, s.mu, s.k_t, s.e_t, s.mu_r, s.k_r, s.eta_r, s.mu_tw, s.k_tw, s.eta_tw, s.inertia_factor] =
+            [x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], x[8], x[9], x[10], x[11], x[12], x[13], x[14], x[15], x[16], x[17]];
+        let mut m: dc_contact_model = unsafe { std::mem::zeroed() };
+        m.kt = -3.25;
+        let before = bytes(&m);
+        let st = unsafe { dc_contact_model_init(&s, &mut m) };
+        prop_assert!(known(st), "status {}", st);
+        if st != DC_OK {
+            prop_assert_eq!(bytes(&m), before);
+        } else {
+            let mut len = 99usize;
+            prop_assert_eq!(unsafe { dc_contact_history_len(&m, &mut len) }, DC_OK);
+            prop_assert!(len <= DC_CONTACT_HISTORY_MAX);
+        }
+    }
+
+    #[test]
+    fn force_any_bits(c in choice_valid(), st in state_any(), dt in any_f64(), h0 in prop::array::uniform10(any_f64()), spheres in any::<bool>(), x in v3()) {
+        let m = model_valid(c, 0.4, 0.6);
+        let mut h = h0;
+        let mut r: dc_contact_result = unsafe { std::mem::zeroed() };
+        r.f_n = -1.25;
+        let before = bytes(&r);
+        let s = if spheres {
+            let z = [0.0; 3];
+            unsafe { dc_contact_force_spheres(&m, x.as_ptr(), z.as_ptr(), &st, dt, h.as_mut_ptr(), h.len(), &mut r) }
+        } else {
+            unsafe { dc_contact_force(&m, &st, dt, h.as_mut_ptr(), h.len(), &mut r) }
+        };
+        prop_assert!(known(s), "status {}", s);
+        if s != DC_OK {
+            prop_assert_eq!(bytes(&r), before);
+            prop_assert_eq!(bytes(&h), bytes(&h0));
+        } else {
+            let fnv = [r.f_n];
+            let all = r.force.iter().chain(&r.torque1).chain(&r.torque2).chain(&r.ft).chain(&fnv).chain(&h);
+            prop_assert!(all.into_iter().all(|v| v.is_finite()));
+        }
+    }
+
+    #[test]
+    fn limits_hold_and_batch_equals_scalar(c in choice_valid(), mu in 0.0f64..2.0, e in 0.05f64..1.0, sts in prop::collection::vec(state_valid(), 1..6), steps in 1usize..6) {
+        let m = model_valid(c, mu, e);
+        let nc = sts.len();
+        let stride = DC_CONTACT_HISTORY_MAX;
+        let mut hs = vec![0.0f64; nc * stride];
+        let mut hb = hs.clone();
+        let flat = |f: &dyn Fn(&dc_contact_state) -> [f64; 3]| sts.iter().flat_map(f).collect::<Vec<f64>>();
+        let one = |f: &dyn Fn(&dc_contact_state) -> f64| sts.iter().map(f).collect::<Vec<f64>>();
+        let (n, v1, v2, w1, w2) = (flat(&|s| s.n), flat(&|s| s.v1), flat(&|s| s.v2), flat(&|s| s.w1), flat(&|s| s.w2));
+        let (d, r1, r2, m1, m2) = (one(&|s| s.overlap), one(&|s| s.r1), one(&|s| s.r2), one(&|s| s.m1), one(&|s| s.m2));
+        for _ in 0..steps {
+            let (mut f_n, mut force, mut t1, mut t2) = (vec![0.0; nc], vec![0.0; 3 * nc], vec![0.0; 3 * nc], vec![0.0; 3 * nc]);
+            let b = dc_contact_batch {
+                n: nc, history_stride: stride, normal: n.as_ptr(), overlap: d.as_ptr(), v1: v1.as_ptr(), v2: v2.as_ptr(),
+                w1: w1.as_ptr(), w2: w2.as_ptr(), r1: r1.as_ptr(), r2: r2.as_ptr(), m1: m1.as_ptr(), m2: m2.as_ptr(),
+                history: hb.as_mut_ptr(), f_n: f_n.as_mut_ptr(), force: force.as_mut_ptr(), torque1: t1.as_mut_ptr(), torque2: t2.as_mut_ptr(),
+            };
+            let sb = unsafe { dc_contact_force_batch(&m, &b, 1e-7) };
+            for (i, st) in sts.iter().enumerate() {
+                let mut r: dc_contact_result = unsafe { std::mem::zeroed() };
+                let s = unsafe { dc_contact_force(&m, st, 1e-7, hs[i * stride..].as_mut_ptr(), stride, &mut r) };
+                prop_assert_eq!(s, sb);
+                if s != DC_OK {
+                    prop_assert_eq!(s, DC_ERR_RESULT_RANGE);
+                    return Ok(());
+                }
+                let ft = r.ft.iter().map(|x| x * x).sum::<f64>().sqrt();
+                prop_assert!(ft <= mu * r.f_n.abs() * (1.0 + 1e-12) + 1e-300, "|Ft| {} > mu |Fn| {}", ft, mu * r.f_n.abs());
+                if c.normal != DC_NORMAL_VISCOELASTIC && c.criterion == DC_END_FORCE {
+                    prop_assert!(r.f_n >= 0.0);
+                }
+                prop_assert_eq!(r.f_n.to_bits(), f_n[i].to_bits());
+                for k in 0..3 {
+                    prop_assert_eq!(r.force[k].to_bits(), force[3 * i + k].to_bits());
+                    prop_assert_eq!(r.torque1[k].to_bits(), t1[3 * i + k].to_bits());
+                    prop_assert_eq!(r.torque2[k].to_bits(), t2[3 * i + k].to_bits());
+                }
+            }
+            prop_assert!(hs.iter().zip(&hb).all(|(a, b)| a.to_bits() == b.to_bits()));
+        }
+    }
+}
