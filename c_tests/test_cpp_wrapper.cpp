@@ -105,6 +105,44 @@ int main(int argc, char** argv) {
         CHECK(std::fabs(vel[64] + 0.5) <= 1e-12);
     }
 
+    // Full contact: spec by field, model, history, one step, bad input throws with its status.
+    {
+        ::dc_contact_spec spec = dc::contact_spec();
+        spec.normal = DC_NORMAL_HERTZ;
+        spec.E1 = 63e9;
+        spec.nu1 = 0.23;
+        spec.E2 = INFINITY;
+        spec.nu2 = 0.3;
+        spec.tangential = DC_TANGENTIAL_MINDLIN;
+        spec.mu = 0.3;
+        ::dc_contact_model model = dc::contact_model_init(spec);
+        std::vector<double> hist(dc::contact_history_len(model), 0.0);
+        CHECK(hist.size() == 6);
+        ::dc_contact_state st{};
+        st.n[1] = 1.0;
+        st.overlap = 1e-6;
+        st.v1[0] = 0.5;
+        st.r1 = 1e-3;
+        st.r2 = INFINITY;
+        st.m1 = 1e-5;
+        st.m2 = INFINITY;
+        ::dc_contact_result r = dc::contact_force(model, st, 1e-8, dc::span<double>(hist));
+        CHECK(r.f_n > 0.0 && r.ft[0] < 0.0 && r.force[1] == r.f_n && r.torque2[2] == 0.0);
+        CHECK(hist[3] > 0.0);  // the tangential spring moved with the contact point (+x)
+        bool threw = false;
+        try {
+            st.n[1] = 0.5;
+            dc::contact_force(model, st, 1e-8, dc::span<double>(hist));
+        } catch (const dc::error& err) {
+            threw = err.code() == dc::status::not_unit;
+        }
+        CHECK(threw);
+        ::dc_contact_result out{};
+        CHECK(dc::contact_force(model, st, 1e-8, dc::span<double>(hist.data(), 2), out) == dc::status::buffer_too_short);
+        spec.mu = NAN;
+        CHECK(dc::contact_model_init(spec, model) == dc::status::spec_unset);
+    }
+
     // span view over a vector.
     std::vector<double> v{1.0, 2.0, 3.0};
     dc::span<double> s(v);

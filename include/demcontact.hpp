@@ -114,3 +114,43 @@ inline void contact_trajectory(double p, double alpha, double v0, double omega0,
 }
 
 }  // namespace demcontact
+
+namespace demcontact {
+
+/// A dc_contact_spec filled by dc_contact_spec_init (version, size, defaults): set the fields
+/// your scene needs by name, then call contact_model_init(spec).
+inline ::dc_contact_spec contact_spec() {
+    ::dc_contact_spec s{};
+    detail::check(::dc_contact_spec_init(&s));
+    return s;
+}
+
+/// Doubles of history one contact of `model` needs (dc_contact_history_len). Throws on error.
+inline std::size_t contact_history_len(const ::dc_contact_model& model) {
+    std::size_t n = 0;
+    detail::check(::dc_contact_history_len(&model, &n));
+    return n;
+}
+
+/// One contact (dc_contact_force): `history` is this contact's state (zeros for a new contact),
+/// updated in place. Throws demcontact::error on a non-OK status (history then untouched).
+inline ::dc_contact_result contact_force(const ::dc_contact_model& model, const ::dc_contact_state& state,
+                                         double dt, span<double> history) {
+    ::dc_contact_result r{};
+    detail::check(::dc_contact_force(&model, &state, dt, history.data(), history.size(), &r));
+    return r;
+}
+
+/// noexcept form of contact_force: returns the status; `out` written only on status::ok.
+inline status contact_force(const ::dc_contact_model& model, const ::dc_contact_state& state, double dt,
+                            span<double> history, ::dc_contact_result& out) noexcept {
+    return static_cast<status>(::dc_contact_force(&model, &state, dt, history.data(), history.size(), &out));
+}
+
+/// n contacts (dc_contact_force_batch). Throws demcontact::error on a non-OK status.
+inline void contact_force_batch_checked(const ::dc_contact_model& model, const ::dc_contact_batch& batch,
+                                        double dt) {
+    detail::check(::dc_contact_force_batch(&model, &batch, dt));
+}
+
+}  // namespace demcontact

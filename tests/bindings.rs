@@ -611,7 +611,7 @@ fn probe_f90(api: &Api) -> String {
             let elem = if f.len.is_some() { "(1)" } else { "" };
             let _ = writeln!(
                 o,
-                "      v({i}) = transfer(c_loc({var}%{}{elem}), 0_c_intptr_t) - transfer(c_loc({var}), 0_c_intptr_t)",
+                "      v({i}) = transfer(c_loc({var}%{}{elem}), 0_c_intptr_t) &\n          - transfer(c_loc({var}), 0_c_intptr_t)",
                 f.name
             );
         }

@@ -76,139 +76,244 @@ contains
     block
       type(dc_contact_spec), target :: x_dc_contact_spec
       v(1) = c_sizeof(x_dc_contact_spec)
-      v(2) = transfer(c_loc(x_dc_contact_spec%version), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(3) = transfer(c_loc(x_dc_contact_spec%size), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(4) = transfer(c_loc(x_dc_contact_spec%normal), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(5) = transfer(c_loc(x_dc_contact_spec%damping), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(6) = transfer(c_loc(x_dc_contact_spec%criterion), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(7) = transfer(c_loc(x_dc_contact_spec%tangential), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(8) = transfer(c_loc(x_dc_contact_spec%rolling), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(9) = transfer(c_loc(x_dc_contact_spec%twisting), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(10) = transfer(c_loc(x_dc_contact_spec%E1), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(11) = transfer(c_loc(x_dc_contact_spec%nu1), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(12) = transfer(c_loc(x_dc_contact_spec%E2), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(13) = transfer(c_loc(x_dc_contact_spec%nu2), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(14) = transfer(c_loc(x_dc_contact_spec%p), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(15) = transfer(c_loc(x_dc_contact_spec%k_n), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(16) = transfer(c_loc(x_dc_contact_spec%e_n), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(17) = transfer(c_loc(x_dc_contact_spec%visco_A), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(18) = transfer(c_loc(x_dc_contact_spec%mu), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(19) = transfer(c_loc(x_dc_contact_spec%k_t), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(20) = transfer(c_loc(x_dc_contact_spec%e_t), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(21) = transfer(c_loc(x_dc_contact_spec%mu_r), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(22) = transfer(c_loc(x_dc_contact_spec%k_r), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(23) = transfer(c_loc(x_dc_contact_spec%eta_r), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(24) = transfer(c_loc(x_dc_contact_spec%mu_tw), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(25) = transfer(c_loc(x_dc_contact_spec%k_tw), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(26) = transfer(c_loc(x_dc_contact_spec%eta_tw), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
-      v(27) = transfer(c_loc(x_dc_contact_spec%inertia_factor), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(2) = transfer(c_loc(x_dc_contact_spec%version), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(3) = transfer(c_loc(x_dc_contact_spec%size), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(4) = transfer(c_loc(x_dc_contact_spec%normal), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(5) = transfer(c_loc(x_dc_contact_spec%damping), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(6) = transfer(c_loc(x_dc_contact_spec%criterion), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(7) = transfer(c_loc(x_dc_contact_spec%tangential), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(8) = transfer(c_loc(x_dc_contact_spec%rolling), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(9) = transfer(c_loc(x_dc_contact_spec%twisting), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(10) = transfer(c_loc(x_dc_contact_spec%E1), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(11) = transfer(c_loc(x_dc_contact_spec%nu1), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(12) = transfer(c_loc(x_dc_contact_spec%E2), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(13) = transfer(c_loc(x_dc_contact_spec%nu2), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(14) = transfer(c_loc(x_dc_contact_spec%p), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(15) = transfer(c_loc(x_dc_contact_spec%k_n), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(16) = transfer(c_loc(x_dc_contact_spec%e_n), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(17) = transfer(c_loc(x_dc_contact_spec%visco_A), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(18) = transfer(c_loc(x_dc_contact_spec%mu), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(19) = transfer(c_loc(x_dc_contact_spec%k_t), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(20) = transfer(c_loc(x_dc_contact_spec%e_t), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(21) = transfer(c_loc(x_dc_contact_spec%mu_r), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(22) = transfer(c_loc(x_dc_contact_spec%k_r), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(23) = transfer(c_loc(x_dc_contact_spec%eta_r), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(24) = transfer(c_loc(x_dc_contact_spec%mu_tw), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(25) = transfer(c_loc(x_dc_contact_spec%k_tw), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(26) = transfer(c_loc(x_dc_contact_spec%eta_tw), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(27) = transfer(c_loc(x_dc_contact_spec%inertia_factor), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
     end block
     block
       type(dc_pair), target :: x_dc_pair
       v(28) = c_sizeof(x_dc_pair)
-      v(29) = transfer(c_loc(x_dc_pair%model), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(30) = transfer(c_loc(x_dc_pair%kernel), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(31) = transfer(c_loc(x_dc_pair%criterion), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(32) = transfer(c_loc(x_dc_pair%clamp), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(33) = transfer(c_loc(x_dc_pair%p), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(34) = transfer(c_loc(x_dc_pair%stiffness), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(35) = transfer(c_loc(x_dc_pair%alpha), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(36) = transfer(c_loc(x_dc_pair%damping_a), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(37) = transfer(c_loc(x_dc_pair%e), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(38) = transfer(c_loc(x_dc_pair%k), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(39) = transfer(c_loc(x_dc_pair%c), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(40) = transfer(c_loc(x_dc_pair%h), 0_c_intptr_t) - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(29) = transfer(c_loc(x_dc_pair%model), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(30) = transfer(c_loc(x_dc_pair%kernel), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(31) = transfer(c_loc(x_dc_pair%criterion), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(32) = transfer(c_loc(x_dc_pair%clamp), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(33) = transfer(c_loc(x_dc_pair%p), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(34) = transfer(c_loc(x_dc_pair%stiffness), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(35) = transfer(c_loc(x_dc_pair%alpha), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(36) = transfer(c_loc(x_dc_pair%damping_a), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(37) = transfer(c_loc(x_dc_pair%e), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(38) = transfer(c_loc(x_dc_pair%k), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(39) = transfer(c_loc(x_dc_pair%c), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
+      v(40) = transfer(c_loc(x_dc_pair%h), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
     end block
     block
       type(dc_contact_model), target :: x_dc_contact_model
       v(41) = c_sizeof(x_dc_contact_model)
-      v(42) = transfer(c_loc(x_dc_contact_model%magic), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(43) = transfer(c_loc(x_dc_contact_model%history_len), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(44) = transfer(c_loc(x_dc_contact_model%tangential), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(45) = transfer(c_loc(x_dc_contact_model%rolling), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(46) = transfer(c_loc(x_dc_contact_model%twisting), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(47) = transfer(c_loc(x_dc_contact_model%reserved_i), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(48) = transfer(c_loc(x_dc_contact_model%normal), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(49) = transfer(c_loc(x_dc_contact_model%mu), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(50) = transfer(c_loc(x_dc_contact_model%kt), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(51) = transfer(c_loc(x_dc_contact_model%zeta_t), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(52) = transfer(c_loc(x_dc_contact_model%kappa), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(53) = transfer(c_loc(x_dc_contact_model%mu_r), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(54) = transfer(c_loc(x_dc_contact_model%k_r), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(55) = transfer(c_loc(x_dc_contact_model%eta_r), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(56) = transfer(c_loc(x_dc_contact_model%mu_tw), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(57) = transfer(c_loc(x_dc_contact_model%k_tw), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(58) = transfer(c_loc(x_dc_contact_model%eta_tw), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(59) = transfer(c_loc(x_dc_contact_model%reserved(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(42) = transfer(c_loc(x_dc_contact_model%magic), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(43) = transfer(c_loc(x_dc_contact_model%history_len), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(44) = transfer(c_loc(x_dc_contact_model%tangential), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(45) = transfer(c_loc(x_dc_contact_model%rolling), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(46) = transfer(c_loc(x_dc_contact_model%twisting), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(47) = transfer(c_loc(x_dc_contact_model%reserved_i), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(48) = transfer(c_loc(x_dc_contact_model%normal), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(49) = transfer(c_loc(x_dc_contact_model%mu), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(50) = transfer(c_loc(x_dc_contact_model%kt), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(51) = transfer(c_loc(x_dc_contact_model%zeta_t), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(52) = transfer(c_loc(x_dc_contact_model%kappa), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(53) = transfer(c_loc(x_dc_contact_model%mu_r), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(54) = transfer(c_loc(x_dc_contact_model%k_r), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(55) = transfer(c_loc(x_dc_contact_model%eta_r), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(56) = transfer(c_loc(x_dc_contact_model%mu_tw), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(57) = transfer(c_loc(x_dc_contact_model%k_tw), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(58) = transfer(c_loc(x_dc_contact_model%eta_tw), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
+      v(59) = transfer(c_loc(x_dc_contact_model%reserved(1)), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
     end block
     block
       type(dc_contact_state), target :: x_dc_contact_state
       v(60) = c_sizeof(x_dc_contact_state)
-      v(61) = transfer(c_loc(x_dc_contact_state%n(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(62) = transfer(c_loc(x_dc_contact_state%overlap), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(63) = transfer(c_loc(x_dc_contact_state%v1(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(64) = transfer(c_loc(x_dc_contact_state%v2(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(65) = transfer(c_loc(x_dc_contact_state%w1(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(66) = transfer(c_loc(x_dc_contact_state%w2(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(67) = transfer(c_loc(x_dc_contact_state%r1), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(68) = transfer(c_loc(x_dc_contact_state%r2), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(69) = transfer(c_loc(x_dc_contact_state%m1), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(70) = transfer(c_loc(x_dc_contact_state%m2), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
+      v(61) = transfer(c_loc(x_dc_contact_state%n(1)), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
+      v(62) = transfer(c_loc(x_dc_contact_state%overlap), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
+      v(63) = transfer(c_loc(x_dc_contact_state%v1(1)), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
+      v(64) = transfer(c_loc(x_dc_contact_state%v2(1)), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
+      v(65) = transfer(c_loc(x_dc_contact_state%w1(1)), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
+      v(66) = transfer(c_loc(x_dc_contact_state%w2(1)), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
+      v(67) = transfer(c_loc(x_dc_contact_state%r1), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
+      v(68) = transfer(c_loc(x_dc_contact_state%r2), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
+      v(69) = transfer(c_loc(x_dc_contact_state%m1), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
+      v(70) = transfer(c_loc(x_dc_contact_state%m2), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
     end block
     block
       type(dc_contact_result), target :: x_dc_contact_result
       v(71) = c_sizeof(x_dc_contact_result)
-      v(72) = transfer(c_loc(x_dc_contact_result%force(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
-      v(73) = transfer(c_loc(x_dc_contact_result%torque1(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
-      v(74) = transfer(c_loc(x_dc_contact_result%torque2(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
-      v(75) = transfer(c_loc(x_dc_contact_result%f_n), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
-      v(76) = transfer(c_loc(x_dc_contact_result%ft(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
-      v(77) = transfer(c_loc(x_dc_contact_result%sliding), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
-      v(78) = transfer(c_loc(x_dc_contact_result%rolling_sliding), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
+      v(72) = transfer(c_loc(x_dc_contact_result%force(1)), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
+      v(73) = transfer(c_loc(x_dc_contact_result%torque1(1)), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
+      v(74) = transfer(c_loc(x_dc_contact_result%torque2(1)), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
+      v(75) = transfer(c_loc(x_dc_contact_result%f_n), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
+      v(76) = transfer(c_loc(x_dc_contact_result%ft(1)), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
+      v(77) = transfer(c_loc(x_dc_contact_result%sliding), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
+      v(78) = transfer(c_loc(x_dc_contact_result%rolling_sliding), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
     end block
     block
       type(dc_contact_batch), target :: x_dc_contact_batch
       v(79) = c_sizeof(x_dc_contact_batch)
-      v(80) = transfer(c_loc(x_dc_contact_batch%n), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(81) = transfer(c_loc(x_dc_contact_batch%history_stride), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(82) = transfer(c_loc(x_dc_contact_batch%normal), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(83) = transfer(c_loc(x_dc_contact_batch%overlap), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(84) = transfer(c_loc(x_dc_contact_batch%v1), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(85) = transfer(c_loc(x_dc_contact_batch%v2), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(86) = transfer(c_loc(x_dc_contact_batch%w1), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(87) = transfer(c_loc(x_dc_contact_batch%w2), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(88) = transfer(c_loc(x_dc_contact_batch%r1), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(89) = transfer(c_loc(x_dc_contact_batch%r2), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(90) = transfer(c_loc(x_dc_contact_batch%m1), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(91) = transfer(c_loc(x_dc_contact_batch%m2), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(92) = transfer(c_loc(x_dc_contact_batch%history), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(93) = transfer(c_loc(x_dc_contact_batch%f_n), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(94) = transfer(c_loc(x_dc_contact_batch%force), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(95) = transfer(c_loc(x_dc_contact_batch%torque1), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(96) = transfer(c_loc(x_dc_contact_batch%torque2), 0_c_intptr_t) - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(80) = transfer(c_loc(x_dc_contact_batch%n), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(81) = transfer(c_loc(x_dc_contact_batch%history_stride), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(82) = transfer(c_loc(x_dc_contact_batch%normal), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(83) = transfer(c_loc(x_dc_contact_batch%overlap), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(84) = transfer(c_loc(x_dc_contact_batch%v1), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(85) = transfer(c_loc(x_dc_contact_batch%v2), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(86) = transfer(c_loc(x_dc_contact_batch%w1), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(87) = transfer(c_loc(x_dc_contact_batch%w2), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(88) = transfer(c_loc(x_dc_contact_batch%r1), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(89) = transfer(c_loc(x_dc_contact_batch%r2), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(90) = transfer(c_loc(x_dc_contact_batch%m1), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(91) = transfer(c_loc(x_dc_contact_batch%m2), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(92) = transfer(c_loc(x_dc_contact_batch%history), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(93) = transfer(c_loc(x_dc_contact_batch%f_n), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(94) = transfer(c_loc(x_dc_contact_batch%force), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(95) = transfer(c_loc(x_dc_contact_batch%torque1), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
+      v(96) = transfer(c_loc(x_dc_contact_batch%torque2), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
     end block
     block
       type(dc_duration_plan), target :: x_dc_duration_plan
       v(97) = c_sizeof(x_dc_duration_plan)
-      v(98) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(99) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(100) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(101) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(102) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(103) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(104) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(105) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(106) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(107) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(98) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(99) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(100) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(101) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(102) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(103) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(104) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(105) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(106) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
+      v(107) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
     end block
     block
       type(dc_energy), target :: x_dc_energy
       v(108) = c_sizeof(x_dc_energy)
-      v(109) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(110) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(111) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(112) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(113) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(109) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(110) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(111) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(112) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
+      v(113) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
     end block
     n = 113
   end subroutine expected_layout

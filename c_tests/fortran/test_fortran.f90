@@ -98,6 +98,44 @@ program test_fortran
     call energy_partition(1.5_c_double, alpha, DC_END_FORCE, en, s)
     call check(s == DC_OK, 'energy partition')
   end block
+  ! Full contact: spec by field name, model, history owned here, one step onto a rigid wall.
+  block
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
+    type(dc_contact_spec) :: spec
+    type(dc_contact_model) :: model
+    type(dc_contact_state) :: st
+    type(dc_contact_result) :: res
+    real(c_double) :: hist(DC_CONTACT_HISTORY_MAX), inf
+    integer(c_size_t) :: hl
+    inf = ieee_value(1.0_c_double, ieee_positive_inf)
+    call check(dc_contact_spec_init(spec) == DC_OK, 'contact spec init')
+    spec%normal = DC_NORMAL_HERTZ
+    spec%E1 = 63e9_c_double
+    spec%nu1 = 0.23_c_double
+    spec%E2 = inf
+    spec%nu2 = 0.3_c_double
+    spec%tangential = DC_TANGENTIAL_MINDLIN
+    spec%mu = 0.3_c_double
+    call check(dc_contact_model_init(spec, model) == DC_OK, 'contact model init')
+    call check(dc_contact_history_len(model, hl) == DC_OK .and. hl == 6, 'contact history length')
+    hist = 0.0_c_double
+    st%n = [0.0_c_double, 1.0_c_double, 0.0_c_double]
+    st%overlap = 1e-6_c_double
+    st%v1 = [0.5_c_double, 0.0_c_double, 0.0_c_double]
+    st%v2 = 0.0_c_double
+    st%w1 = 0.0_c_double
+    st%w2 = 0.0_c_double
+    st%r1 = 1e-3_c_double
+    st%r2 = inf
+    st%m1 = 1e-5_c_double
+    st%m2 = inf
+    s = dc_contact_force(model, st, 1e-8_c_double, hist, int(DC_CONTACT_HISTORY_MAX, c_size_t), res)
+    call check(s == DC_OK .and. res%f_n > 0.0_c_double .and. res%ft(1) < 0.0_c_double, 'contact force')
+    call check(res%force(2) == res%f_n .and. hist(4) > 0.0_c_double, 'contact force direction and history')
+    st%n(2) = 0.5_c_double
+    s = dc_contact_force(model, st, 1e-8_c_double, hist, int(DC_CONTACT_HISTORY_MAX, c_size_t), res)
+    call check(s == DC_ERR_NOT_UNIT, 'non-unit normal rejected')
+  end block
   ! ABI: constants and struct layouts as the C compiler sees them.
   call check_abi()
 

@@ -4,7 +4,9 @@
  * error and produce a finite output on success; any violation aborts, which libFuzzer reports.
  * Cases 0-11: calibration, material, pair constructors and force kernels; 12-20: the power-law
  * calculus (durations at every level, energy partition, trajectories with fuzzed n, buf_len and
- * NULL buffers, time steps, omega0); 21-23: the viscoelastic exports.
+ * NULL buffers, time steps, omega0); 21-23: the viscoelastic exports; 24-28: the full-contact
+ * exports (spec from fuzzed fields and selectors, scalar, spheres and batch with fuzzed states,
+ * histories and NULL masks, arbitrary bytes as a dc_contact_model).
  * Built and run by scripts/fuzz.sh (Rust code instrumented for coverage, ASan+UBSan on the C side). */
 #include <demcontact.h>
 #include <math.h>
@@ -21,6 +23,114 @@ static void verdict(int32_t s, double out) {
     if (s != DC_OK && memcmp(&out, &(double){SENTINEL}, sizeof out) != 0) abort();
 }
 
+/* ---------------------------------------------------------------- full contact (cases 24-28) */
+
+static int known(int32_t s) { return s == DC_OK || (s >= 6101 && s <= 6139); }
+
+static int all_finite(const double *v, size_t n) {
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(v[i])) return 0;
+    return 1;
+}
+
+/* A model with every stage switched on (history length 10), from valid parameters. */
+static int full_model(dc_contact_model *m, int32_t crit) {
+    dc_contact_spec s;
+    if (dc_contact_spec_init(&s) != DC_OK) abort();
+    s.normal = DC_NORMAL_HERTZ;
+    s.damping = DC_DAMPING_RESTITUTION;
+    s.criterion = crit;
+    s.E1 = 7e10, s.nu1 = 0.3, s.E2 = INFINITY, s.nu2 = 0.25, s.e_n = 0.6;
+    s.tangential = DC_TANGENTIAL_MINDLIN, s.mu = 0.4, s.e_t = 0.5;
+    s.rolling = DC_ROLLING_EPSD, s.mu_r = 0.1, s.eta_r = 0.3;
+    s.twisting = DC_TWISTING_SDS, s.mu_tw = 1e-5, s.k_tw = 1e-4;
+    return dc_contact_model_init(&s, m) == DC_OK;
+}
+
+static void fuzz_contact(int which, const uint8_t *data, size_t n) {
+    /* Zero-padded copy: short inputs read zeros, never past the end. */
+    uint8_t d[sizeof(double) * 40] = {0};
+    memcpy(d, data, n < sizeof d ? n : sizeof d);
+    n = sizeof d;
+    double y[40];
+    memcpy(y, d, sizeof y);
+    int32_t sel[6];
+    memcpy(sel, d, sizeof sel);
+    dc_contact_model m, m0;
+    memset(&m, 0x5a, sizeof m);
+    m0 = m;
+    dc_contact_result r, r0;
+    memset(&r, 0x33, sizeof r);
+    r0 = r;
+    double h[DC_CONTACT_HISTORY_MAX], h0[DC_CONTACT_HISTORY_MAX];
+    memcpy(h, y + 20, sizeof h);
+    memcpy(h0, h, sizeof h);
+    dc_contact_state st;
+    memcpy(&st, y, sizeof st); /* 20 doubles */
+    int32_t s;
+    switch (which) {
+    case 24: { /* spec: fuzzed selectors and parameters */
+        dc_contact_spec sp;
+        if (dc_contact_spec_init(&sp) != DC_OK) abort();
+        sp.normal = sel[0] % 7 - 1, sp.damping = sel[1] % 4 - 1, sp.criterion = sel[2] % 4 - 1;
+        sp.tangential = sel[3] % 5 - 1, sp.rolling = sel[4] % 5 - 1, sp.twisting = sel[5] % 4 - 1;
+        double *f = &sp.E1; /* the 18 consecutive doubles E1 .. inertia_factor */
+        for (int i = 0; i < 18; i++)
+            if (d[i] & 1) f[i] = y[3 + i];
+        if (d[0] & 2) sp.version ^= (uint32_t)(y[1] != 0);
+        s = dc_contact_model_init(&sp, &m);
+        if (!known(s)) abort();
+        if (s != DC_OK && memcmp(&m, &m0, sizeof m) != 0) abort();
+        if (s == DC_OK) {
+            size_t len = 99;
+            if (dc_contact_history_len(&m, &len) != DC_OK || len > DC_CONTACT_HISTORY_MAX) abort();
+        }
+        break;
+    }
+    case 25: /* one contact, fuzzed state, dt, history */
+    case 26: /* the spheres helper, fuzzed centres */
+        if (!full_model(&m, d[0] & 1)) abort();
+        if (which == 25)
+            s = dc_contact_force(&m, &st, y[30], (d[1] & 1) ? h : NULL, (size_t)(d[2] % 12), &r);
+        else
+            s = dc_contact_force_spheres(&m, y + 30, y + 33, &st, y[36], h, DC_CONTACT_HISTORY_MAX, &r);
+        if (!known(s)) abort();
+        if (s != DC_OK && (memcmp(&r, &r0, sizeof r) != 0 || memcmp(h, h0, sizeof h) != 0)) abort();
+        if (s == DC_OK && !(all_finite(r.force, 3) && all_finite(r.torque1, 3) && all_finite(r.torque2, 3) &&
+                            all_finite(&r.f_n, 1) && all_finite(h, DC_CONTACT_HISTORY_MAX)))
+            abort();
+        break;
+    case 27: { /* batch of 2 contacts: fuzzed arrays (aliasing the fuzzed doubles), NULL mask */
+        if (!full_model(&m, d[0] & 1)) abort();
+        double out[2 + 6 + 6 + 6], out0[20], hb[20];
+        for (int i = 0; i < 20; i++) out[i] = SENTINEL, hb[i] = y[i];
+        memcpy(out0, out, sizeof out);
+        double hb0[20];
+        memcpy(hb0, hb, sizeof hb);
+        uint32_t mask = (uint32_t)d[3] | ((uint32_t)d[4] << 8);
+        const double *in[10] = {y, y + 6, y + 8, y + 14, y + 20, y + 26, y + 32, y + 34, y + 36, y + 38};
+        for (int i = 0; i < 10; i++)
+            if (mask & (1u << i)) in[i] = NULL;
+        dc_contact_batch b = {.n = 2, .history_stride = (size_t)(d[5] % 12), .normal = in[0], .overlap = in[1],
+                              .v1 = in[2], .v2 = in[3], .w1 = in[4], .w2 = in[5], .r1 = in[6], .r2 = in[7],
+                              .m1 = in[8], .m2 = in[9], .history = (mask & 1024) ? NULL : hb, .f_n = out,
+                              .force = out + 2, .torque1 = out + 8, .torque2 = out + 14};
+        s = dc_contact_force_batch(&m, &b, y[39]);
+        if (!known(s)) abort();
+        if (s != DC_OK && (memcmp(out, out0, sizeof out) != 0 || memcmp(hb, hb0, sizeof hb) != 0)) abort();
+        if (s == DC_OK && !all_finite(out, 20)) abort();
+        break;
+    }
+    case 28: /* arbitrary bytes as a model: rejected or computed, never a crash */
+        memset(&m, 0, sizeof m);
+        memcpy(&m, d, n < sizeof m ? n : sizeof m);
+        s = dc_contact_force(&m, &st, 1e-7, h, DC_CONTACT_HISTORY_MAX, &r);
+        if (!known(s)) abort();
+        if (s != DC_OK && memcmp(&r, &r0, sizeof r) != 0) abort();
+        break;
+    }
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (size < 1) return 0;
     double x[8] = {0};
@@ -33,7 +143,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     double out = SENTINEL;
     dc_pair pair;
     double v3[3] = {SENTINEL, SENTINEL, SENTINEL};
-    switch (data[0] % 24) {
+    switch (data[0] % 29) {
     case 0: verdict(dc_alpha_from_e(x[0], x[1], c, &out), out); break;
     case 1: verdict(dc_e_from_alpha(x[0], x[1], c, &out), out); break;
     case 2: verdict(dc_dt_crit(x[0], x[1], x[2], &out), out); break;
@@ -47,8 +157,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     case 7:
     case 8: {
         int32_t s;
-        if (data[0] % 24 == 6) s = dc_pair_powerlaw(x[0], x[1], x[2], c, &pair);
-        else if (data[0] % 24 == 7) s = dc_pair_hertz(x[0], x[1], x[0], x[1], x[2], c, &pair);
+        if (data[0] % 29 == 6) s = dc_pair_powerlaw(x[0], x[1], x[2], c, &pair);
+        else if (data[0] % 29 == 7) s = dc_pair_hertz(x[0], x[1], x[0], x[1], x[2], c, &pair);
         else s = dc_pair_viscoelastic(x[0], x[1], x[0], x[1], x[2], c, &pair);
         verdict(s == DC_OK ? DC_OK : s, s == DC_OK ? 0.0 : SENTINEL);
         if (s == DC_OK) {
@@ -83,7 +193,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     case 12: verdict(dc_max_overlap(x[0], x[1], x[2], x[3], &out), out); break;
     case 13: verdict(dc_time_of_max_overlap(x[0], x[1], x[2], x[3], &out), out); break;
     case 14: verdict(dc_contact_duration(x[0], x[1], x[2], x[3], c, &out), out); break;
-    case 15: verdict(dc_contact_duration_level(x[0], x[1], x[2], x[3], c, (int32_t)(data[0] / 24) % 7 - 1, &out), out); break;
+    case 15: verdict(dc_contact_duration_level(x[0], x[1], x[2], x[3], c, (int32_t)(data[0] / 29) % 7 - 1, &out), out); break;
     case 16: {
         dc_energy en = {SENTINEL, SENTINEL, SENTINEL, SENTINEL, SENTINEL};
         int32_t s = dc_energy_partition(x[0], x[1], c, &en);
@@ -104,7 +214,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         if (ctl & 0x40u) n = (size_t)-1;
         double *pt[4];
         for (int i = 0; i < 4; i++) pt[i] = (ctl & 0x80u) && i == (ctl & 3u) ? NULL : bufs[i];
-        int32_t s = dc_contact_trajectory(x[0], x[1], x[2], x[3], x[4], c, (int32_t)(data[0] / 24) % 7 - 1, n, pt[0],
+        int32_t s = dc_contact_trajectory(x[0], x[1], x[2], x[3], x[4], c, (int32_t)(data[0] / 29) % 7 - 1, n, pt[0],
                                           pt[1], pt[2], pt[3], len);
         if (!(s == DC_OK || (s >= 6101 && s <= 6139))) abort();
         for (int i = 0; i < 4; i++)
@@ -147,6 +257,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         out = SENTINEL;
         verdict(dc_viscoelastic_speed_for_e(x[0], x[1], c, &out), out);
         break;
+    case 24:
+    case 25:
+    case 26:
+    case 27:
+    case 28: fuzz_contact(data[0] % 29, data + 1, size - 1); break;
     }
     return 0;
 }
