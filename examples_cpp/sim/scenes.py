@@ -207,6 +207,8 @@ def main():
     ap.add_argument("--smoke", action="store_true")
     ap.add_argument("--reps", type=int, default=3, help="timing: alternating runs per model (0: none)")
     ap.add_argument("--workdir")
+    ap.add_argument("--resume", action="store_true",
+                    help="keep the settling runs already complete in --workdir (rerun only the rest)")
     a = ap.parse_args()
     workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_scene_"))
     g = geometry(a.smoke)
@@ -232,8 +234,12 @@ def main():
         for np_ in nps:
             d = os.path.join(workdir, "%s_np%d" % (label, np_))
             os.makedirs(d, exist_ok=True)
-            open(os.path.join(d, "in.scene"), "w").write(deck)
-            H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.scene", "-log", "log.scene"], d, env)
+            log = os.path.join(d, "log.scene")
+            done = os.path.exists(log) and "Loop time" in open(log).read() and \
+                os.path.exists(os.path.join(d, "final.dump")) and open(os.path.join(d, "in.scene")).read() == deck
+            if not (a.resume and done):
+                open(os.path.join(d, "in.scene"), "w").write(deck)
+                H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.scene", "-log", "log.scene"], d, env)
             s = stats(os.path.join(d, "final.dump"), g)
             s["loop"] = loop_time(os.path.join(d, "log.scene"))
             rows[(label, np_)] = s
