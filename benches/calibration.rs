@@ -55,3 +55,26 @@ fn e_from_alpha(b: Bencher, criterion: i32) {
         s
     });
 }
+
+/// `dc_dt_for_accuracy` (one call per sample; it simulates collisions inside the call): the cheap
+/// and the costly end of the range quoted in the README and docs/timestep.md (p = 1.5, both
+/// criteria): e = 0.9 at tol = 1e-2, and e = 0.1 at tol = 1e-3.
+#[divan::bench(args = [(DC_END_FORCE, 0.9, 1e-2), (DC_END_OVERLAP, 0.9, 1e-2), (DC_END_FORCE, 0.1, 1e-3), (DC_END_OVERLAP, 0.1, 1e-3)], sample_count = 5, sample_size = 1)]
+fn dt_for_accuracy(b: Bencher, (criterion, e, tol): (i32, f64, f64)) {
+    b.bench(|| {
+        let mut dt = 0.0;
+        let st = unsafe {
+            demcontact::ffi::step_accuracy::dc_dt_for_accuracy(
+                black_box(1.5),
+                black_box(e),
+                criterion,
+                1.0,
+                1.0,
+                tol,
+                &mut dt,
+            )
+        };
+        assert_eq!(st, DC_OK);
+        dt
+    });
+}

@@ -25,15 +25,20 @@ RUSTFLAGS="-Cpasses=sancov-module -Cllvm-args=-sanitizer-coverage-level=3 \
   CARGO_PROFILE_RELEASE_LTO=false cargo build --release --lib --locked --target-dir "$out/cargo" -q --target "$target"
 clang -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -Iinclude \
   c_tests/fuzz/fuzz_abi.c "$out/cargo/$target/release/libdemcontact.a" -lpthread -ldl -lm -o "$out/fuzz_abi"
-"$out/fuzz_abi" -runs="$runs" -max_total_time="$secs" -max_len=384 -print_final_stats=1 "$out/corpus" 2>&1 \
-  | tee "$out/fuzz.log" | grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|==|SUMMARY)" || true
-grep -q "stat::number_of_executed_units" "$out/fuzz.log" || { echo "fuzz: fuzzer did not finish" >&2; exit 1; }
-# A finding (sanitizer report, abort, leak) ends the run early but still prints the stats line:
-# look for it explicitly rather than trusting the line above.
-if grep -qE "^==[0-9]+==ERROR|^SUMMARY: |deadly signal|Test unit written" "$out/fuzz.log"; then
-  grep -E "^==[0-9]+==ERROR|^SUMMARY: |deadly signal|Test unit written" "$out/fuzz.log" >&2
-  echo "fuzz: FINDING (see $out/fuzz.log)" >&2
+# The fuzzer's own exit status decides: libFuzzer exits non-zero on a crash, a sanitizer report,
+# a leak or a timeout (it also prints its final stats from the crash handler, so the stats line
+# alone proves nothing). Crash inputs go to $out/ (artifact_prefix), not the working directory.
+set +e
+"$out/fuzz_abi" -runs="$runs" -max_total_time="$secs" -max_len=384 -print_final_stats=1 \
+  -artifact_prefix="$out/" "$out/corpus" >"$out/fuzz.log" 2>&1
+rc=$?
+set -e
+grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|==|SUMMARY|artifact_prefix|Test unit written)" \
+  "$out/fuzz.log" || true  # display only; the verdict is $rc below
+if [ "$rc" -ne 0 ]; then
+  echo "fuzz: FAILED: the fuzzer exited with status $rc (log: $out/fuzz.log)" >&2
   exit 1
 fi
+grep -q "stat::number_of_executed_units" "$out/fuzz.log" || { echo "fuzz: fuzzer did not finish" >&2; exit 1; }
 execs=$(grep "stat::number_of_executed_units" "$out/fuzz.log" | awk '{print $2}')
 echo "fuzz: $execs executions, 0 crashes"

@@ -415,8 +415,15 @@ fn normal_only_equals_dc_normal_force_bit_for_bit() {
                 let mut r = sentinel_res();
                 let s = unsafe { dc_contact_force(&m, &st, 1e-7, std::ptr::null_mut(), 0, &mut r) };
                 assert_eq!(s, DC_OK);
-                let reff = 1.0 / (1.0 / st.r1 + 1.0 / st.r2);
-                let meff = 1.0 / (1.0 / st.m1 + 1.0 / st.m2);
+                // R* and m* as documented: a b/(a + b), = a for b = +inf.
+                let h = |a: f64, b: f64| {
+                    if b == f64::INFINITY {
+                        a
+                    } else {
+                        a * (b / (a + b))
+                    }
+                };
+                let (reff, meff) = (h(st.r1, st.r2), h(st.m1, st.m2));
                 let vn: f64 = (0..3).map(|i| (st.v2[i] - st.v1[i]) * st.n[i]).sum();
                 let f = unsafe { dc_normal_force(&m.normal, st.overlap, vn, reff, meff) };
                 assert_eq!(r.f_n.to_bits(), f.to_bits());

@@ -12,7 +12,7 @@ use demcontact::ffi::calibration::dc_alpha_from_e;
 use demcontact::ffi::force::*;
 use demcontact::ffi::status::*;
 
-const TOL: f64 = 1e-14;
+const TOL: f64 = 2e-15;
 
 fn logspace(a: f64, b: f64, n: usize) -> Vec<f64> {
     (0..n)

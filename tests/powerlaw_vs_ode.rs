@@ -380,14 +380,17 @@ fn trajectory_matches_reference() {
     println!(
         "trajectory: {checked} samples; worst rel t {worst_t:.2e}, worst |Δv|/v0 {worst_v:.2e}"
     );
-    assert!(worst_t < 1e-10 && worst_v < 1e-10);
+    // Quoted in the README and docs/powerlaw.md (measured 4.5e-12 and 5.4e-12).
+    assert!(worst_t < 1e-11 && worst_v < 1e-11);
 }
 
 #[test]
 fn accuracy_levels() {
     // The knob's table: worst relative error of τ (force end) and t_max per level against the
     // reference over p ∈ {1.25, 1.5, 2, 3, 5}, e ∈ [0.01, 0.999] (force calibration) and
-    // ζ ∈ {1, 1.5, 4, 30}. Level 4 (the default) must meet 1e-10.
+    // ζ ∈ {1, 1.5, 4, 30}. Level 4 (the default) must meet 1e-10; every level has the bound quoted
+    // in docs/powerlaw.md (measured 7.9e-8, 1.2e-9, then 5.0e-13 = the reference's own error).
+    const BOUND: [f64; 5] = [2e-7, 3e-9, 1e-12, 1e-12, 1e-12];
     let mut worst = [0.0f64; 5];
     for &p in &PS[1..] {
         let s = (2.0 * (p + 1.0)).sqrt();
@@ -414,6 +417,12 @@ fn accuracy_levels() {
         println!(
             "level {lv}: {} evaluations per panel, worst rel error {w:.1e}",
             demcontact::numerics::jacobi_cc::evaluations(lv as u32)
+        );
+    }
+    for (lv, (w, b)) in worst.iter().zip(BOUND).enumerate() {
+        assert!(
+            w <= &b,
+            "level {lv}: worst rel error {w:.1e} above its bound {b:.0e}"
         );
     }
     assert!(worst[4] < 1e-10);

@@ -12,7 +12,8 @@ const SENTINEL: f64 = -9.87654321e123;
 /// Every status an export may return: DC_OK or a documented DC_ERR_* code (never
 /// DC_ERR_INTERNAL, which would mean a caught panic).
 fn known(s: i32) -> bool {
-    s == DC_OK || (6101..=6139).contains(&s)
+    // The library's status table decides (no hard-coded range).
+    dc_status_known(s) == 1 && s != DC_ERR_INTERNAL
 }
 
 fn pair_bytes(p: &dc_pair) -> Vec<u8> {

@@ -41,7 +41,13 @@ fn round_trip_within_1e_13() {
             "criterion {crit}: worst round trip {:.2e} at e={:e} p={}",
             worst.0, worst.1, worst.2
         );
-        assert!(worst.0 <= 1e-13, "criterion {crit}: {worst:?}");
+        // Bounds on the figures quoted in docs/calibration.md and the README (4.8e-14 overlap end,
+        // conditioning-limited; 5.1e-15 force end).
+        let bound = if crit == DC_END_FORCE { 2e-14 } else { 1e-13 };
+        assert!(
+            worst.0 <= bound,
+            "criterion {crit}: {worst:?} above {bound:.0e}"
+        );
     }
 }
 

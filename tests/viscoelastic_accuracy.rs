@@ -39,7 +39,13 @@ fn full_range_matches_reference_on_420_points() {
         println!(
             "{c:?}: full-range vs reference on {used} points in [0, {top}]: max relative error {worst:.2e} at b = {at:.4e}"
         );
-        assert!(used >= 200 && worst < 1e-10);
+        // The contract is 1e-10; the bounds asserted are those of the measured figures quoted in
+        // the README (6.2e-14 force, 3.7e-15 overlap).
+        let bound = if c == Force { 1.5e-13 } else { 1e-14 };
+        assert!(
+            used >= 200 && worst < bound,
+            "{c:?}: {worst:.2e} above {bound:.0e}"
+        );
     }
 }
 

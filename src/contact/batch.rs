@@ -10,32 +10,32 @@
 //! Every value is validated in a first pass (nothing is written on error).
 
 use super::evaluate::{check_model, check_state};
-use super::kinematics::{ContactState, Kin};
+use super::kinematics::{ContactState, Kin, harmonic};
 use super::model::{ContactModel, select};
 use super::tangential::{TangentialLaw, step};
 use super::tangential_linear::Linear;
 use super::tangential_mindlin::Mindlin;
-use super::vec3::{V3, add, cross, scale, sub};
+use super::vec3::{V3, add, cross, dot, normal_vector, scale, sub};
 use super::{rolling_constant, rolling_epsd, twisting_sds};
 use crate::Error;
 use crate::force::pair::{Consts, Law, Visit, eval};
 use crate::force::registry::{dispatch, normal_force_raw};
 
-/// Inputs of n contacts: vectors are 3 consecutive doubles per contact (x, y, z).
+/// Inputs of n contacts.
 #[derive(Clone, Copy, Debug)]
 pub struct BatchIn<'a> {
-    /// Unit normals (3n).
-    pub normal: &'a [f64],
+    /// Unit normals.
+    pub normal: &'a [[f64; 3]],
     /// Overlaps (n).
     pub overlap: &'a [f64],
-    /// Velocities of body 1 (3n).
-    pub v1: &'a [f64],
-    /// Velocities of body 2 (3n).
-    pub v2: &'a [f64],
-    /// Angular velocities of body 1 (3n; any 3n array if the model is normal-only).
-    pub w1: &'a [f64],
-    /// Angular velocities of body 2 (3n; idem).
-    pub w2: &'a [f64],
+    /// Velocities of body 1.
+    pub v1: &'a [[f64; 3]],
+    /// Velocities of body 2.
+    pub v2: &'a [[f64; 3]],
+    /// Angular velocities of body 1 (any n vectors if the model is normal-only).
+    pub w1: &'a [[f64; 3]],
+    /// Angular velocities of body 2 (idem).
+    pub w2: &'a [[f64; 3]],
     /// Radii of body 1 (n).
     pub r1: &'a [f64],
     /// Radii of body 2 (n; +∞ for walls).
@@ -51,12 +51,12 @@ pub struct BatchIn<'a> {
 pub struct BatchOut<'a> {
     /// Normal forces (n).
     pub f_n: &'a mut [f64],
-    /// Forces on body 1 (3n).
-    pub force: &'a mut [f64],
-    /// Torques on body 1 (3n); may be absent for a normal-only model.
-    pub torque1: Option<&'a mut [f64]>,
-    /// Torques on body 2 (3n); idem.
-    pub torque2: Option<&'a mut [f64]>,
+    /// Forces on body 1.
+    pub force: &'a mut [[f64; 3]],
+    /// Torques on body 1; may be absent for a normal-only model.
+    pub torque1: Option<&'a mut [[f64; 3]]>,
+    /// Torques on body 2; idem.
+    pub torque2: Option<&'a mut [[f64; 3]]>,
     /// History, `stride` doubles per contact (empty when the model needs none).
     pub history: &'a mut [f64],
     /// Doubles per contact in `history` (≥ the model's history length).
@@ -66,7 +66,7 @@ pub struct BatchOut<'a> {
 fn v3(c: &[f64]) -> V3 {
     match c {
         &[x, y, z] => [x, y, z],
-        _ => [f64::NAN; 3],
+        _ => [0.0; 3],
     }
 }
 
@@ -74,19 +74,19 @@ fn v3(c: &[f64]) -> V3 {
 fn states<'a>(b: &BatchIn<'a>) -> impl Iterator<Item = ContactState> + 'a {
     let b = *b;
     b.normal
-        .chunks_exact(3)
+        .iter()
         .zip(b.overlap)
-        .zip(b.v1.chunks_exact(3).zip(b.v2.chunks_exact(3)))
-        .zip(b.w1.chunks_exact(3).zip(b.w2.chunks_exact(3)))
+        .zip(b.v1.iter().zip(b.v2))
+        .zip(b.w1.iter().zip(b.w2))
         .zip(b.r1.iter().zip(b.r2).zip(b.m1.iter().zip(b.m2)))
         .map(
-            |((((n, &d), (v1, v2)), (w1, w2)), ((&r1, &r2), (&m1, &m2)))| ContactState {
-                n: v3(n),
+            |((((&n, &d), (&v1, &v2)), (&w1, &w2)), ((&r1, &r2), (&m1, &m2)))| ContactState {
+                n,
                 overlap: d,
-                v1: v3(v1),
-                v2: v3(v2),
-                w1: v3(w1),
-                w2: v3(w2),
+                v1,
+                v2,
+                w1,
+                w2,
                 r1,
                 r2,
                 m1,
@@ -100,7 +100,7 @@ struct NormalPass<'a, 'b> {
     c: Consts,
     inp: &'b BatchIn<'a>,
     f_n: &'b mut [f64],
-    force: &'b mut [f64],
+    force: &'b mut [[f64; 3]],
 }
 
 impl Visit for NormalPass<'_, '_> {
@@ -116,26 +116,48 @@ fn normal_pass<L: Law, const CLAMP: bool>(
     c: Consts,
     b: &BatchIn<'_>,
     f_n: &mut [f64],
-    force: &mut [f64],
+    force: &mut [[f64; 3]],
 ) {
     let it = b
         .normal
-        .chunks_exact(3)
+        .iter()
         .zip(b.overlap)
-        .zip(b.v1.chunks_exact(3).zip(b.v2.chunks_exact(3)))
+        .zip(b.v1.iter().zip(b.v2))
         .zip(b.r1.iter().zip(b.r2).zip(b.m1.iter().zip(b.m2)))
-        .zip(f_n.iter_mut().zip(force.chunks_exact_mut(3)));
-    for ((((n, &d), (v1, v2)), ((&r1, &r2), (&m1, &m2))), (fo, fv)) in it {
-        let (n, v1, v2) = (v3(n), v3(v1), v3(v2));
-        let vn = (v2[0] - v1[0]) * n[0] + (v2[1] - v1[1]) * n[1] + (v2[2] - v1[2]) * n[2];
-        let r = 1.0 / (1.0 / r1 + 1.0 / r2);
-        let m = 1.0 / (1.0 / m1 + 1.0 / m2);
-        let f = eval::<L, CLAMP>(&c, d, vn, r, m);
+        .zip(f_n.iter_mut().zip(force.iter_mut()));
+    for ((((&n, &d), (&v1, &v2)), ((&r1, &r2), (&m1, &m2))), (fo, fv)) in it {
+        // As Kin::of (same operations, same bits).
+        let vn = -dot(sub(v1, v2), n);
+        let f = eval::<L, CLAMP>(&c, d, vn, harmonic(r1, r2), harmonic(m1, m2));
         *fo = f;
-        // Separated contacts get +0 (as the scalar call), not f·n = ±0.
-        let v = scale(f, n);
-        fv.copy_from_slice(&if d > 0.0 { v } else { [0.0; 3] });
+        *fv = normal_vector(f, n);
     }
+}
+
+/// All inputs valid? Separate passes per array with no early exit (non-short-circuit `&`
+/// reductions, which the compiler vectorises); the detailed status is looked for only when one
+/// fails. Angular velocities are checked only when the model reads them.
+fn all_valid(b: &BatchIn<'_>, uses_w: bool) -> bool {
+    let finite = |x: &[f64]| x.iter().fold(true, |ok, v| ok & v.is_finite());
+    let body1 = |x: &[f64]| {
+        x.iter()
+            .fold(true, |ok, &v| ok & (v > 0.0) & (v < f64::INFINITY))
+    };
+    let body2 = |x: &[f64]| x.iter().fold(true, |ok, &v| ok & (v > 0.0));
+    // |n|² within 1e-6 of 1 also rejects NaN and ±∞ components.
+    let unit = b
+        .normal
+        .iter()
+        .fold(true, |ok, &n| ok & ((dot(n, n) - 1.0).abs() <= 1e-6));
+    let w_ok = !uses_w || (finite(b.w1.as_flattened()) & finite(b.w2.as_flattened()));
+    unit & finite(b.overlap)
+        & finite(b.v1.as_flattened())
+        & finite(b.v2.as_flattened())
+        & w_ok
+        & body1(b.r1)
+        & body1(b.m1)
+        & body2(b.r2)
+        & body2(b.m2)
 }
 
 fn put(c: &mut [f64], v: V3) {
@@ -159,8 +181,8 @@ fn tangential_pass<T: TangentialLaw>(
     };
     let it = states(b)
         .zip(o.f_n.iter())
-        .zip(o.force.chunks_exact_mut(3))
-        .zip(t1.chunks_exact_mut(3).zip(t2.chunks_exact_mut(3)))
+        .zip(o.force.iter_mut())
+        .zip(t1.iter_mut().zip(t2.iter_mut()))
         .zip(o.history.chunks_exact_mut(o.stride));
     for ((((s, &f), fv), (t1, t2)), h) in it {
         if !(s.overlap > 0.0) {
@@ -173,10 +195,10 @@ fn tangential_pass<T: TangentialLaw>(
         let mut xi = v3(xs);
         let r = step::<T>(m, &k, f, dt, &frame, &mut xi);
         put(xs, xi);
-        put(fv, add(v3(fv), r.ft));
+        *fv = add(*fv, r.ft);
         let nft = cross(k.n, r.ft);
-        put(t1, scale(-k.a1, nft));
-        put(t2, if k.wall { [0.0; 3] } else { scale(-k.a2, nft) });
+        *t1 = scale(-k.a1, nft);
+        *t2 = if k.wall { [0.0; 3] } else { scale(-k.a2, nft) };
     }
 }
 
@@ -195,7 +217,7 @@ fn rolling_pass<const EPSD: bool>(
     let pair = &m.normal;
     let it = states(b)
         .zip(o.f_n.iter())
-        .zip(t1.chunks_exact_mut(3).zip(t2.chunks_exact_mut(3)))
+        .zip(t1.iter_mut().zip(t2.iter_mut()))
         .zip(
             o.history
                 .chunks_exact_mut(o.stride.max(1))
@@ -226,9 +248,9 @@ fn rolling_pass<const EPSD: bool>(
         } else {
             rolling_constant::torque(m, &k, f).0
         };
-        put(t1, add(v3(t1), mr));
+        *t1 = add(*t1, mr);
         if !k.wall {
-            put(t2, sub(v3(t2), mr));
+            *t2 = sub(*t2, mr);
         }
     }
 }
@@ -245,7 +267,7 @@ fn twisting_pass(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_
     };
     let it = states(b)
         .zip(o.f_n.iter())
-        .zip(t1.chunks_exact_mut(3).zip(t2.chunks_exact_mut(3)))
+        .zip(t1.iter_mut().zip(t2.iter_mut()))
         .zip(o.history.chunks_exact_mut(o.stride));
     for (((s, &f), (t1, t2)), h) in it {
         if !(s.overlap > 0.0) {
@@ -255,9 +277,9 @@ fn twisting_pass(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_
         let Some(mk) = h.get_mut(at) else { continue };
         let (t, _) = twisting_sds::step(m, &k, f, dt, mk);
         let mt = scale(t, k.n);
-        put(t1, add(v3(t1), mt));
+        *t1 = add(*t1, mt);
         if !k.wall {
-            put(t2, sub(v3(t2), mt));
+            *t2 = sub(*t2, mt);
         }
     }
 }
@@ -270,14 +292,14 @@ fn frame_pass(m: &ContactModel, b: &BatchIn<'_>, o: &mut BatchOut<'_>) {
     }
     let it = b
         .normal
-        .chunks_exact(3)
+        .iter()
         .zip(b.overlap)
         .zip(o.history.chunks_exact_mut(o.stride));
     for ((n, &d), h) in it {
         let Some(h) = h.get_mut(..len) else { continue };
         if d > 0.0 {
             if let Some(hn) = h.get_mut(0..3) {
-                hn.copy_from_slice(n);
+                hn.copy_from_slice(&n[..]);
             }
         } else {
             h.fill(0.0);
@@ -299,15 +321,15 @@ pub fn contact_force_batch(
     let needs_torque = m.layout.len > 0 || m.rolling != select::ROLLING_NONE;
     let three = [inp.normal, inp.v1, inp.v2, inp.w1, inp.w2];
     let one = [inp.r1, inp.r2, inp.m1, inp.m2];
-    let torque_ok = |t: &Option<&mut [f64]>| match t {
-        Some(t) => t.len() == 3 * n,
+    let torque_ok = |t: &Option<&mut [[f64; 3]]>| match t {
+        Some(t) => t.len() == n,
         None => !needs_torque,
     };
     if n == 0
-        || three.iter().any(|a| a.len() != 3 * n)
+        || three.iter().any(|a| a.len() != n)
         || one.iter().any(|a| a.len() != n)
         || out.f_n.len() != n
-        || out.force.len() != 3 * n
+        || out.force.len() != n
         || !torque_ok(&out.torque1)
         || !torque_ok(&out.torque2)
         || out.stride < len
@@ -321,8 +343,19 @@ pub fn contact_force_batch(
     if !(dt > 0.0) {
         return Err(Error::NotPositive);
     }
-    for s in states(inp) {
-        check_state(&s)?;
+    if !all_valid(inp, needs_torque) {
+        for s in states(inp) {
+            let s = if needs_torque {
+                s
+            } else {
+                ContactState {
+                    w1: [0.0; 3],
+                    w2: [0.0; 3],
+                    ..s
+                }
+            };
+            check_state(&s)?;
+        }
     }
     if len > 0
         && !out
@@ -348,7 +381,7 @@ pub fn contact_force_batch(
             .into_iter()
             .flatten()
         {
-            t.fill(0.0);
+            t.fill([0.0; 3]);
         }
     }
     match m.tangential {

@@ -7,7 +7,7 @@ use super::model::{ContactModel, HISTORY_MAX, select};
 use super::tangential::{TangentialOut, step};
 use super::tangential_linear::Linear;
 use super::tangential_mindlin::Mindlin;
-use super::vec3::{V3, add, cross, finite, scale, sub};
+use super::vec3::{V3, add, cross, finite, normal_vector, scale, sub};
 use super::{rolling_constant, rolling_epsd, twisting_sds};
 use crate::Error;
 use crate::force::registry::{needs, normal_force_raw};
@@ -115,20 +115,25 @@ pub(crate) fn evaluate(
     dt: f64,
     h: &mut [f64; HISTORY_MAX],
 ) -> ContactForce {
-    if !(s.overlap > 0.0) {
-        // Separated: no force, and the history is reset so that a new contact starts fresh.
-        *h = [0.0; HISTORY_MAX];
-        return ContactForce::default();
-    }
     let (k, frame) = Kin::of(s, get3(h, 0), dt);
     let pair = &m.normal;
     let f = normal_force_raw(pair.kernel, pair.consts, k.d, k.vn, k.r_eff, k.m_eff);
+    if !(s.overlap > 0.0) {
+        // Not touching: the history is reset so that a new contact starts fresh; only an
+        // adhesive normal law still acts (no tangential, rolling or twisting force).
+        *h = [0.0; HISTORY_MAX];
+        return ContactForce {
+            fn_: f,
+            force: normal_vector(f, k.n),
+            ..ContactForce::default()
+        };
+    }
     let mut out = ContactForce {
         fn_: f,
         ..ContactForce::default()
     };
     if m.layout.len == 0 && m.rolling == select::ROLLING_NONE {
-        out.force = scale(f, k.n);
+        out.force = normal_vector(f, k.n);
         return out;
     }
     if m.layout.len > 0 {
@@ -136,7 +141,7 @@ pub(crate) fn evaluate(
     }
     // Operations in the order of the batch passes, so that both give the same bits (down to
     // the sign of zero).
-    out.force = scale(f, k.n);
+    out.force = normal_vector(f, k.n);
     let (mut t1, mut t2) = ([0.0; 3], [0.0; 3]);
     if let Some(at) = m.layout.tangential {
         let mut xi = get3(h, at);

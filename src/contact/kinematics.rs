@@ -10,8 +10,8 @@
 //! with r2 = +∞: v2 is the wall's velocity at the contact point, ω2 only enters the twist of the
 //! frame (see [`super::frame`]) and the relative rolling/twisting rates.
 //!
-//! R* = 1/(1/r1 + 1/r2) and m* = 1/(1/m1 + 1/m2), written as harmonic sums so that an infinite
-//! radius or mass (wall, fixed body) gives R* = r1, m* = m1 without inf/inf.
+//! R* = r1 r2/(r1 + r2) and m* = m1 m2/(m1 + m2), with an infinite radius or mass (wall, fixed
+//! body) giving R* = r1, m* = m1 ([`harmonic`]).
 
 use super::frame::FrameStep;
 use super::vec3::{V3, add, cross, dot, scale, sub, tangential};
@@ -65,6 +65,17 @@ pub(crate) struct Kin {
     pub r2: f64,
 }
 
+/// a b/(a + b) for finite a > 0 and b > 0 or +∞ (then a): R* and m*. One division, and no
+/// overflow of a b (written a (b/(a + b))).
+#[inline(always)]
+pub(crate) fn harmonic(a: f64, b: f64) -> f64 {
+    if b == f64::INFINITY {
+        a
+    } else {
+        a * (b / (a + b))
+    }
+}
+
 impl Kin {
     /// Kinematics of a state with overlap > 0 (checked by the caller), and the frame step from
     /// the stored normal `n_old` (zeros: new contact or no history).
@@ -89,8 +100,8 @@ impl Kin {
             n,
             d,
             vn,
-            r_eff: 1.0 / (1.0 / s.r1 + 1.0 / s.r2),
-            m_eff: 1.0 / (1.0 / s.m1 + 1.0 / s.m2),
+            r_eff: harmonic(s.r1, s.r2),
+            m_eff: harmonic(s.m1, s.m2),
             a1,
             a2,
             wall,

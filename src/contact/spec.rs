@@ -5,7 +5,7 @@
 use super::model::{ContactModel, Layout, select};
 use super::tangential::zeta_from_e_t;
 use super::tangential_mindlin::eight_g_star;
-use crate::force::{PairModel, hertz, powerlaw, viscoelastic};
+use crate::force::{PairModel, dmt, hertz, powerlaw, viscoelastic};
 use crate::{EndCriterion, Error};
 
 /// Normal-law selectors (the C constants `DC_NORMAL_*` equal these).
@@ -18,6 +18,8 @@ pub mod normal {
     pub const LINEAR: i32 = 3;
     /// Viscoelastic Hertz (Brilliantov et al.), damping constant A.
     pub const VISCOELASTIC: i32 = 4;
+    /// Adhesive DMT: Hertz minus 2π w R*, attraction beyond touching ([`crate::force::dmt`]).
+    pub const DMT: i32 = 5;
 }
 
 /// Normal-damping selectors (`DC_DAMPING_*`).
@@ -79,6 +81,8 @@ pub struct ContactSpec {
     pub eta_tw: f64,
     /// Inertia factor κ = I/(m r²) of the bodies (2/5 solid spheres).
     pub inertia_factor: f64,
+    /// Work of adhesion w [J/m²] (DMT).
+    pub work_of_adhesion: f64,
 }
 
 impl Default for ContactSpec {
@@ -112,6 +116,7 @@ impl Default for ContactSpec {
             k_tw: u,
             eta_tw: 0.0,
             inertia_factor: 0.4,
+            work_of_adhesion: u,
         }
     }
 }
@@ -188,6 +193,7 @@ fn normal_law(s: &ContactSpec, crit: EndCriterion) -> Result<PairModel, Error> {
             }
             viscoelastic::viscoelastic_from_factor(hertz_factor(s)?, set(s.visco_a)?, crit)
         }
+        normal::DMT => dmt::dmt_from_factor(hertz_factor(s)?, set(s.work_of_adhesion)?, e_n, crit),
         _ => Err(Error::SpecModel),
     }
 }

@@ -60,3 +60,10 @@ pub fn tangential(a: V3, n: V3) -> V3 {
 pub fn finite(a: V3) -> bool {
     a.iter().all(|x| x.is_finite())
 }
+
+/// The normal force vector f n, with +0 (not ±0) components when f = 0, so that every path
+/// (scalar, batch, separated or clamped) gives the same bits.
+#[inline(always)]
+pub fn normal_vector(f: f64, n: V3) -> V3 {
+    if f == 0.0 { [0.0; 3] } else { scale(f, n) }
+}

@@ -1,7 +1,7 @@
 //! Exports: full contact (normal, tangential, rolling, twisting) with caller-owned history.
 
 use super::status::*;
-use super::{status_of, write_result};
+use super::{dc_status, guard, write_result};
 use crate::contact::batch::{BatchIn, BatchOut, contact_force_batch};
 use crate::contact::evaluate::contact_force;
 use crate::contact::model::{HISTORY_MAX, Layout, select};
@@ -26,6 +26,10 @@ pub const DC_NORMAL_POWERLAW: i32 = 2;
 pub const DC_NORMAL_LINEAR: i32 = 3;
 /// Normal law: viscoelastic Hertz (Brilliantov et al.) with damping constant visco_A.
 pub const DC_NORMAL_VISCOELASTIC: i32 = 4;
+/// Normal law: adhesive DMT, Hertz minus 2 pi w R* (w = work_of_adhesion), attraction also
+/// beyond touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of
+/// separation); never clamped: requires DC_END_OVERLAP.
+pub const DC_NORMAL_DMT: i32 = 5;
 /// Normal damping: none (e_n = 1).
 pub const DC_DAMPING_NONE: i32 = 0;
 /// Normal damping: alpha calibrated exactly from e_n for the criterion.
@@ -52,6 +56,7 @@ const _: () = assert!(
         && DC_NORMAL_POWERLAW == normal::POWERLAW
         && DC_NORMAL_LINEAR == normal::LINEAR
         && DC_NORMAL_VISCOELASTIC == normal::VISCOELASTIC
+        && DC_NORMAL_DMT == normal::DMT
         && DC_DAMPING_NONE == damping::NONE
         && DC_DAMPING_RESTITUTION == damping::RESTITUTION
         && DC_TANGENTIAL_NONE == select::TANGENTIAL_NONE
@@ -131,6 +136,8 @@ pub struct dc_contact_spec {
     /// Inertia factor kappa = I/(m r^2) of the bodies, in (0, 1] (default 0.4: solid spheres);
     /// enters only the damping calibrations (tangential mass m_t = kappa/(1 + kappa) m*).
     pub inertia_factor: f64,
+    /// Work of adhesion w >= 0 [J/m^2] (DC_NORMAL_DMT: pull-off force 2 pi w R*).
+    pub work_of_adhesion: f64,
 }
 
 impl From<&dc_contact_spec> for ContactSpec {
@@ -160,6 +167,7 @@ impl From<&dc_contact_spec> for ContactSpec {
             k_tw: s.k_tw,
             eta_tw: s.eta_tw,
             inertia_factor: s.inertia_factor,
+            work_of_adhesion: s.work_of_adhesion,
         }
     }
 }
@@ -410,6 +418,7 @@ pub unsafe extern "C" fn dc_contact_spec_init(spec: *mut dc_contact_spec) -> i32
                 k_tw: d.k_tw,
                 eta_tw: d.eta_tw,
                 inertia_factor: d.inertia_factor,
+                work_of_adhesion: d.work_of_adhesion,
             })
         })
     }
@@ -505,7 +514,7 @@ unsafe fn force_common(
     }
     let cm = match model_of(m) {
         Ok(cm) => cm,
-        Err(e) => return status_of(e),
+        Err(e) => return dc_status::of(e).code(),
     };
     let need = cm.layout.len;
     if need > 0 && history.is_null() {
@@ -649,7 +658,8 @@ pub struct dc_contact_batch {
     pub v1: *const f64,
     /// Velocities of body 2, 3n.
     pub v2: *const f64,
-    /// Angular velocities of body 1, 3n (may be NULL for a normal-only model).
+    /// Angular velocities of body 1, 3n (normal-only models neither read nor check them: may be
+    /// NULL).
     pub w1: *const f64,
     /// Angular velocities of body 2, 3n (idem).
     pub w2: *const f64,
@@ -685,8 +695,8 @@ fn span(p: *const f64, count: usize) -> Option<(usize, usize)> {
 
 /// dc_contact_force for n contacts of one model (group contacts by type pair): one pass per
 /// stage the model has (normal, tangential, rolling, twisting), each a loop with no branch on
-/// the model. Every value is checked first (as dc_contact_force); on any error nothing is
-/// written (outputs and history untouched).
+/// the model. Every value is checked first (as dc_contact_force; a branch-free pass that costs
+/// about 4 ns per contact); on any error nothing is written (outputs and history untouched).
 ///
 /// @return DC_OK, DC_ERR_NULL_POINTER (model, batch, a required array), DC_ERR_CONTACT_MODEL_INVALID,
 ///         DC_ERR_BUFFER_TOO_SHORT (n = 0, history_stride too small), DC_ERR_BUFFER_LAYOUT (a
@@ -707,7 +717,7 @@ pub unsafe extern "C" fn dc_contact_force_batch(
     };
     let cm = match model_of(m) {
         Ok(cm) => cm,
-        Err(e) => return status_of(e),
+        Err(e) => return dc_status::of(e).code(),
     };
     let len = cm.layout.len;
     let normal_only = len == 0 && cm.rolling == select::ROLLING_NONE;
@@ -798,13 +808,16 @@ pub unsafe extern "C" fn dc_contact_force_batch(
         // (checked), so the shared and the exclusive slices never alias.
         unsafe {
             let sl = |p: *const f64, c: usize| core::slice::from_raw_parts(p, c);
+            // [f64; 3] has the alignment of f64: n vectors are the checked 3n doubles.
+            let vl = |p: *const f64| core::slice::from_raw_parts(p.cast::<[f64; 3]>(), n);
+            let vm = |p: *mut f64| core::slice::from_raw_parts_mut(p.cast::<[f64; 3]>(), n);
             let inp = BatchIn {
-                normal: sl(b.normal, n3),
+                normal: vl(b.normal),
                 overlap: sl(b.overlap, n),
-                v1: sl(b.v1, n3),
-                v2: sl(b.v2, n3),
-                w1: sl(w1, n3),
-                w2: sl(w2, n3),
+                v1: vl(b.v1),
+                v2: vl(b.v2),
+                w1: vl(w1),
+                w2: vl(w2),
                 r1: sl(b.r1, n),
                 r2: sl(b.r2, n),
                 m1: sl(b.m1, n),
@@ -813,9 +826,9 @@ pub unsafe extern "C" fn dc_contact_force_batch(
             let mut empty: [f64; 0] = [];
             let mut o = BatchOut {
                 f_n: core::slice::from_raw_parts_mut(b.f_n, n),
-                force: core::slice::from_raw_parts_mut(b.force, n3),
-                torque1: t1.map(|p| core::slice::from_raw_parts_mut(p, n3)),
-                torque2: t2.map(|p| core::slice::from_raw_parts_mut(p, n3)),
+                force: vm(b.force),
+                torque1: t1.map(vm),
+                torque2: t2.map(vm),
                 history: if len > 0 {
                     core::slice::from_raw_parts_mut(b.history, hist_n)
                 } else {
@@ -826,9 +839,5 @@ pub unsafe extern "C" fn dc_contact_force_batch(
             contact_force_batch(&cm, &inp, dt, &mut o)
         }
     };
-    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(body)) {
-        Ok(Ok(())) => DC_OK,
-        Ok(Err(e)) => status_of(e),
-        Err(_) => DC_ERR_INTERNAL,
-    }
+    guard(|| Ok(body()?))
 }

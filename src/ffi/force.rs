@@ -1,7 +1,7 @@
 //! Exports: per-contact normal-force kernels (pair constructors, scalar, checked, batch, 3D).
 
 use super::status::*;
-use super::{parse_criterion, status_of, write_result};
+use super::{guard, parse_criterion, read_in, write_result};
 use crate::force::batch::normal_force_batch;
 use crate::force::geometry3d::{Sphere, normal_force_3d};
 use crate::force::pair::{MODEL_HERTZ, MODEL_POWERLAW, MODEL_VISCOELASTIC};
@@ -16,12 +16,16 @@ pub const DC_MODEL_POWERLAW: i32 = 1;
 pub const DC_MODEL_HERTZ: i32 = 2;
 /// dc_pair.model of a viscoelastic Hertz pair (Brilliantov et al.).
 pub const DC_MODEL_VISCOELASTIC: i32 = 3;
+/// dc_pair.model of an adhesive DMT pair (the normal law of a dc_contact_model built with
+/// DC_NORMAL_DMT; there is no dc_pair_* constructor for it).
+pub const DC_MODEL_DMT: i32 = 4;
 
 // The C constants are literals (cbindgen cannot resolve paths); they must equal the core's.
 const _: () = assert!(
     DC_MODEL_POWERLAW == MODEL_POWERLAW
         && DC_MODEL_HERTZ == MODEL_HERTZ
         && DC_MODEL_VISCOELASTIC == MODEL_VISCOELASTIC
+        && DC_MODEL_DMT == crate::force::dmt::MODEL_DMT
 );
 
 /// A calibrated contact model for one material pair (type pair): plain data, owned by the
@@ -272,11 +276,10 @@ pub unsafe extern "C" fn dc_normal_force(
     r_eff: f64,
     m_eff: f64,
 ) -> f64 {
-    // SAFETY: non-null checked; readability is the caller's contract. Every bit pattern of
-    // dc_pair is a valid value (integers and doubles only).
-    match unsafe { pair.as_ref() } {
-        Some(p) => normal_force_raw(p.kernel, p.consts(), overlap, vn, r_eff, m_eff),
-        None => f64::NAN,
+    // SAFETY: readability is the caller's contract; every bit pattern of dc_pair is valid.
+    match unsafe { read_in(pair) } {
+        Ok(p) => normal_force_raw(p.kernel, p.consts(), overlap, vn, r_eff, m_eff),
+        Err(_) => f64::NAN,
     }
 }
 
@@ -331,12 +334,13 @@ pub unsafe extern "C" fn dc_normal_force_checked(
     if force_out.is_null() {
         return DC_ERR_NULL_POINTER;
     }
-    // SAFETY: null checked; readability is the caller's contract; any bit pattern is valid.
-    let Some(p) = (unsafe { pair.as_ref() }) else {
-        return DC_ERR_NULL_POINTER;
+    // SAFETY: readability is the caller's contract; any bit pattern is valid.
+    let p = match unsafe { read_in(pair) } {
+        Ok(p) => p,
+        Err(s) => return s.code(),
     };
     // SAFETY: forwarded caller contract on force_out.
-    unsafe { write_result(force_out, || checked_force(p, overlap, vn, r_eff, m_eff)) }
+    unsafe { write_result(force_out, || checked_force(&p, overlap, vn, r_eff, m_eff)) }
 }
 
 /// Byte range of an array of n doubles, or None if misaligned or too large to address.
@@ -376,9 +380,10 @@ pub unsafe extern "C" fn dc_normal_force_batch(
     m_eff: *const f64,
     force_out: *mut f64,
 ) -> i32 {
-    // SAFETY: null checked; readability is the caller's contract; any bit pattern is valid.
-    let Some(p) = (unsafe { pair.as_ref() }) else {
-        return DC_ERR_NULL_POINTER;
+    // SAFETY: readability is the caller's contract; any bit pattern is valid.
+    let p = match unsafe { read_in(pair) } {
+        Ok(p) => p,
+        Err(s) => return s.code(),
     };
     if overlap.is_null() || force_out.is_null() {
         return DC_ERR_NULL_POINTER;
@@ -406,7 +411,7 @@ pub unsafe extern "C" fn dc_normal_force_batch(
     }
     let c = p.consts();
     let kernel = p.kernel;
-    let body = || {
+    guard(|| {
         // SAFETY: each pointer is non-null, aligned, valid for n doubles (caller contract), the
         // byte size fits isize (checked), and the output does not overlap any input (checked),
         // so the shared and the exclusive slices never alias.
@@ -419,22 +424,8 @@ pub unsafe extern "C" fn dc_normal_force_batch(
                 core::slice::from_raw_parts_mut(force_out, n),
             )
         };
-        normal_force_batch(kernel, c, d, vn, r, m, out)
-    };
-    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(body)) {
-        Ok(Ok(())) => DC_OK,
-        Ok(Err(e)) => status_of(e),
-        Err(_) => DC_ERR_INTERNAL,
-    }
-}
-
-/// Reads a 3-vector from a possibly unaligned pointer.
-///
-/// # Safety
-/// `p` must be non-null and readable for three doubles.
-unsafe fn read3(p: *const f64) -> [f64; 3] {
-    // SAFETY: caller contract.
-    unsafe { p.cast::<[f64; 3]>().read_unaligned() }
+        Ok(normal_force_batch(kernel, c, d, vn, r, m, out)?)
+    })
 }
 
 /// Normal contact force between two spheres from their centres, velocities, radii and masses,
@@ -471,25 +462,26 @@ pub unsafe extern "C" fn dc_normal_force_3d(
     m2: f64,
     force_out: *mut f64,
 ) -> i32 {
-    if pair.is_null() || x1.is_null() || v1.is_null() || x2.is_null() || v2.is_null() {
-        return DC_ERR_NULL_POINTER;
-    }
-    // SAFETY: all pointers non-null (checked); readability is the caller's contract.
-    let (p, s1, s2) = unsafe {
-        let p = pair.read_unaligned();
+    // SAFETY: readability of each input is the caller's contract (read_in checks NULL).
+    let read = || unsafe {
+        let p = read_in(pair)?;
         let s1 = Sphere {
-            x: read3(x1),
-            v: read3(v1),
+            x: read_in(x1.cast::<[f64; 3]>())?,
+            v: read_in(v1.cast::<[f64; 3]>())?,
             r: R1,
             m: m1,
         };
         let s2 = Sphere {
-            x: read3(x2),
-            v: read3(v2),
+            x: read_in(x2.cast::<[f64; 3]>())?,
+            v: read_in(v2.cast::<[f64; 3]>())?,
             r: R2,
             m: m2,
         };
-        (p, s1, s2)
+        Ok::<_, dc_status>((p, s1, s2))
+    };
+    let (p, s1, s2) = match read() {
+        Ok(v) => v,
+        Err(s) => return s.code(),
     };
     let model = PairModel {
         model: p.model,

@@ -22,39 +22,53 @@ pub mod version;
 pub mod viscoelastic;
 
 use crate::{EndCriterion, Error};
+pub use status::dc_status;
 use status::*;
-
-/// Maps a core error to its C status code.
-pub(crate) const fn status_of(err: Error) -> i32 {
-    match err {
-        Error::NotFinite => DC_ERR_NOT_FINITE,
-        Error::RestitutionRange => DC_ERR_RESTITUTION_RANGE,
-        Error::ExponentRange => DC_ERR_EXPONENT_RANGE,
-        Error::NotPositive => DC_ERR_NOT_POSITIVE,
-        Error::Negative => DC_ERR_NEGATIVE,
-        Error::Criterion => DC_ERR_CRITERION,
-        Error::ResultRange => DC_ERR_RESULT_RANGE,
-        Error::NoConvergence => DC_ERR_NO_CONVERGENCE,
-        Error::BufferTooShort => DC_ERR_BUFFER_TOO_SHORT,
-        Error::NoEvent => DC_ERR_NO_EVENT,
-        Error::PairInvalid => DC_ERR_PAIR_INVALID,
-        Error::BufferLayout => DC_ERR_BUFFER_LAYOUT,
-        Error::Level => DC_ERR_LEVEL,
-        Error::Plan => DC_ERR_PLAN,
-        Error::SpecVersion => DC_ERR_SPEC_VERSION,
-        Error::SpecModel => DC_ERR_SPEC_MODEL,
-        Error::SpecUnset => DC_ERR_SPEC_UNSET,
-        Error::ContactModelInvalid => DC_ERR_CONTACT_MODEL_INVALID,
-        Error::NotUnit => DC_ERR_NOT_UNIT,
-    }
-}
 
 /// Parses a C criterion code.
 pub(crate) fn parse_criterion(code: i32) -> Result<EndCriterion, Error> {
     EndCriterion::from_code(code).ok_or(Error::Criterion)
 }
 
-/// Runs `f` behind the boundary rules and writes its value to `out` on success.
+/// The one panic boundary of the library: runs `body` and returns its status. A core error maps
+/// to its status through [`dc_status::of`] (so `?` works on core results inside `body`); a panic,
+/// which the lints make unreachable, becomes `DC_ERR_INTERNAL` instead of unwinding into (and
+/// aborting) the host. Every status-returning export goes through here.
+#[inline]
+pub(crate) fn guard<F>(body: F) -> i32
+where
+    F: FnOnce() -> Result<(), dc_status>,
+{
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(body)) {
+        Ok(Ok(())) => DC_OK,
+        Ok(Err(s)) => s.code(),
+        Err(_) => DC_ERR_INTERNAL,
+    }
+}
+
+// The pointer policy, one way for every export:
+// * a struct or vector the caller passes IN is read by value (`read_unaligned`) after a NULL
+//   check: any alignment works and nothing borrows caller memory past the read;
+// * a value the library passes OUT is written by value (`write_unaligned`), only on success,
+//   after a NULL check made before any work;
+// * arrays of doubles (batches, trajectories) must be aligned and must not overlap: see
+//   [`force`]'s `span` checks, which turn them into slices.
+
+/// Reads one caller input of type `T` by value. NULL gives `DC_ERR_NULL_POINTER`.
+///
+/// # Safety
+/// `p` must be NULL or readable for one `T` (alignment not required); every bit pattern must be a
+/// valid `T` (true of the plain-data structs of the header: integers and doubles only).
+#[inline(always)]
+pub(crate) unsafe fn read_in<T: Copy>(p: *const T) -> Result<T, dc_status> {
+    if p.is_null() {
+        return Err(dc_status::DC_ERR_NULL_POINTER);
+    }
+    // SAFETY: non-null checked; readability and validity are the caller's contract.
+    Ok(unsafe { p.read_unaligned() })
+}
+
+/// Runs `f` behind the boundary ([`guard`]) and writes its value to `out` on success only.
 ///
 /// # Safety
 /// `out` must be null or valid for a write of one `T` (alignment is not required).
@@ -66,13 +80,10 @@ where
     if out.is_null() {
         return DC_ERR_NULL_POINTER;
     }
-    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)) {
-        Ok(Ok(v)) => {
-            // SAFETY: non-null checked above; validity for writes is the caller's contract.
-            unsafe { out.write_unaligned(v) };
-            DC_OK
-        }
-        Ok(Err(e)) => status_of(e),
-        Err(_) => DC_ERR_INTERNAL,
-    }
+    guard(|| {
+        let v = f()?;
+        // SAFETY: non-null checked above; validity for writes is the caller's contract.
+        unsafe { out.write_unaligned(v) };
+        Ok(())
+    })
 }

@@ -6,8 +6,9 @@
 //! [s^-1 m^((1-p)/2)] (see dc_omega0). Damping ratio of the image: zeta = alpha/sqrt(2(p+1));
 //! zeta > 1 is overdamped, zeta = 1 critical (a continuous limit, no special case for callers).
 
-use super::status::DC_OK;
-use super::{parse_criterion, status_of, write_result};
+use super::status::*;
+use super::{guard, parse_criterion, read_in, write_result};
+use crate::powerlaw::DurationPlan;
 use crate::powerlaw::trajectory::{TrajectoryOut, sample_trajectory};
 use crate::powerlaw::{self, Contact};
 use crate::{EndCriterion, Error};
@@ -17,12 +18,12 @@ pub const DC_LEVEL_MIN: i32 = 0;
 /// Highest quadrature accuracy level, used by the functions without a level argument.
 pub const DC_LEVEL_MAX: i32 = 4;
 
+// cbindgen needs literals; they must equal the core's.
+const _: () =
+    assert!(DC_LEVEL_MIN == powerlaw::plan::LEVEL_MIN && DC_LEVEL_MAX == powerlaw::plan::LEVEL_MAX);
+
 fn level(l: i32) -> Result<u32, Error> {
-    if (DC_LEVEL_MIN..=DC_LEVEL_MAX).contains(&l) {
-        Ok(l.unsigned_abs())
-    } else {
-        Err(Error::Level)
-    }
+    powerlaw::plan::level(l)
 }
 
 /// Energy partition of one collision, each as a fraction of the impact energy m v0^2 / 2.
@@ -163,10 +164,6 @@ pub unsafe extern "C" fn dc_contact_duration_level(
     }
 }
 
-/// Marks a dc_duration_plan filled by dc_duration_plan_init ("DCPLAN02": the layout without the
-/// Gauss-Legendre rule; a plan made by a library with the older layout is rejected).
-const PLAN_TAG: u64 = 0x4443_504C_414E_3032;
-
 /// A contact-duration plan: everything dc_contact_duration_level computes from the exponent p and
 /// the accuracy level alone (transform constants, ln Gamma(q), Gauss-Jacobi nodes and weights for
 /// the integrand's end singularity), built once by dc_duration_plan_init and then reused by
@@ -198,77 +195,38 @@ pub struct dc_duration_plan {
     pub weights: [f64; 16],
 }
 
-fn plan_nodes(level: i32) -> Result<usize, Error> {
-    let lv = self::level(level)?;
-    powerlaw::duration::PLAN_NODES
-        .get(lv as usize)
-        .copied()
-        .ok_or(Error::Level)
+impl From<DurationPlan> for dc_duration_plan {
+    fn from(pl: DurationPlan) -> Self {
+        dc_duration_plan {
+            tag: pl.tag,
+            p: pl.p,
+            q: pl.q,
+            amp: pl.amp,
+            lgamma_q: pl.lgamma_q,
+            ln_aq: pl.ln_aq,
+            level: pl.level,
+            n: pl.n,
+            nodes: pl.nodes,
+            weights: pl.weights,
+        }
+    }
 }
 
-fn build_plan(p: f64, level: i32) -> Result<dc_duration_plan, Error> {
-    powerlaw::check_exponent(p)?;
-    let n = plan_nodes(level)?;
-    let q = powerlaw::transform_q(p);
-    let mut plan = dc_duration_plan {
-        tag: PLAN_TAG,
-        p,
-        q,
-        amp: powerlaw::transform_a(p),
-        lgamma_q: libm::lgamma(q),
-        ln_aq: (powerlaw::transform_a(p) * q).ln(),
-        level,
-        n: i32::try_from(n).map_err(|_| Error::Level)?,
-        ..Default::default()
-    };
-    let (Some(x), Some(w)) = (plan.nodes.get_mut(..n), plan.weights.get_mut(..n)) else {
-        return Err(Error::Level);
-    };
-    crate::numerics::gauss_jacobi::gauss_jacobi(q - 1.0, x, w)?;
-    if !(plan.amp.is_finite() && plan.lgamma_q.is_finite() && plan.ln_aq.is_finite()) {
-        return Err(Error::ResultRange);
+impl From<dc_duration_plan> for DurationPlan {
+    fn from(pl: dc_duration_plan) -> Self {
+        DurationPlan {
+            tag: pl.tag,
+            p: pl.p,
+            q: pl.q,
+            amp: pl.amp,
+            lgamma_q: pl.lgamma_q,
+            ln_aq: pl.ln_aq,
+            level: pl.level,
+            n: pl.n,
+            nodes: pl.nodes,
+            weights: pl.weights,
+        }
     }
-    Ok(plan)
-}
-
-/// The planned duration behind the C boundary: checks the plan, then the inputs exactly as
-/// dc_contact_duration does (same statuses in the same order).
-fn duration_planned(
-    plan: &dc_duration_plan,
-    alpha: f64,
-    v0: f64,
-    omega0: f64,
-    criterion: i32,
-) -> Result<f64, Error> {
-    let n = plan_nodes(plan.level).map_err(|_| Error::Plan)?;
-    let p = plan.p;
-    if plan.tag != PLAN_TAG
-        || plan.n != i32::try_from(n).map_err(|_| Error::Plan)?
-        || !(p.is_finite() && p >= 1.0)
-        || plan.q != powerlaw::transform_q(p)
-        || !(plan.amp.is_finite()
-            && plan.amp > 0.0
-            && plan.lgamma_q.is_finite()
-            && plan.ln_aq.is_finite())
-    {
-        return Err(Error::Plan);
-    }
-    let c = Contact::with_constants(p, alpha, v0, omega0, Some((plan.q, plan.amp)))?;
-    let crit = parse_criterion(criterion)?;
-    let (Some(x), Some(w)) = (plan.nodes.get(..n), plan.weights.get(..n)) else {
-        return Err(Error::Plan);
-    };
-    let pl = powerlaw::duration::Plan {
-        q: plan.q,
-        amp: plan.amp,
-        lgamma_q: plan.lgamma_q,
-        ln_aq: plan.ln_aq,
-        singular: powerlaw::duration::Rule {
-            nodes: x,
-            weights: w,
-        },
-    };
-    powerlaw::duration::contact_duration_planned(&pl, &c, crit)
 }
 
 /// Builds a contact-duration plan for exponent p at accuracy `level` (the costly, p-dependent
@@ -291,7 +249,7 @@ pub unsafe extern "C" fn dc_duration_plan_init(
     plan_out: *mut dc_duration_plan,
 ) -> i32 {
     // SAFETY: forwarded caller contract on plan_out.
-    unsafe { write_result(plan_out, || build_plan(p, level)) }
+    unsafe { write_result(plan_out, || Ok(DurationPlan::new(p, level)?.into())) }
 }
 
 /// Contact duration tau [s] with a plan from dc_duration_plan_init: the result of
@@ -302,7 +260,8 @@ pub unsafe extern "C" fn dc_duration_plan_init(
 /// @param plan       a plan from dc_duration_plan_init (its p is the exponent used).
 /// @param alpha, v0, omega0, criterion, tau_out  as dc_contact_duration.
 /// @return as dc_contact_duration, plus DC_ERR_NULL_POINTER (plan NULL), DC_ERR_PLAN (plan not
-///         made by dc_duration_plan_init, or modified), DC_ERR_BUFFER_LAYOUT (plan misaligned).
+///         made by dc_duration_plan_init, or modified). The plan is read by value: any alignment
+///         works (earlier versions returned DC_ERR_BUFFER_LAYOUT for a misaligned plan).
 ///
 /// # Safety
 /// `plan` must be NULL or point to a readable dc_duration_plan; `tau_out` NULL or writable.
@@ -315,18 +274,19 @@ pub unsafe extern "C" fn dc_contact_duration_planned(
     criterion: i32,
     tau_out: *mut f64,
 ) -> i32 {
-    if plan.is_null() || tau_out.is_null() {
-        return super::status::DC_ERR_NULL_POINTER;
+    if tau_out.is_null() {
+        return DC_ERR_NULL_POINTER;
     }
-    if !plan.is_aligned() {
-        return super::status::DC_ERR_BUFFER_LAYOUT;
-    }
-    // SAFETY: non-null and aligned checked above; readability is the caller's contract.
-    let plan = unsafe { &*plan };
+    // SAFETY: readability is the caller's contract; every bit pattern of the plan is a value.
+    let plan: DurationPlan = match unsafe { read_in(plan) } {
+        Ok(pl) => pl.into(),
+        Err(s) => return s.code(),
+    };
     // SAFETY: forwarded caller contract on tau_out.
     unsafe {
         write_result(tau_out, || {
-            duration_planned(plan, alpha, v0, omega0, criterion)
+            let c = plan.contact(alpha, v0, omega0)?;
+            plan.duration(&c, parse_criterion(criterion)?)
         })
     }
 }
@@ -410,7 +370,7 @@ pub unsafe extern "C" fn dc_contact_trajectory(
     if n < 2 || buf_len < n {
         return super::status::DC_ERR_BUFFER_TOO_SHORT;
     }
-    let run = || -> Result<(), Error> {
+    guard(|| {
         let c = Contact::new(p, alpha, v0, omega0)?;
         let crit: EndCriterion = parse_criterion(criterion)?;
         let lv = self::level(level)?;
@@ -424,13 +384,8 @@ pub unsafe extern "C" fn dc_contact_trajectory(
                 force: core::slice::from_raw_parts_mut(force_out, n),
             }
         };
-        sample_trajectory(&c, crit, mass, lv, out)
-    };
-    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(run)) {
-        Ok(Ok(())) => DC_OK,
-        Ok(Err(e)) => status_of(e),
-        Err(_) => super::status::DC_ERR_INTERNAL,
-    }
+        Ok(sample_trajectory(&c, crit, mass, lv, out)?)
+    })
 }
 
 /// omega0 = sqrt(k/m) from a stiffness k > 0 [N m^-p] and an effective mass m > 0 [kg], for hosts
@@ -443,19 +398,5 @@ pub unsafe extern "C" fn dc_contact_trajectory(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn dc_omega0(k: f64, m: f64, omega0_out: *mut f64) -> i32 {
     // SAFETY: forwarded caller contract on omega0_out.
-    unsafe {
-        write_result(omega0_out, || {
-            if !(k.is_finite() && m.is_finite()) {
-                return Err(Error::NotFinite);
-            }
-            if !(k > 0.0 && m > 0.0) {
-                return Err(Error::NotPositive);
-            }
-            let w = k.sqrt() / m.sqrt();
-            if !(w.is_finite() && w > 0.0) {
-                return Err(Error::ResultRange);
-            }
-            Ok(w)
-        })
-    }
+    unsafe { write_result(omega0_out, || powerlaw::omega0(k, m)) }
 }

@@ -2,8 +2,8 @@
 //! as a function of b = beta v^(1/5), beta = gamma k^(-3/5), in three accuracy tiers, the
 //! physical-units form, and the calibrations.
 
-use super::status::{DC_ERR_INTERNAL, DC_ERR_NULL_POINTER, DC_OK};
-use super::{parse_criterion, status_of, write_result};
+use super::status::DC_ERR_NULL_POINTER;
+use super::{guard, parse_criterion, write_result};
 use crate::viscoelastic::{calibration, full_range, reference, scaling, series};
 
 /// Restitution e(b) of colliding viscoelastic spheres, full-range tier.
@@ -11,7 +11,7 @@ use crate::viscoelastic::{calibration, full_range, reference, scaling, series};
 /// e depends on stiffness k, damping gamma (both per unit effective mass) and impact speed v only
 /// through b = beta v^(1/5), beta = gamma k^(-3/5) (see dc_viscoelastic_b).
 /// - DC_END_OVERLAP: contact ends when the overlap returns to 0 (it always does, in finite time);
-///   e ~ 5.158382 b^-5 for large b (exact to 1e-16 for b >= 8).
+///   e = 5.15838170426769 b^-5 for large b (exact to 1e-15 for b >= 8).
 /// - DC_END_FORCE: contact ends when the total force first returns to 0 (clamped solvers);
 ///   e ~ 1.3103707 b^(-5/3) for large b.
 ///
@@ -158,18 +158,15 @@ pub unsafe extern "C" fn dc_viscoelastic_k_gamma(
     if k_out.is_null() || gamma_out.is_null() {
         return DC_ERR_NULL_POINTER;
     }
-    match std::panic::catch_unwind(|| scaling::k_gamma_from_material(rho, a, m_eff)) {
-        Ok(Ok((k, g))) => {
-            // SAFETY: both non-null; validity for writes is the caller's contract.
-            unsafe {
-                k_out.write_unaligned(k);
-                gamma_out.write_unaligned(g);
-            }
-            DC_OK
+    guard(|| {
+        let (k, g) = scaling::k_gamma_from_material(rho, a, m_eff)?;
+        // SAFETY: both non-null; validity for writes is the caller's contract.
+        unsafe {
+            k_out.write_unaligned(k);
+            gamma_out.write_unaligned(g);
         }
-        Ok(Err(e)) => status_of(e),
-        Err(_) => DC_ERR_INTERNAL,
-    }
+        Ok(())
+    })
 }
 
 /// The b at which the restitution equals e (inverse of dc_viscoelastic_e).

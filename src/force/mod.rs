@@ -17,10 +17,13 @@
 //! * [`powerlaw`]: Tsuji power-law contact with a fixed stiffness (linear spring-dashpot = p 1).
 //! * [`hertz`]: Hertz from material data, k = (4/3) E* √R* per contact.
 //! * [`viscoelastic`]: Brilliantov et al. viscoelastic Hertz, damping constant A.
+//! * [`dmt`]: adhesive DMT (Hertz minus 2π w R*, attraction beyond touching; added last, by the
+//!   steps of docs/force.md).
 //! * [`batch`]: structure-of-arrays loops.
 //! * [`geometry3d`]: two spheres in 3D → normal force vector (nalgebra).
 
 pub mod batch;
+pub mod dmt;
 pub mod geometry3d;
 pub mod hertz;
 pub mod pair;

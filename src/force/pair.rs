@@ -54,10 +54,15 @@ pub(crate) trait Law {
     const NEEDS_VN: bool;
     const NEEDS_R: bool;
     const NEEDS_M: bool;
+    /// True for a law that acts beyond touching (adhesion): its `raw` is then also called for
+    /// d ≤ 0 and must itself return 0 where the law ends (and for NaN d). False for every
+    /// repulsive law: the force is zero unless d > 0.
+    const ADHESIVE: bool = false;
     fn raw(c: &Consts, d: f64, vn: f64, r: f64, m: f64) -> f64;
 }
 
-/// The contact force of law `L`: zero unless d > 0 (also for NaN d); with `CLAMP`, attractive
+/// The contact force of law `L`: zero unless d > 0 (also for NaN d) for non-adhesive laws; an
+/// adhesive law decides its own range (see [`Law::ADHESIVE`]); with `CLAMP`, attractive
 /// (and NaN) raw forces become zero. Written as selects so that batch loops vectorise.
 #[inline(always)]
 pub(crate) fn eval<L: Law, const CLAMP: bool>(c: &Consts, d: f64, vn: f64, r: f64, m: f64) -> f64 {
@@ -67,7 +72,7 @@ pub(crate) fn eval<L: Law, const CLAMP: bool>(c: &Consts, d: f64, vn: f64, r: f6
     } else {
         f
     };
-    if d > 0.0 { f } else { 0.0 }
+    if L::ADHESIVE || d > 0.0 { f } else { 0.0 }
 }
 
 /// Something to do with one monomorphised kernel (a scalar evaluation or a batch loop).

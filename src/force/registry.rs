@@ -11,7 +11,7 @@
 //! Duplicate codes are a compile error (`unreachable_patterns` is denied in the generated match).
 
 use super::pair::{Coded, Consts, Law, PairModel, Visit, eval};
-use super::{hertz, powerlaw, viscoelastic};
+use super::{dmt, hertz, powerlaw, viscoelastic};
 
 macro_rules! registry {
     ($($law:ty => $code:literal $(, clamped $clamped:literal)?;)*) => {
@@ -63,6 +63,8 @@ registry! {
     hertz::HertzElastic => 13;
     hertz::HertzDamped => 14, clamped 15;
     viscoelastic::Viscoelastic => 16, clamped 17;
+    dmt::DmtElastic => 18;
+    dmt::DmtDamped => 19;
 }
 
 /// Which per-contact inputs a kernel reads: (vn, r_eff, m_eff). `None` for an unknown code.

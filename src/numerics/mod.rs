@@ -6,6 +6,9 @@
 //! * [`gamma`]: Re ln Γ(a + ib), for the closed-form contact duration.
 //! * [`gauss_jacobi`]: Gauss rules for the weight y^ν (the planned contact duration).
 //! * [`jacobi_cc`]: ∫ y^ν f(y) dy by Clenshaw–Curtis with modified moments (the contact times).
+//! * `lagrange8`: 8-point Lagrange stencils for the cumulative integral of equally spaced
+//!   samples (the trajectory's times).
+//! * `series`: the exponential of a power series, Horner evaluation.
 //! * [`taylor`]: Taylor-series (automatic differentiation) building blocks over real or complex
 //!   numbers, for the viscoelastic reference integrator.
 
@@ -13,9 +16,11 @@ pub(crate) mod estrin;
 pub mod gamma;
 pub mod gauss_jacobi;
 pub mod jacobi_cc;
+pub(crate) mod lagrange8;
 pub mod ode;
 pub(crate) mod pow;
 pub mod roots;
+pub(crate) mod series;
 pub mod taylor;
 
 pub use roots::newton_bracketed;

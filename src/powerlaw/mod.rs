@@ -10,7 +10,7 @@
 //!
 //! The observables of one collision: [`contact`] (validated inputs, the LSD image),
 //! [`overlap`] (δ_max), [`duration`] (τ for both criteria, time of δ_max), [`energy`]
-//! (energy partition), [`trajectory`] (δ, v, F, t sampled over the contact), [`timestep`].
+//! (energy partition), [`plan`] (reusable per-p duration plans), [`trajectory`] (δ, v, F, t sampled over the contact), [`timestep`].
 
 pub mod calibration;
 pub mod contact;
@@ -18,6 +18,7 @@ pub mod duration;
 pub mod energy;
 mod overdamped_tail;
 pub mod overlap;
+pub mod plan;
 pub mod timestep;
 pub mod trajectory;
 pub mod transform;
@@ -27,6 +28,7 @@ pub use contact::Contact;
 pub use duration::{contact_duration, time_of_max_overlap};
 pub use energy::{EnergyPartition, energy_partition};
 pub use overlap::max_overlap;
+pub use plan::{DurationPlan, omega0};
 pub use timestep::dt_crit_seed;
 pub use transform::{
     alpha_from_zeta, check_exponent, damping_scale, transform_a, transform_q, zeta_from_alpha,

@@ -6,7 +6,8 @@
 //! * [`series`]: the published series of Schwager & Pöschel (2008), cheap, small b only;
 //! * [`full_range`]: piecewise Chebyshev approximations generated from the reference
 //!   (measured ≤ 6e-14 relative on [0, 1e6]) plus the large-b laws beyond (overlap
-//!   e = 5.158381704267689 b^{−5}, exact from b = 8; force e → (3/2)^{2/3} b^{−5/3});
+//!   e = C_O b^{−5}, C_O = 5.15838170426769 (`table::C_OVERLAP`, its one definition), exact
+//!   from b = 8; force e → (3/2)^{2/3} b^{−5/3});
 //! * [`reference`]: direct Taylor-series integration in regularised variables.
 //!
 //! [`calibration`] turns a measured e at a reference speed into β (or A), and finds the speed at

@@ -1,0 +1,39 @@
+# Force-kernel benchmark: demcontact's kernels through the C ABI against hand-written C loops
+# of the same expressions, compiled as host codes do (-O3) and with -fno-math-errno (vectorised
+# sqrt). Run it with scripts/bench_force.sh; ctest only runs its --smoke correctness check.
+
+set(DC_BENCH_COPTS -O3)
+if(DEMCONTACT_NATIVE)
+  list(APPEND DC_BENCH_COPTS -march=native)
+endif()
+add_library(force_baseline_plain OBJECT examples_cpp/bench/force_baseline.c)
+target_compile_definitions(force_baseline_plain PRIVATE BASE=plain)
+target_compile_options(force_baseline_plain PRIVATE ${DC_BENCH_COPTS})
+add_library(force_baseline_fast OBJECT examples_cpp/bench/force_baseline.c)
+target_compile_definitions(force_baseline_fast PRIVATE BASE=fast)
+target_compile_options(force_baseline_fast PRIVATE ${DC_BENCH_COPTS} -fno-math-errno)
+foreach(kind IN ITEMS shared static)
+  set(bench force_bench_${kind})
+  add_executable(${bench} examples_cpp/bench/force_bench.c
+    $<TARGET_OBJECTS:force_baseline_plain> $<TARGET_OBJECTS:force_baseline_fast>)
+  target_compile_options(${bench} PRIVATE ${DC_BENCH_COPTS} -Wall -Wextra -Werror)
+  target_link_libraries(${bench} PRIVATE demcontact_${kind} ${DC_LIBM})
+  set_target_properties(${bench} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/bench")
+  add_test(NAME bench_${bench}_smoke COMMAND ${bench} --smoke)
+endforeach()
+
+# Full-contact benchmark (dc_contact_force_batch against hand-written Hertz-Mindlin-Coulomb C
+# loops, -O3 and -O3 -fno-math-errno). Run it with scripts/bench_contact.sh; ctest only runs its
+# --smoke correctness check (the C loops and the ABI agree).
+add_library(contact_baseline_plain OBJECT examples_cpp/bench/contact_baseline.c)
+target_compile_definitions(contact_baseline_plain PRIVATE BASE=plain)
+target_compile_options(contact_baseline_plain PRIVATE ${DC_BENCH_COPTS})
+add_library(contact_baseline_fast OBJECT examples_cpp/bench/contact_baseline.c)
+target_compile_definitions(contact_baseline_fast PRIVATE BASE=fast)
+target_compile_options(contact_baseline_fast PRIVATE ${DC_BENCH_COPTS} -fno-math-errno)
+add_executable(contact_bench examples_cpp/bench/contact_bench.c
+  $<TARGET_OBJECTS:contact_baseline_plain> $<TARGET_OBJECTS:contact_baseline_fast>)
+target_compile_options(contact_bench PRIVATE ${DC_BENCH_COPTS} -Wall -Wextra -Werror)
+target_link_libraries(contact_bench PRIVATE demcontact_shared ${DC_LIBM})
+set_target_properties(contact_bench PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/bench")
+add_test(NAME bench_contact_bench_smoke COMMAND contact_bench --smoke)
