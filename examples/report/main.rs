@@ -3,6 +3,7 @@
 //! timings use std::time::Instant over many repetitions on the machine that runs it.
 #![allow(missing_docs)]
 
+mod chung_ooi;
 mod costs;
 mod dtstudy;
 mod plot;
@@ -83,6 +84,10 @@ fn run() -> Res<()> {
     if want("seeds") {
         seeds::run(&mut rep)?;
         eprintln!("seeds done at {:.1} s", start.elapsed().as_secs_f64());
+    }
+    if want("chung") {
+        chung_ooi::run(&mut rep)?;
+        eprintln!("chung_ooi done at {:.1} s", start.elapsed().as_secs_f64());
     }
     let mut md = String::new();
     writeln!(md, "# The speed/accuracy trade, measured\n")?;
