@@ -4,6 +4,8 @@
  *   plugin load demcontact_lammps.so
  *   pair_style demcontact [limit_damping] [maxpartner N]
  *   pair_coeff I J hertz/material E e nu [damping restitution | damping viscoelastic v_ref r_ref rho_ref] [limit_damping]
+ *                  [tangential mindlin NULL e_t mu | tangential linear_history k_t e_t mu]
+ *                  [rolling sds k_r|NULL eta_r mu_r | rolling constant mu_r] [twisting sds k_tw eta_tw mu_tw]
  *   pair_coeff I J powerlaw/material E e nu p [...]
  *   pair_coeff I J E nu e [exponent p]                       (original positional form)
  *
