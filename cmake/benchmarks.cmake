@@ -1,6 +1,8 @@
-# Force-kernel benchmark: demcontact's kernels through the C ABI against hand-written C loops
-# of the same expressions, compiled as host codes do (-O3) and with -fno-math-errno (vectorised
-# sqrt). Run it with scripts/bench_force.sh; ctest only runs its --smoke correctness check.
+# Force-kernel benchmark: demcontact's kernels through the C ABI and its header-only kernels in a C
+# loop, against hand-written C loops of the same expressions, compiled as host codes do (-O3),
+# with -fno-math-errno (vectorised sqrt) and with -march=native -fno-math-errno (the host CPU's
+# widest vectors, also in the portable build: the baseline of the runtime dispatch), and the
+# memory roofline. Run it with scripts/bench_force.sh; ctest only runs its --smoke check.
 
 set(DC_BENCH_COPTS -O3)
 if(DEMCONTACT_NATIVE)
@@ -12,10 +14,17 @@ target_compile_options(force_baseline_plain PRIVATE ${DC_BENCH_COPTS})
 add_library(force_baseline_fast OBJECT examples_cpp/bench/force_baseline.c)
 target_compile_definitions(force_baseline_fast PRIVATE BASE=fast)
 target_compile_options(force_baseline_fast PRIVATE ${DC_BENCH_COPTS} -fno-math-errno)
+add_library(force_baseline_native OBJECT examples_cpp/bench/force_baseline.c)
+target_compile_definitions(force_baseline_native PRIVATE BASE=native)
+target_compile_options(force_baseline_native PRIVATE -O3 -march=native -fno-math-errno)
+foreach(b plain fast native)
+  target_include_directories(force_baseline_${b} PRIVATE "${CMAKE_SOURCE_DIR}/include")
+endforeach()
 foreach(kind IN ITEMS shared static)
   set(bench force_bench_${kind})
   add_executable(${bench} examples_cpp/bench/force_bench.c
-    $<TARGET_OBJECTS:force_baseline_plain> $<TARGET_OBJECTS:force_baseline_fast>)
+    $<TARGET_OBJECTS:force_baseline_plain> $<TARGET_OBJECTS:force_baseline_fast>
+    $<TARGET_OBJECTS:force_baseline_native>)
   target_compile_options(${bench} PRIVATE ${DC_BENCH_COPTS} -Wall -Wextra -Werror)
   target_link_libraries(${bench} PRIVATE demcontact_${kind} ${DC_LIBM})
   set_target_properties(${bench} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/bench")

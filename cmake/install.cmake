@@ -11,6 +11,8 @@ if(NOT DC_SHARED_REAL STREQUAL DC_SHARED_NAME)
   ")
 endif()
 install(FILES "${DC_STATIC}" DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+# The command-line tool (src/bin/demcontact), built by the same cargo call.
+install(PROGRAMS "${DC_LIB_DIR}/demcontact${CMAKE_EXECUTABLE_SUFFIX}" DESTINATION "${CMAKE_INSTALL_BINDIR}")
 install(DIRECTORY include/ DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
         FILES_MATCHING PATTERN "*.h" PATTERN "*.hpp" PATTERN "*.f90")
 if(TARGET demcontact_fortran)

@@ -60,7 +60,7 @@ endif()
 
 # cargo decides itself what is out of date, so it runs on every build (a no-op when fresh).
 add_custom_target(demcontact_cargo ALL
-  COMMAND ${DC_CARGO_ENV} "${CARGO_EXECUTABLE}" build --release --lib --locked -p demcontact
+  COMMAND ${DC_CARGO_ENV} "${CARGO_EXECUTABLE}" build --release --lib --bin demcontact --locked -p demcontact
           --manifest-path "${CMAKE_SOURCE_DIR}/Cargo.toml" --target-dir "${DEMCONTACT_CARGO_TARGET_DIR}"
   ${DC_SONAME_LINK}
   BYPRODUCTS "${DC_SHARED}" "${DC_STATIC}"

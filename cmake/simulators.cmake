@@ -10,3 +10,5 @@ set_target_properties(dc_oblique_ref PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAK
 
 add_subdirectory(examples_cpp/liggghts)
 add_subdirectory(examples_cpp/lammps)
+# The corrected builtin inputs of LIGGGHTS, LAMMPS and YADE in the real codes.
+include(examples_cpp/sim/builtin_tests.cmake)

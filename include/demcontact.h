@@ -101,6 +101,49 @@
 #define RESTITUTION 1
 
 /**
+ * LIGGGHTS `pair_style gran model hooke`; value = `coefficientRestitution` to type.
+ */
+#define DC_BUILTIN_LIGGGHTS_HOOKE 1
+
+/**
+ * LIGGGHTS `pair_style gran model hertz`; value = `coefficientRestitution` to type.
+ */
+#define DC_BUILTIN_LIGGGHTS_HERTZ 2
+
+/**
+ * LAMMPS `pair_style granular ... damping coeff_restitution` (hooke or hertz); value = e to type.
+ */
+#define DC_BUILTIN_LAMMPS_COEFF_RESTITUTION 3
+
+/**
+ * LAMMPS `pair_style granular hertz[/material] ... damping tsuji` (22 Jul 2025 release); value =
+ * e to type.
+ */
+#define DC_BUILTIN_LAMMPS_TSUJI_HERTZ 4
+
+/**
+ * LAMMPS `pair_style granular hooke ... damping tsuji`; value = e to type.
+ */
+#define DC_BUILTIN_LAMMPS_TSUJI_HOOKE 5
+
+/**
+ * YADE `ViscElMat(tc=, en=, et=)` + `Law2_ScGeom_ViscElPhys_Basic` (always clamps); value = en.
+ */
+#define DC_BUILTIN_YADE_VISCEL_EN 6
+
+/**
+ * YADE `Ip2_FrictMat_FrictMat_MindlinPhys(en=)` + `Law2_ScGeom_MindlinPhys_Mindlin` (always
+ * clamps); value = en.
+ */
+#define DC_BUILTIN_YADE_MINDLIN_EN 7
+
+/**
+ * YADE `Ip2_FrictMat_FrictMat_MindlinPhys(betan=)` + `Law2_ScGeom_MindlinPhys_Mindlin` (always
+ * clamps); value = betan.
+ */
+#define DC_BUILTIN_YADE_MINDLIN_BETAN 8
+
+/**
  * Version of dc_contact_spec this library reads (dc_contact_spec_init sets it).
  */
 #define DC_CONTACT_SPEC_VERSION 1
@@ -187,6 +230,16 @@
  * Twisting resistance: spring-dashpot-slider about n, limit mu_tw |Fn|.
  */
 #define DC_TWISTING_SDS 1
+
+/**
+ * dc_fit_result.model: a constant e (power-law contact) represents the data within tol.
+ */
+#define DC_FIT_MODEL_CONSTANT 0
+
+/**
+ * dc_fit_result.model: the speed dependence exceeds tol; use the viscoelastic model.
+ */
+#define DC_FIT_MODEL_VISCOELASTIC 1
 
 /**
  * dc_pair.model of a power-law Tsuji pair with fixed stiffness (including the linear
@@ -329,6 +382,23 @@ enum dc_status
      * A contact normal is not a unit vector (| |n|^2 - 1 | > 1e-6).
      */
     DC_ERR_NOT_UNIT = 6126,
+    /**
+     * Unknown DC_BUILTIN_* model code, or an option the model does not have (clamp not 0/1, or
+     * no clamp for YADE, whose laws always clamp).
+     */
+    DC_ERR_BUILTIN_MODEL = 6130,
+    /**
+     * The builtin model cannot realise this restitution: its parameter saturates before it.
+     */
+    DC_ERR_BUILTIN_UNREACHABLE = 6131,
+    /**
+     * A fit needs at least two data points.
+     */
+    DC_ERR_FIT_TOO_FEW = 6132,
+    /**
+     * The data cannot determine the fit (all impact speeds equal).
+     */
+    DC_ERR_FIT_DEGENERATE = 6133,
     /**
      * An internal error was caught at the boundary (not expected; please report).
      */
@@ -781,6 +851,81 @@ typedef struct dc_contact_batch {
 } dc_contact_batch;
 
 /**
+ * Result of dc_fit_restitution. Viscoelastic model: e(v) = e_full(beta v^(1/5)) (see
+ * dc_viscoelastic_e); constant model: e(v) = e_const.
+ */
+typedef struct dc_fit_result {
+    /**
+     * Viscoelastic constant beta [s^(1/5) m^(-1/5)], b = beta v^(1/5).
+     */
+    double beta;
+    /**
+     * Standard error of beta.
+     */
+    double beta_se;
+    /**
+     * Constant-e fit (weighted mean).
+     */
+    double e_const;
+    /**
+     * Standard error of e_const.
+     */
+    double e_const_se;
+    /**
+     * Weighted residual sum of squares of the viscoelastic fit.
+     */
+    double chi2_viscoelastic;
+    /**
+     * Weighted residual sum of squares of the constant fit.
+     */
+    double chi2_constant;
+    /**
+     * Largest |e_i - fitted| of the viscoelastic fit.
+     */
+    double max_residual_viscoelastic;
+    /**
+     * Largest |e_i - fitted| of the constant fit.
+     */
+    double max_residual_constant;
+    /**
+     * Smallest measured speed.
+     */
+    double v_min;
+    /**
+     * Largest measured speed.
+     */
+    double v_max;
+    /**
+     * Viscoelastic fit at v_min.
+     */
+    double e_viscoelastic_at_v_min;
+    /**
+     * Viscoelastic fit at v_max.
+     */
+    double e_viscoelastic_at_v_max;
+    /**
+     * Largest |e_viscoelastic(v) - e_const| over [v_min, v_max] (at an end: e(v) is monotone).
+     */
+    double max_model_deviation;
+    /**
+     * DC_FIT_MODEL_CONSTANT if max_model_deviation <= tol, else DC_FIT_MODEL_VISCOELASTIC.
+     */
+    int32_t model;
+    /**
+     * 1 if the standard errors come from the residual scatter (sigma NULL), 0 if from sigma.
+     */
+    int32_t se_from_scatter;
+    /**
+     * Gauss-Newton iterations used (summed over robust rounds).
+     */
+    int32_t iterations;
+    /**
+     * 1 if the Huber-robust fit was used.
+     */
+    int32_t robust;
+} dc_fit_result;
+
+/**
  * A contact-duration plan: everything dc_contact_duration_level computes from the exponent p and
  * the accuracy level alone (transform constants, ln Gamma(q), Gauss-Jacobi nodes and weights for
  * the integrand's end singularity), built once by dc_duration_plan_init and then reused by
@@ -862,6 +1007,64 @@ typedef struct dc_energy {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * The value to type into a builtin model so that it realises restitution `e` in a head-on
+ * collision, at every impact speed (every builtin here is a power-law Tsuji contact, so the
+ * realised e does not depend on speed, stiffness or mass).
+ *
+ * @param model      a DC_BUILTIN_* code.
+ * @param clamp      1 if the code clamps attractive normal forces (LIGGGHTS `limitForce on`,
+ *                   LAMMPS `limit_damping`; YADE always: must be 1), else 0.
+ * @param e          target restitution, 0 < e <= 1.
+ * @param value_out  receives the value to type (e or en in (0, 1], or betan >= 0); untouched on
+ *                   error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_RESTITUTION_RANGE,
+ *         DC_ERR_BUILTIN_MODEL (unknown model, clamp not 0/1, or 0 for YADE),
+ *         DC_ERR_BUILTIN_UNREACHABLE (the builtin's parameter saturates before e: with a clamp,
+ *         the e-typed models of LIGGGHTS, LAMMPS coeff_restitution and YADE en cannot go below
+ *         e = exp(-2) = 0.1353; LAMMPS tsuji covers damping 0.0003 <= alpha < 1.2728 only: Hertz
+ *         e in (0.1136, 0.99958), (0.2628, 0.99958) with limit_damping).
+ *
+ * Precision: the builtin's own formula applied to the value realises e within 1e-13.
+ *
+ * # Safety
+ * `value_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_builtin_value_for_e(int32_t model, int32_t clamp, double e, double *value_out);
+
+/**
+ * The restitution a builtin model realises (in continuous time) when `value` is typed: the
+ * forward map of dc_builtin_value_for_e, e.g. to show what an uncorrected input gives.
+ *
+ * @param model   a DC_BUILTIN_* code.
+ * @param clamp   1 if the code clamps attractive forces (YADE: must be 1), else 0.
+ * @param value   the typed value (e or en in (0, 1], or betan >= 0).
+ * @param e_out   receives the realised e in [0, 1]; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_RESTITUTION_RANGE (typed e),
+ *         DC_ERR_NEGATIVE (betan), DC_ERR_BUILTIN_MODEL.
+ *
+ * # Safety
+ * `e_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_builtin_realised_e(int32_t model, int32_t clamp, double value, double *e_out);
+
+/**
+ * Contact damping cn [N s/m] for YADE `ViscElMat(kn=, cn=)` (linear law, always clamped) that
+ * realises restitution `e`: cn = 2 zeta_F(e) sqrt(m_reduced kn). YADE combines the two materials'
+ * kn and cn in series, so for two equal materials type 2 kn and 2 cn on each.
+ *
+ * @param e           target restitution, 0 < e <= 1 (overdamped values below exp(-2) are fine).
+ * @param kn          contact normal stiffness [N/m], > 0.
+ * @param m_reduced   m1 m2 / (m1 + m2) [kg], > 0 (the dynamic body's mass against a wall).
+ * @param cn_out      receives cn >= 0; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_RESTITUTION_RANGE,
+ *         DC_ERR_NOT_POSITIVE, DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `cn_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_builtin_yade_viscel_cn(double e, double kn, double m_reduced, double *cn_out);
 
 /**
  * Damping coefficient alpha that makes a power-law Tsuji contact
@@ -1027,6 +1230,49 @@ int32_t dc_contact_force_spheres(const struct dc_contact_model *model,
 int32_t dc_contact_force_batch(const struct dc_contact_model *model,
                                const struct dc_contact_batch *batch,
                                double dt);
+
+/**
+ * Fits measured restitution e_i at impact speeds v_i (optional standard uncertainties sigma_i)
+ * with the viscoelastic model (one constant beta, full range of b = beta v^(1/5)) and with a
+ * constant e, by weighted least squares (weights 1/sigma_i^2), and says which the data require:
+ * the constant e when the viscoelastic fit departs from it by at most `tol` over [v_min, v_max].
+ * Standard errors from the linearised covariance (sigma given: taken as known; NULL: from the
+ * residual scatter, s^2 = RSS/(n-1)). `robust` = 1: Huber IRLS (c = 1.345; residuals scaled by
+ * sigma, or by 1.4826 MAD without sigma). No allocation; O(n) model evaluations per iteration,
+ * O(n^2) comparisons per robust round (median by rank counting).
+ *
+ * @param n                    number of points, >= 2.
+ * @param v                    n impact speeds > 0, not all equal.
+ * @param e                    n measured restitutions in (0, 1].
+ * @param sigma                n uncertainties > 0, or NULL (unweighted).
+ * @param criterion            DC_END_OVERLAP or DC_END_FORCE (host clamps forces).
+ * @param tol                  tolerance on e for the model choice, > 0.
+ * @param robust               0: least squares; any other value: Huber.
+ * @param resid_viscoelastic   NULL or n doubles: receives e_i - e_viscoelastic(v_i).
+ * @param resid_constant       NULL or n doubles: receives e_i - e_const.
+ * @param out                  receives the result.
+ * @return DC_OK, DC_ERR_NULL_POINTER (v, e or out), DC_ERR_FIT_TOO_FEW (n < 2),
+ *         DC_ERR_FIT_DEGENERATE (all speeds equal), DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE
+ *         (v, sigma or tol <= 0), DC_ERR_RESTITUTION_RANGE, DC_ERR_CRITERION,
+ *         DC_ERR_BUFFER_LAYOUT (misaligned arrays, or a residual array overlapping an input or
+ *         the other), DC_ERR_NO_CONVERGENCE. Nothing is written on error.
+ *
+ * Precision: exact model data give beta to 1e-13 relative (tests/fit.rs).
+ *
+ * # Safety
+ * v, e (and sigma if non-NULL) readable for n doubles; residual arrays NULL or writable for n
+ * doubles; out NULL or writable for one dc_fit_result.
+ */
+int32_t dc_fit_restitution(size_t n,
+                           const double *v,
+                           const double *e,
+                           const double *sigma,
+                           int32_t criterion,
+                           double tol,
+                           int32_t robust,
+                           double *resid_viscoelastic,
+                           double *resid_constant,
+                           struct dc_fit_result *out);
 
 /**
  * Power-law Tsuji pair F = k d^p + alpha sqrt(m_eff k) d^((p-1)/2) vn with alpha calibrated so

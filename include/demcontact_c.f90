@@ -26,6 +26,14 @@ module demcontact_c
   integer(c_int32_t), parameter :: DMT = 5
   integer(c_int32_t), parameter :: NONE = 0
   integer(c_int32_t), parameter :: RESTITUTION = 1
+  integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HOOKE = 1
+  integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HERTZ = 2
+  integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_COEFF_RESTITUTION = 3
+  integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_TSUJI_HERTZ = 4
+  integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_TSUJI_HOOKE = 5
+  integer(c_int32_t), parameter :: DC_BUILTIN_YADE_VISCEL_EN = 6
+  integer(c_int32_t), parameter :: DC_BUILTIN_YADE_MINDLIN_EN = 7
+  integer(c_int32_t), parameter :: DC_BUILTIN_YADE_MINDLIN_BETAN = 8
   integer(c_int32_t), parameter :: DC_CONTACT_SPEC_VERSION = 1
   integer(c_int32_t), parameter :: DC_CONTACT_HISTORY_MAX = 10
   integer(c_int32_t), parameter :: DC_NORMAL_HERTZ = 1
@@ -43,6 +51,8 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_ROLLING_EPSD = 2
   integer(c_int32_t), parameter :: DC_TWISTING_NONE = 0
   integer(c_int32_t), parameter :: DC_TWISTING_SDS = 1
+  integer(c_int32_t), parameter :: DC_FIT_MODEL_CONSTANT = 0
+  integer(c_int32_t), parameter :: DC_FIT_MODEL_VISCOELASTIC = 1
   integer(c_int32_t), parameter :: DC_MODEL_POWERLAW = 1
   integer(c_int32_t), parameter :: DC_MODEL_HERTZ = 2
   integer(c_int32_t), parameter :: DC_MODEL_VISCOELASTIC = 3
@@ -72,6 +82,10 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_ERR_SPEC_UNSET = 6124
   integer(c_int32_t), parameter :: DC_ERR_CONTACT_MODEL_INVALID = 6125
   integer(c_int32_t), parameter :: DC_ERR_NOT_UNIT = 6126
+  integer(c_int32_t), parameter :: DC_ERR_BUILTIN_MODEL = 6130
+  integer(c_int32_t), parameter :: DC_ERR_BUILTIN_UNREACHABLE = 6131
+  integer(c_int32_t), parameter :: DC_ERR_FIT_TOO_FEW = 6132
+  integer(c_int32_t), parameter :: DC_ERR_FIT_DEGENERATE = 6133
   integer(c_int32_t), parameter :: DC_ERR_INTERNAL = 6199
 
   type, bind(c) :: dc_contact_spec
@@ -183,6 +197,26 @@ module demcontact_c
     type(c_ptr) :: torque2
   end type dc_contact_batch
 
+  type, bind(c) :: dc_fit_result
+    real(c_double) :: beta
+    real(c_double) :: beta_se
+    real(c_double) :: e_const
+    real(c_double) :: e_const_se
+    real(c_double) :: chi2_viscoelastic
+    real(c_double) :: chi2_constant
+    real(c_double) :: max_residual_viscoelastic
+    real(c_double) :: max_residual_constant
+    real(c_double) :: v_min
+    real(c_double) :: v_max
+    real(c_double) :: e_viscoelastic_at_v_min
+    real(c_double) :: e_viscoelastic_at_v_max
+    real(c_double) :: max_model_deviation
+    integer(c_int32_t) :: model
+    integer(c_int32_t) :: se_from_scatter
+    integer(c_int32_t) :: iterations
+    integer(c_int32_t) :: robust
+  end type dc_fit_result
+
   type, bind(c) :: dc_duration_plan
     integer(c_int64_t) :: tag
     real(c_double) :: p
@@ -205,6 +239,32 @@ module demcontact_c
   end type dc_energy
 
   interface
+    function dc_builtin_value_for_e(model, clamp, e, value_out) bind(c, &
+        name='dc_builtin_value_for_e')
+      import
+      integer(c_int32_t), value, intent(in) :: model
+      integer(c_int32_t), value, intent(in) :: clamp
+      real(c_double), value, intent(in) :: e
+      real(c_double), intent(out) :: value_out
+      integer(c_int32_t) :: dc_builtin_value_for_e
+    end function dc_builtin_value_for_e
+    function dc_builtin_realised_e(model, clamp, value, e_out) bind(c, name='dc_builtin_realised_e')
+      import
+      integer(c_int32_t), value, intent(in) :: model
+      integer(c_int32_t), value, intent(in) :: clamp
+      real(c_double), value, intent(in) :: value
+      real(c_double), intent(out) :: e_out
+      integer(c_int32_t) :: dc_builtin_realised_e
+    end function dc_builtin_realised_e
+    function dc_builtin_yade_viscel_cn(e, kn, m_reduced, cn_out) bind(c, &
+        name='dc_builtin_yade_viscel_cn')
+      import
+      real(c_double), value, intent(in) :: e
+      real(c_double), value, intent(in) :: kn
+      real(c_double), value, intent(in) :: m_reduced
+      real(c_double), intent(out) :: cn_out
+      integer(c_int32_t) :: dc_builtin_yade_viscel_cn
+    end function dc_builtin_yade_viscel_cn
     function dc_alpha_from_e(e, p, criterion, alpha_out) bind(c, name='dc_alpha_from_e')
       import
       real(c_double), value, intent(in) :: e
@@ -269,6 +329,21 @@ module demcontact_c
       real(c_double), value, intent(in) :: dt
       integer(c_int32_t) :: dc_contact_force_batch
     end function dc_contact_force_batch
+    function dc_fit_restitution(n, v, e, sigma, criterion, tol, robust, resid_viscoelastic, &
+        resid_constant, out) bind(c, name='dc_fit_restitution')
+      import
+      integer(c_size_t), value, intent(in) :: n
+      real(c_double), intent(in) :: v(*)
+      real(c_double), intent(in) :: e(*)
+      real(c_double), intent(in) :: sigma(*)
+      integer(c_int32_t), value, intent(in) :: criterion
+      real(c_double), value, intent(in) :: tol
+      integer(c_int32_t), value, intent(in) :: robust
+      real(c_double), intent(inout) :: resid_viscoelastic(*)
+      real(c_double), intent(inout) :: resid_constant(*)
+      type(dc_fit_result), intent(out) :: out
+      integer(c_int32_t) :: dc_fit_restitution
+    end function dc_fit_restitution
     function dc_pair_powerlaw(p, k, e, criterion, out) bind(c, name='dc_pair_powerlaw')
       import
       real(c_double), value, intent(in) :: p
@@ -619,6 +694,45 @@ module demcontact_c
   end interface
 
 contains
+
+  !> Elemental form of dc_builtin_value_for_e: on error `value_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine builtin_value_for_e(model, clamp, e, value_out, stat)
+    integer(c_int32_t), intent(in) :: model
+    integer(c_int32_t), intent(in) :: clamp
+    real(c_double), intent(in) :: e
+    real(c_double), intent(out) :: value_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_builtin_value_for_e(model, clamp, e, value_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) value_out = ieee_value(value_out, ieee_quiet_nan)
+  end subroutine builtin_value_for_e
+
+  !> Elemental form of dc_builtin_realised_e: on error `e_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine builtin_realised_e(model, clamp, value, e_out, stat)
+    integer(c_int32_t), intent(in) :: model
+    integer(c_int32_t), intent(in) :: clamp
+    real(c_double), intent(in) :: value
+    real(c_double), intent(out) :: e_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_builtin_realised_e(model, clamp, value, e_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) e_out = ieee_value(e_out, ieee_quiet_nan)
+  end subroutine builtin_realised_e
+
+  !> Elemental form of dc_builtin_yade_viscel_cn: on error `cn_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine builtin_yade_viscel_cn(e, kn, m_reduced, cn_out, stat)
+    real(c_double), intent(in) :: e
+    real(c_double), intent(in) :: kn
+    real(c_double), intent(in) :: m_reduced
+    real(c_double), intent(out) :: cn_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_builtin_yade_viscel_cn(e, kn, m_reduced, cn_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) cn_out = ieee_value(cn_out, ieee_quiet_nan)
+  end subroutine builtin_yade_viscel_cn
 
   !> Elemental form of dc_alpha_from_e: on error `alpha_out` is NaN (numeric) and `stat` the status.
   impure elemental subroutine alpha_from_e(e, p, criterion, alpha_out, stat)

@@ -27,6 +27,10 @@ enum class status : std::int32_t {
     spec_unset = DC_ERR_SPEC_UNSET,
     contact_model_invalid = DC_ERR_CONTACT_MODEL_INVALID,
     not_unit = DC_ERR_NOT_UNIT,
+    builtin_model = DC_ERR_BUILTIN_MODEL,
+    builtin_unreachable = DC_ERR_BUILTIN_UNREACHABLE,
+    fit_too_few = DC_ERR_FIT_TOO_FEW,
+    fit_degenerate = DC_ERR_FIT_DEGENERATE,
     internal = DC_ERR_INTERNAL,
 };
 
@@ -35,6 +39,39 @@ enum class criterion : std::int32_t {
     overlap = DC_END_OVERLAP,
     force = DC_END_FORCE,
 };
+
+/// dc_builtin_value_for_e: throws demcontact::error on a non-OK status.
+inline double builtin_value_for_e(std::int32_t model, std::int32_t clamp, double e) {
+    double out{};
+    detail::check(::dc_builtin_value_for_e(model, clamp, e, &out));
+    return out;
+}
+/// dc_builtin_value_for_e: returns the status; `out` is written only on status::ok.
+inline status builtin_value_for_e(std::int32_t model, std::int32_t clamp, double e, double& out) noexcept {
+    return static_cast<status>(::dc_builtin_value_for_e(model, clamp, e, &out));
+}
+
+/// dc_builtin_realised_e: throws demcontact::error on a non-OK status.
+inline double builtin_realised_e(std::int32_t model, std::int32_t clamp, double value) {
+    double out{};
+    detail::check(::dc_builtin_realised_e(model, clamp, value, &out));
+    return out;
+}
+/// dc_builtin_realised_e: returns the status; `out` is written only on status::ok.
+inline status builtin_realised_e(std::int32_t model, std::int32_t clamp, double value, double& out) noexcept {
+    return static_cast<status>(::dc_builtin_realised_e(model, clamp, value, &out));
+}
+
+/// dc_builtin_yade_viscel_cn: throws demcontact::error on a non-OK status.
+inline double builtin_yade_viscel_cn(double e, double kn, double m_reduced) {
+    double out{};
+    detail::check(::dc_builtin_yade_viscel_cn(e, kn, m_reduced, &out));
+    return out;
+}
+/// dc_builtin_yade_viscel_cn: returns the status; `out` is written only on status::ok.
+inline status builtin_yade_viscel_cn(double e, double kn, double m_reduced, double& out) noexcept {
+    return static_cast<status>(::dc_builtin_yade_viscel_cn(e, kn, m_reduced, &out));
+}
 
 /// dc_alpha_from_e: throws demcontact::error on a non-OK status.
 inline double alpha_from_e(double e, double p, criterion criterion_) {

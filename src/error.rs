@@ -42,4 +42,13 @@ pub enum Error {
     ContactModelInvalid,
     /// A contact normal is not a unit vector.
     NotUnit,
+    /// A builtin model code is unknown, or an option it does not have was asked for (e.g. no
+    /// force clamp for YADE, whose laws always clamp).
+    BuiltinModel,
+    /// The builtin cannot realise this restitution: its parameter saturates before it.
+    BuiltinUnreachable,
+    /// A fit got fewer than two points.
+    FitTooFew,
+    /// A fit's data cannot determine the model: all speeds equal, or all weights zero.
+    FitDegenerate,
 }

@@ -17,10 +17,12 @@
 //! * [`numerics`]: root finding and the reference ODE integrator used to check everything else.
 //! * [`ffi`]: the `extern "C"` functions exported as `include/demcontact.h`.
 
+pub mod builtin;
 pub mod contact;
 pub mod criterion;
 pub mod error;
 pub mod ffi;
+pub mod fit;
 pub mod force;
 pub mod lsd;
 pub mod material;

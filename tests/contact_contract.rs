@@ -259,6 +259,19 @@ fn model_init_statuses() {
             }),
             DC_ERR_SPEC_UNSET,
         ),
+        // Found by fuzzing: a subnormal E gives kf = 0 (compliance overflows); the model was
+        // accepted and then refused by every force call.
+        (Box::new(|s| s.E1 = 1e-320), DC_ERR_RESULT_RANGE),
+        (
+            Box::new(|s| {
+                s.normal = DC_NORMAL_LINEAR;
+                s.k_n = 1e6;
+                s.tangential = DC_TANGENTIAL_MINDLIN;
+                s.mu = 0.3;
+                s.E2 = 1e-320;
+            }),
+            DC_ERR_RESULT_RANGE,
+        ),
         (Box::new(|s| s.inertia_factor = 0.0), DC_ERR_NOT_POSITIVE),
         (Box::new(|s| s.inertia_factor = 1.5), DC_ERR_SPEC_MODEL),
         (

@@ -34,17 +34,37 @@ fn src_force_has_no_import_cycle_and_one_registry() {
     let names: Vec<String> = files.keys().cloned().collect();
     let graph: BTreeMap<String, Vec<String>> = files
         .iter()
-        .map(|(n, s)| (n.clone(), siblings(s, &names).into_iter().filter(|m| m != n).collect()))
+        .map(|(n, s)| {
+            (
+                n.clone(),
+                siblings(s, &names).into_iter().filter(|m| m != n).collect(),
+            )
+        })
         .collect();
     println!("{graph:?}");
-    assert!(graph["pair"].is_empty(), "pair.rs must import no sibling: {:?}", graph["pair"]);
-    assert!(graph["registry"].contains(&"hertz".to_string()), "parser sees the registry's imports");
+    assert!(
+        graph["pair"].is_empty(),
+        "pair.rs must import no sibling: {:?}",
+        graph["pair"]
+    );
+    assert!(
+        graph["registry"].contains(&"hertz".to_string()),
+        "parser sees the registry's imports"
+    );
     // Depth-first search for a cycle.
-    fn visit(n: &str, g: &BTreeMap<String, Vec<String>>, stack: &mut Vec<String>, done: &mut Vec<String>) {
+    fn visit(
+        n: &str,
+        g: &BTreeMap<String, Vec<String>>,
+        stack: &mut Vec<String>,
+        done: &mut Vec<String>,
+    ) {
         if done.iter().any(|d| d == n) {
             return;
         }
-        assert!(!stack.iter().any(|s| s == n), "import cycle: {stack:?} -> {n}");
+        assert!(
+            !stack.iter().any(|s| s == n),
+            "import cycle: {stack:?} -> {n}"
+        );
         stack.push(n.to_string());
         for m in &g[n] {
             visit(m, g, stack, done);
@@ -59,7 +79,10 @@ fn src_force_has_no_import_cycle_and_one_registry() {
     // Kernel codes appear in the registry only: no other file names a code constant.
     for (n, s) in &files {
         if n != "registry" {
-            assert!(!s.contains("code::"), "{n}.rs refers to kernel code constants");
+            assert!(
+                !s.contains("code::"),
+                "{n}.rs refers to kernel code constants"
+            );
         }
     }
 }

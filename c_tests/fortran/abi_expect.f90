@@ -23,54 +23,68 @@ contains
     v(14) = DMT
     v(15) = NONE
     v(16) = RESTITUTION
-    v(17) = DC_CONTACT_SPEC_VERSION
-    v(18) = DC_CONTACT_HISTORY_MAX
-    v(19) = DC_NORMAL_HERTZ
-    v(20) = DC_NORMAL_POWERLAW
-    v(21) = DC_NORMAL_LINEAR
-    v(22) = DC_NORMAL_VISCOELASTIC
-    v(23) = DC_NORMAL_DMT
-    v(24) = DC_DAMPING_NONE
-    v(25) = DC_DAMPING_RESTITUTION
-    v(26) = DC_TANGENTIAL_NONE
-    v(27) = DC_TANGENTIAL_LINEAR
-    v(28) = DC_TANGENTIAL_MINDLIN
-    v(29) = DC_ROLLING_NONE
-    v(30) = DC_ROLLING_CONSTANT
-    v(31) = DC_ROLLING_EPSD
-    v(32) = DC_TWISTING_NONE
-    v(33) = DC_TWISTING_SDS
-    v(34) = DC_MODEL_POWERLAW
-    v(35) = DC_MODEL_HERTZ
-    v(36) = DC_MODEL_VISCOELASTIC
-    v(37) = DC_MODEL_DMT
-    v(38) = DC_LEVEL_MIN
-    v(39) = DC_LEVEL_MAX
-    v(40) = DC_END_OVERLAP
-    v(41) = DC_END_FORCE
-    v(42) = DC_OK
-    v(43) = DC_ERR_NULL_POINTER
-    v(44) = DC_ERR_NOT_FINITE
-    v(45) = DC_ERR_RESTITUTION_RANGE
-    v(46) = DC_ERR_EXPONENT_RANGE
-    v(47) = DC_ERR_NOT_POSITIVE
-    v(48) = DC_ERR_NEGATIVE
-    v(49) = DC_ERR_CRITERION
-    v(50) = DC_ERR_RESULT_RANGE
-    v(51) = DC_ERR_NO_CONVERGENCE
-    v(52) = DC_ERR_BUFFER_TOO_SHORT
-    v(53) = DC_ERR_NO_EVENT
-    v(54) = DC_ERR_LEVEL
-    v(55) = DC_ERR_PLAN
-    v(56) = DC_ERR_PAIR_INVALID
-    v(57) = DC_ERR_BUFFER_LAYOUT
-    v(58) = DC_ERR_SPEC_VERSION
-    v(59) = DC_ERR_SPEC_MODEL
-    v(60) = DC_ERR_SPEC_UNSET
-    v(61) = DC_ERR_CONTACT_MODEL_INVALID
-    v(62) = DC_ERR_NOT_UNIT
-    v(63) = DC_ERR_INTERNAL
-    n = 63
+    v(17) = DC_BUILTIN_LIGGGHTS_HOOKE
+    v(18) = DC_BUILTIN_LIGGGHTS_HERTZ
+    v(19) = DC_BUILTIN_LAMMPS_COEFF_RESTITUTION
+    v(20) = DC_BUILTIN_LAMMPS_TSUJI_HERTZ
+    v(21) = DC_BUILTIN_LAMMPS_TSUJI_HOOKE
+    v(22) = DC_BUILTIN_YADE_VISCEL_EN
+    v(23) = DC_BUILTIN_YADE_MINDLIN_EN
+    v(24) = DC_BUILTIN_YADE_MINDLIN_BETAN
+    v(25) = DC_CONTACT_SPEC_VERSION
+    v(26) = DC_CONTACT_HISTORY_MAX
+    v(27) = DC_NORMAL_HERTZ
+    v(28) = DC_NORMAL_POWERLAW
+    v(29) = DC_NORMAL_LINEAR
+    v(30) = DC_NORMAL_VISCOELASTIC
+    v(31) = DC_NORMAL_DMT
+    v(32) = DC_DAMPING_NONE
+    v(33) = DC_DAMPING_RESTITUTION
+    v(34) = DC_TANGENTIAL_NONE
+    v(35) = DC_TANGENTIAL_LINEAR
+    v(36) = DC_TANGENTIAL_MINDLIN
+    v(37) = DC_ROLLING_NONE
+    v(38) = DC_ROLLING_CONSTANT
+    v(39) = DC_ROLLING_EPSD
+    v(40) = DC_TWISTING_NONE
+    v(41) = DC_TWISTING_SDS
+    v(42) = DC_FIT_MODEL_CONSTANT
+    v(43) = DC_FIT_MODEL_VISCOELASTIC
+    v(44) = DC_MODEL_POWERLAW
+    v(45) = DC_MODEL_HERTZ
+    v(46) = DC_MODEL_VISCOELASTIC
+    v(47) = DC_MODEL_DMT
+    v(48) = DC_LEVEL_MIN
+    v(49) = DC_LEVEL_MAX
+    v(50) = DC_END_OVERLAP
+    v(51) = DC_END_FORCE
+    v(52) = DC_OK
+    v(53) = DC_ERR_NULL_POINTER
+    v(54) = DC_ERR_NOT_FINITE
+    v(55) = DC_ERR_RESTITUTION_RANGE
+    v(56) = DC_ERR_EXPONENT_RANGE
+    v(57) = DC_ERR_NOT_POSITIVE
+    v(58) = DC_ERR_NEGATIVE
+    v(59) = DC_ERR_CRITERION
+    v(60) = DC_ERR_RESULT_RANGE
+    v(61) = DC_ERR_NO_CONVERGENCE
+    v(62) = DC_ERR_BUFFER_TOO_SHORT
+    v(63) = DC_ERR_NO_EVENT
+    v(64) = DC_ERR_LEVEL
+    v(65) = DC_ERR_PLAN
+    v(66) = DC_ERR_PAIR_INVALID
+    v(67) = DC_ERR_BUFFER_LAYOUT
+    v(68) = DC_ERR_SPEC_VERSION
+    v(69) = DC_ERR_SPEC_MODEL
+    v(70) = DC_ERR_SPEC_UNSET
+    v(71) = DC_ERR_CONTACT_MODEL_INVALID
+    v(72) = DC_ERR_NOT_UNIT
+    v(73) = DC_ERR_BUILTIN_MODEL
+    v(74) = DC_ERR_BUILTIN_UNREACHABLE
+    v(75) = DC_ERR_FIT_TOO_FEW
+    v(76) = DC_ERR_FIT_DEGENERATE
+    v(77) = DC_ERR_INTERNAL
+    n = 77
   end subroutine expected_consts
 
   subroutine expected_layout(v, n)
@@ -283,43 +297,81 @@ contains
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
     end block
     block
+      type(dc_fit_result), target :: x_dc_fit_result
+      v(98) = c_sizeof(x_dc_fit_result)
+      v(99) = transfer(c_loc(x_dc_fit_result%beta), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(100) = transfer(c_loc(x_dc_fit_result%beta_se), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(101) = transfer(c_loc(x_dc_fit_result%e_const), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(102) = transfer(c_loc(x_dc_fit_result%e_const_se), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(103) = transfer(c_loc(x_dc_fit_result%chi2_viscoelastic), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(104) = transfer(c_loc(x_dc_fit_result%chi2_constant), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(105) = transfer(c_loc(x_dc_fit_result%max_residual_viscoelastic), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(106) = transfer(c_loc(x_dc_fit_result%max_residual_constant), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(107) = transfer(c_loc(x_dc_fit_result%v_min), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(108) = transfer(c_loc(x_dc_fit_result%v_max), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(109) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_min), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(110) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_max), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(111) = transfer(c_loc(x_dc_fit_result%max_model_deviation), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(112) = transfer(c_loc(x_dc_fit_result%model), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(113) = transfer(c_loc(x_dc_fit_result%se_from_scatter), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(114) = transfer(c_loc(x_dc_fit_result%iterations), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+      v(115) = transfer(c_loc(x_dc_fit_result%robust), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
+    end block
+    block
       type(dc_duration_plan), target :: x_dc_duration_plan
-      v(98) = c_sizeof(x_dc_duration_plan)
-      v(99) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) &
+      v(116) = c_sizeof(x_dc_duration_plan)
+      v(117) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(100) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) &
+      v(118) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(101) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) &
+      v(119) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(102) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) &
+      v(120) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(103) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) &
+      v(121) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(104) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) &
+      v(122) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(105) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) &
+      v(123) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(106) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) &
+      v(124) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(107) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) &
+      v(125) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(108) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) &
+      v(126) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
     end block
     block
       type(dc_energy), target :: x_dc_energy
-      v(109) = c_sizeof(x_dc_energy)
-      v(110) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) &
+      v(127) = c_sizeof(x_dc_energy)
+      v(128) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(111) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) &
+      v(129) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(112) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) &
+      v(130) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(113) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) &
+      v(131) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(114) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) &
+      v(132) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
     end block
-    n = 114
+    n = 132
   end subroutine expected_layout
 end module abi_expect

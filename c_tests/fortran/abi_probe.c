@@ -3,7 +3,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-int32_t dc_probe_n_consts(void) { return 63; }
+int32_t dc_probe_n_consts(void) { return 77; }
 int64_t dc_probe_const(int32_t i) {
   switch (i) {
   case 1: return (int64_t)(HISTORY_MAX);
@@ -22,57 +22,71 @@ int64_t dc_probe_const(int32_t i) {
   case 14: return (int64_t)(DMT);
   case 15: return (int64_t)(NONE);
   case 16: return (int64_t)(RESTITUTION);
-  case 17: return (int64_t)(DC_CONTACT_SPEC_VERSION);
-  case 18: return (int64_t)(DC_CONTACT_HISTORY_MAX);
-  case 19: return (int64_t)(DC_NORMAL_HERTZ);
-  case 20: return (int64_t)(DC_NORMAL_POWERLAW);
-  case 21: return (int64_t)(DC_NORMAL_LINEAR);
-  case 22: return (int64_t)(DC_NORMAL_VISCOELASTIC);
-  case 23: return (int64_t)(DC_NORMAL_DMT);
-  case 24: return (int64_t)(DC_DAMPING_NONE);
-  case 25: return (int64_t)(DC_DAMPING_RESTITUTION);
-  case 26: return (int64_t)(DC_TANGENTIAL_NONE);
-  case 27: return (int64_t)(DC_TANGENTIAL_LINEAR);
-  case 28: return (int64_t)(DC_TANGENTIAL_MINDLIN);
-  case 29: return (int64_t)(DC_ROLLING_NONE);
-  case 30: return (int64_t)(DC_ROLLING_CONSTANT);
-  case 31: return (int64_t)(DC_ROLLING_EPSD);
-  case 32: return (int64_t)(DC_TWISTING_NONE);
-  case 33: return (int64_t)(DC_TWISTING_SDS);
-  case 34: return (int64_t)(DC_MODEL_POWERLAW);
-  case 35: return (int64_t)(DC_MODEL_HERTZ);
-  case 36: return (int64_t)(DC_MODEL_VISCOELASTIC);
-  case 37: return (int64_t)(DC_MODEL_DMT);
-  case 38: return (int64_t)(DC_LEVEL_MIN);
-  case 39: return (int64_t)(DC_LEVEL_MAX);
-  case 40: return (int64_t)(DC_END_OVERLAP);
-  case 41: return (int64_t)(DC_END_FORCE);
-  case 42: return (int64_t)(DC_OK);
-  case 43: return (int64_t)(DC_ERR_NULL_POINTER);
-  case 44: return (int64_t)(DC_ERR_NOT_FINITE);
-  case 45: return (int64_t)(DC_ERR_RESTITUTION_RANGE);
-  case 46: return (int64_t)(DC_ERR_EXPONENT_RANGE);
-  case 47: return (int64_t)(DC_ERR_NOT_POSITIVE);
-  case 48: return (int64_t)(DC_ERR_NEGATIVE);
-  case 49: return (int64_t)(DC_ERR_CRITERION);
-  case 50: return (int64_t)(DC_ERR_RESULT_RANGE);
-  case 51: return (int64_t)(DC_ERR_NO_CONVERGENCE);
-  case 52: return (int64_t)(DC_ERR_BUFFER_TOO_SHORT);
-  case 53: return (int64_t)(DC_ERR_NO_EVENT);
-  case 54: return (int64_t)(DC_ERR_LEVEL);
-  case 55: return (int64_t)(DC_ERR_PLAN);
-  case 56: return (int64_t)(DC_ERR_PAIR_INVALID);
-  case 57: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
-  case 58: return (int64_t)(DC_ERR_SPEC_VERSION);
-  case 59: return (int64_t)(DC_ERR_SPEC_MODEL);
-  case 60: return (int64_t)(DC_ERR_SPEC_UNSET);
-  case 61: return (int64_t)(DC_ERR_CONTACT_MODEL_INVALID);
-  case 62: return (int64_t)(DC_ERR_NOT_UNIT);
-  case 63: return (int64_t)(DC_ERR_INTERNAL);
+  case 17: return (int64_t)(DC_BUILTIN_LIGGGHTS_HOOKE);
+  case 18: return (int64_t)(DC_BUILTIN_LIGGGHTS_HERTZ);
+  case 19: return (int64_t)(DC_BUILTIN_LAMMPS_COEFF_RESTITUTION);
+  case 20: return (int64_t)(DC_BUILTIN_LAMMPS_TSUJI_HERTZ);
+  case 21: return (int64_t)(DC_BUILTIN_LAMMPS_TSUJI_HOOKE);
+  case 22: return (int64_t)(DC_BUILTIN_YADE_VISCEL_EN);
+  case 23: return (int64_t)(DC_BUILTIN_YADE_MINDLIN_EN);
+  case 24: return (int64_t)(DC_BUILTIN_YADE_MINDLIN_BETAN);
+  case 25: return (int64_t)(DC_CONTACT_SPEC_VERSION);
+  case 26: return (int64_t)(DC_CONTACT_HISTORY_MAX);
+  case 27: return (int64_t)(DC_NORMAL_HERTZ);
+  case 28: return (int64_t)(DC_NORMAL_POWERLAW);
+  case 29: return (int64_t)(DC_NORMAL_LINEAR);
+  case 30: return (int64_t)(DC_NORMAL_VISCOELASTIC);
+  case 31: return (int64_t)(DC_NORMAL_DMT);
+  case 32: return (int64_t)(DC_DAMPING_NONE);
+  case 33: return (int64_t)(DC_DAMPING_RESTITUTION);
+  case 34: return (int64_t)(DC_TANGENTIAL_NONE);
+  case 35: return (int64_t)(DC_TANGENTIAL_LINEAR);
+  case 36: return (int64_t)(DC_TANGENTIAL_MINDLIN);
+  case 37: return (int64_t)(DC_ROLLING_NONE);
+  case 38: return (int64_t)(DC_ROLLING_CONSTANT);
+  case 39: return (int64_t)(DC_ROLLING_EPSD);
+  case 40: return (int64_t)(DC_TWISTING_NONE);
+  case 41: return (int64_t)(DC_TWISTING_SDS);
+  case 42: return (int64_t)(DC_FIT_MODEL_CONSTANT);
+  case 43: return (int64_t)(DC_FIT_MODEL_VISCOELASTIC);
+  case 44: return (int64_t)(DC_MODEL_POWERLAW);
+  case 45: return (int64_t)(DC_MODEL_HERTZ);
+  case 46: return (int64_t)(DC_MODEL_VISCOELASTIC);
+  case 47: return (int64_t)(DC_MODEL_DMT);
+  case 48: return (int64_t)(DC_LEVEL_MIN);
+  case 49: return (int64_t)(DC_LEVEL_MAX);
+  case 50: return (int64_t)(DC_END_OVERLAP);
+  case 51: return (int64_t)(DC_END_FORCE);
+  case 52: return (int64_t)(DC_OK);
+  case 53: return (int64_t)(DC_ERR_NULL_POINTER);
+  case 54: return (int64_t)(DC_ERR_NOT_FINITE);
+  case 55: return (int64_t)(DC_ERR_RESTITUTION_RANGE);
+  case 56: return (int64_t)(DC_ERR_EXPONENT_RANGE);
+  case 57: return (int64_t)(DC_ERR_NOT_POSITIVE);
+  case 58: return (int64_t)(DC_ERR_NEGATIVE);
+  case 59: return (int64_t)(DC_ERR_CRITERION);
+  case 60: return (int64_t)(DC_ERR_RESULT_RANGE);
+  case 61: return (int64_t)(DC_ERR_NO_CONVERGENCE);
+  case 62: return (int64_t)(DC_ERR_BUFFER_TOO_SHORT);
+  case 63: return (int64_t)(DC_ERR_NO_EVENT);
+  case 64: return (int64_t)(DC_ERR_LEVEL);
+  case 65: return (int64_t)(DC_ERR_PLAN);
+  case 66: return (int64_t)(DC_ERR_PAIR_INVALID);
+  case 67: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
+  case 68: return (int64_t)(DC_ERR_SPEC_VERSION);
+  case 69: return (int64_t)(DC_ERR_SPEC_MODEL);
+  case 70: return (int64_t)(DC_ERR_SPEC_UNSET);
+  case 71: return (int64_t)(DC_ERR_CONTACT_MODEL_INVALID);
+  case 72: return (int64_t)(DC_ERR_NOT_UNIT);
+  case 73: return (int64_t)(DC_ERR_BUILTIN_MODEL);
+  case 74: return (int64_t)(DC_ERR_BUILTIN_UNREACHABLE);
+  case 75: return (int64_t)(DC_ERR_FIT_TOO_FEW);
+  case 76: return (int64_t)(DC_ERR_FIT_DEGENERATE);
+  case 77: return (int64_t)(DC_ERR_INTERNAL);
   default: return INT64_MIN;
   }
 }
-int32_t dc_probe_n_layout(void) { return 114; }
+int32_t dc_probe_n_layout(void) { return 132; }
 int64_t dc_probe_layout(int32_t i) {
   switch (i) {
   case 1: return (int64_t)sizeof(dc_contact_spec);
@@ -172,23 +186,41 @@ int64_t dc_probe_layout(int32_t i) {
   case 95: return (int64_t)offsetof(dc_contact_batch, force);
   case 96: return (int64_t)offsetof(dc_contact_batch, torque1);
   case 97: return (int64_t)offsetof(dc_contact_batch, torque2);
-  case 98: return (int64_t)sizeof(dc_duration_plan);
-  case 99: return (int64_t)offsetof(dc_duration_plan, tag);
-  case 100: return (int64_t)offsetof(dc_duration_plan, p);
-  case 101: return (int64_t)offsetof(dc_duration_plan, q);
-  case 102: return (int64_t)offsetof(dc_duration_plan, amp);
-  case 103: return (int64_t)offsetof(dc_duration_plan, lgamma_q);
-  case 104: return (int64_t)offsetof(dc_duration_plan, ln_aq);
-  case 105: return (int64_t)offsetof(dc_duration_plan, level);
-  case 106: return (int64_t)offsetof(dc_duration_plan, n);
-  case 107: return (int64_t)offsetof(dc_duration_plan, nodes);
-  case 108: return (int64_t)offsetof(dc_duration_plan, weights);
-  case 109: return (int64_t)sizeof(dc_energy);
-  case 110: return (int64_t)offsetof(dc_energy, e);
-  case 111: return (int64_t)offsetof(dc_energy, loading);
-  case 112: return (int64_t)offsetof(dc_energy, unloading);
-  case 113: return (int64_t)offsetof(dc_energy, returned);
-  case 114: return (int64_t)offsetof(dc_energy, clamped);
+  case 98: return (int64_t)sizeof(dc_fit_result);
+  case 99: return (int64_t)offsetof(dc_fit_result, beta);
+  case 100: return (int64_t)offsetof(dc_fit_result, beta_se);
+  case 101: return (int64_t)offsetof(dc_fit_result, e_const);
+  case 102: return (int64_t)offsetof(dc_fit_result, e_const_se);
+  case 103: return (int64_t)offsetof(dc_fit_result, chi2_viscoelastic);
+  case 104: return (int64_t)offsetof(dc_fit_result, chi2_constant);
+  case 105: return (int64_t)offsetof(dc_fit_result, max_residual_viscoelastic);
+  case 106: return (int64_t)offsetof(dc_fit_result, max_residual_constant);
+  case 107: return (int64_t)offsetof(dc_fit_result, v_min);
+  case 108: return (int64_t)offsetof(dc_fit_result, v_max);
+  case 109: return (int64_t)offsetof(dc_fit_result, e_viscoelastic_at_v_min);
+  case 110: return (int64_t)offsetof(dc_fit_result, e_viscoelastic_at_v_max);
+  case 111: return (int64_t)offsetof(dc_fit_result, max_model_deviation);
+  case 112: return (int64_t)offsetof(dc_fit_result, model);
+  case 113: return (int64_t)offsetof(dc_fit_result, se_from_scatter);
+  case 114: return (int64_t)offsetof(dc_fit_result, iterations);
+  case 115: return (int64_t)offsetof(dc_fit_result, robust);
+  case 116: return (int64_t)sizeof(dc_duration_plan);
+  case 117: return (int64_t)offsetof(dc_duration_plan, tag);
+  case 118: return (int64_t)offsetof(dc_duration_plan, p);
+  case 119: return (int64_t)offsetof(dc_duration_plan, q);
+  case 120: return (int64_t)offsetof(dc_duration_plan, amp);
+  case 121: return (int64_t)offsetof(dc_duration_plan, lgamma_q);
+  case 122: return (int64_t)offsetof(dc_duration_plan, ln_aq);
+  case 123: return (int64_t)offsetof(dc_duration_plan, level);
+  case 124: return (int64_t)offsetof(dc_duration_plan, n);
+  case 125: return (int64_t)offsetof(dc_duration_plan, nodes);
+  case 126: return (int64_t)offsetof(dc_duration_plan, weights);
+  case 127: return (int64_t)sizeof(dc_energy);
+  case 128: return (int64_t)offsetof(dc_energy, e);
+  case 129: return (int64_t)offsetof(dc_energy, loading);
+  case 130: return (int64_t)offsetof(dc_energy, unloading);
+  case 131: return (int64_t)offsetof(dc_energy, returned);
+  case 132: return (int64_t)offsetof(dc_energy, clamped);
   default: return INT64_MIN;
   }
 }

@@ -1,11 +1,17 @@
 /* Hand-written C loops of the same force expressions as demcontact's kernels: what a host code
- * writes today. Compiled twice by CMake: plain -O3 (BASE = plain: sqrt keeps its errno path, so
- * gcc does not vectorise it) and -O3 -fno-math-errno (BASE = fast: sqrtpd, vectorised).
+ * writes today. Compiled three times by CMake: plain -O3 (BASE = plain: sqrt keeps its errno
+ * path, so gcc does not vectorise it), -O3 -fno-math-errno (BASE = fast: sqrtpd, vectorised) and
+ * -O3 -march=native -fno-math-errno (BASE = native: the host CPU's widest vectors).
+ * The same loops with the per-contact call replaced by dc_normal_force_inline from
+ * demcontact_inline.h (inline_*): "the inline kernel in the host's own loop", same flags.
+ * copy_loop / sum_loop: the memory roofline of the streaming runs (STREAM copy; the same four
+ * input and one output streams as the Hertz batch).
  *
  * Hertz, clamped (DC_END_FORCE), k = kf sqrt(r) per contact, q = sqrt(r d):
  *   F = kf q d + c sqrt(m q) vn,  c = alpha sqrt(kf)
  * General p, clamped, fixed k, s = d^h, h = (p-1)/2:
  *   F = k d s^2 + c sqrt(m) s vn,  c = alpha sqrt(k)                                          */
+#include <demcontact_inline.h>
 #include <math.h>
 #include <stddef.h>
 
@@ -32,4 +38,43 @@ void CAT(pow_loop, BASE)(size_t n, double k, double c, double h, const double *r
         f = f > 0.0 ? f : 0.0;
         out[i] = d[i] > 0.0 ? f : 0.0;
     }
+}
+
+void CAT(hertz_inline_loop, BASE)(size_t n, const dc_pair *pair, const double *restrict d,
+                                  const double *restrict vn, const double *restrict r,
+                                  const double *restrict m, double *restrict out) {
+    for (size_t i = 0; i < n; i++) out[i] = dc_normal_force_inline(pair, d[i], vn[i], r[i], m[i]);
+}
+
+/* The kernel code as a constant: the switch folds away, the loop is the hand-written one. */
+void CAT(hertz_kernel_loop, BASE)(size_t n, const dc_pair *pair, const double *restrict d,
+                                  const double *restrict vn, const double *restrict r,
+                                  const double *restrict m, double *restrict out) {
+    for (size_t i = 0; i < n; i++)
+        out[i] = dc_normal_force_kernel_inline(DC_KERNEL_HERTZ_DAMPED_CLAMPED, pair, d[i], vn[i],
+                                               r[i], m[i]);
+}
+
+void CAT(pow_kernel_loop, BASE)(size_t n, const dc_pair *pair, const double *restrict d,
+                                const double *restrict vn, const double *restrict m,
+                                double *restrict out) {
+    for (size_t i = 0; i < n; i++)
+        out[i] = dc_normal_force_kernel_inline(DC_KERNEL_GEN_DAMPED_CLAMPED, pair, d[i], vn[i], 0.0,
+                                               m[i]);
+}
+
+void CAT(pow_inline_loop, BASE)(size_t n, const dc_pair *pair, const double *restrict d,
+                                const double *restrict vn, const double *restrict m,
+                                double *restrict out) {
+    for (size_t i = 0; i < n; i++) out[i] = dc_normal_force_inline(pair, d[i], vn[i], 0.0, m[i]);
+}
+
+void CAT(copy_loop, BASE)(size_t n, const double *restrict a, double *restrict b) {
+    for (size_t i = 0; i < n; i++) b[i] = a[i];
+}
+
+void CAT(sum_loop, BASE)(size_t n, const double *restrict a, const double *restrict b,
+                         const double *restrict c, const double *restrict e,
+                         double *restrict out) {
+    for (size_t i = 0; i < n; i++) out[i] = (a[i] + b[i]) + (c[i] + e[i]);
 }

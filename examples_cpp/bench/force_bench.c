@@ -1,9 +1,14 @@
-/* Force-kernel benchmark: demcontact's batch and scalar kernels, called from C through the ABI,
- * against hand-written C loops of the same expressions (force_baseline.c compiled with -O3 and
- * with -O3 -fno-math-errno), all in the same run, in-cache and streaming sizes.
+/* Force-kernel benchmark: demcontact's batch (runtime CPU dispatch) and scalar kernels, called
+ * from C through the ABI, and its header-only kernels (demcontact_inline.h) inlined into a C loop,
+ * against hand-written C loops of the same expressions (force_baseline.c compiled with -O3, with
+ * -O3 -fno-math-errno and with -O3 -march=native -fno-math-errno), and the memory roofline (a
+ * STREAM copy and a loop with the Hertz batch's streams), all in the same run, in-cache and
+ * streaming sizes.
  *
- *   force_bench            full run, prints a markdown table (ns per contact, ratios)
- *   force_bench --smoke    tiny sizes: checks that every variant computes the same forces
+ *   force_bench            full run, prints a markdown table (ns per contact, ratios) and the
+ *                          ratios the issue asks for
+ *   force_bench --smoke    tiny sizes: checks that every variant computes the same forces (the
+ *                          inline kernels: the library's bits)
  *
  * Timing: clock_gettime(CLOCK_THREAD_CPUTIME_ID) (CPU time of this thread: time slices lost to
  * other processes on a shared machine do not count); every variant is timed in each of TRIALS
@@ -18,14 +23,25 @@
 #include <string.h>
 #include <time.h>
 
-void hertz_loop_plain(size_t, double, double, const double *, const double *, const double *,
-                      const double *, double *);
-void hertz_loop_fast(size_t, double, double, const double *, const double *, const double *,
-                     const double *, double *);
-void pow_loop_plain(size_t, double, double, double, const double *, const double *,
-                    const double *, double *);
-void pow_loop_fast(size_t, double, double, double, const double *, const double *,
-                   const double *, double *);
+#define DECL(base)                                                                              \
+    void hertz_loop_##base(size_t, double, double, const double *, const double *,              \
+                           const double *, const double *, double *);                           \
+    void pow_loop_##base(size_t, double, double, double, const double *, const double *,        \
+                         const double *, double *);                                             \
+    void hertz_inline_loop_##base(size_t, const dc_pair *, const double *, const double *,      \
+                                  const double *, const double *, double *);                    \
+    void hertz_kernel_loop_##base(size_t, const dc_pair *, const double *, const double *,      \
+                                  const double *, const double *, double *);                    \
+    void pow_kernel_loop_##base(size_t, const dc_pair *, const double *, const double *,        \
+                                const double *, double *);                                      \
+    void pow_inline_loop_##base(size_t, const dc_pair *, const double *, const double *,        \
+                                const double *, double *);                                      \
+    void copy_loop_##base(size_t, const double *, double *);                                    \
+    void sum_loop_##base(size_t, const double *, const double *, const double *, const double *, \
+                         double *);
+DECL(plain)
+DECL(fast)
+DECL(native)
 
 typedef struct {
     size_t n;
@@ -34,28 +50,50 @@ typedef struct {
     const dc_pair *pair;
 } job;
 
-enum { HERTZ_PLAIN, HERTZ_FAST, HERTZ_BATCH, HERTZ_SCALAR, POW_PLAIN, POW_FAST, POW_BATCH,
-       POW_SCALAR, NVAR };
+enum { H_PLAIN, H_FAST, H_NATIVE, H_BATCH, H_SCALAR, H_INL_PLAIN, H_INL_FAST, H_KER_FAST,
+       P_PLAIN, P_FAST, P_NATIVE, P_BATCH, P_SCALAR, P_INL_PLAIN, P_INL_FAST, P_KER_NATIVE,
+       M_COPY, M_SUM, NVAR };
 static const char *NAMES[NVAR] = {
     "Hertz: C loop, -O3",
     "Hertz: C loop, -O3 -fno-math-errno",
-    "Hertz: dc_normal_force_batch",
-    "Hertz: dc_normal_force in a C loop",
+    "Hertz: C loop, -O3 -march=native -fno-math-errno",
+    "Hertz: `dc_normal_force_batch` (runtime dispatch)",
+    "Hertz: `dc_normal_force` in a C loop",
+    "Hertz: `dc_normal_force_inline` in the C loop, -O3",
+    "Hertz: `dc_normal_force_inline` in the C loop, -O3 -fno-math-errno",
+    "Hertz: `dc_normal_force_kernel_inline` (constant kernel) in the C loop, -O3 -fno-math-errno",
     "p = 1.7: C loop (pow), -O3",
     "p = 1.7: C loop (pow), -O3 -fno-math-errno",
-    "p = 1.7: dc_normal_force_batch",
-    "p = 1.7: dc_normal_force in a C loop",
+    "p = 1.7: C loop (pow), -O3 -march=native -fno-math-errno",
+    "p = 1.7: `dc_normal_force_batch` (runtime dispatch)",
+    "p = 1.7: `dc_normal_force` in a C loop",
+    "p = 1.7: `dc_normal_force_inline` in the C loop, -O3",
+    "p = 1.7: `dc_normal_force_inline` in the C loop, -O3 -fno-math-errno",
+    "p = 1.7: `dc_normal_force_kernel_inline` (constant kernel) in the C loop, -O3 -march=native -fno-math-errno",
+    "memory: STREAM copy, per double copied",
+    "memory: out = d + vn + r + m (the Hertz batch's 40 bytes)",
 };
+static int is_pow(int v) { return v >= P_PLAIN && v <= P_KER_NATIVE; }
 
 static void run(int var, const job *j) {
     const dc_pair *p = j->pair;
     switch (var) {
-    case HERTZ_PLAIN: hertz_loop_plain(j->n, p->k, p->c, j->d, j->vn, j->r, j->m, j->out); break;
-    case HERTZ_FAST: hertz_loop_fast(j->n, p->k, p->c, j->d, j->vn, j->r, j->m, j->out); break;
-    case POW_PLAIN: pow_loop_plain(j->n, p->k, p->c, p->h, j->d, j->vn, j->m, j->out); break;
-    case POW_FAST: pow_loop_fast(j->n, p->k, p->c, p->h, j->d, j->vn, j->m, j->out); break;
-    case HERTZ_BATCH:
-    case POW_BATCH:
+    case H_PLAIN: hertz_loop_plain(j->n, p->k, p->c, j->d, j->vn, j->r, j->m, j->out); break;
+    case H_FAST: hertz_loop_fast(j->n, p->k, p->c, j->d, j->vn, j->r, j->m, j->out); break;
+    case H_NATIVE: hertz_loop_native(j->n, p->k, p->c, j->d, j->vn, j->r, j->m, j->out); break;
+    case H_INL_PLAIN: hertz_inline_loop_plain(j->n, p, j->d, j->vn, j->r, j->m, j->out); break;
+    case H_INL_FAST: hertz_inline_loop_fast(j->n, p, j->d, j->vn, j->r, j->m, j->out); break;
+    case H_KER_FAST: hertz_kernel_loop_fast(j->n, p, j->d, j->vn, j->r, j->m, j->out); break;
+    case P_KER_NATIVE: pow_kernel_loop_native(j->n, p, j->d, j->vn, j->m, j->out); break;
+    case P_PLAIN: pow_loop_plain(j->n, p->k, p->c, p->h, j->d, j->vn, j->m, j->out); break;
+    case P_FAST: pow_loop_fast(j->n, p->k, p->c, p->h, j->d, j->vn, j->m, j->out); break;
+    case P_NATIVE: pow_loop_native(j->n, p->k, p->c, p->h, j->d, j->vn, j->m, j->out); break;
+    case P_INL_PLAIN: pow_inline_loop_plain(j->n, p, j->d, j->vn, j->m, j->out); break;
+    case P_INL_FAST: pow_inline_loop_fast(j->n, p, j->d, j->vn, j->m, j->out); break;
+    case M_COPY: copy_loop_native(j->n, j->d, j->out); break;
+    case M_SUM: sum_loop_native(j->n, j->d, j->vn, j->r, j->m, j->out); break;
+    case H_BATCH:
+    case P_BATCH:
         if (dc_normal_force_batch(p, j->n, j->d, j->vn, j->r, j->m, j->out) != DC_OK) abort();
         break;
     default:
@@ -105,25 +143,30 @@ int main(int argc, char **argv) {
     }
 
     /* Every variant computes the same forces: same expression; rounding may differ by ulps of
-     * the larger term (gcc contracts to FMA with -march=native, Rust never does). */
+     * the larger term (gcc contracts to FMA with -march=native, Rust never does). The inline
+     * kernels must give the library's bits exactly (whatever the flags). */
     int bad = 0;
-    for (int v = 0; v < NVAR; v++) {
-        job j = {sizes[0], d, vn, r, m, out, v < POW_PLAIN ? &hertz : &gen};
-        if (v == HERTZ_PLAIN || v == POW_PLAIN) {
+    for (int v = 0; v < M_COPY; v++) {
+        job j = {sizes[0], d, vn, r, m, out, is_pow(v) ? &gen : &hertz};
+        if (v == H_PLAIN || v == P_PLAIN) {
             j.out = ref;
             run(v, &j);
             continue;
         }
         run(v, &j);
         const dc_pair *p = j.pair;
+        const int exact = v == H_INL_PLAIN || v == H_INL_FAST || v == H_KER_FAST ||
+                          v == P_INL_PLAIN || v == P_INL_FAST || v == P_KER_NATIVE;
         for (size_t i = 0; i < sizes[0]; i++) {
             double s = d[i] <= 0.0 ? 0.0
-                       : v < POW_PLAIN ? p->k * sqrt(r[i] * d[i]) * d[i] +
-                                              p->c * sqrt(m[i] * sqrt(r[i] * d[i])) * fabs(vn[i])
-                                        : p->k * pow(d[i], p->p) +
-                                              p->c * sqrt(m[i]) * pow(d[i], p->h) * fabs(vn[i]);
-            if (fabs(out[i] - ref[i]) > 1e-14 * s) {
-                fprintf(stderr, "%s: contact %zu: %.17g vs C %.17g\n", NAMES[v], i, out[i], ref[i]);
+                       : !is_pow(v) ? p->k * sqrt(r[i] * d[i]) * d[i] +
+                                          p->c * sqrt(m[i] * sqrt(r[i] * d[i])) * fabs(vn[i])
+                                    : p->k * pow(d[i], p->p) +
+                                          p->c * sqrt(m[i]) * pow(d[i], p->h) * fabs(vn[i]);
+            const double lib = dc_normal_force(p, d[i], vn[i], r[i], m[i]);
+            if (exact ? memcmp(&out[i], &lib, sizeof lib) != 0 : fabs(out[i] - ref[i]) > 1e-14 * s) {
+                fprintf(stderr, "%s: contact %zu: %.17g vs C %.17g, library %.17g\n", NAMES[v], i,
+                        out[i], ref[i], lib);
                 bad = 1;
                 break;
             }
@@ -132,10 +175,11 @@ int main(int argc, char **argv) {
     if (bad) return 1;
     if (smoke) {
         for (int v = 0; v < NVAR; v++) {
-            job j = {sizes[1], d, vn, r, m, out, v < POW_PLAIN ? &hertz : &gen};
+            job j = {sizes[1], d, vn, r, m, out, is_pow(v) ? &gen : &hertz};
             run(v, &j);
         }
-        printf("force_bench --smoke: all %d variants agree\n", NVAR);
+        printf("force_bench --smoke: all %d force variants agree (inline kernels bit for bit)\n",
+               M_COPY);
         free(buf);
         return 0;
     }
@@ -147,9 +191,9 @@ int main(int argc, char **argv) {
         for (int v = 0; v < NVAR; v++) best[s][v] = 1e30;
         for (int t = 0; t < TRIALS; t++)
             for (int v = 0; v < NVAR; v++) {
-                job j = {n, d, vn, r, m, out, v < POW_PLAIN ? &hertz : &gen};
-                /* ~16M contacts per Hertz measurement, ~4M for the pow path */
-                size_t total = v < POW_PLAIN ? (size_t)16 << 20 : (size_t)4 << 20;
+                job j = {n, d, vn, r, m, out, is_pow(v) ? &gen : &hertz};
+                /* ~16M contacts per Hertz/memory measurement, ~4M for the pow path */
+                size_t total = is_pow(v) ? (size_t)4 << 20 : (size_t)16 << 20;
                 size_t reps = total / n ? total / n : 1;
                 run(v, &j); /* warm */
                 double t0 = now();
@@ -162,13 +206,41 @@ int main(int argc, char **argv) {
            sizes[0], sizes[1]);
     printf("|---|---|---|---|---|\n");
     for (int v = 0; v < NVAR; v++) {
-        int base = v < POW_PLAIN ? HERTZ_PLAIN : POW_PLAIN;
+        int base = is_pow(v) ? P_PLAIN : H_PLAIN;
         printf("| %s | %.2f | %.2f | %.2f | %.2f |\n", NAMES[v], best[0][v], best[0][v] / best[0][base],
                best[1][v], best[1][v] / best[1][base]);
     }
-    printf("\nratios: to the plain -O3 C loop of the same law. Targets: batch vs vectorised C "
-           "(Hertz, in-cache) %.2f (<= 1), scalar vs plain C %.2f (<= 1.3)\n",
-           best[0][HERTZ_BATCH] / best[0][HERTZ_FAST], best[0][HERTZ_SCALAR] / best[0][HERTZ_PLAIN]);
+    printf("\nratios: to the plain -O3 C loop of the same law (memory rows: to the Hertz one).\n\n");
+    /* The figures of issue 15's "Must show", from this run. */
+    /* Memory traffic per contact of the Hertz batch: 4 loads + 1 store + the store's
+     * write-allocate read = 48 bytes; of the copy, per double: 24 bytes (load, write-allocate,
+     * store). The roofline is the copy's bandwidth applied to the batch's traffic. */
+    const double roof = best[1][M_COPY] * 48.0 / 24.0;
+    printf("| ratio (same run) | in-cache | streaming | target |\n|---|---|---|---|\n");
+    printf("| Hertz batch / C loop -O3 -fno-math-errno | %.2f | %.2f | <= 1.0 |\n",
+           best[0][H_BATCH] / best[0][H_FAST], best[1][H_BATCH] / best[1][H_FAST]);
+    printf("| Hertz batch / C loop -O3 -march=native -fno-math-errno | %.2f | %.2f | <= 1.0 |\n",
+           best[0][H_BATCH] / best[0][H_NATIVE], best[1][H_BATCH] / best[1][H_NATIVE]);
+    printf("| p = 1.7 batch / Hertz batch | %.2f | %.2f | <= 1.5 |\n",
+           best[0][P_BATCH] / best[0][H_BATCH], best[1][P_BATCH] / best[1][H_BATCH]);
+    printf("| p = 1.7 batch / C loop with pow -O3 | %.2f | %.2f | <= 0.5 |\n",
+           best[0][P_BATCH] / best[0][P_PLAIN], best[1][P_BATCH] / best[1][P_PLAIN]);
+    printf("| Hertz inline in the C loop / hand-written formula, -O3 | %.2f | %.2f | <= 1.0 |\n",
+           best[0][H_INL_PLAIN] / best[0][H_PLAIN], best[1][H_INL_PLAIN] / best[1][H_PLAIN]);
+    printf("| Hertz inline in the C loop / hand-written formula, -O3 -fno-math-errno | %.2f | %.2f | <= 1.0 |\n",
+           best[0][H_INL_FAST] / best[0][H_FAST], best[1][H_INL_FAST] / best[1][H_FAST]);
+    printf("| Hertz constant-kernel inline / hand-written formula, -O3 -fno-math-errno | %.2f | %.2f | <= 1.0 |\n",
+           best[0][H_KER_FAST] / best[0][H_FAST], best[1][H_KER_FAST] / best[1][H_FAST]);
+    printf("| p = 1.7 inline in the C loop / hand-written formula with pow, -O3 | %.2f | %.2f | |\n",
+           best[0][P_INL_PLAIN] / best[0][P_PLAIN], best[1][P_INL_PLAIN] / best[1][P_PLAIN]);
+    printf("| p = 1.7 constant-kernel inline / C loop with pow, both -O3 -march=native -fno-math-errno | %.2f | %.2f | |\n",
+           best[0][P_KER_NATIVE] / best[0][P_NATIVE], best[1][P_KER_NATIVE] / best[1][P_NATIVE]);
+    printf("\nstreaming roofline (4 M contacts, 48 bytes of traffic each): STREAM copy %.1f GB/s "
+           "(24 bytes per double incl. write-allocate) -> %.2f ns/contact; Hertz batch %.2f "
+           "ns/contact = %.2f of the roofline (target >= 0.8); the loop with the same streams "
+           "(out = d + vn + r + m, -march=native): %.2f ns = %.2f of the roofline, batch / it: %.2f\n",
+           24.0 / best[1][M_COPY], roof, best[1][H_BATCH], roof / best[1][H_BATCH],
+           best[1][M_SUM], roof / best[1][M_SUM], best[1][M_SUM] / best[1][H_BATCH]);
     free(buf);
     return 0;
 }

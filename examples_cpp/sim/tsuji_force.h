@@ -1,7 +1,9 @@
 /*
  * The one place where the simulator plugins (LIGGGHTS normal model, LAMMPS pair style) get the
- * normal contact force: demcontact's dc_pair constructors (calibration) and dc_normal_force
- * (kernel). Everything else in the plugins is glue to the host code.
+ * normal contact force: demcontact's dc_pair constructors (calibration, once per type pair) and
+ * dc_normal_force_inline from the header-only demcontact_inline.h (kernel: inlined into the host's
+ * pair loop, no call through the shared library per contact; bit-identical to dc_normal_force).
+ * Everything else in the plugins is glue to the host code.
  *
  *   F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn,   vn > 0 while compressing,
  *
@@ -18,6 +20,7 @@
 #define DEMCONTACT_SIM_TSUJI_FORCE_H
 
 #include "dc_include.h"
+#include <demcontact_inline.h>
 #include <cmath>
 
 namespace demcontact_sim {
@@ -42,9 +45,9 @@ inline double contact_stiffness(const dc_pair &c, double r_eff) {
 /* Normal force [N] (positive = repulsive) for overlap d, normal speed vn (> 0 compressing). */
 inline double contact_force(const dc_pair &c, double d, double vn, double r_eff, double m_eff) {
     // Hertz and viscoelastic pairs carry sqrt(r_eff) themselves
-    if (c.model != DC_MODEL_POWERLAW) return dc_normal_force(&c, d, vn, r_eff, m_eff);
+    if (c.model != DC_MODEL_POWERLAW) return dc_normal_force_inline(&c, d, vn, r_eff, m_eff);
     const double s = std::pow(r_eff, 2.0 - c.p);
-    return s * dc_normal_force(&c, d, vn, r_eff, m_eff / s);
+    return s * dc_normal_force_inline(&c, d, vn, r_eff, m_eff / s);
 }
 
 } // namespace demcontact_sim

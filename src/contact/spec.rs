@@ -173,6 +173,10 @@ fn hertz_factor(s: &ContactSpec) -> Result<f64, Error> {
     if !kf.is_finite() {
         return Err(Error::NotFinite);
     }
+    // A subnormal E makes the compliance overflow and kf underflow to 0 (found by fuzzing).
+    if !(kf > 0.0) {
+        return Err(Error::ResultRange);
+    }
     Ok(kf)
 }
 

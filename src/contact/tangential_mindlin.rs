@@ -26,5 +26,8 @@ pub fn eight_g_star(e1: f64, nu1: f64, e2: f64, nu2: f64) -> Result<f64, Error> 
     if !v.is_finite() {
         return Err(Error::NotFinite);
     }
+    if !(v > 0.0) {
+        return Err(Error::ResultRange);
+    }
     Ok(v)
 }

@@ -10,8 +10,10 @@
 //!   `DC_ERR_INTERNAL` instead of unwinding into (and aborting) the host simulation;
 //! * no heap allocation, no global mutable state: callable from any thread at any time.
 
+pub mod builtin;
 pub mod calibration;
 pub mod contact;
+pub mod fit;
 pub mod force;
 pub mod material;
 pub mod powerlaw;

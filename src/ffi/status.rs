@@ -68,6 +68,15 @@ pub enum dc_status {
     DC_ERR_CONTACT_MODEL_INVALID = 6125,
     /// A contact normal is not a unit vector (| |n|^2 - 1 | > 1e-6).
     DC_ERR_NOT_UNIT = 6126,
+    /// Unknown DC_BUILTIN_* model code, or an option the model does not have (clamp not 0/1, or
+    /// no clamp for YADE, whose laws always clamp).
+    DC_ERR_BUILTIN_MODEL = 6130,
+    /// The builtin model cannot realise this restitution: its parameter saturates before it.
+    DC_ERR_BUILTIN_UNREACHABLE = 6131,
+    /// A fit needs at least two data points.
+    DC_ERR_FIT_TOO_FEW = 6132,
+    /// The data cannot determine the fit (all impact speeds equal).
+    DC_ERR_FIT_DEGENERATE = 6133,
     /// An internal error was caught at the boundary (not expected; please report).
     DC_ERR_INTERNAL = 6199,
 }
@@ -115,6 +124,10 @@ impl dc_status {
                 c"the dc_contact_model was not initialised by dc_contact_model_init"
             }
             DC_ERR_NOT_UNIT => c"the contact normal is not a unit vector",
+            DC_ERR_BUILTIN_MODEL => c"unknown builtin model, or an option it does not have",
+            DC_ERR_BUILTIN_UNREACHABLE => c"the builtin model cannot realise this restitution",
+            DC_ERR_FIT_TOO_FEW => c"a fit needs at least two data points",
+            DC_ERR_FIT_DEGENERATE => c"the data cannot determine the fit (all speeds equal)",
             DC_ERR_INTERNAL => c"internal error caught at the C boundary (please report)",
         }
     }
@@ -142,6 +155,10 @@ impl dc_status {
             Error::SpecUnset => DC_ERR_SPEC_UNSET,
             Error::ContactModelInvalid => DC_ERR_CONTACT_MODEL_INVALID,
             Error::NotUnit => DC_ERR_NOT_UNIT,
+            Error::BuiltinModel => DC_ERR_BUILTIN_MODEL,
+            Error::BuiltinUnreachable => DC_ERR_BUILTIN_UNREACHABLE,
+            Error::FitTooFew => DC_ERR_FIT_TOO_FEW,
+            Error::FitDegenerate => DC_ERR_FIT_DEGENERATE,
         }
     }
 }
@@ -180,6 +197,10 @@ mod codes {
     pub const DC_ERR_SPEC_UNSET: i32 = dc_status::DC_ERR_SPEC_UNSET as i32;
     pub const DC_ERR_CONTACT_MODEL_INVALID: i32 = dc_status::DC_ERR_CONTACT_MODEL_INVALID as i32;
     pub const DC_ERR_NOT_UNIT: i32 = dc_status::DC_ERR_NOT_UNIT as i32;
+    pub const DC_ERR_BUILTIN_MODEL: i32 = dc_status::DC_ERR_BUILTIN_MODEL as i32;
+    pub const DC_ERR_BUILTIN_UNREACHABLE: i32 = dc_status::DC_ERR_BUILTIN_UNREACHABLE as i32;
+    pub const DC_ERR_FIT_TOO_FEW: i32 = dc_status::DC_ERR_FIT_TOO_FEW as i32;
+    pub const DC_ERR_FIT_DEGENERATE: i32 = dc_status::DC_ERR_FIT_DEGENERATE as i32;
     pub const DC_ERR_INTERNAL: i32 = dc_status::DC_ERR_INTERNAL as i32;
 }
 pub use codes::*;

@@ -1,5 +1,15 @@
 //! Structure-of-arrays batches: one dispatch per batch, then a plain loop over slices that the
-//! compiler vectorises (square roots are IEEE instructions in Rust, never `errno` calls).
+//! compiler vectorises (square roots are IEEE instructions in Rust, never `errno` calls; the
+//! general-p power is the branch-free [`crate::numerics::pow_dd`] kernel).
+//!
+//! **Runtime CPU dispatch.** Each monomorphised loop is compiled three times: for the baseline
+//! x86-64 (SSE2, 2 lanes), for AVX2 + FMA (4 lanes) and for AVX-512F (8 lanes). The widest the
+//! CPU supports is used, so one portable binary runs at `target-cpu=native` speed. The detection
+//! is std's `is_x86_feature_detected!`, which queries `cpuid` once and then reads its cached
+//! answer (one load and a test per batch call, not per contact). Enabling these features never
+//! changes a result: Rust does not contract `a * b + c` into a fused multiply–add (only an
+//! explicit `mul_add` would), so all three flavours round exactly like the scalar call and
+//! the batch stays bit-identical to [`super::normal_force`] (tests/force_contract.rs).
 
 use super::pair::{Consts, Law, Visit, eval};
 use super::registry::dispatch;
@@ -18,14 +28,36 @@ impl Visit for Batch<'_> {
     type Out = ();
     #[inline(always)]
     fn visit<L: Law, const CLAMP: bool>(self) {
-        run::<L, CLAMP>(self.c, self.d, self.vn, self.r, self.m, self.out);
+        let Batch {
+            c,
+            d,
+            vn,
+            r,
+            m,
+            out,
+        } = self;
+        #[cfg(all(target_arch = "x86_64", not(miri)))]
+        {
+            if std::is_x86_feature_detected!("avx512f") {
+                // SAFETY: the CPU supports AVX-512F (checked just above), the only requirement
+                // of the target_feature function.
+                unsafe { run_avx512::<L, CLAMP>(c, d, vn, r, m, out) };
+                return;
+            }
+            if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+                // SAFETY: the CPU supports AVX2 and FMA (checked just above).
+                unsafe { run_avx2::<L, CLAMP>(c, d, vn, r, m, out) };
+                return;
+            }
+        }
+        run::<L, CLAMP>(c, d, vn, r, m, out);
     }
 }
 
-// One monomorphised loop per kernel: no branch on the model inside. Not inlined into the
-// dispatcher so that each loop is compiled (and vectorised) on its own.
-#[inline(never)]
-fn run<L: Law, const CLAMP: bool>(
+/// The loop body, inlined into each CPU flavour below (only code inlined into a
+/// `target_feature` function is compiled for its features).
+#[inline(always)]
+fn body<L: Law, const CLAMP: bool>(
     c: Consts,
     d: &[f64],
     vn: &[f64],
@@ -36,6 +68,52 @@ fn run<L: Law, const CLAMP: bool>(
     for ((((o, &d), &vn), &r), &m) in out.iter_mut().zip(d).zip(vn).zip(r).zip(m) {
         *o = eval::<L, CLAMP>(&c, d, vn, r, m);
     }
+}
+
+// One monomorphised loop per kernel and CPU flavour: no branch on the model inside. Not inlined
+// into the dispatcher so that each loop is compiled (and vectorised) on its own.
+#[inline(never)]
+fn run<L: Law, const CLAMP: bool>(
+    c: Consts,
+    d: &[f64],
+    vn: &[f64],
+    r: &[f64],
+    m: &[f64],
+    out: &mut [f64],
+) {
+    body::<L, CLAMP>(c, d, vn, r, m, out);
+}
+
+/// # Safety
+/// The CPU must support AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+#[inline(never)]
+unsafe fn run_avx2<L: Law, const CLAMP: bool>(
+    c: Consts,
+    d: &[f64],
+    vn: &[f64],
+    r: &[f64],
+    m: &[f64],
+    out: &mut [f64],
+) {
+    body::<L, CLAMP>(c, d, vn, r, m, out);
+}
+
+/// # Safety
+/// The CPU must support AVX-512F (which implies AVX2 and FMA).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx2,fma")]
+#[inline(never)]
+unsafe fn run_avx512<L: Law, const CLAMP: bool>(
+    c: Consts,
+    d: &[f64],
+    vn: &[f64],
+    r: &[f64],
+    m: &[f64],
+    out: &mut [f64],
+) {
+    body::<L, CLAMP>(c, d, vn, r, m, out);
 }
 
 /// Normal forces of `out.len()` contacts of one pair model: `out[i] = F(d[i], vn[i], r[i], m[i])`.

@@ -6,13 +6,16 @@
 //! * p = 1:   k δ + c √m vn
 //! * p = 3/2: with q = √δ, k δ q + c √(m q) vn   (δ^(1/4) √m = √(m √δ): two square roots)
 //! * p = 2:   k δ² + c √(m δ) vn
-//! * other p: with s = δ^((p−1)/2) (the one `pow`), k δ s² + c √m s vn.
+//! * other p: with s = δ^((p−1)/2) (the one power), k δ s² + c √m s vn. The power is
+//!   [`crate::numerics::pow_dd`]'s branch-free kernel (≤ 2 ulp from libm's `pow`,
+//!   no libm call), so the batch loop vectorises it like the square roots.
 //!
 //! α comes from the exact calibration [`crate::powerlaw::alpha_from_e`] for the pair's end
 //! criterion, which also decides clamping: `Force` clamps attractive force to zero, and its α is
 //! the force-zero one, so a clamping solver realises the target e.
 
 use super::pair::{Consts, Law, MODEL_POWERLAW, PairModel, pick};
+use crate::numerics::pow_dd::pow_dd;
 use crate::powerlaw::{alpha_from_e, check_exponent, e_from_alpha};
 use crate::{EndCriterion, Error};
 
@@ -92,8 +95,8 @@ impl Law for GenElastic {
     const NEEDS_M: bool = false;
     #[inline(always)]
     fn raw(c: &Consts, d: f64, _vn: f64, _r: f64, _m: f64) -> f64 {
-        // δ^p = δ (δ^h)², h = (p−1)/2: the same single `pow` as the damped law.
-        let s = d.powf(c.h);
+        // δ^p = δ (δ^h)², h = (p−1)/2: the same single power as the damped law.
+        let s = pow_dd(d, c.h);
         c.k * d * s * s
     }
 }
@@ -104,7 +107,7 @@ impl Law for GenDamped {
     const NEEDS_M: bool = true;
     #[inline(always)]
     fn raw(c: &Consts, d: f64, vn: f64, _r: f64, m: f64) -> f64 {
-        let s = d.powf(c.h);
+        let s = pow_dd(d, c.h);
         c.k * d * s * s + c.c * m.sqrt() * s * vn
     }
 }

@@ -19,6 +19,7 @@ pub mod jacobi_cc;
 pub(crate) mod lagrange8;
 pub mod ode;
 pub(crate) mod pow;
+pub(crate) mod pow_dd;
 pub mod roots;
 pub(crate) mod series;
 pub mod taylor;

@@ -1,0 +1,37 @@
+# Header-only kernels (include/demcontact_inline.h): bit-identical to the library over 10^7 random
+# inputs per kernel, as C99 and as C++17 (-Wall -Wextra -Werror), once more with FMA contraction
+# forced on (-march=native -ffp-contract=fast), with clang, and in CUDA device code where a CUDA
+# compiler exists (else the test prints "SKIPPED: <name> (<reason>)" and ctest reports it
+# skipped); the header-only example links nothing of demcontact (only libm), as C99 and C++17.
+
+add_executable(test_inline_c c_tests/inline/test_inline.c)
+target_compile_options(test_inline_c PRIVATE -std=c99 -pedantic -Wall -Wextra -Werror -O2)
+add_executable(test_inline_cpp c_tests/inline/test_inline.cpp)
+target_compile_options(test_inline_cpp PRIVATE -std=c++17 -Wall -Wextra -Werror -O2)
+add_executable(test_inline_fma c_tests/inline/test_inline.c)
+target_compile_options(test_inline_fma PRIVATE -std=gnu11 -O3 -march=native -ffp-contract=fast
+                                               -Wall -Wextra -Werror)
+foreach(t test_inline_c test_inline_cpp test_inline_fma)
+  target_link_libraries(${t} PRIVATE demcontact::demcontact ${DC_LIBM})
+endforeach()
+add_test(NAME inline_c COMMAND test_inline_c 10000000)
+add_test(NAME inline_cpp COMMAND test_inline_cpp 10000000)
+add_test(NAME inline_fma COMMAND test_inline_fma 2000000)
+foreach(mode clang cuda cuda_stub)
+  add_test(NAME inline_${mode}
+    COMMAND "${CMAKE_COMMAND}" -DMODE=${mode} -DSRC=${CMAKE_SOURCE_DIR} -DLIBDIR=${DC_LIB_DIR}
+            -DOUT=${CMAKE_BINARY_DIR}/inline_${mode} -DN=2000000
+            -P "${CMAKE_SOURCE_DIR}/cmake/InlineCompilers.cmake")
+  set_tests_properties(inline_${mode} PROPERTIES SKIP_REGULAR_EXPRESSION "SKIPPED: ")
+endforeach()
+
+add_executable(header_only_c examples_cpp/inline/header_only.c)
+target_compile_options(header_only_c PRIVATE -std=c99 -pedantic -Wall -Wextra -Werror)
+target_link_libraries(header_only_c PRIVATE ${DC_LIBM})
+add_executable(header_only_cpp examples_cpp/inline/header_only.cpp)
+target_compile_options(header_only_cpp PRIVATE -std=c++17 -Wall -Wextra -Werror)
+foreach(t header_only_c header_only_cpp)
+  target_include_directories(${t} PRIVATE "${CMAKE_SOURCE_DIR}/include")
+  set_target_properties(${t} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/examples_cpp")
+  add_test(NAME example_${t} COMMAND ${t})
+endforeach()

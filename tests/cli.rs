@@ -1,0 +1,330 @@
+//! The `demcontact` command-line tool, run as a user runs it (the built binary): every
+//! subcommand, text and `--json` (parsed back and compared with the library), the bad-input paths
+//! with their exit codes (1 refused, 2 bad command line, 3 bad input file, 4 output not written)
+//! and the file:line:column of CSV errors.
+#![cfg(feature = "cli")]
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::indexing_slicing)]
+
+use demcontact::builtin::{Builtin, value_for_e};
+use demcontact::viscoelastic::full_range::e_full;
+use demcontact::{EndCriterion, powerlaw};
+use serde_json::Value;
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_demcontact"))
+        .args(args)
+        .output()
+        .expect("runs")
+}
+
+fn json_of(o: &Output) -> Value {
+    serde_json::from_slice(&o.stdout)
+        .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&o.stdout)))
+}
+
+fn tmp(name: &str, content: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("dc_cli_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, content).unwrap();
+    p
+}
+
+#[test]
+fn builtin_text_and_json() {
+    let o = run(&[
+        "builtin",
+        "--code",
+        "liggghts",
+        "--model",
+        "hertz",
+        "--limit-force",
+        "--e",
+        "0.5",
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        text.contains("coefficientRestitution peratomtypepair 1 0.43628"),
+        "{text}"
+    );
+    assert!(text.contains("limitForce on"), "{text}");
+    let o = run(&[
+        "builtin",
+        "--code",
+        "liggghts",
+        "--model",
+        "hertz",
+        "--limit-force",
+        "--e",
+        "0.5",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let j = json_of(&o);
+    let want = value_for_e(Builtin::LiggghtsHertz, true, 0.5).unwrap();
+    assert_eq!(j["value"].as_f64().unwrap(), want);
+    assert!((j["uncorrected_realised_e"].as_f64().unwrap() - 0.5503).abs() < 5e-4);
+    // every model of every code answers
+    for (code, model, extra) in [
+        ("liggghts", "hooke", ""),
+        ("lammps", "coeff-restitution", "--limit-damping"),
+        ("lammps", "tsuji", ""),
+        ("yade", "viscel", ""),
+        ("yade", "mindlin-en", ""),
+        ("yade", "mindlin-betan", ""),
+    ] {
+        let mut a = vec![
+            "builtin", "--code", code, "--model", model, "--e", "0.6", "--json",
+        ];
+        if !extra.is_empty() {
+            a.push(extra);
+        }
+        let o = run(&a);
+        assert_eq!(o.status.code(), Some(0), "{code} {model}");
+        assert!(json_of(&o)["value"].as_f64().unwrap() > 0.0);
+    }
+    let o = run(&[
+        "builtin",
+        "--code",
+        "yade",
+        "--model",
+        "viscel-cn",
+        "--e",
+        "0.5",
+        "--kn",
+        "1e5",
+        "--mass",
+        "2e-3",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let cn = json_of(&o)["value"].as_f64().unwrap();
+    assert_eq!(
+        cn,
+        demcontact::builtin::yade::viscel_cn(0.5, 1e5, 2e-3).unwrap()
+    );
+}
+
+#[test]
+fn builtin_bad_input() {
+    // unreachable target: exit 1, status 6131 in the JSON error
+    let o = run(&[
+        "builtin",
+        "--code",
+        "lammps",
+        "--model",
+        "tsuji",
+        "--limit-damping",
+        "--e",
+        "0.1",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let j = json_of(&o);
+    assert_eq!(j["error"]["status"].as_i64(), Some(6131));
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("0.2628"),
+        "names the reachable range"
+    );
+    // not a number: clap, exit 2, naming the value
+    let o = run(&[
+        "builtin", "--code", "liggghts", "--model", "hertz", "--e", "0.5x",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("0.5x"));
+    // NaN parses as a float; the library refuses it
+    let o = run(&[
+        "builtin", "--code", "liggghts", "--model", "hertz", "--e", "NaN", "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json_of(&o)["error"]["status"].as_i64(), Some(6102));
+    let o = run(&[
+        "builtin", "--code", "liggghts", "--model", "hertz", "--e", "1.5",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    // a model the code does not have
+    let o = run(&[
+        "builtin", "--code", "lammps", "--model", "hertz", "--e", "0.5", "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json_of(&o)["error"]["status"].as_i64(), Some(6130));
+    // unknown code: clap, exit 2
+    assert_eq!(
+        run(&["builtin", "--code", "pfc", "--model", "hertz", "--e", "0.5"])
+            .status
+            .code(),
+        Some(2)
+    );
+    // viscel-cn without --kn
+    assert_eq!(
+        run(&[
+            "builtin",
+            "--code",
+            "yade",
+            "--model",
+            "viscel-cn",
+            "--e",
+            "0.5"
+        ])
+        .status
+        .code(),
+        Some(1)
+    );
+    assert_eq!(run(&["--help"]).status.code(), Some(0));
+}
+
+#[test]
+fn contact_json_matches_the_library() {
+    let base = [
+        "contact", "--E1", "7e10", "--nu1", "0.22", "--rho1", "2500", "--R1", "1e-3", "--v", "2",
+        "--e", "0.5",
+    ];
+    let o = run(&base);
+    assert_eq!(o.status.code(), Some(0));
+    let text = String::from_utf8(o.stdout).unwrap();
+    for w in [
+        "alpha",
+        "max overlap",
+        "peak force",
+        "overlap end",
+        "force end",
+        "dt for",
+    ] {
+        assert!(text.contains(w), "{w}: {text}");
+    }
+    let mut a = base.to_vec();
+    a.push("--json");
+    let j = json_of(&run(&a));
+    let alpha = powerlaw::alpha_from_e(0.5, 1.5, EndCriterion::Force).unwrap();
+    assert_eq!(j["alpha"].as_f64().unwrap(), alpha);
+    // independent: E* = E/(2(1-ν²)), R* = R/2, m* = m/2, k = 4/3 E* √R*, ω0 = √(k/m*)
+    let (e_star, r_star): (f64, f64) = (7e10 / (2.0 * (1.0 - 0.22f64 * 0.22)), 0.5e-3);
+    let m_star = 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * 1e-9 / 2.0;
+    let k = 4.0 / 3.0 * e_star * r_star.sqrt();
+    assert!((j["k"].as_f64().unwrap() / k - 1.0).abs() < 1e-14);
+    let c = powerlaw::Contact::new(1.5, alpha, 2.0, (k / m_star).sqrt()).unwrap();
+    let d = powerlaw::max_overlap(&c).unwrap();
+    assert!((j["max_overlap"].as_f64().unwrap() / d - 1.0).abs() < 1e-12);
+    // peak force below the elastic Hertz peak k δ_el^{3/2} (damping lowers it), above k δ_max^{3/2}
+    let fp = j["peak_force"].as_f64().unwrap();
+    assert!(fp > k * d.powf(1.5) && fp.is_finite(), "{fp}");
+    let (to, tf) = (
+        j["duration_overlap_end"].as_f64().unwrap(),
+        j["duration_force_end"].as_f64().unwrap(),
+    );
+    assert!(tf < to && j["dt"].as_f64().unwrap() < tf / 50.0);
+    // wall: R* = R1, m* = m1
+    let mut w = a.clone();
+    w.push("--wall");
+    let jw = json_of(&run(&w));
+    assert_eq!(jw["r_star"].as_f64().unwrap(), 1e-3);
+    assert!((jw["m_star"].as_f64().unwrap() / (2.0 * m_star) - 1.0).abs() < 1e-15);
+    // overdamped under the overlap end: no overlap-end duration, null in JSON
+    let mut od = base.to_vec();
+    let last = od.len() - 1;
+    od[last] = "0.01";
+    od.push("--json");
+    let j = json_of(&run(&od));
+    assert!(j["duration_overlap_end"].is_null());
+}
+
+#[test]
+fn contact_bad_input() {
+    let o = run(&[
+        "contact", "--E1", "7e10", "--nu1", "0.7", "--rho1", "2500", "--R1", "1e-3", "--v", "2",
+        "--e", "0.5", "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json_of(&o)["error"]["status"].as_i64(), Some(6105));
+    let o = run(&[
+        "contact", "--E1", "7e10", "--nu1", "0.2", "--rho1", "2500", "--R1", "1e-3", "--v=-2",
+        "--e", "0.5",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let o = run(&[
+        "contact", "--E1", "7e10", "--nu1", "0.2", "--rho1", "2500", "--R1", "1e-3", "--e", "0.5",
+    ]);
+    assert_eq!(o.status.code(), Some(2)); // --v missing
+}
+
+#[test]
+fn fit_exact_data_json_and_plot() {
+    let beta = 0.3;
+    let mut csv = String::from("# synthetic\nv, e, sigma\n");
+    for i in 0..8 {
+        let v = 0.1 * 100f64.powf(i as f64 / 7.0);
+        let e = e_full(beta * v.powf(0.2), EndCriterion::Force).unwrap();
+        csv += &format!("{v:.17e}, {e:.17e}, 0.01\n");
+    }
+    let f = tmp("exact.csv", &csv);
+    let png = f.with_extension("png");
+    let _ = std::fs::remove_file(&png);
+    let o = run(&[
+        "fit",
+        f.to_str().unwrap(),
+        "--json",
+        "--plot",
+        png.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let j = json_of(&o);
+    assert!((j["beta"].as_f64().unwrap() / beta - 1.0).abs() < 1e-10);
+    assert_eq!(j["model"], "viscoelastic");
+    assert_eq!(j["points"].as_array().unwrap().len(), 8);
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    // text: the table and the model choice
+    let o = run(&["fit", f.to_str().unwrap(), "--tol", "0.5"]);
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        text.contains("model required at tol 0.5: constant e"),
+        "{text}"
+    );
+}
+
+#[test]
+fn fit_bad_input() {
+    let f = tmp("bad.csv", "v,e\n1.0, 0.5\n2.0, abc\n");
+    let o = run(&["fit", f.to_str().unwrap(), "--json"]);
+    assert_eq!(o.status.code(), Some(3));
+    let j = json_of(&o);
+    assert_eq!(j["error"]["line"].as_u64(), Some(3));
+    assert_eq!(j["error"]["column"].as_u64(), Some(6));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("bad.csv:3:6: 'abc' is not a number"));
+    let f = tmp("range.csv", "0.5 0.7\n1.0 1.2\n");
+    let o = run(&["fit", f.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(3));
+    assert!(
+        String::from_utf8_lossy(&o.stderr)
+            .contains("range.csv:2:5: 1.2: restitution must be in (0, 1]")
+    );
+    let f = tmp("fields.csv", "0.5,0.7\n1.0,0.6,0.01,9\n");
+    let o = run(&["fit", f.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(3));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("fields.csv:2:"));
+    let f = tmp("one.csv", "1.0,0.6\n");
+    let o = run(&["fit", f.to_str().unwrap(), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json_of(&o)["error"]["status"].as_i64(), Some(6132));
+    let f = tmp("same.csv", "1.0,0.6\n1.0,0.62\n");
+    let o = run(&["fit", f.to_str().unwrap(), "--json"]);
+    assert_eq!(json_of(&o)["error"]["status"].as_i64(), Some(6133));
+    let o = run(&["fit", "/nonexistent/data.csv", "--json"]);
+    assert_eq!(o.status.code(), Some(3));
+    let f = tmp("ok.csv", "0.5,0.7\n1.0,0.6\n");
+    let o = run(&[
+        "fit",
+        f.to_str().unwrap(),
+        "--plot",
+        "/nonexistent/dir/fit.png",
+    ]);
+    assert_eq!(o.status.code(), Some(4));
+}
