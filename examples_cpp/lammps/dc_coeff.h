@@ -1,0 +1,348 @@
+/*
+ * Contact coefficients of the LAMMPS plugin styles (pair_style demcontact, fix demcontact/wall):
+ * parsing of the `pair_coeff` / wall arguments, validation by demcontact itself (every rejected
+ * value is named together with dc_status_str), the calibrated model of one type pair, and the one
+ * per-contact function `contact_eval` both styles call.
+ *
+ * Arguments (after "I J" for pair_coeff; after the fix style name for fix demcontact/wall), close to
+ * `pair_style granular`:
+ *
+ *   hertz/material E e nu              Hertz, k = 4/3 E* sqrt(R*), restitution e, Poisson ratio nu
+ *   powerlaw/material E e nu p         power law, k = 4/3 E* R*^(2-p), exponent p >= 1
+ *   E nu e [exponent p]                the original positional form (same as the two above)
+ *   damping restitution                (default) alpha calibrated exactly for e (see limit_damping)
+ *   damping viscoelastic v_ref r_ref rho_ref
+ *                                      Brilliantov viscoelastic Hertz, speed-dependent e: the damping
+ *                                      constant A is calibrated so that two spheres of radius r_ref
+ *                                      and density rho_ref colliding head-on at v_ref rebound with e
+ *   limit_damping                      clamp attractive normal force (also a pair_style keyword);
+ *                                      alpha then comes from the force-zero calibration
+ *   tangential mindlin NULL e_t mu     Mindlin k_t = 8 G* a from E, nu; tangential restitution e_t
+ *                                      in the sticking regime (1: undamped), Coulomb limit mu
+ *   tangential linear_history k_t e_t mu    fixed k_t [force/length]
+ *   rolling sds k_r eta_r mu_r         elastic-plastic spring-dashpot (EPSD), limit mu_r R* Fn;
+ *                                      k_r = NULL or 0: Ai et al.'s rule from the normal stiffness
+ *   rolling constant mu_r              constant torque mu_r R* Fn against the relative rolling
+ *   twisting sds k_tw eta_tw mu_tw     twisting spring-dashpot-slider, limit mu_tw Fn
+ *
+ * With any tangential/rolling/twisting keyword the contact is demcontact's full contact
+ * (dc_contact_model_init / dc_contact_force, per-contact history); without, the normal law alone
+ * (dc_pair / dc_normal_force, no history). The full contact needs the Hertz exponent 1.5.
+ *
+ * Mixing (pair_coeff I J not given, I != J): each body keeps its own type's E and nu (combined
+ * exactly into E*); e, A, e_t, mu, k_t, mu_r, k_r, eta_r, mu_tw, k_tw, eta_tw are the geometric
+ * means of the two types' values; the exponent and the sub-model choices must agree.
+ */
+#ifndef DEMCONTACT_LAMMPS_COEFF_H
+#define DEMCONTACT_LAMMPS_COEFF_H
+
+#include "error.h"
+#include "lammps.h"
+#include "utils.h"
+
+#include "dc_include.h"
+#include "tsuji_force.h"
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+namespace demcontact_lammps {
+
+using LAMMPS_NS::Error;
+using LAMMPS_NS::LAMMPS;
+
+enum Damping { DAMP_RESTITUTION = 0, DAMP_VISCOELASTIC = 1 };
+
+struct Coeff {
+    double E = 0, nu = 0, e = 0, p = 1.5;
+    int damping = DAMP_RESTITUTION;
+    double v_ref = 0, r_ref = 0, rho_ref = 0; // viscoelastic calibration point
+    double A = 0;                              // viscoelastic damping constant [s] (calibrated)
+    bool clamp = false;                        // limit_damping
+    bool set = false;
+    // full contact (issue 13 sub-models); NaN = unset
+    int tangential = DC_TANGENTIAL_NONE, rolling = DC_ROLLING_NONE, twisting = DC_TWISTING_NONE;
+    double mu = 0, k_t = NAN, e_t = 1, mu_r = 0, k_r = 0, eta_r = 0, mu_tw = 0, k_tw = NAN, eta_tw = 0;
+    bool full() const
+    {
+        return tangential != DC_TANGENTIAL_NONE || rolling != DC_ROLLING_NONE || twisting != DC_TWISTING_NONE;
+    }
+};
+
+/* dc_contact_spec of a contact between materials a (body 1) and b (body 2); the per-pair values
+   (e, A, friction...) from m. */
+inline dc_contact_spec full_spec(const Coeff &a, const Coeff &b, const Coeff &m)
+{
+    dc_contact_spec s;
+    dc_contact_spec_init(&s);
+    const bool clamp = a.clamp || b.clamp;
+    s.criterion = clamp ? DC_END_FORCE : DC_END_OVERLAP;
+    s.E1 = a.E;
+    s.nu1 = a.nu;
+    s.E2 = b.E;
+    s.nu2 = b.nu;
+    if (m.damping == DAMP_VISCOELASTIC) {
+        s.normal = DC_NORMAL_VISCOELASTIC;
+        s.damping = DC_DAMPING_NONE;
+        s.visco_A = m.A;
+    } else {
+        s.normal = DC_NORMAL_HERTZ;
+        s.damping = DC_DAMPING_RESTITUTION;
+        s.e_n = m.e;
+    }
+    s.tangential = m.tangential;
+    s.rolling = m.rolling;
+    s.twisting = m.twisting;
+    s.mu = m.mu;
+    s.k_t = m.k_t;
+    s.e_t = m.e_t;
+    s.mu_r = m.mu_r;
+    s.k_r = m.k_r;
+    s.eta_r = m.eta_r;
+    s.mu_tw = m.mu_tw;
+    s.k_tw = m.k_tw;
+    s.eta_tw = m.eta_tw;
+    return s;
+}
+
+/* The viscoelastic damping constant A for which two equal spheres (r_ref, rho_ref) of material
+   (E, nu) colliding at v_ref rebound with e under the criterion of `clamp`. */
+inline int32_t viscoelastic_A(const Coeff &c, bool clamp, double *A)
+{
+    double es = 0.0;
+    int32_t s = dc_effective_modulus(c.E, c.nu, c.E, c.nu, &es);
+    if (s != DC_OK) return s;
+    if (!(c.r_ref > 0.0) || !(c.rho_ref > 0.0) || !std::isfinite(c.r_ref) || !std::isfinite(c.rho_ref))
+        return DC_ERR_NOT_POSITIVE;
+    const double rho_hertz = 4.0 / 3.0 * es * std::sqrt(0.5 * c.r_ref);
+    const double m_ref = c.rho_ref * 4.0 / 3.0 * M_PI * c.r_ref * c.r_ref * c.r_ref;
+    return dc_viscoelastic_a_from_e(c.e, c.v_ref, rho_hertz, 0.5 * m_ref, clamp ? DC_END_FORCE : DC_END_OVERLAP, A);
+}
+
+/* Parse arguments arg[0..narg) into c; `what` prefixes error messages ("pair_coeff 1 1"). Every
+   value is checked by demcontact as soon as it is read, and a rejected one ends the run with
+   LAMMPS' error naming it and demcontact's status text. */
+inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int narg, char **arg,
+                        bool style_clamp, Coeff &c)
+{
+    using LAMMPS_NS::utils::numeric;
+    auto num = [&](int i, const char *name) -> double {
+        if (i >= narg) error->all(FLERR, "{}: missing value for {}", what, name);
+        return numeric(FLERR, arg[i], false, lmp);
+    };
+    auto reject = [&](const char *name, double value, int32_t status) {
+        error->all(FLERR, "{}: {} = {} rejected by demcontact: {}{}", what, name, value, dc_status_str(status),
+                   std::strcmp(name, "nu") == 0 ? " (Poisson ratio must be in (-1, 0.5])" : "");
+    };
+    int i = 0;
+    if (narg < 1) error->all(FLERR, "{}: missing arguments", what);
+    if (std::strcmp(arg[0], "hertz/material") == 0 || std::strcmp(arg[0], "powerlaw/material") == 0) {
+        const bool pl = arg[0][0] == 'p';
+        c.E = num(1, "E");
+        c.e = num(2, "e");
+        c.nu = num(3, "nu");
+        if (pl) c.p = num(4, "p");
+        i = pl ? 5 : 4;
+    } else {
+        c.E = num(0, "E");
+        c.nu = num(1, "nu");
+        c.e = num(2, "e");
+        i = 3;
+    }
+    c.clamp = style_clamp;
+    while (i < narg) {
+        const std::string k = arg[i];
+        if (k == "exponent") {
+            c.p = num(i + 1, "exponent");
+            i += 2;
+        } else if (k == "limit_damping") {
+            c.clamp = true;
+            i += 1;
+        } else if (k == "damping") {
+            if (i + 1 >= narg) error->all(FLERR, "{}: damping needs a law (restitution or viscoelastic)", what);
+            const std::string law = arg[i + 1];
+            if (law == "restitution" || law == "coeff_restitution") {
+                c.damping = DAMP_RESTITUTION;
+                i += 2;
+            } else if (law == "viscoelastic") {
+                c.damping = DAMP_VISCOELASTIC;
+                c.v_ref = num(i + 2, "v_ref");
+                c.r_ref = num(i + 3, "r_ref");
+                c.rho_ref = num(i + 4, "rho_ref");
+                i += 5;
+            } else {
+                error->all(FLERR, "{}: unknown damping law '{}' (restitution or viscoelastic)", what, law);
+            }
+        } else if (k == "tangential") {
+            const std::string law = i + 1 < narg ? arg[i + 1] : "";
+            if (law == "mindlin") {
+                c.tangential = DC_TANGENTIAL_MINDLIN;
+                if (i + 2 >= narg || std::strcmp(arg[i + 2], "NULL") != 0)
+                    error->all(FLERR, "{}: tangential mindlin takes k_t from E and nu: write 'tangential mindlin NULL e_t mu'", what);
+            } else if (law == "linear_history") {
+                c.tangential = DC_TANGENTIAL_LINEAR;
+                c.k_t = num(i + 2, "k_t");
+            } else {
+                error->all(FLERR, "{}: unknown tangential model '{}' (mindlin or linear_history)", what, law);
+            }
+            c.e_t = num(i + 3, "e_t");
+            c.mu = num(i + 4, "mu");
+            i += 5;
+        } else if (k == "rolling") {
+            const std::string law = i + 1 < narg ? arg[i + 1] : "";
+            if (law == "sds") {
+                c.rolling = DC_ROLLING_EPSD;
+                c.k_r = (i + 2 < narg && std::strcmp(arg[i + 2], "NULL") == 0) ? 0.0 : num(i + 2, "k_r");
+                c.eta_r = num(i + 3, "eta_r");
+                c.mu_r = num(i + 4, "mu_r");
+                i += 5;
+            } else if (law == "constant") {
+                c.rolling = DC_ROLLING_CONSTANT;
+                c.mu_r = num(i + 2, "mu_r");
+                i += 3;
+            } else {
+                error->all(FLERR, "{}: unknown rolling model '{}' (sds or constant)", what, law);
+            }
+        } else if (k == "twisting") {
+            if (i + 1 >= narg || std::strcmp(arg[i + 1], "sds") != 0)
+                error->all(FLERR, "{}: unknown twisting model (sds k_tw eta_tw mu_tw)", what);
+            c.twisting = DC_TWISTING_SDS;
+            c.k_tw = num(i + 2, "k_tw");
+            c.eta_tw = num(i + 3, "eta_tw");
+            c.mu_tw = num(i + 4, "mu_tw");
+            i += 5;
+        } else {
+            error->all(FLERR, "{}: unknown keyword '{}'", what, k);
+        }
+    }
+    // Validation by the library, one value at a time so that the message names it.
+    double es = 0.0, a = 0.0;
+    const int32_t crit = c.clamp ? DC_END_FORCE : DC_END_OVERLAP;
+    int32_t s = dc_effective_modulus(c.E, 0.25, c.E, 0.25, &es);
+    if (s != DC_OK) reject("E", c.E, s);
+    s = dc_effective_modulus(1.0, c.nu, 1.0, c.nu, &es);
+    // demcontact accepts nu = 0.5 (incompressible); the physical range is (-1, 0.5]
+    if (s != DC_OK) reject("nu", c.nu, s);
+    s = dc_alpha_from_e(0.5, c.p, crit, &a);
+    if (s != DC_OK) reject("exponent p", c.p, s);
+    s = dc_alpha_from_e(c.e, c.p, crit, &a);
+    if (s != DC_OK) reject("e", c.e, s);
+    if (c.damping == DAMP_VISCOELASTIC) {
+        if (c.p != 1.5) error->all(FLERR, "{}: damping viscoelastic needs the Hertz exponent 1.5 (got {})", what, c.p);
+        double b = 0.0;
+        s = dc_viscoelastic_beta_from_e(c.e, c.v_ref, crit, &b);
+        if (s != DC_OK) reject("v_ref", c.v_ref, s);
+        if (!std::isfinite(c.r_ref)) reject("r_ref", c.r_ref, DC_ERR_NOT_FINITE);
+        if (!(c.r_ref > 0.0)) reject("r_ref", c.r_ref, DC_ERR_NOT_POSITIVE);
+        if (!std::isfinite(c.rho_ref)) reject("rho_ref", c.rho_ref, DC_ERR_NOT_FINITE);
+        if (!(c.rho_ref > 0.0)) reject("rho_ref", c.rho_ref, DC_ERR_NOT_POSITIVE);
+        s = viscoelastic_A(c, c.clamp, &c.A);
+        if (s != DC_OK) reject("e (viscoelastic calibration)", c.e, s);
+    }
+    if (c.full()) {
+        if (c.p != 1.5) error->all(FLERR, "{}: tangential/rolling/twisting need the Hertz exponent 1.5 (got {})", what, c.p);
+        // the library validates the whole spec; on failure, name the first parameter that fails
+        // on its own (each substituted into a spec known to be valid)
+        dc_contact_model cm;
+        dc_contact_spec sp = full_spec(c, c, c);
+        s = dc_contact_model_init(&sp, &cm);
+        if (s != DC_OK) {
+            Coeff ok = c;
+            ok.mu = 0.5;
+            ok.k_t = 1.0;
+            ok.e_t = 1.0;
+            ok.mu_r = 0.1;
+            ok.k_r = 0.0;
+            ok.eta_r = 0.0;
+            ok.mu_tw = 0.1;
+            ok.k_tw = 1.0;
+            ok.eta_tw = 0.0;
+            struct { const char *name; double Coeff::*field; } fields[] = {
+                {"mu", &Coeff::mu},       {"k_t", &Coeff::k_t},     {"e_t", &Coeff::e_t},
+                {"mu_r", &Coeff::mu_r},   {"k_r", &Coeff::k_r},     {"eta_r", &Coeff::eta_r},
+                {"mu_tw", &Coeff::mu_tw}, {"k_tw", &Coeff::k_tw},   {"eta_tw", &Coeff::eta_tw}};
+            for (auto &f : fields) {
+                Coeff t = ok;
+                t.*(f.field) = c.*(f.field);
+                dc_contact_spec ts = full_spec(t, t, t);
+                const int32_t st = dc_contact_model_init(&ts, &cm);
+                if (st != DC_OK) reject(f.name, c.*(f.field), st);
+            }
+            error->all(FLERR, "{}: contact model rejected by demcontact: {}", what, dc_status_str(s));
+        }
+    }
+    c.set = true;
+}
+
+/* The model of one type pair: the normal law alone (dc_pair, no history) or demcontact's full
+   contact (dc_contact_model, history of nh doubles per contact). */
+struct Model {
+    bool full = false;
+    int nh = 0;
+    dc_pair pair{};
+    dc_contact_model cm{};
+};
+
+/* Build the model of a contact between materials a (body 1) and b (body 2), per-pair values from m. */
+inline int32_t make_model(const Coeff &a, const Coeff &b, const Coeff &m, Model &out)
+{
+    const bool clamp = a.clamp || b.clamp;
+    out.full = m.full();
+    if (out.full) {
+        dc_contact_spec sp = full_spec(a, b, m);
+        int32_t s = dc_contact_model_init(&sp, &out.cm);
+        if (s != DC_OK) return s;
+        size_t len = 0;
+        s = dc_contact_history_len(&out.cm, &len);
+        out.nh = static_cast<int>(len);
+        out.pair = out.cm.normal;
+        return s;
+    }
+    out.nh = 0;
+    if (m.damping == DAMP_VISCOELASTIC)
+        return dc_pair_viscoelastic(a.E, a.nu, b.E, b.nu, m.A, clamp ? DC_END_FORCE : DC_END_OVERLAP, &out.pair);
+    return demcontact_sim::contact_setup(a.E, a.nu, b.E, b.nu, m.e, a.p, clamp, &out.pair);
+}
+
+/* One contact's kinematics (demcontact's dc_contact_state): n points from body 2 to body 1; a wall
+   is body 2 with r2 = m2 = +inf. */
+typedef dc_contact_state State;
+
+struct Result {
+    double force[3];   // on body 1 (body 2: minus)
+    double torque1[3]; // on body 1
+    double torque2[3]; // on body 2
+};
+
+/* THE per-contact call of both styles (pair and wall). `history`: the caller-owned nh doubles of
+   this contact, zero for a new contact, advanced in place. Returns the library status (the normal
+   path cannot fail). */
+inline int32_t contact_eval(const Model &m, const State &s, double dt, double *history, Result &out)
+{
+    if (m.full) {
+        dc_contact_result r;
+        const int32_t st = dc_contact_force(&m.cm, &s, dt, history, static_cast<size_t>(m.nh), &r);
+        if (st != DC_OK) return st;
+        for (int k = 0; k < 3; k++) {
+            out.force[k] = r.force[k];
+            out.torque1[k] = r.torque1[k];
+            out.torque2[k] = r.torque2[k];
+        }
+        return DC_OK;
+    }
+    const double vn = (s.v2[0] - s.v1[0]) * s.n[0] + (s.v2[1] - s.v1[1]) * s.n[1] + (s.v2[2] - s.v1[2]) * s.n[2];
+    const double reff = std::isinf(s.r2) ? s.r1 : s.r1 * s.r2 / (s.r1 + s.r2);
+    const double meff = std::isinf(s.m2) ? s.m1 : s.m1 * s.m2 / (s.m1 + s.m2);
+    const double F = demcontact_sim::contact_force(m.pair, s.overlap, vn, reff, meff);
+    for (int k = 0; k < 3; k++) {
+        out.force[k] = F * s.n[k];
+        out.torque1[k] = 0.0;
+        out.torque2[k] = 0.0;
+    }
+    return DC_OK;
+}
+
+} // namespace demcontact_lammps
+
+#endif

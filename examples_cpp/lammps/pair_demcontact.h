@@ -1,0 +1,44 @@
+/* pair_style demcontact: see pair_demcontact.cpp. */
+#ifndef DEMCONTACT_LAMMPS_PAIR_H
+#define DEMCONTACT_LAMMPS_PAIR_H
+
+#include "pair.h"
+
+#include "dc_coeff.h"
+#include "fix_demcontact_history.h"
+
+#include <vector>
+
+namespace demcontact_lammps {
+
+using namespace LAMMPS_NS;
+
+class PairDemcontact : public Pair {
+public:
+    explicit PairDemcontact(LAMMPS *lmp);
+    ~PairDemcontact() override;
+    void settings(int narg, char **arg) override;
+    void coeff(int narg, char **arg) override;
+    void init_style() override;
+    double init_one(int i, int j) override;
+    void compute(int eflag, int vflag) override;
+
+private:
+    int n1() const { return atom->ntypes + 1; }
+    void allocate();
+    void build_models();
+
+    bool clamp = false;
+    int maxpartner = 32;
+    int nh = 0;
+    Coeff *coeffs = nullptr; // (ntypes+1)^2, [i*(ntypes+1)+j], i <= j given or mixed
+    Model *models = nullptr;  // calibrated model per type pair [type1*(ntypes+1)+type2], both orders
+    double *onerad = nullptr; // largest radius per type (present and future particles)
+    FixDemcontactHistory *history = nullptr;
+    std::vector<unsigned char> touched;
+    std::vector<double> scratch;
+};
+
+} // namespace demcontact_lammps
+
+#endif

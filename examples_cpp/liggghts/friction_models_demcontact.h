@@ -1,0 +1,270 @@
+/*
+ * demcontact's tangential and rolling sub-models as LIGGGHTS models, registered next to the normal
+ * model "demcontact" in LIGGGHTS' own factories (included by normal_model_demcontact.cpp):
+ *
+ *   pair_style gran model demcontact tangential demcontact [rolling_friction demcontact]
+ *              [tangentialRestitution e_t] [rollingStiffness k_r] [rollingDamping eta_r] [rollingConstant on]
+ *   fix ID all wall/gran model demcontact tangential demcontact rolling_friction demcontact primitive ...
+ *   materials: coefficientFriction (mu), coefficientRollingFriction (mu_r), peratomtypepair
+ *
+ * tangential demcontact = DC_TANGENTIAL_MINDLIN (k_t = 8 G* a from youngsModulus/poissonsRatio,
+ * damping from e_t, Coulomb limit mu |Fn|); rolling_friction demcontact = DC_ROLLING_EPSD (k_r = 0:
+ * Ai et al.'s rule, limit mu_r R* |Fn|; `rollingConstant on`: DC_ROLLING_CONSTANT, the constant torque
+ * mu_r R* |Fn| against the relative rolling, as LIGGGHTS' cdt). Both need `model demcontact` with exponent 1.5: each
+ * calls dc_contact_force with a model made of demcontact's normal law (the same as the normal
+ * model's) and its own sub-model only, and adds only its own part: the tangential force and its
+ * torques, or the rolling torques. (The normal force is recomputed by each call: the price of
+ * LIGGGHTS' one-class-per-sub-model structure.)
+ *
+ * History: the sub-model's dc_contact_history_len doubles in LIGGGHTS' contact history, registered
+ * with newton flag "0" (never negated for the partner): every evaluation puts the atom of smaller
+ * ID as body 1, so the copies LIGGGHTS keeps for the two partners are the same numbers. The
+ * history advances only when LIGGGHTS says so (computeflag && shearupdate), and is zeroed when the
+ * spheres separate (surfacesClose).
+ */
+#ifndef DEMCONTACT_LIGGGHTS_FRICTION_MODELS_H
+#define DEMCONTACT_LIGGGHTS_FRICTION_MODELS_H
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+// 6-bit ids in LIGGGHTS' tangential and rolling id spaces (the installed ones are small).
+static const int DEMCONTACT_TANGENTIAL = 42;
+static const int DEMCONTACT_ROLLING = 42;
+
+/* The machinery both sub-models share. kind: DC_TANGENTIAL_MINDLIN or DC_ROLLING_EPSD. */
+class DemcontactSubModel {
+public:
+    DemcontactSubModel(LAMMPS *lmp_, IContactHistorySetup *hsetup, ContactModelBase *c, bool rolling_)
+        : lmp(lmp_), owner(c), rolling(rolling_)
+    {
+        // history length of this sub-model alone (a placeholder model of the same kind)
+        dc_contact_spec s;
+        dc_contact_spec_init(&s);
+        s.normal = DC_NORMAL_HERTZ;
+        s.damping = DC_DAMPING_NONE;
+        s.E1 = s.E2 = 1e7;
+        s.nu1 = s.nu2 = 0.3;
+        s.mu = 0.5;
+        s.mu_r = 0.1;
+        if (rolling) s.rolling = DC_ROLLING_EPSD;
+        else s.tangential = DC_TANGENTIAL_MINDLIN;
+        dc_contact_model m;
+        size_t len = 0;
+        if (dc_contact_model_init(&s, &m) == DC_OK) dc_contact_history_len(&m, &len);
+        nh = static_cast<int>(len);
+        const char *base = rolling ? "dc_roll" : "dc_tang";
+        for (int k = 0; k < nh; k++) {
+            const int off = hsetup->add_history_value(std::string(base) + std::to_string(k), "0");
+            if (k == 0) offset = off;
+        }
+    }
+
+    /* Build one model per type pair (both orders) from the normal model's law and this
+       sub-model's parameters; reject bad values with demcontact's status text. */
+    void build(LAMMPS_NS::Error *error, int ntypes_, const NormalModel<DEMCONTACT> *normal, double **coeff,
+               const char *coeff_name, double e_t, double k_r, double eta_r, bool rolling_constant = false)
+    {
+        ntypes = ntypes_;
+        if (nh == 0) error->all(FLERR, "demcontact: the library reports no history for this sub-model");
+        if (!normal)
+            error->all(FLERR, rolling ? "rolling_friction demcontact needs model demcontact"
+                                      : "tangential demcontact needs model demcontact");
+        models.assign((ntypes + 1) * (ntypes + 1), dc_contact_model());
+        for (int i = 1; i <= ntypes; i++)
+            for (int j = 1; j <= ntypes; j++) {
+                dc_contact_spec s;
+                if (!normal->full_spec(i, j, s))
+                    error->all(FLERR, "tangential/rolling_friction demcontact need model demcontact with exponent 1.5");
+                if (rolling) {
+                    s.rolling = rolling_constant ? DC_ROLLING_CONSTANT : DC_ROLLING_EPSD;
+                    s.mu_r = coeff[i][j];
+                    s.k_r = k_r;
+                    s.eta_r = eta_r;
+                } else {
+                    s.tangential = DC_TANGENTIAL_MINDLIN;
+                    s.mu = coeff[i][j];
+                    s.e_t = e_t;
+                }
+                const int32_t st = dc_contact_model_init(&s, &models[i * (ntypes + 1) + j]);
+                if (st != DC_OK) {
+                    char msg[400];
+                    if (rolling)
+                        std::snprintf(msg, sizeof msg,
+                                      "rolling_friction demcontact: types %d-%d (%s = %g, rollingStiffness = %g, "
+                                      "rollingDamping = %g) rejected by demcontact: %s",
+                                      i, j, coeff_name, coeff[i][j], k_r, eta_r, dc_status_str(st));
+                    else
+                        std::snprintf(msg, sizeof msg,
+                                      "tangential demcontact: types %d-%d (%s = %g, tangentialRestitution = %g) "
+                                      "rejected by demcontact: %s",
+                                      i, j, coeff_name, coeff[i][j], e_t, dc_status_str(st));
+                    error->all(FLERR, msg);
+                }
+            }
+    }
+
+    void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
+        const double inf = std::numeric_limits<double>::infinity();
+        const int i = sidata.i, j = sidata.j;
+        LAMMPS_NS::Atom *atom = lmp->atom;
+        // body 1 = the sphere of smaller ID (walls: the sphere), so both partners' copies agree
+        const bool swap = !sidata.is_wall && atom->tag[j] < atom->tag[i];
+        const double sg = swap ? -1.0 : 1.0;
+        dc_contact_state s;
+        for (int k = 0; k < 3; k++) s.n[k] = sg * sidata.en[k];
+        s.overlap = sidata.deltan;
+        const double *vi = sidata.v_i ? sidata.v_i : atom->v[i];
+        const double *wi = sidata.omega_i ? sidata.omega_i : atom->omega[i];
+        double vj[3] = {0, 0, 0}, wj[3] = {0, 0, 0};
+        double rj = inf, mj = inf;
+        if (sidata.is_wall) {
+            if (sidata.v_j) std::memcpy(vj, sidata.v_j, sizeof vj); // the wall's velocity
+        } else {
+            std::memcpy(vj, sidata.v_j ? sidata.v_j : atom->v[j], sizeof vj);
+            std::memcpy(wj, sidata.omega_j ? sidata.omega_j : atom->omega[j], sizeof wj);
+            rj = sidata.radj;
+            mj = sidata.mj;
+        }
+        const double *v1 = swap ? vj : vi, *v2 = swap ? vi : vj, *w1 = swap ? wj : wi, *w2 = swap ? wi : wj;
+        for (int k = 0; k < 3; k++) {
+            s.v1[k] = v1[k];
+            s.v2[k] = v2[k];
+            s.w1[k] = w1[k];
+            s.w2[k] = w2[k];
+        }
+        s.r1 = swap ? rj : sidata.radi;
+        s.r2 = swap ? sidata.radi : rj;
+        s.m1 = swap ? mj : sidata.mi;
+        s.m2 = swap ? sidata.mi : mj;
+        const int t1 = swap ? sidata.jtype : sidata.itype, t2 = swap ? sidata.itype : sidata.jtype;
+
+        double *h = &sidata.contact_history[offset];
+        double copy[16];
+        if (!(sidata.computeflag && sidata.shearupdate)) { // evaluate without advancing the history
+            std::memcpy(copy, h, sizeof(double) * nh);
+            h = copy;
+        }
+        dc_contact_result r;
+        const int32_t st = dc_contact_force(&models[t1 * (ntypes + 1) + t2], &s, lmp->update->dt, h,
+                                            static_cast<size_t>(nh), &r);
+        if (st != DC_OK) {
+            char msg[200];
+            std::snprintf(msg, sizeof msg, "%s demcontact: atom %ld: %s", rolling ? "rolling_friction" : "tangential",
+                          (long)atom->tag[i], dc_status_str(st));
+            lmp->error->one(FLERR, msg);
+        }
+        // this sub-model's part only: the tangential force and its torques, or the rolling torques
+        const double *ti = swap ? r.torque2 : r.torque1, *tj = swap ? r.torque1 : r.torque2;
+        const double scale = sidata.is_wall ? sidata.area_ratio : 1.0;
+        for (int k = 0; k < 3; k++) {
+            if (!rolling) {
+                i_forces.delta_F[k] += sg * scale * r.ft[k];
+                if (!sidata.is_wall) j_forces.delta_F[k] -= sg * r.ft[k];
+            }
+            i_forces.delta_torque[k] += scale * ti[k];
+            if (!sidata.is_wall) j_forces.delta_torque[k] += tj[k];
+        }
+    }
+
+    void close(SurfacesCloseData &scdata)
+    {
+        if (!scdata.contact_history) return;
+        std::memset(&scdata.contact_history[offset], 0, sizeof(double) * nh);
+    }
+
+    LAMMPS *lmp;
+    const void *owner;
+    bool rolling;
+    int nh = 0, offset = 0, ntypes = 0;
+    std::vector<dc_contact_model> models;
+};
+
+template<>
+class TangentialModel<DEMCONTACT_TANGENTIAL> : public TangentialModelBase {
+public:
+    TangentialModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c)
+        : TangentialModelBase(lmp, hsetup, c), sub(lmp, hsetup, c, false), coeffFrict(NULL), e_t(1.0) {}
+
+    void registerSettings(Settings &settings)
+    {
+        settings.registerDoubleSetting("tangentialRestitution", e_t, 1.0);
+    }
+    void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+    void connectToProperties(PropertyRegistry &registry)
+    {
+        registry.registerProperty("coeffFrict", &MODEL_PARAMS::createCoeffFrict, false);
+        registry.connect("coeffFrict", coeffFrict, "tangential_model demcontact");
+        const auto &normals = NormalModel<DEMCONTACT>::demcontact_normals();
+        auto it = normals.find(sub.owner);
+        sub.build(error, atom->ntypes, it == normals.end() ? NULL : it->second, coeffFrict, "coefficientFriction",
+                  e_t, 0.0, 0.0);
+    }
+    void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
+        if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
+        sub.intersect(sidata, i_forces, j_forces);
+    }
+    void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)
+    {
+        if (scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_TANGENTIAL_MODEL;
+        sub.close(scdata);
+    }
+    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+private:
+    DemcontactSubModel sub;
+    double **coeffFrict;
+    double e_t;
+};
+
+template<>
+class RollingModel<DEMCONTACT_ROLLING> : public RollingModelBase {
+public:
+    RollingModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c)
+        : RollingModelBase(lmp, hsetup, c), sub(lmp, hsetup, c, true), coeffRollFrict(NULL), k_r(0.0), eta_r(0.0) {}
+
+    void registerSettings(Settings &settings)
+    {
+        settings.registerDoubleSetting("rollingStiffness", k_r, 0.0);
+        settings.registerDoubleSetting("rollingDamping", eta_r, 0.0);
+        settings.registerOnOff("rollingConstant", constant, false);
+    }
+    void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+    void connectToProperties(PropertyRegistry &registry)
+    {
+        registry.registerProperty("coeffRollFrict", &MODEL_PARAMS::createCoeffRollFrict, false);
+        registry.connect("coeffRollFrict", coeffRollFrict, "rolling_model demcontact");
+        const auto &normals = NormalModel<DEMCONTACT>::demcontact_normals();
+        auto it = normals.find(sub.owner);
+        sub.build(error, atom->ntypes, it == normals.end() ? NULL : it->second, coeffRollFrict,
+                  "coefficientRollingFriction", 1.0, k_r, eta_r, constant);
+    }
+    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
+        sub.intersect(sidata, i_forces, j_forces);
+    }
+    void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &) { sub.close(scdata); }
+    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+private:
+    DemcontactSubModel sub;
+    double **coeffRollFrict;
+    double k_r, eta_r;
+    bool constant = false;
+};
+
+} // namespace ContactModels
+} // namespace LIGGGHTS
+
+#endif

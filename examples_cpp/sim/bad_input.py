@@ -1,0 +1,180 @@
+#!/usr/bin/env python3
+"""Every bad model argument ends the simulator run with its own error naming the bad value and
+demcontact's status text (dc_status_str, read from the library the plugin links), never a crash,
+a NaN or a silent default.
+
+  bad_input.py --sim lammps   --plugin demcontact_lammps.so [--lmp lmp]
+  bad_input.py --sim liggghts --plugin libdemcontact_liggghts.so
+
+Each case runs the simulator on a two-sphere deck with one bad value and checks: exit status != 0,
+an "ERROR" line that contains the bad value (as the simulator prints it) and the expected status
+text; a good deck (the control) must run to the end, so the cases cannot pass by a broken deck.
+Exit 77 (ctest SKIP) when the simulator is not installed.
+"""
+import argparse
+import ctypes
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import harness as H  # noqa: E402
+
+# status codes (include/demcontact.h)
+NOT_POSITIVE, NEGATIVE, RESTITUTION, EXPONENT = 6105, 6106, 6103, 6104
+FULL = "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.0 0.5 rolling sds NULL 0 0.1"
+
+
+def status_texts(plugin):
+    """dc_status_str of the libdemcontact the plugin is linked against."""
+    out = subprocess.run(["ldd", plugin], stdout=subprocess.PIPE, text=True).stdout
+    m = re.search(r"libdemcontact\.so\S*\s*=>\s*(\S+)", out)
+    if not m:
+        raise SystemExit("bad_input: %s does not link libdemcontact (ldd)" % plugin)
+    lib = ctypes.CDLL(m.group(1))
+    lib.dc_status_str.restype = ctypes.c_char_p
+    lib.dc_status_str.argtypes = [ctypes.c_int32]
+    return lambda code: lib.dc_status_str(code).decode()
+
+
+# ------------------------------------------------------------------ LAMMPS
+LAMMPS_GOOD = "hertz/material 5e6 0.5 0.3"
+# (label, pair_style args, pair_coeff args after "1 1", wall args or None, bad value, status or None)
+LAMMPS_CASES = [
+    ("E = 0", "", "hertz/material 0 0.5 0.3", None, "E = 0", NOT_POSITIVE),
+    ("E < 0", "", "hertz/material -5e6 0.5 0.3", None, "E = -5000000", NOT_POSITIVE),
+    ("nu > 0.5", "", "hertz/material 5e6 0.5 0.6", None, "nu = 0.6", NOT_POSITIVE),
+    ("nu = -1", "", "hertz/material 5e6 0.5 -1", None, "nu = -1", NOT_POSITIVE),
+    ("e = 0", "", "hertz/material 5e6 0 0.3", None, "e = 0", RESTITUTION),
+    ("e > 1", "", "hertz/material 5e6 1.5 0.3", None, "e = 1.5", RESTITUTION),
+    ("e < 0 (positional form)", "", "5e6 0.3 -0.5", None, "e = -0.5", RESTITUTION),
+    ("p < 1", "", "powerlaw/material 5e6 0.5 0.3 0.5", None, "exponent p = 0.5", EXPONENT),
+    ("p < 1 (exponent keyword)", "", "5e6 0.3 0.5 exponent 0.9", None, "exponent p = 0.9", EXPONENT),
+    ("unknown pair_coeff keyword", "", "hertz/material 5e6 0.5 0.3 frobnicate", None, "'frobnicate'", None),
+    ("unknown pair_style keyword", "frobnicate", LAMMPS_GOOD, None, "'frobnicate'", None),
+    ("unknown damping law", "", "hertz/material 5e6 0.5 0.3 damping tsuji", None, "'tsuji'", None),
+    ("viscoelastic v_ref <= 0", "", "hertz/material 5e6 0.5 0.3 damping viscoelastic 0 0.001 2500", None,
+     "v_ref = 0", NOT_POSITIVE),
+    ("mu < 0", "", "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.0 -0.5", None, "mu = -0.5", NEGATIVE),
+    ("e_t > 1", "", "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.5 0.5", None, "e_t = 1.5", RESTITUTION),
+    ("mu_r < 0", "", "hertz/material 5e6 0.5 0.3 rolling sds NULL 0 -0.1", None, "mu_r = -0.1", NEGATIVE),
+    ("unknown tangential model", "", "hertz/material 5e6 0.5 0.3 tangential sticky NULL 1 0.5", None,
+     "'sticky'", None),
+    ("wall mu < 0", "", FULL, "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.0 -0.2 zplane -0.01 NULL",
+     "mu = -0.2", NEGATIVE),
+    ("wall e > 1", "", LAMMPS_GOOD, "hertz/material 5e6 1.2 0.3 zplane -0.01 NULL", "e = 1.2", RESTITUTION),
+    ("wall E < 0", "", LAMMPS_GOOD, "hertz/material -1 0.5 0.3 zplane -0.01 NULL", "E = -1", NOT_POSITIVE),
+    ("wall unknown keyword", "", LAMMPS_GOOD, "hertz/material 5e6 0.5 0.3 sticky zplane -0.01 NULL", "'sticky'", None),
+]
+
+
+def lammps_deck(plugin, style, coeff, wall):
+    L = ["units si", "atom_style sphere", "boundary f f f", "comm_modify vel yes",
+         "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box", "create_box 1 box",
+         "plugin load %s" % os.path.abspath(plugin), ("pair_style demcontact " + style).strip(),
+         "pair_coeff 1 1 " + coeff,
+         "create_atoms 1 single 0 0 0 units box", "create_atoms 1 single 0.00199 0 0 units box",
+         "set group all diameter 0.002 density 2500", "velocity all set 0.1 0 0",
+         "fix integr all nve/sphere"]
+    if wall:
+        L.append("fix w all demcontact/wall " + wall)
+    L += ["timestep 1e-7", "thermo 100", "thermo_style custom step ke", "run 100"]
+    return "\n".join(L) + "\n"
+
+
+# ------------------------------------------------------------------ LIGGGHTS
+LIGGGHTS_GOOD = dict(Y="5e6", nu="0.3", e="0.5", mu="0.5", mur="0.1", extra="")
+LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
+    ("youngsModulus = 0", dict(Y="0"), "youngsModulus of type 1 = 0", NOT_POSITIVE),
+    ("youngsModulus < 0", dict(Y="-5e6"), "youngsModulus of type 1 = -5e+06", NOT_POSITIVE),
+    ("poissonsRatio > 0.5", dict(nu="0.6"), "poissonsRatio of type 1 = 0.6", NOT_POSITIVE),
+    ("poissonsRatio = -1", dict(nu="-1"), "poissonsRatio of type 1 = -1", NOT_POSITIVE),
+    ("coefficientRestitution = 0", dict(e="0"), "coefficientRestitution of types 1-1 = 0", RESTITUTION),
+    ("coefficientRestitution > 1", dict(e="1.5"), "coefficientRestitution of types 1-1 = 1.5", RESTITUTION),
+    ("exponent < 1", dict(extra="exponent 0.5"), "exponent (all types) of type 1 = 0.5", EXPONENT),
+    ("viscoelastic without rRef", dict(extra="viscoelastic on densityRef 2500"),
+     "rRef (set it with viscoelastic on) of type 1 = 0", NOT_POSITIVE),
+    ("coefficientFriction < 0", dict(mu="-0.5"), "coefficientFriction = -0.5", NEGATIVE),
+    ("coefficientRollingFriction < 0", dict(mur="-0.1"), "coefficientRollingFriction = -0.1", NEGATIVE),
+    ("tangentialRestitution > 1", dict(extra="tangentialRestitution 1.5"), "tangentialRestitution = 1.5",
+     RESTITUTION),
+    ("unknown keyword", dict(extra="frobnicate on"), "'frobnicate'", None),
+]
+
+
+def liggghts_deck(v):
+    model = ("model demcontact tangential demcontact rolling_friction demcontact " + v["extra"]).strip()
+    L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
+         "communicate single vel yes", "units si",
+         "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box", "create_box 1 box",
+         "neighbor 0.0002 bin",
+         "fix m1 all property/global youngsModulus peratomtype " + v["Y"],
+         "fix m2 all property/global poissonsRatio peratomtype " + v["nu"],
+         "fix m3 all property/global coefficientRestitution peratomtypepair 1 " + v["e"],
+         "fix m4 all property/global coefficientFriction peratomtypepair 1 " + v["mu"],
+         "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 " + v["mur"],
+         "pair_style gran " + model, "pair_coeff * *",
+         # the wall takes its own model settings: the plain model here
+         "fix w all wall/gran model demcontact tangential demcontact rolling_friction demcontact "
+         "primitive type 1 zplane -0.01",
+         "create_atoms 1 single 0 0 0 units box", "create_atoms 1 single 0.00199 0 0 units box",
+         "set group all diameter 0.002 density 2500", "velocity all set 0.1 0 0",
+         "fix integr all nve/sphere", "timestep 1e-7", "thermo 100", "thermo_style custom step ke",
+         "run 100"]
+    return "\n".join(L) + "\n"
+
+
+def run(cmd, cwd, env):
+    if H.which("stdbuf"):
+        cmd = ["stdbuf", "-oL", "-eL"] + cmd
+    p = subprocess.run(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=300)
+    return p.returncode, p.stdout.decode("utf-8", "replace")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--sim", choices=["liggghts", "lammps"], required=True)
+    ap.add_argument("--plugin", required=True)
+    ap.add_argument("--lmp")
+    ap.add_argument("--workdir")
+    a = ap.parse_args()
+    workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_bad_"))
+    os.makedirs(workdir, exist_ok=True)
+    text = status_texts(os.path.abspath(a.plugin))
+    if a.sim == "lammps":
+        import lammps_runs
+        exe = lammps_runs.find_lmp(a.lmp)
+        env = H.mpi_env()
+        cases = [(lab, lammps_deck(a.plugin, st, co, wa), bad, code) for lab, st, co, wa, bad, code in LAMMPS_CASES]
+        control = lammps_deck(a.plugin, "", FULL, FULL + " zplane -0.01 NULL")
+        cmd = [exe, "-in", "in.deck", "-log", "none"]
+    else:
+        exe, env = H.liggghts_cmd(a.plugin)
+        cases = [(lab, liggghts_deck(dict(LIGGGHTS_GOOD, **ov)), bad, code) for lab, ov, bad, code in LIGGGHTS_CASES]
+        control = liggghts_deck(LIGGGHTS_GOOD)
+        cmd = [exe, "-in", "in.deck", "-log", "none"]
+    failures = 0
+    for k, (label, deck, bad, code) in enumerate([("control (good input)", control, None, None)] + cases):
+        d = os.path.join(workdir, "case%02d" % k)
+        os.makedirs(d, exist_ok=True)
+        open(os.path.join(d, "in.deck"), "w").write(deck)
+        rc, out = run(cmd, d, env)
+        errors = [l for l in out.splitlines() if "ERROR" in l]
+        if bad is None:  # the control must run to the end, with finite energies
+            ok = rc == 0 and not errors and "Loop time" in out and not re.search(r"\bnan\b", out, re.I)
+            why = "ran to the end" if ok else "rc=%d, errors: %s" % (rc, errors[:1] or out[-500:])
+        else:
+            want = text(code) if code is not None else None
+            hit = [l for l in errors if bad in l and (want is None or want in l)]
+            ok = rc != 0 and bool(hit) and "Loop time" not in out
+            why = hit[0].strip() if hit else "rc=%d, errors: %s" % (rc, errors[:2] or out[-500:])
+        print("%-4s %-32s %s" % ("ok" if ok else "FAIL", label, why))
+        failures += not ok
+    print("%s: %d of %d cases failed" % (a.sim, failures, len(cases) + 1))
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
