@@ -1662,7 +1662,7 @@ int32_t dc_energy_partition(double p,
  *         or its state underflowed (extreme inputs: a force beyond 1.8e308 N; the overlap end
  *         within ~1e-6 of critical damping for p > 1, where e^(-zeta u) underflows mid-contact
  *         and tau is ~1e193 time scales), found after sampling; the first n doubles of each
- *         buffer then hold no valid data. DC_OK guarantees every sample finite.
+ *         buffer are then set to NaN (no partial result). DC_OK guarantees every sample finite.
  *
  * # Safety
  * Each non-NULL buffer must be valid for writes of buf_len doubles and not overlap the others.
