@@ -10,22 +10,6 @@ module demcontact_c
   implicit none
   private :: ieee_value, ieee_quiet_nan
 
-  integer(c_int32_t), parameter :: HISTORY_MAX = 10
-  integer(c_int32_t), parameter :: TANGENTIAL_NONE = 0
-  integer(c_int32_t), parameter :: TANGENTIAL_LINEAR = 1
-  integer(c_int32_t), parameter :: TANGENTIAL_MINDLIN = 2
-  integer(c_int32_t), parameter :: ROLLING_NONE = 0
-  integer(c_int32_t), parameter :: ROLLING_CONSTANT = 1
-  integer(c_int32_t), parameter :: ROLLING_EPSD = 2
-  integer(c_int32_t), parameter :: TWISTING_NONE = 0
-  integer(c_int32_t), parameter :: TWISTING_SDS = 1
-  integer(c_int32_t), parameter :: HERTZ = 1
-  integer(c_int32_t), parameter :: POWERLAW = 2
-  integer(c_int32_t), parameter :: LINEAR = 3
-  integer(c_int32_t), parameter :: VISCOELASTIC = 4
-  integer(c_int32_t), parameter :: DMT = 5
-  integer(c_int32_t), parameter :: NONE = 0
-  integer(c_int32_t), parameter :: RESTITUTION = 1
   integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HOOKE = 1
   integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HERTZ = 2
   integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_COEFF_RESTITUTION = 3

@@ -4,7 +4,9 @@
 use crate::force::PairModel;
 
 /// Sub-model selectors (the C constants `DC_TANGENTIAL_*`, `DC_ROLLING_*`, `DC_TWISTING_*`
-/// equal these).
+/// equal these). Rust-side names: hidden from cbindgen so the C header keeps only `DC_` names.
+///
+/// cbindgen:ignore
 pub mod select {
     /// No tangential force.
     pub const TANGENTIAL_NONE: i32 = 0;
@@ -25,7 +27,9 @@ pub mod select {
 }
 
 /// Doubles per contact of the largest model: normal of the last step (3), tangential spring (3),
-/// rolling spring torque (3), twisting spring torque (1).
+/// rolling spring torque (3), twisting spring torque (1). (C: `DC_CONTACT_HISTORY_MAX`.)
+///
+/// cbindgen:ignore
 pub const HISTORY_MAX: usize = 10;
 
 /// Where each sub-model keeps its state in the caller's history array (offsets in doubles).

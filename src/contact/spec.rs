@@ -9,6 +9,8 @@ use crate::force::{PairModel, dmt, hertz, powerlaw, viscoelastic};
 use crate::{EndCriterion, Error};
 
 /// Normal-law selectors (the C constants `DC_NORMAL_*` equal these).
+///
+/// cbindgen:ignore
 pub mod normal {
     /// Hertz from E, ν of both bodies: k = (4/3) E* √R* per contact.
     pub const HERTZ: i32 = 1;
@@ -23,6 +25,8 @@ pub mod normal {
 }
 
 /// Normal-damping selectors (`DC_DAMPING_*`).
+///
+/// cbindgen:ignore
 pub mod damping {
     /// Undamped (e_n = 1).
     pub const NONE: i32 = 0;
