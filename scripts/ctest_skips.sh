@@ -6,7 +6,7 @@ set -euo pipefail
 build=$1
 log=$2
 # ctest's summary: "The following tests did not run:" then "  12 - name (Skipped)".
-sed -n '/The following tests did not run:/,/^$/p' "$log" | sed -n 's/^ *[0-9]* - \(.*\) (Skipped)$/\1/p' |
+sed -n '/The following tests did not run:/,/^$/p' "$log" | sed -n 's/^[[:space:]]*[0-9]* - \(.*\) (Skipped)$/\1/p' |
   while read -r name; do
     reason=$(ctest --test-dir "$build" -R "^${name}\$" -V 2>/dev/null |
       grep -m1 -o "SKIP[A-Z]*:.*" || true)
