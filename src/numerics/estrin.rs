@@ -14,14 +14,13 @@ pub(crate) fn estrin<const N: usize>(x: f64, c: &[f64; N]) -> f64 {
         let half = len.div_ceil(2);
         for i in 0..half {
             let lo = buf.get(2 * i).copied().unwrap_or(0.0);
-            // An odd last coefficient has no partner: carried up as is (N is a constant, so the
-            // unrolled code has no branch and no multiplication by zero).
-            let v = match buf.get(2 * i + 1) {
-                Some(&hi) if 2 * i + 1 < len => lo + hi * xp,
-                _ => lo,
-            };
+            let hi = buf
+                .get(2 * i + 1)
+                .copied()
+                .filter(|_| 2 * i + 1 < len)
+                .unwrap_or(0.0);
             if let Some(b) = buf.get_mut(i) {
-                *b = v;
+                *b = lo + hi * xp;
             }
         }
         len = half;

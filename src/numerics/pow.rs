@@ -16,7 +16,7 @@
 //! * Outside x ∈ [2^−1000, 2^1000] (zero, subnormal, huge, non-finite) the caller uses libm
 //!   ([`in_kernel_range`]); inside, |q ln x| ≤ 694 stays in exp's kernel range for q ≤ 1.
 
-use super::reduce::{ATANH_TAIL, LN2_HI, LN2_LO, exp_reduced, exp2i, ln_reduced, split};
+use super::reduce::{LN2_HI, LN2_LO, atanh_tail12, exp_reduced, exp2i, ln_reduced, split};
 
 /// Range of x handled by the kernels.
 const X_MIN: f64 = 9.332_636_185_032_189e-302; // 2^−1000
@@ -27,7 +27,7 @@ const X_MAX: f64 = 1.071_508_607_186_267_3e301; // 2^1000
 #[inline(always)]
 fn ln_kernel(x: f64) -> f64 {
     let (e, m) = split(x);
-    e * LN2_HI + (e * LN2_LO + ln_reduced(m, &ATANH_TAIL))
+    e * LN2_HI + (e * LN2_LO + ln_reduced(m, atanh_tail12))
 }
 
 /// Largest |y| for [`exp_kernel`].

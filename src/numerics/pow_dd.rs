@@ -24,7 +24,7 @@
 //! double range of x (subnormal x included) for q = 1e−9…2 (p ≤ 5), ≤ 1 + q ulp for larger q
 //! (the rounding of q·ln m); subnormal results within one subnormal ulp. Range: every x ≥ 0 (0 and +∞ selected exactly) and finite q > 0.
 
-use super::reduce::{ATANH_TAIL10, exp_reduced, exp2i, ln_reduced, split};
+use super::reduce::{atanh_tail10, exp_reduced, exp2i, ln_reduced, split};
 
 /// 1.5·2^52: adding it rounds to an integer.
 const SHIFTER: f64 = super::reduce::SHIFTER;
@@ -52,7 +52,7 @@ pub(crate) fn pow_dd(x: f64, q: f64) -> f64 {
     // n = round(P) (|P| < 2^51); P − n is exact, so x^q = 2^n · e^t with |t| ≲ ln2/2 + q·0.35.
     let n = (big_p + SHIFTER) - SHIFTER;
     let frac = (big_p - n) + small_q;
-    let t = frac * core::f64::consts::LN_2 + q * ln_reduced(m, &ATANH_TAIL10);
+    let t = frac * core::f64::consts::LN_2 + q * ln_reduced(m, atanh_tail10);
     // e^t = 2^k · p (k·LN2_HI exact, the reduction's difference exact by Sterbenz).
     let (kf, p) = exp_reduced(t);
     // 2^(n + k) as two factors, clamped where the result is 0 or ∞ anyway (p < 2).

@@ -25,24 +25,54 @@ pub(crate) const SHIFTER: f64 = 6_755_399_441_055_744.0;
 /// 2^52, for the integer-to-float trick in [`split`].
 const TWO52: f64 = 4_503_599_627_370_496.0;
 
-/// 1/k!, k = 2..=13: the exp series after 1 + r.
-const EXP_TAIL: [f64; 12] = [
-    1.0 / 2.0,
-    1.0 / 6.0,
-    1.0 / 24.0,
-    1.0 / 120.0,
-    1.0 / 720.0,
-    1.0 / 5040.0,
-    1.0 / 40320.0,
-    1.0 / 362_880.0,
-    1.0 / 3_628_800.0,
-    1.0 / 39_916_800.0,
-    1.0 / 479_001_600.0,
-    1.0 / 6_227_020_800.0,
-];
+/// Σ_{k<12} x^k/(k+2)!: the exp series after 1 + r (remainder r^14/14! < 5e−18), by Estrin's
+/// scheme written out: the same expression tree as [`estrin`] over 1/2!, …, 1/13! (so the
+/// trajectory kernel keeps its bits), and straight-line code, which the batch loops need (LLVM
+/// vectorises a loop only once every inner loop is gone; a generic polynomial loop is not always
+/// unrolled first). The C header has the same tree.
+#[inline(always)]
+fn exp_tail(x: f64) -> f64 {
+    let x2 = x * x;
+    let x4 = x2 * x2;
+    let x8 = x4 * x4;
+    let b0 = 1.0 / 2.0 + (1.0 / 6.0) * x;
+    let b1 = 1.0 / 24.0 + (1.0 / 120.0) * x;
+    let b2 = 1.0 / 720.0 + (1.0 / 5040.0) * x;
+    let b3 = 1.0 / 40320.0 + (1.0 / 362_880.0) * x;
+    let b4 = 1.0 / 3_628_800.0 + (1.0 / 39_916_800.0) * x;
+    let b5 = 1.0 / 479_001_600.0 + (1.0 / 6_227_020_800.0) * x;
+    let c0 = b0 + b1 * x2;
+    let c1 = b2 + b3 * x2;
+    let c2 = b4 + b5 * x2;
+    (c0 + c1 * x4) + c2 * x8
+}
+
+/// Σ_{k<10} x^k/(2k+3): the atanh series after its leading term for the force kernels
+/// (remainder z^11/23·2s < 2e−19), Estrin written out as [`exp_tail`] (= [`estrin`] over the
+/// first ten of [`ATANH_TAIL`]).
+#[inline(always)]
+pub(crate) fn atanh_tail10(x: f64) -> f64 {
+    let x2 = x * x;
+    let x4 = x2 * x2;
+    let x8 = x4 * x4;
+    let b0 = 1.0 / 3.0 + (1.0 / 5.0) * x;
+    let b1 = 1.0 / 7.0 + (1.0 / 9.0) * x;
+    let b2 = 1.0 / 11.0 + (1.0 / 13.0) * x;
+    let b3 = 1.0 / 15.0 + (1.0 / 17.0) * x;
+    let b4 = 1.0 / 19.0 + (1.0 / 21.0) * x;
+    let c0 = b0 + b1 * x2;
+    let c1 = b2 + b3 * x2;
+    (c0 + c1 * x4) + b4 * x8
+}
+
+/// Σ_{k<12} x^k/(2k+3) for the trajectory kernel ([`super::pow`]), by [`estrin`].
+#[inline(always)]
+pub(crate) fn atanh_tail12(x: f64) -> f64 {
+    estrin(x, &ATANH_TAIL)
+}
 
 /// 1/(2k+1), k = 1..=12: the atanh series after its leading term (the first N are used).
-pub(crate) const ATANH_TAIL: [f64; 12] = [
+const ATANH_TAIL: [f64; 12] = [
     1.0 / 3.0,
     1.0 / 5.0,
     1.0 / 7.0,
@@ -56,12 +86,6 @@ pub(crate) const ATANH_TAIL: [f64; 12] = [
     1.0 / 23.0,
     1.0 / 25.0,
 ];
-
-/// The first ten of [`ATANH_TAIL`]: the force kernels' ln m (remainder z^11/23·2s < 2e−19).
-pub(crate) const ATANH_TAIL10: [f64; 10] = match ATANH_TAIL.first_chunk::<10>() {
-    Some(a) => *a,
-    None => [0.0; 10],
-};
 
 /// x = 2^e·m for a normal x > 0: (e as a float, m ∈ [√½, √2)). Branch-free (selects).
 #[inline(always)]
@@ -80,17 +104,17 @@ pub(crate) fn split(x: f64) -> (f64, f64) {
     (e, m)
 }
 
-/// ln m for m ∈ [√½, √2) with the atanh series' first N tail terms (N = 10: remainder
-/// z^11/23·2s < 2e−19; N = 12 for the trajectory kernel's historical bits).
+/// ln m for m ∈ [√½, √2) with the atanh series' tail `tail` ([`atanh_tail10`] or
+/// [`atanh_tail12`]).
 #[inline(always)]
-pub(crate) fn ln_reduced<const N: usize>(m: f64, tail: &[f64; N]) -> f64 {
+pub(crate) fn ln_reduced(m: f64, tail: impl Fn(f64) -> f64) -> f64 {
     // m − 1 is exact (Sterbenz), and s carries one rounding.
     let f = m - 1.0;
     let s = f / (2.0 + f);
     // ln m = 2s + 2s·z·T(z): the small correction added last, to the leading 2s.
     let z = s * s;
     let two_s = 2.0 * s;
-    two_s + two_s * (z * estrin(z, tail))
+    two_s + two_s * (z * tail(z))
 }
 
 /// e^y = 2^k · p for |y| ≤ 1000: (k as an integer-valued float, p ∈ (1/√2, √2)).
@@ -99,7 +123,7 @@ pub(crate) fn exp_reduced(y: f64) -> (f64, f64) {
     let kf = (y * LOG2_E + SHIFTER) - SHIFTER;
     let r = (y - kf * LN2_HI) - kf * LN2_LO;
     // e^r = 1 + (r + r²·T(r)): the exact 1 added last.
-    (kf, 1.0 + (r + r * r * estrin(r, &EXP_TAIL)))
+    (kf, 1.0 + (r + r * r * exp_tail(r)))
 }
 
 /// 2^k for an integer-valued k in [−1022, 1023], from its exponent bits (k + 1023 sits in the
@@ -138,14 +162,29 @@ mod tests {
         ] {
             assert_eq!(split(x), (e, m), "{x}");
         }
-        assert_eq!(ln_reduced(1.0, &ATANH_TAIL), 0.0);
+        assert_eq!(ln_reduced(1.0, atanh_tail12), 0.0);
+        // The written-out series are the generic Estrin evaluation, bit for bit.
+        for i in 0..=1000 {
+            let x = -0.35 + 0.7 * i as f64 / 1000.0;
+            let coef: [f64; 12] =
+                core::array::from_fn(|k| 1.0 / (2..=k + 2).map(|j| j as f64).product::<f64>());
+            assert_eq!(exp_tail(x).to_bits(), estrin(x, &coef).to_bits(), "{x}");
+            let z = 0.03 * i as f64 / 1000.0;
+            let first10: [f64; 10] =
+                core::array::from_fn(|k| ATANH_TAIL.get(k).copied().unwrap_or(0.0));
+            assert_eq!(
+                atanh_tail10(z).to_bits(),
+                estrin(z, &first10).to_bits(),
+                "{z}"
+            );
+        }
         // Against libm's ln and exp (independent): within 1.5e−16 over the reduced ranges.
         for i in 0..=1000 {
             let m = core::f64::consts::FRAC_1_SQRT_2
                 + (core::f64::consts::SQRT_2 - core::f64::consts::FRAC_1_SQRT_2) * i as f64
                     / 1001.0;
             assert!(
-                (ln_reduced(m, &ATANH_TAIL10) - m.ln()).abs() < 1.2e-16,
+                (ln_reduced(m, atanh_tail10) - m.ln()).abs() < 1.2e-16,
                 "{m}"
             );
             let y = -700.0 + 1400.0 * i as f64 / 1000.0;
