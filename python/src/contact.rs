@@ -487,7 +487,10 @@ fn vec3(function: &str, name: &str, obj: &Bound<'_, PyAny>) -> PyResult<[f64; 3]
         }
         other => Err(value_error(
             function,
-            &format!("{name} must be a 3-vector, got shape {:?}", other.shape()),
+            &format!(
+                "{name} must be a 3-vector, got shape {}",
+                shape_str(other.shape())
+            ),
         )),
     }
 }
@@ -523,7 +526,11 @@ fn writable<'py>(
     {
         return Err(value_error(
             function,
-            &format!("{name} has shape {:?}, expected {want:?}", untyped.shape()),
+            &format!(
+                "{name} has shape {}, expected {}",
+                shape_str(untyped.shape()),
+                shape_str(want)
+            ),
         ));
     }
     if !untyped.is_c_contiguous() {
@@ -774,6 +781,20 @@ impl Run<'_> {
     }
 }
 
+/// A shape as Python prints it: (6,), (6, 3).
+fn shape_str(s: &[usize]) -> String {
+    match s {
+        [n] => format!("({n},)"),
+        _ => format!(
+            "({})",
+            s.iter()
+                .map(usize::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    }
+}
+
 fn run<'a>(
     function: &str,
     name: &str,
@@ -795,8 +816,9 @@ fn run<'a>(
         None => Err(value_error(
             function,
             &format!(
-                "{name} has shape {:?}, expected {shape:?} (or one that broadcasts to it)",
-                view.shape()
+                "{name} has shape {}, expected {} (or one that broadcasts to it)",
+                shape_str(view.shape()),
+                shape_str(shape)
             ),
         )),
     }
@@ -921,7 +943,10 @@ pub fn contact_force_batch<'py>(
         s => {
             return Err(value_error(
                 F,
-                &format!("overlap must be a 1-D array of the n contacts, got shape {s:?}"),
+                &format!(
+                    "overlap must be a 1-D array of the n contacts, got shape {}",
+                    shape_str(s)
+                ),
             ));
         }
     };
@@ -981,7 +1006,8 @@ pub fn contact_force_batch<'py>(
                     return Err(value_error(
                         F,
                         &format!(
-                            "history has shape {s:?}, expected ({n}, L) with L >= {} (one row per contact)",
+                            "history has shape {}, expected ({n}, L) with L >= {} (one row per contact)",
+                            shape_str(s),
                             m.history_len
                         ),
                     ));
