@@ -19,7 +19,8 @@ use numpy::{
     PyUntypedArray, PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyFloat, PyInt, PyList, PyTuple, PyType};
 
 use crate::args::{Arg, arg, code, real};
 use crate::error::{status_error, type_error, value_error};
@@ -477,6 +478,35 @@ pub fn contact_history_len(py: Python<'_>, model: &Bound<'_, ContactModel>) -> P
 }
 
 fn vec3(function: &str, name: &str, obj: &Bound<'_, PyAny>) -> PyResult<[f64; 3]> {
+    // Fast path for a list or tuple of three Python floats/ints (numpy.asarray costs ~1 us).
+    let items = if let Ok(t) = obj.cast::<PyTuple>() {
+        (t.len() == 3).then(|| [t.get_item(0), t.get_item(1), t.get_item(2)])
+    } else if let Ok(l) = obj.cast::<PyList>() {
+        (l.len() == 3).then(|| [l.get_item(0), l.get_item(1), l.get_item(2)])
+    } else if let Ok(a) = obj.cast::<PyUntypedArray>()
+        && a.shape() == [3]
+        && a.dtype().is_equiv_to(&numpy::dtype::<f64>(obj.py()))
+    {
+        // A float64 3-vector: its items are numpy float64 scalars (float subclasses), read
+        // through the sequence protocol (cheaper than a borrow-tracked view).
+        let mut out = [0.0; 3];
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = obj.get_item(i)?.extract::<f64>()?;
+        }
+        return Ok(out);
+    } else {
+        None
+    };
+    if let Some([Ok(a), Ok(b), Ok(c)]) = items {
+        let plain = |x: &Bound<'_, PyAny>| {
+            (x.is_exact_instance_of::<PyFloat>() || x.is_exact_instance_of::<PyInt>())
+                .then(|| x.extract::<f64>().ok())
+                .flatten()
+        };
+        if let (Some(a), Some(b), Some(c)) = (plain(&a), plain(&b), plain(&c)) {
+            return Ok([a, b, c]);
+        }
+    }
     match arg(function, name, obj)? {
         Arg::Array(a) if a.shape() == [3] => {
             let mut out = [0.0; 3];
@@ -581,9 +611,13 @@ fn history_arg<'py>(
     }
 }
 
+/// The named-tuple classes of demcontact._types, looked up once.
+static CONTACT_RESULT: PyOnceLock<Py<PyType>> = PyOnceLock::new();
+static CONTACT_BATCH_RESULT: PyOnceLock<Py<PyType>> = PyOnceLock::new();
+
 fn result_tuple<'py>(py: Python<'py>, r: &dc_contact_result) -> PyResult<Bound<'py, PyAny>> {
-    py.import("demcontact._types")?
-        .getattr("ContactResult")?
+    CONTACT_RESULT
+        .import(py, "demcontact._types", "ContactResult")?
         .call1((
             PyArray1::from_slice(py, &r.force),
             PyArray1::from_slice(py, &r.torque1),
@@ -1076,9 +1110,7 @@ pub fn contact_force_batch<'py>(
     for ((o, name), shape) in outs.iter().zip(names).zip(shapes) {
         rws.push(writable(F, name, o, Some(shape))?);
     }
-    let result = py
-        .import("demcontact._types")?
-        .getattr("ContactBatchResult")?;
+    let result = CONTACT_BATCH_RESULT.import(py, "demcontact._types", "ContactBatchResult")?;
     if n == 0 {
         drop(rws);
         return result.call1((

@@ -372,6 +372,16 @@ def test_contact_force_vector_arguments():
     args[2] = np.array([True, False, True])
     with pytest.raises(TypeError, match="v1"):
         dc.contact_force(m, *args, DT, h)
+    args[2] = [True, False, True]
+    with pytest.raises(TypeError, match="v1"):
+        dc.contact_force(m, *args, DT, h)
+    # Every spelling of the same 3-vector gives the same bits: list, tuple, ints, float64 array,
+    # strided float64 view, float32 array, numpy scalars.
+    strided = np.array([[1.0, 9.0], [0.0, 9.0], [-1.0, 9.0]])[:, 0]
+    for spelling in ([1.0, 0.0, -1.0], (1, 0, -1), strided, np.array([1, 0, -1], np.float32), [np.float64(1), 0.0, np.int64(-1)]):
+        args[2] = spelling
+        r = dc.contact_force(m, *args, DT, np.zeros(m.history_len))
+        assert bits(r.force) == bits(r_f.force) and bits(r.torque1) == bits(r_f.torque1), spelling
 
 
 # ---- batch -------------------------------------------------------------------------------------
