@@ -1171,7 +1171,7 @@ pub fn contact_force_batch<'py>(
         if s == c::status::DC_OK {
             Ok(())
         } else if per_contact(s) {
-            Err((s, job.locate()))
+            Err((s, job.locate().map(Box::new)))
         } else {
             Err((s, None))
         }
@@ -1191,14 +1191,17 @@ pub fn contact_force_batch<'py>(
             F,
             &format!("(n={n}, history stride {stride}, dt={dt:?}; outputs and history untouched)"),
         )),
-        Err((s, Some((i, _, st)))) => Err(status_error(
-            py,
-            s,
-            F,
-            &format!(
-                "at contact {i} with {}, dt={dt:?} (outputs and history untouched)",
-                describe_state(&st)
-            ),
-        )),
+        Err((s, Some(located))) => {
+            let (i, _, st) = *located;
+            Err(status_error(
+                py,
+                s,
+                F,
+                &format!(
+                    "at contact {i} with {}, dt={dt:?} (outputs and history untouched)",
+                    describe_state(&st)
+                ),
+            ))
+        }
     }
 }
