@@ -448,8 +448,18 @@ def test_batch_zero_copy_and_history_in_place():
     hid = id(h)
     dc.contact_force_batch(m, *a, DT, h)
     assert id(h) == hid and np.any(h != 0)  # updated in place
-    # The caller's memory is read in place: the same array given as input and output is seen
-    # as the same memory (a copied input would not be).
+    # The caller's memory is handed to the library itself: two numpy views of one buffer with
+    # different bases (invisible to rust-numpy's borrow tracking) as input v1 and output force
+    # are refused by dc_contact_force_batch's own overlap check (a copied input would pass).
+    buf = bytearray(8 * n * 3)
+    v1 = np.frombuffer(memoryview(buf), dtype=np.float64).reshape(n, 3)
+    force = np.frombuffer(memoryview(buf), dtype=np.float64).reshape(n, 3)
+    v1[:] = a[2]
+    alias = (np.empty(n), force, np.empty((n, 3)), np.empty((n, 3)))
+    with pytest.raises(dc.BufferLayoutError, match="outputs and history untouched"):
+        dc.contact_force_batch(m, a[0], a[1], v1, *a[3:], DT, h.copy(), out=alias)
+    dc.contact_force_batch(m, a[0], a[1], v1.copy(), *a[3:], DT, h.copy(), out=alias)  # a copy passes
+    # The same array given as input and output is also refused by the borrow tracking.
     out = (np.empty(n), np.empty((n, 3)), np.empty((n, 3)), np.empty((n, 3)))
     with pytest.raises(dc.BufferLayoutError):
         dc.contact_force_batch(m, *a[:2], out[1], *a[3:], DT, h, out=out)
