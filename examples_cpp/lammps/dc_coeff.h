@@ -40,7 +40,7 @@
 #include "lammps.h"
 #include "utils.h"
 
-#include "dc_include.h"
+#include <demcontact.h>
 #include "tsuji_force.h"
 
 #include <cmath>
