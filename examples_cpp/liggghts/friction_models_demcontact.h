@@ -17,8 +17,9 @@
  * classes, called one after the other for each contact. When both are demcontact's, the rolling
  * class (whose connectToProperties runs last) hands the tangential class one combined model per
  * type pair (demcontact's normal law + tangential + rolling sub-models): the tangential class
- * evaluates it once (dc_contact_force) and adds the tangential force and the total torques; the
- * rolling class adds nothing. Alone (rolling off or LIGGGHTS' cdt), the tangential class evaluates
+ * evaluates it once (dc_contact_force_inline: demcontact_inline.h's header-only copy of the
+ * library's dc_contact_force, bit-identical, compiled into LIGGGHTS' pair loop) and adds the
+ * tangential force and the total torques; the rolling class adds nothing. Alone (rolling off or LIGGGHTS' cdt), the tangential class evaluates
  * a model with its own sub-model only. Each class still validates its own parameters on its own
  * (so a rejected value is named).
  *
@@ -219,7 +220,7 @@ public:
             h = copy;
         }
         dc_contact_result r;
-        const int32_t st = dc_contact_force(&models[t1 * (ntypes + 1) + t2], &s, lmp->update->dt, h,
+        const int32_t st = dc_contact_force_inline(&models[t1 * (ntypes + 1) + t2], &s, lmp->update->dt, h,
                                             static_cast<size_t>(eval_nh), &r);
         if (st != DC_OK) {
             char msg[200];
