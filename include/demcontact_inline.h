@@ -690,7 +690,7 @@ DC_INLINE_FN int32_t dc_pair_viscoelastic_inline(double E1, double nu1, double E
  * dc_contact_model_init_inline and dc_contact_force_inline: the library's dc_contact_model_init
  * and dc_contact_force (src/contact/{spec,kinematics,frame,tangential*,rolling*,twisting*,
  * evaluate}.rs, src/ffi/contact.rs), the same operations in the same order, bit for bit (the
- * tilt/twist frame carry of the history springs, the Coulomb truncation, the rolling and
+ * spin/tilt frame carry of the history springs, the Coulomb truncation, the rolling and
  * twisting springs), the same statuses in the same order, outputs written only on DC_OK. */
 
 #define DCI_CONTACT_MAGIC UINT32_C(0x44434d31) /* dc_contact_model.magic (src/ffi/contact.rs) */
@@ -739,38 +739,54 @@ DC_INLINE_FN double dci_harmonic(double a, double b) {
     return b == (double)INFINITY ? a : a * (b / (a + b));
 }
 
-/* The frame motion of one step (src/contact/frame.rs): tilt n_old -> n (Rodrigues about
- * k = n_old x n), then the Cayley twist about n by the mean spin. */
+/* The frame motion of one step (src/contact/frame.rs): the rotation by the mean spin
+ * q = (w1 + w2)/2 dt (Rodrigues, s = sin|q|/|q|, c = (1 - cos|q|)/|q|^2, Taylor series for
+ * |q|^2 < 1e-3, else libm sin as the library's f64::sin), then the minimal tilt from the spun old
+ * normal to n, then the projection on the plane normal to n. */
 typedef struct dci_frame {
-    double c, t;
-    dci_v3 k, n;
-    int tilt;
+    dci_v3 q, tk, n;
+    double s, c, tc;
+    int carry;
 } dci_frame;
 
-DC_INLINE_FN dci_frame dci_frame_new(dci_v3 n_old, dci_v3 n, double theta) {
+/* v + s q x v + c q x (q x v) */
+DC_INLINE_FN dci_v3 dci_spin(dci_v3 q, double s, double c, dci_v3 v) {
+    const dci_v3 qv = dci_cross(q, v);
+    const dci_v3 qqv = dci_cross(q, qv);
+    return dci_add(v, dci_add(dci_scale(s, qv), dci_scale(c, qqv)));
+}
+DC_INLINE_FN void dci_rodrigues(double q2, double *s, double *c) {
+    DCI_NO_CONTRACT
+    if (q2 < 1e-3) {
+        *s = 1.0 - DCI_M(q2 / 6.0, 1.0 - DCI_M(q2 / 20.0, 1.0 - q2 / 42.0));
+        *c = 0.5 * (1.0 - DCI_M(q2 / 12.0, 1.0 - DCI_M(q2 / 30.0, 1.0 - q2 / 56.0)));
+    } else {
+        const double th = sqrt(q2);
+        const double sn = sin(th);
+        const double h = sin(0.5 * th); /* 1 - cos = 2 sin^2(th/2), no cancellation */
+        *s = sn / th;
+        *c = 2.0 * h * h / q2;
+    }
+}
+DC_INLINE_FN dci_frame dci_frame_new(dci_v3 n_old, dci_v3 n, dci_v3 q) {
     dci_frame f;
-    f.c = dci_dot(n_old, n);
-    f.k = dci_cross(n_old, n);
-    f.tilt = f.c > -0.5 && dci_norm2(n_old) > 0.25;
-    f.t = 0.5 * theta;
+    dci_rodrigues(dci_norm2(q), &f.s, &f.c);
+    const dci_v3 spun = dci_spin(q, f.s, f.c, n_old);
+    f.q = q;
+    f.tc = dci_dot(spun, n);
+    f.tk = dci_cross(spun, n);
+    f.carry = f.tc > -0.5 && dci_norm2(n_old) > 0.25;
     f.n = n;
     return f;
 }
+/* Rodrigues about k = a x b: c v + k x v + (k.v)/(1 + c) k */
 DC_INLINE_FN dci_v3 dci_tilt(double c, dci_v3 k, dci_v3 v) {
     return dci_add(dci_add(dci_scale(c, v), dci_cross(k, v)),
                    dci_scale(dci_dot(k, v) / (1.0 + c), k));
 }
-DC_INLINE_FN dci_v3 dci_twist(dci_v3 n, double t, dci_v3 v) {
-    DCI_NO_CONTRACT
-    if (t == 0.0) return v;
-    const dci_v3 nv = dci_cross(n, v);
-    const dci_v3 nnv = dci_cross(n, nv);
-    return dci_add(v, dci_scale(2.0 / (1.0 + DCI_M(t, t)),
-                                dci_add(dci_scale(t, nv), dci_scale(t * t, nnv))));
-}
 DC_INLINE_FN dci_v3 dci_carry(const dci_frame *f, dci_v3 v) {
-    const dci_v3 w = f->tilt ? dci_tilt(f->c, f->k, v) : v;
-    return dci_tangential(dci_twist(f->n, f->t, w), f->n);
+    const dci_v3 w = f->carry ? dci_tilt(f->tc, f->tk, dci_spin(f->q, f->s, f->c, v)) : v;
+    return dci_tangential(w, f->n);
 }
 
 /* Kinematics of one contact (src/contact/kinematics.rs). */
@@ -786,7 +802,7 @@ DC_INLINE_FN dci_kin dci_kin_of(const dc_contact_state *s, dci_v3 n_old, double 
     dci_kin k;
     const dci_v3 n = dci_load3(s->n), v1 = dci_load3(s->v1), v2 = dci_load3(s->v2);
     const dci_v3 w1 = dci_load3(s->w1), w2 = dci_load3(s->w2);
-    *frame = dci_frame_new(n_old, n, 0.5 * dci_dot(dci_add(w1, w2), n) * dt);
+    *frame = dci_frame_new(n_old, n, dci_scale(0.5 * dt, dci_add(w1, w2)));
     const double d = s->overlap;
     k.wall = s->r2 == (double)INFINITY;
     k.a1 = s->r1 - DCI_M(0.5, d);

@@ -11,7 +11,8 @@
  *  - trajectories: for each valid model a contact evolved over many steps, the library and the
  *    header each carrying its own history: the normal turns (small steps, and now and then by
  *    more than 120 degrees), the overlap goes through contact and separation, velocities and spins
- *    random-walk over decades (sticking and sliding), sphere-sphere and sphere-wall. Every step:
+ *    random-walk over decades (sticking and sliding; the frame's spin rotation on both of its
+ *    branches, series and sin), sphere-sphere and sphere-wall. Every step:
  *    same status, same result bytes, same history bits. Argument 1: total steps (default 4e6);
  *    the test also requires that sliding, sticking, rolling-limit and separation steps occurred;
  *  - bad input: NULL pointers, short/misaligned history, dt NaN/0/<0, NaN/inf/zero/non-unit
@@ -169,6 +170,10 @@ static void trajectory(const dc_contact_model *m, long steps, long *seen) {
             seen[2] += s.overlap > 0.0 && !rl.sliding && m->tangential != DC_TANGENTIAL_NONE;
             seen[3] += rl.rolling_sliding;
             seen[4] += !(s.overlap > 0.0);
+            /* the frame's spin q = (w1 + w2)/2 dt: series branch (|q|^2 < 1e-3) and sin branch */
+            double q2 = 0.0;
+            for (int j = 0; j < 3; j++) q2 += 0.25 * dt * dt * (s.w1[j] + s.w2[j]) * (s.w1[j] + s.w2[j]);
+            if (s.overlap > 0.0 && m->history_len > 0) seen[q2 < 1e-3 ? 6 : 7]++;
         } else {
             seen[5]++;
         }
@@ -305,7 +310,7 @@ static void dmt_forces(long n) {
 int main(int argc, char **argv) {
     const long total = argc > 1 ? atol(argv[1]) : 4000000L;
     const long per = 1000;
-    long seen[6] = {0};
+    long seen[8] = {0};
     long specs_ok = 0, specs_bad = 0, models = 0;
 
     /* spec_init */
@@ -364,11 +369,13 @@ int main(int argc, char **argv) {
     }
     printf("test_inline_contact[%s]: %ld models built (%ld specs rejected with the same status), "
            "%ld trajectories x %ld steps: %ld ok steps (%ld sliding, %ld sticking, %ld at the "
-           "rolling/twisting limit, %ld separated), %ld error steps\n",
+           "rolling/twisting limit, %ld separated; frame spin by series %ld, by sin %ld), %ld error "
+           "steps\n",
            LANG, specs_ok, specs_bad, models, per, seen[0], seen[1], seen[2], seen[3], seen[4],
-           seen[5]);
+           seen[6], seen[7], seen[5]);
     /* the comparison must have exercised every regime */
-    if (!(seen[1] > 1000 && seen[2] > 1000 && seen[3] > 1000 && seen[4] > 1000 && specs_bad > 1000))
+    if (!(seen[1] > 1000 && seen[2] > 1000 && seen[3] > 1000 && seen[4] > 1000 && seen[6] > 1000 &&
+          seen[7] > 1000 && specs_bad > 1000))
         fail("coverage of regimes", 0);
     printf("test_inline_contact[%s]: %ld passed, %ld failed\n", LANG, n_pass, n_fail);
     return n_fail ? 1 : 0;
