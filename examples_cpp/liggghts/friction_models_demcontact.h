@@ -10,25 +10,36 @@
  * tangential demcontact = DC_TANGENTIAL_MINDLIN (k_t = 8 G* a from youngsModulus/poissonsRatio,
  * damping from e_t, Coulomb limit mu |Fn|); rolling_friction demcontact = DC_ROLLING_EPSD (k_r = 0:
  * Ai et al.'s rule, limit mu_r R* |Fn|; `rollingConstant on`: DC_ROLLING_CONSTANT, the constant torque
- * mu_r R* |Fn| against the relative rolling, as LIGGGHTS' cdt). Both need `model demcontact` with exponent 1.5: each
- * calls dc_contact_force with a model made of demcontact's normal law (the same as the normal
- * model's) and its own sub-model only, and adds only its own part: the tangential force and its
- * torques, or the rolling torques. (The normal force is recomputed by each call: the price of
- * LIGGGHTS' one-class-per-sub-model structure.)
+ * mu_r R* |Fn| against the relative rolling, as LIGGGHTS' cdt). Both need `model demcontact` with
+ * exponent 1.5.
+ *
+ * One library call per contact: LIGGGHTS keeps the tangential and the rolling model in separate
+ * classes, called one after the other for each contact. When both are demcontact's, the rolling
+ * class (whose connectToProperties runs last) hands the tangential class one combined model per
+ * type pair (demcontact's normal law + tangential + rolling sub-models): the tangential class
+ * evaluates it once (dc_contact_force_inline: demcontact_inline.h's header-only copy of the
+ * library's dc_contact_force, bit-identical, compiled into LIGGGHTS' pair loop) and adds the
+ * tangential force and the total torques; the rolling class adds nothing. Alone (rolling off or LIGGGHTS' cdt), the tangential class evaluates
+ * a model with its own sub-model only. Each class still validates its own parameters on its own
+ * (so a rejected value is named).
  *
  * History: the sub-model's dc_contact_history_len doubles in LIGGGHTS' contact history, registered
  * with newton flag "0" (never negated for the partner): every evaluation puts the atom of smaller
  * ID as body 1, so the copies LIGGGHTS keeps for the two partners are the same numbers. The
  * history advances only when LIGGGHTS says so (computeflag && shearupdate), and is zeroed when the
- * spheres separate (surfacesClose).
+ * spheres separate (surfacesClose). The combined model uses the tangential and the rolling block
+ * as one: they are registered one after the other (checked), and its history (the contact normal
+ * is shared, so shorter than the two blocks) must fit in them (checked).
  */
 #ifndef DEMCONTACT_LIGGGHTS_FRICTION_MODELS_H
 #define DEMCONTACT_LIGGGHTS_FRICTION_MODELS_H
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,7 +50,7 @@ namespace ContactModels {
 static const int DEMCONTACT_TANGENTIAL = 42;
 static const int DEMCONTACT_ROLLING = 42;
 
-/* The machinery both sub-models share. kind: DC_TANGENTIAL_MINDLIN or DC_ROLLING_EPSD. */
+/* The machinery both sub-models share. */
 class DemcontactSubModel {
 public:
     DemcontactSubModel(LAMMPS *lmp_, IContactHistorySetup *hsetup, ContactModelBase *c, bool rolling_)
@@ -65,6 +76,18 @@ public:
             const int off = hsetup->add_history_value(std::string(base) + std::to_string(k), "0");
             if (k == 0) offset = off;
         }
+        if (!rolling) tangentials()[owner] = this;
+    }
+    ~DemcontactSubModel()
+    {
+        if (!rolling && tangentials().count(owner) && tangentials()[owner] == this) tangentials().erase(owner);
+    }
+
+    // The tangential sub-model of each contact model (the rolling one of the same model finds it here).
+    static std::map<const void *, DemcontactSubModel *> &tangentials()
+    {
+        static std::map<const void *, DemcontactSubModel *> m;
+        return m;
     }
 
     /* Build one model per type pair (both orders) from the normal model's law and this
@@ -77,10 +100,14 @@ public:
         if (!normal)
             error->all(FLERR, rolling ? "rolling_friction demcontact needs model demcontact"
                                       : "tangential demcontact needs model demcontact");
-        models.assign((ntypes + 1) * (ntypes + 1), dc_contact_model());
+        const size_t np = (ntypes + 1) * (ntypes + 1);
+        specs.assign(np, dc_contact_spec());
+        models.assign(np, dc_contact_model());
+        eval_nh = nh;
+        passive = false;
         for (int i = 1; i <= ntypes; i++)
             for (int j = 1; j <= ntypes; j++) {
-                dc_contact_spec s;
+                dc_contact_spec &s = specs[i * (ntypes + 1) + j];
                 if (!normal->full_spec(i, j, s))
                     error->all(FLERR, "tangential/rolling_friction demcontact need model demcontact with exponent 1.5");
                 if (rolling) {
@@ -111,8 +138,46 @@ public:
             }
     }
 
+    /* Rolling sub-model only, after both build()s: hand the tangential sub-model of the same
+       contact model one combined model per type pair, so each contact costs one library call;
+       this sub-model then adds nothing itself. */
+    void combine_into(LAMMPS_NS::Error *error, DemcontactSubModel &t)
+    {
+        if (t.offset + t.nh != offset)
+            error->all(FLERR, "tangential/rolling_friction demcontact: history blocks not adjacent");
+        if (t.ntypes != ntypes || t.specs.size() != specs.size())
+            error->all(FLERR, "tangential/rolling_friction demcontact: type counts differ");
+        size_t len_max = 0;
+        for (int i = 1; i <= ntypes; i++)
+            for (int j = 1; j <= ntypes; j++) {
+                const int p = i * (ntypes + 1) + j;
+                dc_contact_spec s = t.specs[p];
+                s.rolling = specs[p].rolling;
+                s.mu_r = specs[p].mu_r;
+                s.k_r = specs[p].k_r;
+                s.eta_r = specs[p].eta_r;
+                dc_contact_model m;
+                size_t len = 0;
+                int32_t st = dc_contact_model_init(&s, &m);
+                if (st == DC_OK) st = dc_contact_history_len(&m, &len);
+                if (st != DC_OK || static_cast<int>(len) > t.nh + nh || len > MAX_NH) {
+                    char msg[300];
+                    std::snprintf(msg, sizeof msg,
+                                  "tangential + rolling_friction demcontact: combined model of types %d-%d: %s "
+                                  "(history %d, more than the %d registered)",
+                                  i, j, dc_status_str(st), static_cast<int>(len), t.nh + nh);
+                    error->all(FLERR, msg);
+                }
+                t.models[p] = m;
+                len_max = std::max(len_max, len);
+            }
+        t.eval_nh = static_cast<int>(len_max);
+        passive = true;
+    }
+
     void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
+        if (passive) return; // evaluated with the tangential sub-model's combined model
         const double inf = std::numeric_limits<double>::infinity();
         const int i = sidata.i, j = sidata.j;
         LAMMPS_NS::Atom *atom = lmp->atom;
@@ -124,13 +189,14 @@ public:
         s.overlap = sidata.deltan;
         const double *vi = sidata.v_i ? sidata.v_i : atom->v[i];
         const double *wi = sidata.omega_i ? sidata.omega_i : atom->omega[i];
-        double vj[3] = {0, 0, 0}, wj[3] = {0, 0, 0};
+        static const double zero[3] = {0.0, 0.0, 0.0};
+        const double *vj, *wj = zero;
         double rj = inf, mj = inf;
         if (sidata.is_wall) {
-            if (sidata.v_j) std::memcpy(vj, sidata.v_j, sizeof vj); // the wall's velocity
+            vj = sidata.v_j ? sidata.v_j : zero; // the wall's velocity
         } else {
-            std::memcpy(vj, sidata.v_j ? sidata.v_j : atom->v[j], sizeof vj);
-            std::memcpy(wj, sidata.omega_j ? sidata.omega_j : atom->omega[j], sizeof wj);
+            vj = sidata.v_j ? sidata.v_j : atom->v[j];
+            wj = sidata.omega_j ? sidata.omega_j : atom->omega[j];
             rj = sidata.radj;
             mj = sidata.mj;
         }
@@ -148,21 +214,22 @@ public:
         const int t1 = swap ? sidata.jtype : sidata.itype, t2 = swap ? sidata.itype : sidata.jtype;
 
         double *h = &sidata.contact_history[offset];
-        double copy[16];
+        double copy[MAX_NH];
         if (!(sidata.computeflag && sidata.shearupdate)) { // evaluate without advancing the history
-            std::memcpy(copy, h, sizeof(double) * nh);
+            for (int k = 0; k < eval_nh; k++) copy[k] = h[k];
             h = copy;
         }
         dc_contact_result r;
-        const int32_t st = dc_contact_force(&models[t1 * (ntypes + 1) + t2], &s, lmp->update->dt, h,
-                                            static_cast<size_t>(nh), &r);
+        const int32_t st = dc_contact_force_inline(&models[t1 * (ntypes + 1) + t2], &s, lmp->update->dt, h,
+                                            static_cast<size_t>(eval_nh), &r);
         if (st != DC_OK) {
             char msg[200];
             std::snprintf(msg, sizeof msg, "%s demcontact: atom %ld: %s", rolling ? "rolling_friction" : "tangential",
                           (long)atom->tag[i], dc_status_str(st));
             lmp->error->one(FLERR, msg);
         }
-        // this sub-model's part only: the tangential force and its torques, or the rolling torques
+        // the tangential force and the torques of the evaluated sub-models (tangential class: its
+        // torques, or with the combined model those of both; rolling class alone: rolling torques)
         const double *ti = swap ? r.torque2 : r.torque1, *tj = swap ? r.torque1 : r.torque2;
         const double scale = sidata.is_wall ? sidata.area_ratio : 1.0;
         for (int k = 0; k < 3; k++) {
@@ -181,10 +248,14 @@ public:
         std::memset(&scdata.contact_history[offset], 0, sizeof(double) * nh);
     }
 
+    static const size_t MAX_NH = 32;
     LAMMPS *lmp;
     const void *owner;
     bool rolling;
+    bool passive = false; // rolling: evaluated by the tangential sub-model (combined model)
     int nh = 0, offset = 0, ntypes = 0;
+    int eval_nh = 0; // history doubles of the evaluated model (nh, or tangential + rolling combined)
+    std::vector<dc_contact_spec> specs;
     std::vector<dc_contact_model> models;
 };
 
@@ -248,6 +319,11 @@ public:
         auto it = normals.find(sub.owner);
         sub.build(error, atom->ntypes, it == normals.end() ? NULL : it->second, coeffRollFrict,
                   "coefficientRollingFriction", 1.0, k_r, eta_r, constant);
+        // the tangential model of the same contact model connected before this one (LIGGGHTS'
+        // order: normal, cohesion, tangential, rolling): one combined evaluation per contact
+        const auto &tangentials = DemcontactSubModel::tangentials();
+        auto t = tangentials.find(sub.owner);
+        if (t != tangentials.end()) sub.combine_into(error, *t->second);
     }
     void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {

@@ -35,7 +35,7 @@
 #include "force.h"
 #include "update.h"
 
-#include "dc_include.h"
+#include <demcontact.h>
 #include "tsuji_force.h"
 
 #include <cmath>

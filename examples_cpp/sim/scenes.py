@@ -19,7 +19,9 @@ solid fraction in a central window (centre-in-window sphere volumes / window vol
 r < R - 4 mm, 4 mm < z < 0.7 x the bed height estimated at phi = 0.6), mean coordination number
 (compute contact/atom) inside the window and over all atoms, mean height of the centres, kinetic
 energy; wall time from the code's "Loop time". Timing: the settled bed of the builtin run
-(write_data) run on for 2000 steps with each model, alternately, three times; minimum kept.
+(write_data) run on for 2000 steps with each model, alternately, three times; minimum kept; also the
+CPU time of the run minus that of the same deck with `run 0` (less sensitive to other jobs on a
+shared machine than the wall time).
 
 Models:
   LIGGGHTS builtin   pair_style gran model hertz tangential history rolling_friction cdt
@@ -37,6 +39,7 @@ import argparse
 import math
 import os
 import re
+import resource
 import sys
 import tempfile
 
@@ -194,6 +197,12 @@ def stats(dump, g):
                 zmean=zsum / max(n, 1), ke=ke, n_win=n_in)
 
 
+def child_cpu():
+    """user + sys CPU seconds of all finished child processes (and theirs) so far."""
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
 def loop_time(log):
     m = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs", open(log).read())
     return float(m.group(1))
@@ -283,24 +292,35 @@ def main():
         data = os.path.join(workdir, "%s_np1" % ref_label, "settled.data")
         d = os.path.join(workdir, "timing")
         os.makedirs(d, exist_ok=True)
-        best = {}
+        best, cpu = {}, {}
         for label, _, tdeck in models:
             open(os.path.join(d, "in.%s" % label), "w").write(tdeck(data, steps))
+            # the same deck with `run 0`: start-up and setup only, subtracted from the CPU time
+            open(os.path.join(d, "in0.%s" % label), "w").write(tdeck(data, 0))
         for np_ in nps:
             for r in range(a.reps):
                 for label, _, _ in models:
-                    log = "log.%s.np%d.%d" % (label, np_, r)
-                    H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.%s" % label, "-log", log], d, env)
-                    t = loop_time(os.path.join(d, log))
+                    t_cpu = []
+                    for deck, log in (("in0.%s" % label, "log0.%s.np%d.%d" % (label, np_, r)),
+                                      ("in.%s" % label, "log.%s.np%d.%d" % (label, np_, r))):
+                        c0 = child_cpu()
+                        H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", deck, "-log", log], d, env)
+                        t_cpu.append(child_cpu() - c0)
+                    t = loop_time(os.path.join(d, "log.%s.np%d.%d" % (label, np_, r)))
                     best[(label, np_)] = min(best.get((label, np_), float("inf")), t)
+                    cpu[(label, np_)] = min(cpu.get((label, np_), float("inf")), t_cpu[1] - t_cpu[0])
         print()
-        print("Wall time on the settled bed (%d steps, minimum of %d alternating runs):" % (steps, a.reps))
+        print("Wall time on the settled bed (%d steps, minimum of %d alternating runs); CPU: user + sys of all "
+              "processes of the run minus that of the same deck with `run 0` (start-up, setup), minimum; "
+              "with 2 ranks it includes MPI's busy waiting:" % (steps, a.reps))
         print()
-        print("| ranks | demcontact loop [s] | %s loop [s] | ratio |" % ref_label)
-        print("|---|---|---|---|")
+        print("| ranks | demcontact loop [s] | %s loop [s] | ratio | demcontact CPU [s] | %s CPU [s] | CPU ratio |"
+              % (ref_label, ref_label))
+        print("|---|---|---|---|---|---|---|")
         for np_ in nps:
             o, h = best[("demcontact", np_)], best[(ref_label, np_)]
-            print("| %d | %.3f | %.3f | %.3f |" % (np_, o, h, o / h))
+            co, ch = cpu[("demcontact", np_)], cpu[(ref_label, np_)]
+            print("| %d | %.3f | %.3f | %.3f | %.2f | %.2f | %.3f |" % (np_, o, h, o / h, co, ch, co / ch))
     if a.check and not ok:
         raise SystemExit("FAIL: packing statistics differ beyond tolerance")
 

@@ -19,7 +19,7 @@
 #ifndef DEMCONTACT_SIM_TSUJI_FORCE_H
 #define DEMCONTACT_SIM_TSUJI_FORCE_H
 
-#include "dc_include.h"
+#include <demcontact.h>
 #include <demcontact_inline.h>
 #include <cmath>
 
