@@ -335,6 +335,28 @@ fn fit_exact_data_json_and_plot() {
     assert!((j["beta"].as_f64().unwrap() / beta - 1.0).abs() < 1e-10);
     assert_eq!(j["model"], "viscoelastic");
     assert_eq!(j["points"].as_array().unwrap().len(), 8);
+    // σ given: the normal quantile; the interval is β ± q·SE
+    let q = j["quantile95"].as_f64().unwrap();
+    assert!((q - 1.959963984540054).abs() < 1e-12, "{q}");
+    let (b, se) = (j["beta"].as_f64().unwrap(), j["beta_se"].as_f64().unwrap());
+    assert!((j["beta_lo95"].as_f64().unwrap() - (b - q * se)).abs() < 1e-15);
+    assert!((j["beta_hi95"].as_f64().unwrap() - (b + q * se)).abs() < 1e-15);
+    // without σ (two columns): Student t with n − 1 = 7 degrees of freedom, 2.364624251592785
+    // (mpmath, 30 digits)
+    let two: String = csv
+        .lines()
+        .map(|l| match l.rfind(',') {
+            Some(k) if !l.starts_with('#') => format!("{}\n", &l[..k]),
+            _ => format!("{l}\n"),
+        })
+        .collect();
+    let f2 = tmp("exact2.csv", &two);
+    let j2 = json_of(&run(&["fit", f2.to_str().unwrap(), "--json"]));
+    assert_eq!(j2["se_from_scatter"].as_bool(), Some(true), "{j2}");
+    let q2 = j2["quantile95"].as_f64().unwrap();
+    assert!((q2 - 2.364624251592785).abs() < 1e-12, "{q2}");
+    let text = String::from_utf8(run(&["fit", f2.to_str().unwrap()]).stdout).unwrap();
+    assert!(text.contains("Student t, 7 degrees of freedom"), "{text}");
     let bytes = std::fs::read(&png).unwrap();
     assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
     // text: the table and the model choice
