@@ -230,6 +230,13 @@ fn gauss_newton(
             t *= 0.5;
         }
         let Some((cand, sc)) = accepted else {
+            // No strict decrease: S is flat to rounding here, over a band of β whose width
+            // (≈ √ε·SE) depends on rounding, e.g. on the order of the points. A small
+            // Gauss–Newton step lands on the stationary point (zero gradient), which does not:
+            // take it and stop.
+            if step.abs() <= 1e-6 * beta.max(f64::MIN_POSITIVE) {
+                return Ok(((beta + step).max(0.0), it));
+            }
             return Ok((beta, it)); // no decrease possible: at the minimum to rounding
         };
         let moved = (cand - beta).abs();
