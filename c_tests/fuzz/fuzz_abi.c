@@ -182,7 +182,7 @@ static void fuzz_builtin_fit(int which, const uint8_t *data, size_t n) {
         memcpy(sg, y + 16, sizeof sg);
         if (d[4] & 1) /* plausible data half the time, so the success paths are reached */
             for (size_t i = 0; i < 8; i++) {
-                v[i] = 0.05 + fabs(fmod(v[i], 10.0));
+                v[i] = 0.05 + 0.3 * (double)i + fabs(fmod(v[i], 10.0)); /* distinct for zero input */
                 e[i] = 0.05 + 0.9 * fabs(fmod(e[i], 1.0));
                 sg[i] = 1e-3 + fabs(fmod(sg[i], 0.1));
                 if (!isfinite(v[i]) || !isfinite(e[i]) || !isfinite(sg[i])) v[i] = 1.0 + (double)i, e[i] = 0.5, sg[i] = 0.01;

@@ -188,9 +188,10 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
     let mut text = String::new();
     let _ = writeln!(
         text,
-        "{}, target e = {} against {partner}",
+        "{}, target e = {}{}",
         label(b, clamp),
-        a.e
+        a.e,
+        if a.wall { " against a wall" } else { "" }
     );
     let _ = writeln!(text, "  type {name} = {value:.10}");
     if let (Some(n), Some(u)) = (naive, uncorrected) {
