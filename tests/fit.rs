@@ -1,7 +1,12 @@
 //! The restitution fit: exact data recovered to 1e-10, the reported 95 % interval covers the true
 //! β in 95 % of seeded noisy data sets (2000 each, σ known and from the scatter), degenerate input gets a status, Huber resists an
 //! outlier, and the model choice follows the tolerance.
-#![allow(clippy::unwrap_used, clippy::expect_used, clippy::indexing_slicing)]
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
 
 use demcontact::fit::{Data, FitOptions, ModelChoice, fit_restitution, residuals};
 use demcontact::viscoelastic::full_range::e_full;
