@@ -204,7 +204,13 @@ fn sticking_run(tangential: i32) -> (dc_contact_model, Vec<Sample>, f64) {
 /// the contact: n → R n, v_i → R v_i + Ω × R x_i, ω_i → R ω_i + Ω. Returns the worst relative
 /// deviation of |F|, |F_t|, |τ1|, |τ2| and of F from R F (relative to each quantity's largest
 /// magnitude over the run).
-fn rotated_deviation(m: &dc_contact_model, run: &[Sample], dt: f64, axis: V, total: f64) -> f64 {
+fn rotated_deviation(
+    m: &dc_contact_model,
+    run: &[Sample],
+    dt: f64,
+    axis: V,
+    total: f64,
+) -> (f64, f64) {
     let omega = total / (run.len() as f64 * dt);
     let om = sc(omega, axis);
     let mut h = [0.0; DC_CONTACT_HISTORY_MAX];
@@ -215,7 +221,7 @@ fn rotated_deviation(m: &dc_contact_model, run: &[Sample], dt: f64, axis: V, tot
         big(&|s| norm(s.res.torque1)),
         big(&|s| norm(s.res.torque2)),
     );
-    let mut worst = 0.0f64;
+    let (mut worst, mut worst_vec) = (0.0f64, 0.0f64);
     for (k, s) in run.iter().enumerate() {
         let th = total * (k + 1) as f64 / run.len() as f64;
         let r = |v: V| rot(axis, th, v);
@@ -239,12 +245,19 @@ fn rotated_deviation(m: &dc_contact_model, run: &[Sample], dt: f64, axis: V, tot
             (norm(res.ft), norm(u.ft), tmax),
             (norm(res.torque1), norm(u.torque1), t1max),
             (norm(res.torque2), norm(u.torque2), t2max),
-            (norm(sub(res.force, r(u.force))), 0.0, fmax),
         ] {
             worst = worst.max((a - b).abs() / scale);
         }
+        for (a, b, scale) in [
+            (res.force, u.force, fmax),
+            (res.ft, u.ft, tmax),
+            (res.torque1, u.torque1, t1max),
+            (res.torque2, u.torque2, t2max),
+        ] {
+            worst_vec = worst_vec.max(norm(sub(a, r(b))) / scale);
+        }
     }
-    worst
+    (worst, worst_vec)
 }
 
 const ZERO: dc_contact_result = dc_contact_result {
@@ -257,26 +270,167 @@ const ZERO: dc_contact_result = dc_contact_result {
     rolling_sliding: 0,
 };
 
+/// Rotation axes of the frame-indifference tests: z is perpendicular to every normal of the
+/// (planar) sticking run and parallel to the bodies' spins; the others are general, including x
+/// and y in the plane of the motion and the direction of the normal at first touch.
+fn test_axes() -> [V; 6] {
+    let unit = |v: V| sc(1.0 / norm(v), v);
+    [
+        [0.0, 0.0, 1.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        unit([1.0, 1.0, 1.0]),
+        unit([1.0, -2.0, 0.5]),
+        [0.5f64.cos(), 0.5f64.sin(), 0.0],
+    ]
+}
+
 #[test]
 fn frame_indifference_rigid_rotation() {
+    // The issue's claim: force and torque magnitudes of the rotated replay equal the unrotated
+    // ones to 1e-10 relative, for rotations up to 90 deg about any axis.
+    //
+    // The vectors themselves follow R exactly (to rounding) when the superposed rotation is
+    // parallel to the bodies' mean spin (axis z here; every planar motion) or to the normal. For
+    // other axes they deviate by the commutator ½ (R ω̄ × Ω)·n dt² per step (see src/contact/
+    // frame.rs: with a spin given at one instant, R ω̄ + Ω, no step rule can tell the superposed
+    // part from the bodies' own), an O(dt) total twist of the springs about n that leaves every
+    // magnitude unchanged: measured 1e-9 … 5e-8 here, bounded below by 1e-7.
+    let (mut worst_mag, mut worst_vec) = (0.0f64, 0.0f64);
     for t in [DC_TANGENTIAL_LINEAR, DC_TANGENTIAL_MINDLIN] {
         let (m, run, dt) = sticking_run(t);
-        // Axis perpendicular to every normal of the (planar) contact: exact.
-        for total in [30f64.to_radians(), 90f64.to_radians()] {
-            let dev = rotated_deviation(&m, &run, dt, [0.0, 0.0, 1.0], total);
-            println!(
-                "tangential {t}: {} steps, rotation {:.0} deg about z: worst deviation {dev:.2e}",
-                run.len(),
-                total.to_degrees()
-            );
-            assert!(dev < 1e-10, "deviation {dev}");
+        for (i, axis) in test_axes().into_iter().enumerate() {
+            for deg in [10.0f64, 30.0, 90.0] {
+                let (mag, vec) = rotated_deviation(&m, &run, dt, axis, deg.to_radians());
+                println!(
+                    "tangential {t}: {} steps, {deg:>2} deg about ({:+.3}, {:+.3}, {:+.3}): \
+                     worst deviation of magnitudes {mag:.2e}, of vectors from R x {vec:.2e}",
+                    run.len(),
+                    axis[0],
+                    axis[1],
+                    axis[2],
+                );
+                worst_mag = worst_mag.max(mag);
+                assert!(mag < 1e-10, "magnitudes: deviation {mag}");
+                let exact = i == 0 || i == 5;
+                let tol = if exact { 1e-10 } else { 1e-7 };
+                assert!(vec < tol, "vectors: deviation {vec} (tolerance {tol})");
+                if exact {
+                    worst_vec = worst_vec.max(vec);
+                }
+            }
         }
-        // A general axis: tilt-then-twist is not the exact step rotation (O(dt²) per step), but
-        // the spin about n is small here: measured 1.4e-10 (linear), 5.5e-10 (Mindlin).
-        let a = 1.0 / 3f64.sqrt();
-        let dev = rotated_deviation(&m, &run, dt, [a, a, a], 90f64.to_radians());
-        println!("tangential {t}: 90 deg about (1,1,1): worst deviation {dev:.2e}");
-        assert!(dev < 1e-8, "deviation {dev}");
+    }
+    println!(
+        "worst over all axes and angles: magnitudes {worst_mag:.2e}; vectors about z and n: \
+         {worst_vec:.2e}"
+    );
+}
+
+#[test]
+fn frame_indifference_rigidly_spinning_stuck_pair() {
+    // Two spheres stuck together (loaded tangential and rolling springs) spinning as one rigid
+    // body about an arbitrary axis: v_i = Ω × x_i, ω_i = Ω, so the contact point has no relative
+    // motion and every spring must just turn with the pair. Force and torques at step k must be
+    // R_k times those of the pair at rest, to rounding, whatever the axis and the angle.
+    for t in [DC_TANGENTIAL_LINEAR, DC_TANGENTIAL_MINDLIN] {
+        let m = model(|s| {
+            glass(s);
+            s.tangential = t;
+            s.k_t = 1e5;
+            s.mu = 50.0;
+            s.rolling = DC_ROLLING_EPSD;
+            s.mu_r = 0.3;
+            s.twisting = DC_TWISTING_SDS;
+            s.mu_tw = 1e-3;
+            s.k_tw = 1e-4;
+        });
+        let (r1, r2, d) = (R, 1.3 * R, 1e-6);
+        let n0 = {
+            let v = [0.3, -0.5, 0.8];
+            sc(1.0 / norm(v), v)
+        };
+        // Body 2 at the origin, and a spring large against the rounding of the rigid
+        // velocities (|Ω| |x| dt ~ |ξ|): the kernel cancels Ω × (x1 − x2) against the lever
+        // arms, and what rounding leaves of ~1e-16 |Ω| |x| enters ξ every step.
+        let (x2, x1) = ([0.0; 3], sc(r1 + r2 - d, n0));
+        let m1 = RHO * 4.0 / 3.0 * std::f64::consts::PI * r1 * r1 * r1;
+        let m2 = m1 * 2.197;
+        // Loaded springs: tangential ξ, rolling torque and twisting torque, all below their limits.
+        let xi = {
+            let a = [1.0, 0.2, -0.4];
+            sc(1e-6 / norm(a), sub(a, sc(dot(a, n0), n0)))
+        };
+        let mr = sc(1e-6 / norm(xi), cross(n0, xi));
+        let mut h0 = [0.0; DC_CONTACT_HISTORY_MAX];
+        h0[..3].copy_from_slice(&n0);
+        h0[3..6].copy_from_slice(&xi);
+        h0[6..9].copy_from_slice(&mr);
+        h0[9] = 2e-7;
+        let at_rest = dc_contact_state {
+            n: n0,
+            overlap: d,
+            v1: [0.0; 3],
+            v2: [0.0; 3],
+            w1: [0.0; 3],
+            w2: [0.0; 3],
+            r1,
+            r2,
+            m1,
+            m2,
+        };
+        let dt = 1e-8;
+        let mut rest = ZERO;
+        let mut h = h0;
+        assert_eq!(
+            unsafe { dc_contact_force(&m, &at_rest, dt, h.as_mut_ptr(), h.len(), &mut rest) },
+            DC_OK
+        );
+        assert_eq!(rest.sliding, 0);
+        assert_eq!(rest.rolling_sliding, 0);
+        assert!(
+            norm(rest.ft) > 1e-3 * rest.f_n,
+            "tangential force too small to test"
+        );
+        let steps = 3000;
+        for axis in test_axes() {
+            for deg in [1.0f64, 90.0] {
+                let total = deg.to_radians();
+                let om = sc(total / (steps as f64 * dt), axis);
+                let mut h = h0;
+                let mut worst = 0.0f64;
+                for k in 1..=steps {
+                    let r = |v: V| rot(axis, total * k as f64 / steps as f64, v);
+                    let st = dc_contact_state {
+                        n: r(n0),
+                        v1: cross(om, r(x1)),
+                        v2: cross(om, r(x2)),
+                        w1: om,
+                        w2: om,
+                        ..at_rest
+                    };
+                    let mut res = ZERO;
+                    assert_eq!(
+                        unsafe { dc_contact_force(&m, &st, dt, h.as_mut_ptr(), h.len(), &mut res) },
+                        DC_OK
+                    );
+                    for (a, b) in [
+                        (res.force, rest.force),
+                        (res.ft, rest.ft),
+                        (res.torque1, rest.torque1),
+                        (res.torque2, rest.torque2),
+                    ] {
+                        worst = worst.max(norm(sub(a, r(b))) / norm(b));
+                    }
+                }
+                println!(
+                    "tangential {t}: stuck pair spinning {deg:>2} deg in {steps} steps about \
+                     ({:+.3}, {:+.3}, {:+.3}): worst deviation from R F {worst:.2e}",
+                    axis[0], axis[1], axis[2]
+                );
+                assert!(worst < 1e-11, "deviation {worst}");
+            }
+        }
     }
 }
 

@@ -82,7 +82,7 @@ impl Kin {
     #[inline(always)]
     pub(crate) fn of(s: &ContactState, n_old: V3, dt: f64) -> (Kin, FrameStep) {
         let n = s.n;
-        let frame = FrameStep::new(n_old, n, 0.5 * dot(add(s.w1, s.w2), n) * dt);
+        let frame = FrameStep::new(n_old, n, scale(0.5 * dt, add(s.w1, s.w2)));
         let d = s.overlap;
         let wall = s.r2 == f64::INFINITY;
         let a1 = s.r1 - 0.5 * d;
