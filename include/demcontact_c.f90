@@ -240,6 +240,26 @@ module demcontact_c
       real(c_double), intent(out) :: e_out
       integer(c_int32_t) :: dc_builtin_realised_e
     end function dc_builtin_realised_e
+    function dc_builtin_value_for_e_wall(model, clamp, wall, e, value_out) bind(c, &
+        name='dc_builtin_value_for_e_wall')
+      import
+      integer(c_int32_t), value, intent(in) :: model
+      integer(c_int32_t), value, intent(in) :: clamp
+      integer(c_int32_t), value, intent(in) :: wall
+      real(c_double), value, intent(in) :: e
+      real(c_double), intent(out) :: value_out
+      integer(c_int32_t) :: dc_builtin_value_for_e_wall
+    end function dc_builtin_value_for_e_wall
+    function dc_builtin_realised_e_wall(model, clamp, wall, value, e_out) bind(c, &
+        name='dc_builtin_realised_e_wall')
+      import
+      integer(c_int32_t), value, intent(in) :: model
+      integer(c_int32_t), value, intent(in) :: clamp
+      integer(c_int32_t), value, intent(in) :: wall
+      real(c_double), value, intent(in) :: value
+      real(c_double), intent(out) :: e_out
+      integer(c_int32_t) :: dc_builtin_realised_e_wall
+    end function dc_builtin_realised_e_wall
     function dc_builtin_yade_viscel_cn(e, kn, m_reduced, cn_out) bind(c, &
         name='dc_builtin_yade_viscel_cn')
       import
@@ -328,6 +348,13 @@ module demcontact_c
       type(dc_fit_result), intent(out) :: out
       integer(c_int32_t) :: dc_fit_restitution
     end function dc_fit_restitution
+    function dc_fit_quantile95(n, se_from_scatter, q_out) bind(c, name='dc_fit_quantile95')
+      import
+      integer(c_size_t), value, intent(in) :: n
+      integer(c_int32_t), value, intent(in) :: se_from_scatter
+      real(c_double), intent(out) :: q_out(*)
+      integer(c_int32_t) :: dc_fit_quantile95
+    end function dc_fit_quantile95
     function dc_pair_powerlaw(p, k, e, criterion, out) bind(c, name='dc_pair_powerlaw')
       import
       real(c_double), value, intent(in) :: p
@@ -704,6 +731,34 @@ contains
     if (present(stat)) stat = s
     if (s /= DC_OK) e_out = ieee_value(e_out, ieee_quiet_nan)
   end subroutine builtin_realised_e
+
+  !> Elemental form of dc_builtin_value_for_e_wall: on error `value_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine builtin_value_for_e_wall(model, clamp, wall, e, value_out, stat)
+    integer(c_int32_t), intent(in) :: model
+    integer(c_int32_t), intent(in) :: clamp
+    integer(c_int32_t), intent(in) :: wall
+    real(c_double), intent(in) :: e
+    real(c_double), intent(out) :: value_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_builtin_value_for_e_wall(model, clamp, wall, e, value_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) value_out = ieee_value(value_out, ieee_quiet_nan)
+  end subroutine builtin_value_for_e_wall
+
+  !> Elemental form of dc_builtin_realised_e_wall: on error `e_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine builtin_realised_e_wall(model, clamp, wall, value, e_out, stat)
+    integer(c_int32_t), intent(in) :: model
+    integer(c_int32_t), intent(in) :: clamp
+    integer(c_int32_t), intent(in) :: wall
+    real(c_double), intent(in) :: value
+    real(c_double), intent(out) :: e_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_builtin_realised_e_wall(model, clamp, wall, value, e_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) e_out = ieee_value(e_out, ieee_quiet_nan)
+  end subroutine builtin_realised_e_wall
 
   !> Elemental form of dc_builtin_yade_viscel_cn: on error `cn_out` is NaN (numeric) and `stat` the status.
   impure elemental subroutine builtin_yade_viscel_cn(e, kn, m_reduced, cn_out, stat)

@@ -62,6 +62,28 @@ inline status builtin_realised_e(std::int32_t model, std::int32_t clamp, double 
     return static_cast<status>(::dc_builtin_realised_e(model, clamp, value, &out));
 }
 
+/// dc_builtin_value_for_e_wall: throws demcontact::error on a non-OK status.
+inline double builtin_value_for_e_wall(std::int32_t model, std::int32_t clamp, std::int32_t wall, double e) {
+    double out{};
+    detail::check(::dc_builtin_value_for_e_wall(model, clamp, wall, e, &out));
+    return out;
+}
+/// dc_builtin_value_for_e_wall: returns the status; `out` is written only on status::ok.
+inline status builtin_value_for_e_wall(std::int32_t model, std::int32_t clamp, std::int32_t wall, double e, double& out) noexcept {
+    return static_cast<status>(::dc_builtin_value_for_e_wall(model, clamp, wall, e, &out));
+}
+
+/// dc_builtin_realised_e_wall: throws demcontact::error on a non-OK status.
+inline double builtin_realised_e_wall(std::int32_t model, std::int32_t clamp, std::int32_t wall, double value) {
+    double out{};
+    detail::check(::dc_builtin_realised_e_wall(model, clamp, wall, value, &out));
+    return out;
+}
+/// dc_builtin_realised_e_wall: returns the status; `out` is written only on status::ok.
+inline status builtin_realised_e_wall(std::int32_t model, std::int32_t clamp, std::int32_t wall, double value, double& out) noexcept {
+    return static_cast<status>(::dc_builtin_realised_e_wall(model, clamp, wall, value, &out));
+}
+
 /// dc_builtin_yade_viscel_cn: throws demcontact::error on a non-OK status.
 inline double builtin_yade_viscel_cn(double e, double kn, double m_reduced) {
     double out{};

@@ -8,7 +8,7 @@
 
 use core::f64::consts::PI;
 use demcontact::Error;
-use demcontact::builtin::{Builtin, value_for_e, yade::viscel_cn};
+use demcontact::builtin::{Builtin, value_for_e, value_for_e_wall, yade::viscel_cn};
 use demcontact::numerics::ode::{Tolerance, integrate_to_event};
 
 const R: f64 = 1e-3;
@@ -220,5 +220,71 @@ fn yade_viscel_cn_realises_the_target() {
         let f = move |d: f64, v: f64| kn * d + cn * v;
         let got = collide(&f, m, 1.0, true, 1e-5);
         assert!((got - e).abs() < 1e-9, "{e} {got}");
+    }
+}
+
+/// YADE `ViscElMat(tc, en, et)` against a massless fixed wall, as
+/// `Calculate_ViscElMat_ViscElMat_ViscElPhys` computes it: the wall's zero mass is replaced by
+/// the sphere's (`mass2 = mass1`), m_R = m·m/(m + m) = m/2 enters kn and cn, while the sphere
+/// moves with its own mass m. Returns (force law, dynamic mass).
+fn yade_viscel_wall(en: f64) -> (Box<dyn Fn(f64, f64) -> f64>, f64) {
+    let m = RHO * 4.0 / 3.0 * PI * R.powi(3); // the sphere; the wall's mass is 0
+    let (mass1, mass2) = (m, m); // YADE: `if (mass2 == 0.0 and mass1 > 0.0) mass2 = mass1`
+    let mass_r = mass1 * mass2 / (mass1 + mass2);
+    let tc: f64 = 1e-4;
+    let l = en.ln();
+    let kn1 = (PI * PI + l * l) / (tc * tc) * mass_r * 2.0;
+    let cn1 = -2.0 / tc * l * mass_r * 2.0;
+    let (kn, cn) = (kn1 / 2.0, cn1 / 2.0); // series combination of two equal materials
+    (Box::new(move |d: f64, v: f64| kn * d + cn * v), m)
+}
+
+#[test]
+fn yade_viscel_against_a_wall() {
+    // The sphere value misses against a wall (0.4025 for 0.3, the figure YADE realised), the
+    // wall value hits it; below exp(-π/2) the wall target is refused.
+    let b = Builtin::YadeViscElEn;
+    let mut worst: f64 = 0.0;
+    for e in [0.21, 0.3, 0.5, 0.7, 0.9, 0.99] {
+        let v_wall = value_for_e_wall(b, true, true, e).unwrap();
+        let v_pair = value_for_e(b, true, e).unwrap();
+        for v0 in [0.1, 1.0, 10.0] {
+            let (f, m) = yade_viscel_wall(v_wall);
+            let got = collide(&*f, m, v0, true, 1e-4);
+            assert!((got - e).abs() < 1e-9, "wall value, e={e} v={v0}: {got}");
+            worst = worst.max((got - e).abs());
+            let (f, m) = yade_viscel_wall(v_pair);
+            let miss = collide(&*f, m, v0, true, 1e-4);
+            if e < 0.95 {
+                assert!(
+                    miss - e > 5e-3,
+                    "sphere value against a wall, e={e}: {miss}"
+                );
+            }
+            if e == 0.3 {
+                assert!((miss - 0.4025).abs() < 5e-4, "{miss}");
+            }
+        }
+    }
+    println!("YADE ViscElMat against a wall: worst |e - target| = {worst:.2e}");
+    let lim = (-PI / 2.0).exp();
+    assert_eq!(
+        value_for_e_wall(b, true, true, lim * (1.0 - 1e-9)),
+        Err(Error::BuiltinUnreachable)
+    );
+    // Just above, en underflows to 0 (e_O(ζ → 1) = exp(−πζ/√(1 − ζ²))): refused as well.
+    assert!(value_for_e_wall(b, true, true, lim * 1.01).is_ok());
+    // The other builtins do not depend on the partner.
+    for other in Builtin::all() {
+        if other == b {
+            continue;
+        }
+        for e in [0.3, 0.7] {
+            assert_eq!(
+                value_for_e_wall(other, true, true, e),
+                value_for_e(other, true, e),
+                "{other:?}"
+            );
+        }
     }
 }

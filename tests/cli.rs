@@ -109,6 +109,62 @@ fn builtin_text_and_json() {
 }
 
 #[test]
+fn builtin_wall() {
+    // YADE viscel against a wall: another value, the library's, and the uncorrected en's
+    // realised e against the wall (0.3 typed realises 0.4025 there, see tests/builtin_vs_ode.rs).
+    let args = |e: &'static str, wall: bool| {
+        let mut a = vec![
+            "builtin", "--code", "yade", "--model", "viscel", "--e", e, "--json",
+        ];
+        if wall {
+            a.push("--wall");
+        }
+        a
+    };
+    let o = run(&args("0.3", true));
+    assert_eq!(o.status.code(), Some(0));
+    let j = json_of(&o);
+    assert_eq!(j["wall"].as_bool(), Some(true));
+    let want =
+        demcontact::builtin::value_for_e_wall(Builtin::YadeViscElEn, true, true, 0.3).unwrap();
+    // serde_json's default float parser may be 1 ulp off the printed shortest representation
+    assert!((j["value"].as_f64().unwrap() - want).abs() <= 2.0 * f64::EPSILON * want);
+    let pair = json_of(&run(&args("0.3", false)))["value"]
+        .as_f64()
+        .unwrap();
+    assert!(want < pair - 0.05, "wall {want} particle {pair}");
+    let o = run(&[
+        "builtin", "--code", "yade", "--model", "viscel", "--e", "0.3", "--wall",
+    ]);
+    assert!(String::from_utf8_lossy(&o.stdout).contains("against a wall"));
+    // below exp(-π/2) against a wall: refused, exit 1, naming the range
+    let o = run(&args("0.2", true));
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json_of(&o)["error"]["status"].as_i64(), Some(6131));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("0.2079"));
+    // reachable between particles
+    assert_eq!(run(&args("0.2", false)).status.code(), Some(0));
+    // the wall does not change Mindlin's value
+    let m = |wall: bool| {
+        let mut a = vec![
+            "builtin",
+            "--code",
+            "yade",
+            "--model",
+            "mindlin-en",
+            "--e",
+            "0.5",
+            "--json",
+        ];
+        if wall {
+            a.push("--wall");
+        }
+        json_of(&run(&a))["value"].as_f64().unwrap()
+    };
+    assert_eq!(m(true), m(false));
+}
+
+#[test]
 fn builtin_bad_input() {
     // unreachable target: exit 1, status 6131 in the JSON error
     let o = run(&[
@@ -279,6 +335,28 @@ fn fit_exact_data_json_and_plot() {
     assert!((j["beta"].as_f64().unwrap() / beta - 1.0).abs() < 1e-10);
     assert_eq!(j["model"], "viscoelastic");
     assert_eq!(j["points"].as_array().unwrap().len(), 8);
+    // σ given: the normal quantile; the interval is β ± q·SE
+    let q = j["quantile95"].as_f64().unwrap();
+    assert!((q - 1.959963984540054).abs() < 1e-12, "{q}");
+    let (b, se) = (j["beta"].as_f64().unwrap(), j["beta_se"].as_f64().unwrap());
+    assert!((j["beta_lo95"].as_f64().unwrap() - (b - q * se)).abs() < 1e-15);
+    assert!((j["beta_hi95"].as_f64().unwrap() - (b + q * se)).abs() < 1e-15);
+    // without σ (two columns): Student t with n − 1 = 7 degrees of freedom, 2.364624251592785
+    // (mpmath, 30 digits)
+    let two: String = csv
+        .lines()
+        .map(|l| match l.rfind(',') {
+            Some(k) if !l.starts_with('#') => format!("{}\n", &l[..k]),
+            _ => format!("{l}\n"),
+        })
+        .collect();
+    let f2 = tmp("exact2.csv", &two);
+    let j2 = json_of(&run(&["fit", f2.to_str().unwrap(), "--json"]));
+    assert_eq!(j2["se_from_scatter"].as_bool(), Some(true), "{j2}");
+    let q2 = j2["quantile95"].as_f64().unwrap();
+    assert!((q2 - 2.364624251592785).abs() < 1e-12, "{q2}");
+    let text = String::from_utf8(run(&["fit", f2.to_str().unwrap()]).stdout).unwrap();
+    assert!(text.contains("Student t, 7 degrees of freedom"), "{text}");
     let bytes = std::fs::read(&png).unwrap();
     assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
     // text: the table and the model choice

@@ -34,6 +34,17 @@ fn exports_do_not_allocate() {
                         std::hint::black_box(dc_builtin_realised_e(model, clamp, x, &mut o));
                     }
                     calls += 2;
+                    for wall in [-1, 0, 1, 2] {
+                        unsafe {
+                            std::hint::black_box(dc_builtin_value_for_e_wall(
+                                model, clamp, wall, x, &mut o,
+                            ));
+                            std::hint::black_box(dc_builtin_realised_e_wall(
+                                model, clamp, wall, x, &mut o,
+                            ));
+                        }
+                        calls += 2;
+                    }
                 }
             }
         }
@@ -42,6 +53,14 @@ fn exports_do_not_allocate() {
                 std::hint::black_box(dc_builtin_yade_viscel_cn(x, 1e5, 1e-3, &mut o));
             }
             calls += 1;
+        }
+        for n in [0usize, 1, 2, 6, 12, 1000, 1001, usize::MAX] {
+            for scatter in [0, 1, -3] {
+                unsafe {
+                    std::hint::black_box(dc_fit_quantile95(n, scatter, &mut o));
+                }
+                calls += 1;
+            }
         }
         let mut r = zeroed();
         let (mut r1, mut r2) = ([0.0; 5], [0.0; 5]);

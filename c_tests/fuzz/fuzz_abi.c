@@ -6,7 +6,10 @@
  * calculus (durations at every level, energy partition, trajectories with fuzzed n, buf_len and
  * NULL buffers, time steps, omega0); 21-23: the viscoelastic exports; 24-28: the full-contact
  * exports (spec from fuzzed fields and selectors, scalar, spheres and batch with fuzzed states,
- * histories and NULL masks, arbitrary bytes as a dc_contact_model).
+ * histories and NULL masks, arbitrary bytes as a dc_contact_model); 29-31: the builtin corrections
+ * (every model code, clamp and wall flag, value -> realised e round trip to 1e-9, realised e in
+ * [0, 1]) and the fit (fuzzed n <= 8, arrays, NULL sigma and residual buffers, robust, criterion,
+ * tol; residuals and result untouched on error, finite on success) and its 95 % quantile.
  * Built and run by scripts/fuzz.sh (Rust code instrumented for coverage, ASan+UBSan on the C side).
  * DC_FUZZ_PLANT_CRASH=1 in the environment makes the first input abort: scripts/fuzz_selftest.sh
  * uses it to prove that scripts/fuzz.sh fails when the harness finds a crash. */
@@ -134,6 +137,97 @@ static void fuzz_contact(int which, const uint8_t *data, size_t n) {
     }
 }
 
+/* ------------------------------------------------ builtin corrections and fit (cases 29-31) */
+
+static void fuzz_builtin_fit(int which, const uint8_t *data, size_t n) {
+    uint8_t d[8 + sizeof(double) * 24] = {0}; /* 8 selector bytes, then 24 doubles */
+    memcpy(d, data, n < sizeof d ? n : sizeof d);
+    double y[24];
+    memcpy(y, d + 8, sizeof y);
+    int32_t model = (int32_t)(d[0] % 11) - 1; /* -1 .. 9: every DC_BUILTIN_* and unknown codes */
+    int32_t clamp = (int32_t)(d[1] % 4) - 1, wall = (int32_t)(d[2] % 4) - 1; /* -1, 0, 1, 2 */
+    double out = SENTINEL, back = SENTINEL;
+    int32_t s;
+    switch (which) {
+    case 29: /* value to type, and its forward map: the round trip must give e back */
+        s = dc_builtin_value_for_e(model, clamp, y[0], &out);
+        verdict(s, out);
+        if (s == DC_OK) {
+            s = dc_builtin_realised_e(model, clamp, out, &back);
+            if (s != DC_OK || !(fabs(back - y[0]) <= 1e-9)) abort();
+        }
+        out = SENTINEL, back = SENTINEL;
+        s = dc_builtin_value_for_e_wall(model, clamp, wall, y[0], &out);
+        verdict(s, out);
+        if (s == DC_OK) {
+            s = dc_builtin_realised_e_wall(model, clamp, wall, out, &back);
+            if (s != DC_OK || !(fabs(back - y[0]) <= 1e-9)) abort();
+        }
+        out = SENTINEL;
+        s = dc_builtin_realised_e(model, clamp, y[1], &out);
+        verdict(s, out);
+        if (s == DC_OK && !(out >= 0.0 && out <= 1.0)) abort();
+        out = SENTINEL;
+        s = dc_builtin_realised_e_wall(model, clamp, wall, y[1], &out);
+        verdict(s, out);
+        if (s == DC_OK && !(out >= 0.0 && out <= 1.0)) abort();
+        out = SENTINEL;
+        verdict(dc_builtin_yade_viscel_cn(y[2], y[3], y[4], &out), out);
+        break;
+    case 30: { /* the fit: n, NULL sigma, robust, criterion, residual buffers from the input */
+        size_t np = d[3] % 9; /* 0 .. 8 points */
+        double v[8], e[8], sg[8];
+        memcpy(v, y, sizeof v);
+        memcpy(e, y + 8, sizeof e);
+        memcpy(sg, y + 16, sizeof sg);
+        if (d[4] & 1) /* plausible data half the time, so the success paths are reached */
+            for (size_t i = 0; i < 8; i++) {
+                v[i] = 0.05 + 0.3 * (double)i + fabs(fmod(v[i], 10.0)); /* distinct for zero input */
+                e[i] = 0.05 + 0.9 * fabs(fmod(e[i], 1.0));
+                sg[i] = 1e-3 + fabs(fmod(sg[i], 0.1));
+                if (!isfinite(v[i]) || !isfinite(e[i]) || !isfinite(sg[i])) v[i] = 1.0 + (double)i, e[i] = 0.5, sg[i] = 0.01;
+            }
+        dc_fit_result r, r0;
+        memset(&r, 0x5a, sizeof r);
+        r0 = r;
+        double rv[8], rc[8], rv0[8], rc0[8];
+        for (int i = 0; i < 8; i++) rv[i] = rc[i] = SENTINEL;
+        memcpy(rv0, rv, sizeof rv);
+        memcpy(rc0, rc, sizeof rc);
+        int32_t crit = (int32_t)(d[5] % 4) - 1;
+        double tol = (d[4] & 2) ? y[23] : 0.02;
+        s = dc_fit_restitution(np, v, e, (d[4] & 4) ? NULL : sg, crit, tol, d[4] & 8,
+                               (d[4] & 16) ? NULL : rv, (d[4] & 32) ? NULL : rc, &r);
+        if (!known(s)) abort();
+        if (s != DC_OK && (memcmp(&r, &r0, sizeof r) != 0 || memcmp(rv, rv0, sizeof rv) != 0 ||
+                           memcmp(rc, rc0, sizeof rc) != 0))
+            abort();
+        if (s == DC_OK) {
+            const double f[] = {r.beta, r.beta_se, r.e_const, r.e_const_se, r.chi2_viscoelastic,
+                                r.chi2_constant, r.max_residual_viscoelastic, r.max_residual_constant,
+                                r.v_min, r.v_max, r.e_viscoelastic_at_v_min, r.e_viscoelastic_at_v_max,
+                                r.max_model_deviation};
+            if (!all_finite(f, sizeof f / sizeof f[0]) || r.beta < 0.0 || r.beta_se < 0.0) abort();
+            if (!(d[4] & 16) && !all_finite(rv, np)) abort();
+            if (!(d[4] & 32) && !all_finite(rc, np)) abort();
+            /* the 95 % multiplier for this fit */
+            double q = SENTINEL;
+            if (dc_fit_quantile95(np, r.se_from_scatter, &q) != DC_OK || !(q >= 1.959 && q <= 12.71)) abort();
+        }
+        break;
+    }
+    case 31: { /* the quantile: any n (from 8 bytes), any flag */
+        uint64_t nn;
+        memcpy(&nn, d + 8, sizeof nn);
+        if (d[3] & 1) nn %= 2048; /* small n half the time (the incomplete-beta path) */
+        s = dc_fit_quantile95((size_t)nn, (int32_t)d[4] - 128, &out);
+        verdict(s, out);
+        if (s == DC_OK && !(out >= 1.959 && out <= 12.71)) abort();
+        break;
+    }
+    }
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     static int planted = -1;
     if (planted < 0) planted = getenv("DC_FUZZ_PLANT_CRASH") != NULL;
@@ -149,7 +243,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     double out = SENTINEL;
     dc_pair pair;
     double v3[3] = {SENTINEL, SENTINEL, SENTINEL};
-    switch (data[0] % 29) {
+    switch (data[0] % 32) {
     case 0: verdict(dc_alpha_from_e(x[0], x[1], c, &out), out); break;
     case 1: verdict(dc_e_from_alpha(x[0], x[1], c, &out), out); break;
     case 2: verdict(dc_dt_crit(x[0], x[1], x[2], &out), out); break;
@@ -163,8 +257,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     case 7:
     case 8: {
         int32_t s;
-        if (data[0] % 29 == 6) s = dc_pair_powerlaw(x[0], x[1], x[2], c, &pair);
-        else if (data[0] % 29 == 7) s = dc_pair_hertz(x[0], x[1], x[0], x[1], x[2], c, &pair);
+        if (data[0] % 32 == 6) s = dc_pair_powerlaw(x[0], x[1], x[2], c, &pair);
+        else if (data[0] % 32 == 7) s = dc_pair_hertz(x[0], x[1], x[0], x[1], x[2], c, &pair);
         else s = dc_pair_viscoelastic(x[0], x[1], x[0], x[1], x[2], c, &pair);
         verdict(s == DC_OK ? DC_OK : s, s == DC_OK ? 0.0 : SENTINEL);
         if (s == DC_OK) {
@@ -199,7 +293,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     case 12: verdict(dc_max_overlap(x[0], x[1], x[2], x[3], &out), out); break;
     case 13: verdict(dc_time_of_max_overlap(x[0], x[1], x[2], x[3], &out), out); break;
     case 14: verdict(dc_contact_duration(x[0], x[1], x[2], x[3], c, &out), out); break;
-    case 15: verdict(dc_contact_duration_level(x[0], x[1], x[2], x[3], c, (int32_t)(data[0] / 29) % 7 - 1, &out), out); break;
+    case 15: verdict(dc_contact_duration_level(x[0], x[1], x[2], x[3], c, (int32_t)(data[0] / 32) % 7 - 1, &out), out); break;
     case 16: {
         dc_energy en = {SENTINEL, SENTINEL, SENTINEL, SENTINEL, SENTINEL};
         int32_t s = dc_energy_partition(x[0], x[1], c, &en);
@@ -220,7 +314,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         if (ctl & 0x40u) n = (size_t)-1;
         double *pt[4];
         for (int i = 0; i < 4; i++) pt[i] = (ctl & 0x80u) && i == (ctl & 3u) ? NULL : bufs[i];
-        int32_t s = dc_contact_trajectory(x[0], x[1], x[2], x[3], x[4], c, (int32_t)(data[0] / 29) % 7 - 1, n, pt[0],
+        int32_t s = dc_contact_trajectory(x[0], x[1], x[2], x[3], x[4], c, (int32_t)(data[0] / 32) % 7 - 1, n, pt[0],
                                           pt[1], pt[2], pt[3], len);
         if (!dc_status_known(s) || s == DC_ERR_INTERNAL) abort();
         for (int i = 0; i < 4; i++)
@@ -271,7 +365,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     case 25:
     case 26:
     case 27:
-    case 28: fuzz_contact(data[0] % 29, data + 1, size - 1); break;
+    case 28: fuzz_contact(data[0] % 32, data + 1, size - 1); break;
+    case 29:
+    case 30:
+    case 31: fuzz_builtin_fit(data[0] % 32, data + 1, size - 1); break;
     }
     return 0;
 }

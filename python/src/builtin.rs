@@ -21,45 +21,51 @@ fn clamp_flag(function: &str, obj: &Bound<'_, PyAny>) -> PyResult<i32> {
 
 /// The value to type into a simulator's builtin model (a Builtin code) so that it realises
 /// restitution e in a head-on collision at every impact speed; clamp: whether the code clamps
-/// attractive forces (LIGGGHTS limitForce, LAMMPS limit_damping; YADE always: True).
-/// Broadcasts over e. Raises BuiltinModelError, BuiltinUnreachableError (the builtin's
-/// parameter saturates before e) (C: dc_builtin_value_for_e).
+/// attractive forces (LIGGGHTS limitForce, LAMMPS limit_damping; YADE always: True);
+/// wall=True: the particle hits a fixed wall (YADE ViscElMat calibrates with m/2 there; the other
+/// builtins give the same value). Broadcasts over e. Raises BuiltinModelError,
+/// BuiltinUnreachableError (the builtin's parameter saturates before e)
+/// (C: dc_builtin_value_for_e_wall).
 #[pyfunction]
-#[pyo3(signature = (model, clamp, e))]
+#[pyo3(signature = (model, clamp, e, wall=false))]
 pub fn builtin_value_for_e<'py>(
     py: Python<'py>,
     model: &Bound<'py, PyAny>,
     clamp: &Bound<'py, PyAny>,
     e: &Bound<'py, PyAny>,
+    wall: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
     const F: &str = "builtin_value_for_e";
     let (m, cl) = (code(F, "model", model)?, clamp_flag(F, clamp)?);
+    let w = i32::from(wall);
     let [r] = vectorize(py, F, ["e"], [e], Cost::Cheap, |[e]| {
         one(|o| {
             // SAFETY: `o` points to a live local double.
-            unsafe { c::builtin::dc_builtin_value_for_e(m, cl, e, o) }
+            unsafe { c::builtin::dc_builtin_value_for_e_wall(m, cl, w, e, o) }
         })
     })?;
     Ok(r)
 }
 
 /// The restitution a builtin model realises when `value` is typed (the forward map of
-/// builtin_value_for_e, e.g. what an uncorrected input gives). Broadcasts over value
-/// (C: dc_builtin_realised_e).
+/// builtin_value_for_e, e.g. what an uncorrected input gives); wall as there. Broadcasts over
+/// value (C: dc_builtin_realised_e_wall).
 #[pyfunction]
-#[pyo3(signature = (model, clamp, value))]
+#[pyo3(signature = (model, clamp, value, wall=false))]
 pub fn builtin_realised_e<'py>(
     py: Python<'py>,
     model: &Bound<'py, PyAny>,
     clamp: &Bound<'py, PyAny>,
     value: &Bound<'py, PyAny>,
+    wall: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
     const F: &str = "builtin_realised_e";
     let (m, cl) = (code(F, "model", model)?, clamp_flag(F, clamp)?);
+    let w = i32::from(wall);
     let [r] = vectorize(py, F, ["value"], [value], Cost::Cheap, |[v]| {
         one(|o| {
             // SAFETY: `o` points to a live local double.
-            unsafe { c::builtin::dc_builtin_realised_e(m, cl, v, o) }
+            unsafe { c::builtin::dc_builtin_realised_e_wall(m, cl, w, v, o) }
         })
     })?;
     Ok(r)

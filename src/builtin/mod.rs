@@ -150,12 +150,37 @@ pub fn criterion(builtin: Builtin, clamp: bool) -> Result<EndCriterion, Error> {
     })
 }
 
+/// √(m_used/m): the factor on ζ when the builtin calibrates its damping with a mass m_used other
+/// than the effective mass m of the dynamics (ζ ∝ c/√(m k) with c ∝ m_used, k ∝ m_used).
+///
+/// Only YADE's `ViscElMat(tc, en, et)` does so, and only against a wall: it computes
+/// m_R = m1 m2/(m1 + m2) after replacing a zero mass by the other body's (`mass1 = mass2` in
+/// `Calculate_ViscElMat_ViscElMat_ViscElPhys`), so a massless wall or facet gives m_R = m/2 while
+/// the sphere moves with m (a fixed sphere of the same mass gives the same m/2). Its Mindlin law
+/// takes the dynamic body's mass when the other is not dynamic, and LIGGGHTS and LAMMPS use the
+/// particle's mass against their walls: factor 1.
+fn mass_factor(builtin: Builtin, wall: bool) -> f64 {
+    if wall && builtin == Builtin::YadeViscElEn {
+        core::f64::consts::FRAC_1_SQRT_2
+    } else {
+        1.0
+    }
+}
+
 /// The value to type into `builtin` (with attractive-force clamping on or off) so that it
-/// realises restitution `e` ∈ (0, 1].
+/// realises restitution `e` ∈ (0, 1] between two particles.
 ///
 /// Errors: [`Error::NotFinite`], [`Error::RestitutionRange`], [`Error::BuiltinModel`] (YADE
 /// without clamp), [`Error::BuiltinUnreachable`] (the builtin's parameter saturates before e).
 pub fn value_for_e(builtin: Builtin, clamp: bool, e: f64) -> Result<f64, Error> {
+    value_for_e_wall(builtin, clamp, false, e)
+}
+
+/// [`value_for_e`] for a particle hitting a wall (`wall = true`: a fixed, massless wall or facet,
+/// or a fixed body of the particle's mass) or another particle (`false`). Only YADE's
+/// `ViscElMat(tc, en, et)` needs a different value against a wall (see `mass_factor`); it cannot
+/// realise e ≤ exp(−π/2) = 0.2079 there.
+pub fn value_for_e_wall(builtin: Builtin, clamp: bool, wall: bool, e: f64) -> Result<f64, Error> {
     if !e.is_finite() {
         return Err(Error::NotFinite);
     }
@@ -177,7 +202,7 @@ pub fn value_for_e(builtin: Builtin, clamp: bool, e: f64) -> Result<f64, Error> 
         EndCriterion::Overlap => lsd::zeta_overlap(e),
         EndCriterion::Force => lsd::zeta_force(e)?,
     };
-    builtin.value_of_zeta(zeta)
+    builtin.value_of_zeta(zeta / mass_factor(builtin, wall))
 }
 
 /// The value a user types without this correction: e itself, or for `betan` the textbook
@@ -190,8 +215,18 @@ pub fn naive_value(builtin: Builtin, e: f64) -> Result<f64, Error> {
     })
 }
 
-/// Why a target is unreachable, in words (for messages): the range the builtin can realise.
+/// Why a target is unreachable, in words (for messages): the range the builtin can realise
+/// between particles.
 pub fn reachable_range(builtin: Builtin, clamp: bool) -> &'static str {
+    reachable_range_wall(builtin, clamp, false)
+}
+
+/// [`reachable_range`] against a wall (`wall = true`) or another particle.
+pub fn reachable_range_wall(builtin: Builtin, clamp: bool, wall: bool) -> &'static str {
+    if wall && builtin == Builtin::YadeViscElEn {
+        return "e > exp(-pi/2) = 0.2079 against a wall (YADE calibrates with m/2 there: its \
+                damping ratio zeta_O(en)/sqrt(2) stays below 1/sqrt(2))";
+    }
     match (builtin, clamp) {
         (Builtin::LammpsTsujiHertz, false) => {
             "e in (0.1136, 0.99958) (Tsuji's damping 0.0003 <= alpha < 1.2728)"
@@ -214,10 +249,21 @@ pub fn reachable_range(builtin: Builtin, clamp: bool) -> &'static str {
     }
 }
 
-/// The restitution `builtin` realises (exactly, in continuous time) when `value` is typed.
+/// The restitution `builtin` realises (exactly, in continuous time) between two particles when
+/// `value` is typed.
 pub fn realised_e(builtin: Builtin, clamp: bool, value: f64) -> Result<f64, Error> {
+    realised_e_wall(builtin, clamp, false, value)
+}
+
+/// [`realised_e`] against a wall (`wall = true`) or another particle, as in [`value_for_e_wall`].
+pub fn realised_e_wall(
+    builtin: Builtin,
+    clamp: bool,
+    wall: bool,
+    value: f64,
+) -> Result<f64, Error> {
     let criterion = criterion(builtin, clamp)?;
-    let zeta = builtin.zeta_of_value(value)?;
+    let zeta = builtin.zeta_of_value(value)? * mass_factor(builtin, wall);
     Ok(match criterion {
         EndCriterion::Overlap => lsd::e_overlap(zeta),
         EndCriterion::Force => lsd::e_force(zeta),

@@ -27,12 +27,7 @@ pub const DC_BUILTIN_YADE_MINDLIN_BETAN: i32 = 8;
 
 fn parse(model: i32, clamp: i32) -> Result<(Builtin, bool), Error> {
     let b = Builtin::from_code(model).ok_or(Error::BuiltinModel)?;
-    let c = match clamp {
-        0 => false,
-        1 => true,
-        _ => return Err(Error::BuiltinModel),
-    };
-    Ok((b, c))
+    Ok((b, flag(clamp)?))
 }
 
 /// The value to type into a builtin model so that it realises restitution `e` in a head-on
@@ -96,6 +91,77 @@ pub unsafe extern "C" fn dc_builtin_realised_e(
         write_result(e_out, || {
             let (b, c) = parse(model, clamp)?;
             builtin::realised_e(b, c, value)
+        })
+    }
+}
+
+fn flag(x: i32) -> Result<bool, Error> {
+    match x {
+        0 => Ok(false),
+        1 => Ok(true),
+        _ => Err(Error::BuiltinModel),
+    }
+}
+
+/// dc_builtin_value_for_e for a particle hitting a wall (`wall` = 1: a fixed massless wall or
+/// facet, or a fixed body of the particle's own mass) or another particle (`wall` = 0, the same
+/// as dc_builtin_value_for_e). Only YADE `ViscElMat(tc, en, et)` needs another value against a
+/// wall: it calibrates with the reduced mass m/2 there (a zero mass is replaced by the other
+/// body's) while the sphere moves with m, so its damping ratio is zeta_O(en)/sqrt(2); targets
+/// e <= exp(-pi/2) = 0.2079 are unreachable against a wall. The other builtins use the dynamic
+/// body's mass against walls (YADE Mindlin: `isDynamic`), so `wall` does not change their value.
+///
+/// @param model      a DC_BUILTIN_* code.
+/// @param clamp      1 if the code clamps attractive normal forces (YADE: must be 1), else 0.
+/// @param wall       1: against a wall; 0: against a particle.
+/// @param e          target restitution, 0 < e <= 1.
+/// @param value_out  receives the value to type; untouched on error.
+/// @return as dc_builtin_value_for_e; DC_ERR_BUILTIN_MODEL also for `wall` not 0 or 1.
+///
+/// # Safety
+/// `value_out` must be NULL or point to writable memory for one double.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_builtin_value_for_e_wall(
+    model: i32,
+    clamp: i32,
+    wall: i32,
+    e: f64,
+    value_out: *mut f64,
+) -> i32 {
+    // SAFETY: forwarded caller contract on value_out.
+    unsafe {
+        write_result(value_out, || {
+            let (b, c) = parse(model, clamp)?;
+            builtin::value_for_e_wall(b, c, flag(wall)?, e)
+        })
+    }
+}
+
+/// dc_builtin_realised_e against a wall (`wall` = 1) or a particle (0): the forward map of
+/// dc_builtin_value_for_e_wall.
+///
+/// @param model   a DC_BUILTIN_* code.
+/// @param clamp   1 if the code clamps attractive forces (YADE: must be 1), else 0.
+/// @param wall    1: against a wall; 0: against a particle.
+/// @param value   the typed value.
+/// @param e_out   receives the realised e in [0, 1]; untouched on error.
+/// @return as dc_builtin_realised_e; DC_ERR_BUILTIN_MODEL also for `wall` not 0 or 1.
+///
+/// # Safety
+/// `e_out` must be NULL or point to writable memory for one double.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_builtin_realised_e_wall(
+    model: i32,
+    clamp: i32,
+    wall: i32,
+    value: f64,
+    e_out: *mut f64,
+) -> i32 {
+    // SAFETY: forwarded caller contract on e_out.
+    unsafe {
+        write_result(e_out, || {
+            let (b, c) = parse(model, clamp)?;
+            builtin::realised_e_wall(b, c, flag(wall)?, value)
         })
     }
 }
@@ -185,6 +251,24 @@ mod tests {
                 DC_ERR_NULL_POINTER
             );
             assert_eq!(v, keep);
+            assert_eq!(
+                dc_builtin_value_for_e_wall(6, 1, 2, 0.5, &mut v),
+                DC_ERR_BUILTIN_MODEL
+            );
+            assert_eq!(
+                dc_builtin_value_for_e_wall(6, 1, 1, 0.2, &mut v),
+                DC_ERR_BUILTIN_UNREACHABLE
+            );
+            assert_eq!(
+                dc_builtin_realised_e_wall(6, 1, -1, 0.5, &mut v),
+                DC_ERR_BUILTIN_MODEL
+            );
+            assert_eq!(v, keep);
+            assert_eq!(dc_builtin_value_for_e_wall(6, 1, 1, 0.3, &mut v), DC_OK);
+            let mut back = -1.0;
+            assert_eq!(dc_builtin_realised_e_wall(6, 1, 1, v, &mut back), DC_OK);
+            assert!((back - 0.3).abs() < 1e-13, "{back}");
+            v = keep;
             assert_eq!(
                 dc_builtin_yade_viscel_cn(0.5, -1.0, 1.0, &mut v),
                 DC_ERR_NOT_POSITIVE

@@ -12,7 +12,11 @@
 //! * **constant e** (the power-law Tsuji contact, any p): the weighted mean.
 //!
 //! Standard errors: with σᵢ given, the linearised covariance 1/Σ(Jᵢ²/σᵢ²) (σ taken as known);
-//! without, s²/ΣJᵢ² with s² = RSS/(n−1). Robust option: Huber IRLS (c = 1.345) on residuals
+//! without, s²/ΣJᵢ² with s² = RSS/(n−1). The reported 95 % interval is β ± q·SE with q the
+//! 0.975 quantile of Student's t with n − 1 degrees of freedom when σ comes from the scatter (one
+//! parameter fitted; the ratio (β̂ − β)/SE is t-distributed there, not normal), and of the normal
+//! distribution (1.959964) when σ is given ([`quantile`]). Seeded coverage studies in
+//! tests/fit.rs check the level. Robust option: Huber IRLS (c = 1.345) on residuals
 //! standardised by σᵢ (given) or by 1.4826·MAD (not given); the reported standard error is then the
 //! weighted one at the final Huber weights (approximate for outlying points).
 //!
@@ -21,6 +25,7 @@
 //! v_min or v_max. If that deviation is ≤ tol, a constant e (the power law) represents what the data
 //! support within the user's tolerance; otherwise the speed dependence is required.
 
+pub mod quantile;
 pub mod robust;
 
 use crate::viscoelastic::{calibration::b_from_e, full_range::e_full};
@@ -55,6 +60,13 @@ pub struct Fit {
     pub beta: f64,
     /// Standard error of β.
     pub beta_se: f64,
+    /// The multiplier of the standard errors for a two-sided 95 % interval: t_{0.975, n−1}
+    /// (σ from the scatter) or z_{0.975} = 1.959964 (σ given).
+    pub quantile95: f64,
+    /// β − quantile95·beta_se: lower end of the 95 % interval of β (may be below 0, β's bound).
+    pub beta_lo95: f64,
+    /// β + quantile95·beta_se: upper end of the 95 % interval of β.
+    pub beta_hi95: f64,
     /// Constant-e fit.
     pub e_const: f64,
     /// Standard error of the constant e.
@@ -202,19 +214,29 @@ fn gauss_newton(
             return Err(Error::FitDegenerate);
         }
         let step = num / den;
-        // Step halving keeps S decreasing and β ≥ 0.
+        // Step halving keeps S strictly decreasing and β ≥ 0. Strictly: at the minimum S is flat
+        // to rounding over a few ulps of β, and accepting equal S let the numerically
+        // differentiated step cycle between two such β (seen on noisy n = 6 data) until the
+        // iteration limit.
         let mut t = 1.0;
         let mut accepted = None;
         for _ in 0..60 {
             let cand = (beta + t * step).max(0.0);
             let sc = rss(d, cand, c, h)?;
-            if sc <= s {
+            if sc < s {
                 accepted = Some((cand, sc));
                 break;
             }
             t *= 0.5;
         }
         let Some((cand, sc)) = accepted else {
+            // No strict decrease: S is flat to rounding here, over a band of β whose width
+            // (≈ √ε·SE) depends on rounding, e.g. on the order of the points. A small
+            // Gauss–Newton step lands on the stationary point (zero gradient), which does not:
+            // take it and stop.
+            if step.abs() <= 1e-6 * beta.max(f64::MIN_POSITIVE) {
+                return Ok(((beta + step).max(0.0), it));
+            }
             return Ok((beta, it)); // no decrease possible: at the minimum to rounding
         };
         let moved = (cand - beta).abs();
@@ -332,9 +354,14 @@ pub fn fit_restitution(d: &Data, opt: &FitOptions) -> Result<Fit, Error> {
     let e_lo = model(beta, v_min, c)?;
     let e_hi = model(beta, v_max, c)?;
     let dev = (e_lo - e_const).abs().max((e_hi - e_const).abs());
+    let beta_se = var_beta.sqrt();
+    let q95 = quantile::quantile95(n, se_from_scatter);
     let fit = Fit {
         beta,
-        beta_se: var_beta.sqrt(),
+        beta_se,
+        quantile95: q95,
+        beta_lo95: beta - q95 * beta_se,
+        beta_hi95: beta + q95 * beta_se,
         e_const,
         e_const_se: var_c.sqrt(),
         chi2_viscoelastic: chi2_ve,
@@ -357,6 +384,8 @@ pub fn fit_restitution(d: &Data, opt: &FitOptions) -> Result<Fit, Error> {
     if [
         fit.beta,
         fit.beta_se,
+        fit.beta_lo95,
+        fit.beta_hi95,
         fit.e_const,
         fit.e_const_se,
         fit.chi2_viscoelastic,

@@ -55,6 +55,11 @@ pub struct Args {
     /// Target restitution, 0 < e ≤ 1.
     #[arg(long)]
     e: f64,
+    /// The particle hits a wall (fixed, massless wall or facet, or a fixed body of its own mass)
+    /// rather than another particle. Changes the value for YADE `viscel` only (it calibrates
+    /// with the reduced mass m/2 against a wall).
+    #[arg(long)]
+    wall: bool,
     /// LAMMPS normal model for `tsuji`.
     #[arg(long, value_enum, default_value = "hertz")]
     normal: Normal,
@@ -158,22 +163,36 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
         return viscel_cn(a);
     };
     let clamp = a.limit_force || b.always_clamps();
-    let value = builtin::value_for_e(b, clamp, a.e).map_err(|e| {
+    let partner = if a.wall { "a wall" } else { "a particle" };
+    let value = builtin::value_for_e_wall(b, clamp, a.wall, a.e).map_err(|e| {
         let mut f = refused(
-            &format!("{} cannot realise e = {}", label(b, clamp), a.e),
+            &format!(
+                "{} cannot realise e = {} against {partner}",
+                label(b, clamp),
+                a.e
+            ),
             e,
         );
         if e == demcontact::Error::BuiltinUnreachable {
-            f.message += &format!("; it realises {}", builtin::reachable_range(b, clamp));
+            f.message += &format!(
+                "; it realises {}",
+                builtin::reachable_range_wall(b, clamp, a.wall)
+            );
         }
         f
     })?;
     // What the uncorrected input (the target itself; for betan the textbook formula) gives.
     let naive = builtin::naive_value(b, a.e).ok();
-    let uncorrected = naive.and_then(|v| builtin::realised_e(b, clamp, v).ok());
+    let uncorrected = naive.and_then(|v| builtin::realised_e_wall(b, clamp, a.wall, v).ok());
     let (name, paste) = lines(b, clamp, value);
     let mut text = String::new();
-    let _ = writeln!(text, "{}, target e = {}", label(b, clamp), a.e);
+    let _ = writeln!(
+        text,
+        "{}, target e = {}{}",
+        label(b, clamp),
+        a.e,
+        if a.wall { " against a wall" } else { "" }
+    );
     let _ = writeln!(text, "  type {name} = {value:.10}");
     if let (Some(n), Some(u)) = (naive, uncorrected) {
         let _ = writeln!(text, "  (uncorrected, {name} = {n:.6} realises e = {u:.6})");
@@ -188,6 +207,7 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
         "model": format!("{:?}", b),
         "model_code": b.code(),
         "clamp": clamp,
+        "wall": a.wall,
         "target_e": num(a.e),
         "parameter": name,
         "value": num(value),

@@ -84,6 +84,18 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
     );
     let _ = writeln!(
         s,
+        "              95 % interval {:.6e} .. {:.6e}   (beta +- {:.4} SE: {})",
+        f.beta_lo95,
+        f.beta_hi95,
+        f.quantile95,
+        if f.se_from_scatter {
+            format!("Student t, {} degrees of freedom", n - 1)
+        } else {
+            "normal, sigma given".to_string()
+        }
+    );
+    let _ = writeln!(
+        s,
         "constant e:   e = {:.6} +- {:.2e}   (chi2 {:.4e}, max |resid| {:.4})",
         f.e_const, f.e_const_se, f.chi2_constant, f.max_residual_constant
     );
@@ -133,6 +145,8 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
         "robust": a.robust,
         "tol": num(a.tol),
         "beta": num(f.beta), "beta_se": num(f.beta_se),
+        "beta_lo95": num(f.beta_lo95), "beta_hi95": num(f.beta_hi95),
+        "quantile95": num(f.quantile95),
         "e_const": num(f.e_const), "e_const_se": num(f.e_const_se),
         "chi2_viscoelastic": num(f.chi2_viscoelastic), "chi2_constant": num(f.chi2_constant),
         "max_residual_viscoelastic": num(f.max_residual_viscoelastic),
