@@ -46,3 +46,10 @@ target_compile_options(contact_bench PRIVATE ${DC_BENCH_COPTS} -Wall -Wextra -We
 target_link_libraries(contact_bench PRIVATE demcontact_shared ${DC_LIBM})
 set_target_properties(contact_bench PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/bench")
 add_test(NAME bench_contact_bench_smoke COMMAND contact_bench --smoke)
+
+# Scalar full contact, library call vs header-only inline (examples_cpp/bench/contact_inline_bench.c;
+# a benchmark, not a test: the bits are compared by ctest inline_contact_*).
+add_executable(contact_inline_bench examples_cpp/bench/contact_inline_bench.c)
+target_compile_options(contact_inline_bench PRIVATE ${DC_BENCH_COPTS} -Wall -Wextra -Werror)
+target_link_libraries(contact_inline_bench PRIVATE demcontact_shared ${DC_LIBM})
+set_target_properties(contact_inline_bench PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/bench")

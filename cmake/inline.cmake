@@ -11,12 +11,25 @@ target_compile_options(test_inline_cpp PRIVATE -std=c++17 -Wall -Wextra -Werror 
 add_executable(test_inline_fma c_tests/inline/test_inline.c)
 target_compile_options(test_inline_fma PRIVATE -std=gnu11 -O3 -march=native -ffp-contract=fast
                                                -Wall -Wextra -Werror)
-foreach(t test_inline_c test_inline_cpp test_inline_fma)
+# The full contact (dc_contact_force_inline, dc_contact_model_init_inline): bits of results and
+# histories over many-step trajectories of random models, statuses of bad input.
+add_executable(test_inline_contact_c c_tests/inline/test_inline_contact.c)
+target_compile_options(test_inline_contact_c PRIVATE -std=c99 -pedantic -Wall -Wextra -Werror -O2)
+add_executable(test_inline_contact_cpp c_tests/inline/test_inline_contact.cpp)
+target_compile_options(test_inline_contact_cpp PRIVATE -std=c++17 -Wall -Wextra -Werror -O2)
+add_executable(test_inline_contact_fma c_tests/inline/test_inline_contact.c)
+target_compile_options(test_inline_contact_fma PRIVATE -std=gnu11 -O3 -march=native
+                                                       -ffp-contract=fast -Wall -Wextra -Werror)
+foreach(t test_inline_c test_inline_cpp test_inline_fma test_inline_contact_c
+          test_inline_contact_cpp test_inline_contact_fma)
   target_link_libraries(${t} PRIVATE demcontact::demcontact ${DC_LIBM})
 endforeach()
 add_test(NAME inline_c COMMAND test_inline_c 10000000)
 add_test(NAME inline_cpp COMMAND test_inline_cpp 10000000)
 add_test(NAME inline_fma COMMAND test_inline_fma 2000000)
+add_test(NAME inline_contact_c COMMAND test_inline_contact_c 10000000)
+add_test(NAME inline_contact_cpp COMMAND test_inline_contact_cpp 10000000)
+add_test(NAME inline_contact_fma COMMAND test_inline_contact_fma 2000000)
 foreach(mode clang cuda cuda_stub)
   add_test(NAME inline_${mode}
     COMMAND "${CMAKE_COMMAND}" -DMODE=${mode} -DSRC=${CMAKE_SOURCE_DIR} -DLIBDIR=${DC_LIB_DIR}
@@ -30,7 +43,12 @@ target_compile_options(header_only_c PRIVATE -std=c99 -pedantic -Wall -Wextra -W
 target_link_libraries(header_only_c PRIVATE ${DC_LIBM})
 add_executable(header_only_cpp examples_cpp/inline/header_only.cpp)
 target_compile_options(header_only_cpp PRIVATE -std=c++17 -Wall -Wextra -Werror)
-foreach(t header_only_c header_only_cpp)
+add_executable(header_only_contact_c examples_cpp/inline/header_only_contact.c)
+target_compile_options(header_only_contact_c PRIVATE -std=c99 -pedantic -Wall -Wextra -Werror)
+target_link_libraries(header_only_contact_c PRIVATE ${DC_LIBM})
+add_executable(header_only_contact_cpp examples_cpp/inline/header_only_contact.cpp)
+target_compile_options(header_only_contact_cpp PRIVATE -std=c++17 -Wall -Wextra -Werror)
+foreach(t header_only_c header_only_cpp header_only_contact_c header_only_contact_cpp)
   target_include_directories(${t} PRIVATE "${CMAKE_SOURCE_DIR}/include")
   set_target_properties(${t} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/examples_cpp")
   add_test(NAME example_${t} COMMAND ${t})

@@ -10,12 +10,20 @@
  *   double F = dc_normal_force_inline(&pair, overlap, vn, r_eff, m_eff);
  *   // in a loop over contacts of one pair, with the kernel code as a constant (vectorises):
  *   F = dc_normal_force_kernel_inline(DC_KERNEL_HERTZ_DAMPED_CLAMPED, &pair, d, vn, r, m);
+ *   // full contact (normal + tangential + rolling + twisting, caller-owned history):
+ *   dc_contact_spec spec;  dc_contact_model model;
+ *   dc_contact_spec_init_inline(&spec);    // then spec.normal = DC_NORMAL_HERTZ, ... as for the library
+ *   dc_contact_model_init_inline(&spec, &model);   // or the library's dc_contact_model_init
+ *   int32_t st = dc_contact_force_inline(&model, &state, dt, history, history_len, &result);
  *
  * Contract: the same meaning, statuses and results as the library's functions of the same name
  * without `_inline` (dc_normal_force, dc_alpha_from_e, dc_e_from_alpha, dc_effective_modulus,
- * dc_pair_powerlaw, dc_pair_powerlaw_alpha, dc_pair_linear, dc_pair_hertz, dc_pair_viscoelastic),
- * reading and filling the same dc_pair (declared in demcontact.h). The results are bit-identical
- * to the library's for the same inputs (tested over 10^7 random inputs per kernel, C and C++):
+ * dc_pair_powerlaw, dc_pair_powerlaw_alpha, dc_pair_linear, dc_pair_hertz, dc_pair_viscoelastic,
+ * and the full contact dc_contact_spec_init, dc_contact_model_init, dc_contact_force), reading and
+ * filling the same dc_pair / dc_contact_model / dc_contact_result (declared in demcontact.h). The
+ * results are bit-identical to the library's for the same inputs (tested over 10^7 random inputs
+ * per kernel, C and C++; the full contact over 10^7 steps of random trajectories, the history
+ * evolving, with the library and the header each carrying its own):
  *  - the force kernels use only + - * / and sqrt (correctly rounded everywhere); the general-p
  *    power d^((p-1)/2) is the library's own branch-free kernel dc_pow_inline (within 2 ulp of
  *    glibc's pow for p <= 5), written out here, not libm's pow;
@@ -31,8 +39,7 @@
  * without /fp:contract); otherwise results may differ from the library by a few ulp of the
  * larger force term. Value-changing options (-ffast-math, -Ofast) void the bit-identity.
  *
- * Kernel codes (dc_pair.kernel, ABI): 1..17 as listed below; any other value gives NaN.
- * Not here yet: the tangential (Hertz-Mindlin) update of the full-contact ABI.
+ * Kernel codes (dc_pair.kernel, ABI): 1..19 as listed below; any other value gives NaN.
  */
 #ifndef DEMCONTACT_INLINE_H
 #define DEMCONTACT_INLINE_H
@@ -83,6 +90,8 @@
 #define DC_KERNEL_HERTZ_DAMPED_CLAMPED 15
 #define DC_KERNEL_VISCO_DAMPED 16
 #define DC_KERNEL_VISCO_DAMPED_CLAMPED 17
+#define DC_KERNEL_DMT_ELASTIC 18
+#define DC_KERNEL_DMT_DAMPED 19
 
 /* ------------------------------------------------------------------ bits of a double */
 
@@ -264,6 +273,27 @@ DC_INLINE_FN double dci_visco(double k, double c, double d, double vn, double r)
     return k * sqrt(r * d) * (d + DCI_M(c, vn));
 }
 
+/* DMT (adhesive, never clamped; src/force/dmt.rs), h = 2 pi w: in contact the Hertz force minus
+ * h r; for -d_c < d <= 0 the tail -h r (1 + d/d_c), d_c = (h sqrt(r)/k)^(2/3) (libm pow, as the
+ * library's powf); 0 beyond and for NaN d. */
+DC_INLINE_FN double dci_dmt_tail(double k, double h, double d, double r) {
+    DCI_NO_CONTRACT
+    const double dc = pow(h * sqrt(r) / k, 2.0 / 3.0);
+    const double s = 1.0 + d / dc;
+    return s > 0.0 ? -h * r * s : 0.0;
+}
+DC_INLINE_FN double dci_dmt_elastic(double k, double h, double d, double r) {
+    DCI_NO_CONTRACT
+    return d > 0.0 ? DCI_M(k * sqrt(r * d), d) - DCI_M(h, r) : dci_dmt_tail(k, h, d, r);
+}
+DC_INLINE_FN double dci_dmt_damped(double k, double c, double h, double d, double vn, double r,
+                                   double m) {
+    DCI_NO_CONTRACT
+    if (!(d > 0.0)) return dci_dmt_tail(k, h, d, r);
+    const double q = sqrt(r * d);
+    return (DCI_M(k * q, d) + DCI_M(c * sqrt(m * q), vn)) - DCI_M(h, r);
+}
+
 /* dc_normal_force_inline with the kernel code given separately (it must be pair->kernel, e.g.
  * DC_KERNEL_HERTZ_DAMPED_CLAMPED for a dc_pair_hertz(..., e < 1, DC_END_FORCE) pair): with a
  * constant `kernel` the switch folds away when inlined, and a host loop over contacts compiles to
@@ -297,6 +327,8 @@ DC_INLINE_FN double dc_normal_force_kernel_inline(int32_t kernel, const dc_pair 
         return dci_finish(dci_hertz_damped(k, c, d, vn, r_eff, m_eff), d, 1);
     case DC_KERNEL_VISCO_DAMPED: return dci_finish(dci_visco(k, c, d, vn, r_eff), d, 0);
     case DC_KERNEL_VISCO_DAMPED_CLAMPED: return dci_finish(dci_visco(k, c, d, vn, r_eff), d, 1);
+    case DC_KERNEL_DMT_ELASTIC: return dci_dmt_elastic(k, h, d, r_eff);
+    case DC_KERNEL_DMT_DAMPED: return dci_dmt_damped(k, c, h, d, vn, r_eff, m_eff);
     default: return (double)NAN;
     }
 }
@@ -652,6 +684,613 @@ DC_INLINE_FN int32_t dc_pair_viscoelastic_inline(double E1, double nu1, double E
     dci_fill(out, DC_MODEL_VISCOELASTIC, kernel, criterion, 1.5, kf, 0.0, A, (double)NAN, kf, c,
              0.25);
     return DC_OK;
+}
+
+/* ------------------------------------------------------------------ full contact (issue 13)
+ * dc_contact_model_init_inline and dc_contact_force_inline: the library's dc_contact_model_init
+ * and dc_contact_force (src/contact/{spec,kinematics,frame,tangential*,rolling*,twisting*,
+ * evaluate}.rs, src/ffi/contact.rs), the same operations in the same order, bit for bit (the
+ * spin/tilt frame carry of the history springs, the Coulomb truncation, the rolling and
+ * twisting springs), the same statuses in the same order, outputs written only on DC_OK. */
+
+#define DCI_CONTACT_MAGIC UINT32_C(0x44434d31) /* dc_contact_model.magic (src/ffi/contact.rs) */
+
+typedef struct dci_v3 {
+    double x, y, z;
+} dci_v3;
+
+DC_INLINE_FN dci_v3 dci_v(double x, double y, double z) {
+    dci_v3 v;
+    v.x = x;
+    v.y = y;
+    v.z = z;
+    return v;
+}
+DC_INLINE_FN dci_v3 dci_load3(const double a[3]) { return dci_v(a[0], a[1], a[2]); }
+DC_INLINE_FN void dci_store3(double a[3], dci_v3 v) {
+    a[0] = v.x;
+    a[1] = v.y;
+    a[2] = v.z;
+}
+DC_INLINE_FN dci_v3 dci_add(dci_v3 a, dci_v3 b) { return dci_v(a.x + b.x, a.y + b.y, a.z + b.z); }
+DC_INLINE_FN dci_v3 dci_sub(dci_v3 a, dci_v3 b) { return dci_v(a.x - b.x, a.y - b.y, a.z - b.z); }
+DC_INLINE_FN dci_v3 dci_scale(double s, dci_v3 a) {
+    return dci_v(DCI_M(s, a.x), DCI_M(s, a.y), DCI_M(s, a.z));
+}
+DC_INLINE_FN double dci_dot(dci_v3 a, dci_v3 b) {
+    DCI_NO_CONTRACT
+    return DCI_M(a.x, b.x) + DCI_M(a.y, b.y) + DCI_M(a.z, b.z);
+}
+DC_INLINE_FN dci_v3 dci_cross(dci_v3 a, dci_v3 b) {
+    DCI_NO_CONTRACT
+    return dci_v(DCI_M(a.y, b.z) - DCI_M(a.z, b.y), DCI_M(a.z, b.x) - DCI_M(a.x, b.z),
+                 DCI_M(a.x, b.y) - DCI_M(a.y, b.x));
+}
+DC_INLINE_FN double dci_norm2(dci_v3 a) { return dci_dot(a, a); }
+/* a - (a.n) n */
+DC_INLINE_FN dci_v3 dci_tangential(dci_v3 a, dci_v3 n) { return dci_sub(a, dci_scale(dci_dot(a, n), n)); }
+DC_INLINE_FN int dci_finite3(dci_v3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+/* f n with +0 components when f = 0 (as every library path) */
+DC_INLINE_FN dci_v3 dci_normal_vector(double f, dci_v3 n) {
+    return f == 0.0 ? dci_v(0.0, 0.0, 0.0) : dci_scale(f, n);
+}
+/* a b/(a + b), an infinite b (wall, fixed body) giving a */
+DC_INLINE_FN double dci_harmonic(double a, double b) {
+    return b == (double)INFINITY ? a : a * (b / (a + b));
+}
+
+/* The frame motion of one step (src/contact/frame.rs): the rotation by the mean spin
+ * q = (w1 + w2)/2 dt (Rodrigues, s = sin|q|/|q|, c = (1 - cos|q|)/|q|^2, Taylor series for
+ * |q|^2 < 1e-3, else libm sin as the library's f64::sin), then the minimal tilt from the spun old
+ * normal to n, then the projection on the plane normal to n. */
+typedef struct dci_frame {
+    dci_v3 q, tk, n;
+    double s, c, tc;
+    int carry;
+} dci_frame;
+
+/* v + s q x v + c q x (q x v) */
+DC_INLINE_FN dci_v3 dci_spin(dci_v3 q, double s, double c, dci_v3 v) {
+    const dci_v3 qv = dci_cross(q, v);
+    const dci_v3 qqv = dci_cross(q, qv);
+    return dci_add(v, dci_add(dci_scale(s, qv), dci_scale(c, qqv)));
+}
+DC_INLINE_FN void dci_rodrigues(double q2, double *s, double *c) {
+    DCI_NO_CONTRACT
+    if (q2 < 1e-3) {
+        *s = 1.0 - DCI_M(q2 / 6.0, 1.0 - DCI_M(q2 / 20.0, 1.0 - q2 / 42.0));
+        *c = 0.5 * (1.0 - DCI_M(q2 / 12.0, 1.0 - DCI_M(q2 / 30.0, 1.0 - q2 / 56.0)));
+    } else {
+        const double th = sqrt(q2);
+        const double sn = sin(th);
+        const double h = sin(0.5 * th); /* 1 - cos = 2 sin^2(th/2), no cancellation */
+        *s = sn / th;
+        *c = 2.0 * h * h / q2;
+    }
+}
+DC_INLINE_FN dci_frame dci_frame_new(dci_v3 n_old, dci_v3 n, dci_v3 q) {
+    dci_frame f;
+    dci_rodrigues(dci_norm2(q), &f.s, &f.c);
+    const dci_v3 spun = dci_spin(q, f.s, f.c, n_old);
+    f.q = q;
+    f.tc = dci_dot(spun, n);
+    f.tk = dci_cross(spun, n);
+    f.carry = f.tc > -0.5 && dci_norm2(n_old) > 0.25;
+    f.n = n;
+    return f;
+}
+/* Rodrigues about k = a x b: c v + k x v + (k.v)/(1 + c) k */
+DC_INLINE_FN dci_v3 dci_tilt(double c, dci_v3 k, dci_v3 v) {
+    return dci_add(dci_add(dci_scale(c, v), dci_cross(k, v)),
+                   dci_scale(dci_dot(k, v) / (1.0 + c), k));
+}
+DC_INLINE_FN dci_v3 dci_carry(const dci_frame *f, dci_v3 v) {
+    const dci_v3 w = f->carry ? dci_tilt(f->tc, f->tk, dci_spin(f->q, f->s, f->c, v)) : v;
+    return dci_tangential(w, f->n);
+}
+
+/* Kinematics of one contact (src/contact/kinematics.rs). */
+typedef struct dci_kin {
+    dci_v3 n, vt, w_roll, w_rel;
+    double d, vn, r_eff, m_eff, a1, a2, m1, m2, r1, r2;
+    int wall;
+} dci_kin;
+
+DC_INLINE_FN dci_kin dci_kin_of(const dc_contact_state *s, dci_v3 n_old, double dt,
+                                dci_frame *frame) {
+    DCI_NO_CONTRACT
+    dci_kin k;
+    const dci_v3 n = dci_load3(s->n), v1 = dci_load3(s->v1), v2 = dci_load3(s->v2);
+    const dci_v3 w1 = dci_load3(s->w1), w2 = dci_load3(s->w2);
+    *frame = dci_frame_new(n_old, n, dci_scale(0.5 * dt, dci_add(w1, w2)));
+    const double d = s->overlap;
+    k.wall = s->r2 == (double)INFINITY;
+    k.a1 = s->r1 - DCI_M(0.5, d);
+    k.a2 = s->r2 - DCI_M(0.5, d);
+    const dci_v3 vr = dci_sub(v1, v2);
+    k.vn = -dci_dot(vr, n);
+    const dci_v3 arm = k.wall ? dci_scale(k.a1, w1) : dci_add(dci_scale(k.a1, w1), dci_scale(k.a2, w2));
+    const dci_v3 vc = dci_sub(vr, dci_cross(arm, n));
+    k.w_rel = dci_sub(w1, w2);
+    k.n = n;
+    k.d = d;
+    k.r_eff = dci_harmonic(s->r1, s->r2);
+    k.m_eff = dci_harmonic(s->m1, s->m2);
+    k.vt = dci_tangential(vc, n);
+    k.w_roll = dci_tangential(k.w_rel, n);
+    k.m1 = s->m1;
+    k.m2 = s->m2;
+    k.r1 = s->r1;
+    k.r2 = s->r2;
+    return k;
+}
+
+/* Tangential stage (src/contact/tangential.rs): spring carried, incremented by v_t dt, dashpot,
+ * Coulomb truncation with LAMMPS's spring reset. kt: the law's stiffness of this contact. */
+DC_INLINE_FN dci_v3 dci_tangential_step(const dc_contact_model *m, const dci_kin *k, double kt,
+                                        double f_normal, double dt, const dci_frame *frame,
+                                        dci_v3 *xi, int *sliding) {
+    DCI_NO_CONTRACT
+    const double ct = m->zeta_t > 0.0
+                          ? 2.0 * m->zeta_t * sqrt(m->kappa / (1.0 + m->kappa) * k->m_eff * kt)
+                          : 0.0;
+    const dci_v3 spring = dci_add(dci_carry(frame, *xi), dci_scale(dt, k->vt));
+    const dci_v3 trial = dci_sub(dci_scale(-kt, spring), dci_scale(ct, k->vt));
+    const double limit = m->mu * fabs(f_normal);
+    const double t2 = dci_norm2(trial);
+    if (t2 > limit * limit) {
+        const dci_v3 ft = dci_scale(limit / sqrt(t2), trial);
+        *xi = kt > 0.0 ? dci_scale(-1.0 / kt, dci_add(ft, dci_scale(ct, k->vt))) : spring;
+        *sliding = 1;
+        return ft;
+    }
+    *xi = spring;
+    *sliding = 0;
+    return trial;
+}
+
+/* Constant rolling torque (src/contact/rolling_constant.rs). */
+DC_INLINE_FN dci_v3 dci_rolling_constant(const dc_contact_model *m, const dci_kin *k,
+                                         double f_normal, int *on) {
+    const double w2 = dci_norm2(k->w_roll);
+    if (w2 > 0.0) {
+        const double mag = m->mu_r * k->r_eff * fabs(f_normal);
+        *on = 1;
+        return dci_scale(-mag / sqrt(w2), k->w_roll);
+    }
+    *on = 0;
+    return dci_v(0.0, 0.0, 0.0);
+}
+
+/* EPSD rolling (src/contact/rolling_epsd.rs); kn: the normal law's elastic tangent stiffness. */
+DC_INLINE_FN dci_v3 dci_rolling_epsd(const dc_contact_model *m, const dci_kin *k, double f_normal,
+                                     double kn, double dt, const dci_frame *frame, dci_v3 *mk,
+                                     int *lim) {
+    DCI_NO_CONTRACT
+    const dci_v3 wr = k->w_roll;
+    const double kr = m->k_r > 0.0 ? m->k_r : 2.25 * kn * m->mu_r * m->mu_r * k->r_eff * k->r_eff;
+    const dci_v3 spring = dci_add(dci_carry(frame, *mk), dci_scale(-kr * dt, wr));
+    const double limit = m->mu_r * k->r_eff * fabs(f_normal);
+    const double s2 = dci_norm2(spring);
+    if (s2 > limit * limit) {
+        const dci_v3 at = dci_scale(limit / sqrt(s2), spring);
+        *mk = at;
+        *lim = 1;
+        return at;
+    }
+    *mk = spring;
+    *lim = 0;
+    const double i1 = (1.0 + m->kappa) * k->m1 * k->r1 * k->r1;
+    const double i2 = (1.0 + m->kappa) * k->m2 * k->r2 * k->r2;
+    const double ir = 1.0 / (1.0 / i1 + 1.0 / i2);
+    const double cr = 2.0 * m->eta_r * sqrt(ir * kr);
+    return dci_add(spring, dci_scale(-cr, wr));
+}
+
+/* Twisting spring-dashpot-slider (src/contact/twisting_sds.rs): torque about n on body 1. */
+DC_INLINE_FN double dci_twisting(const dc_contact_model *m, const dci_kin *k, double f_normal,
+                                 double dt, double *mk, int *lim) {
+    DCI_NO_CONTRACT
+    const double wt = dci_dot(k->w_rel, k->n);
+    const double spring = *mk - DCI_M(m->k_tw * wt, dt);
+    const double limit = m->mu_tw * fabs(f_normal);
+    if (fabs(spring) > limit) {
+        const double at = copysign(limit, spring);
+        *mk = at;
+        *lim = 1;
+        return at;
+    }
+    *mk = spring;
+    *lim = 0;
+    const double i1 = m->kappa * k->m1 * k->r1 * k->r1;
+    const double i2 = m->kappa * k->m2 * k->r2 * k->r2;
+    const double it = 1.0 / (1.0 / i1 + 1.0 / i2);
+    const double c = 2.0 * m->eta_tw * sqrt(it * m->k_tw);
+    return spring - DCI_M(c, wt);
+}
+
+/* History layout (src/contact/model.rs Layout::of): normal of the last step at 0, then the
+ * tangential spring (3), the rolling spring (3, EPSD only), the twisting spring (1). -1: absent. */
+typedef struct dci_layout {
+    int len, tangential, rolling, twisting;
+} dci_layout;
+
+DC_INLINE_FN dci_layout dci_layout_of(int32_t tangential, int32_t rolling, int32_t twisting) {
+    dci_layout l;
+    const int has_t = tangential != DC_TANGENTIAL_NONE;
+    const int has_r = rolling == DC_ROLLING_EPSD;
+    const int has_tw = twisting != DC_TWISTING_NONE;
+    l.len = has_t || has_r || has_tw ? 3 : 0;
+    l.tangential = has_t ? l.len : -1;
+    l.len += has_t ? 3 : 0;
+    l.rolling = has_r ? l.len : -1;
+    l.len += has_r ? 3 : 0;
+    l.twisting = has_tw ? l.len : -1;
+    l.len += has_tw ? 1 : 0;
+    return l;
+}
+
+/* One contact through every stage (src/contact/evaluate.rs `evaluate`); h: the history. */
+DC_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_layout lay,
+                                       const dc_contact_state *s, double dt,
+                                       double h[DC_CONTACT_HISTORY_MAX], dc_contact_result *out) {
+    DCI_NO_CONTRACT
+    dci_frame frame;
+    const dci_kin k = dci_kin_of(s, dci_v(h[0], h[1], h[2]), dt, &frame);
+    const dc_pair *pair = &m->normal;
+    const double f = dc_normal_force_kernel_inline(pair->kernel, pair, k.d, k.vn, k.r_eff, k.m_eff);
+    dci_v3 ft = dci_v(0.0, 0.0, 0.0), t1 = dci_v(0.0, 0.0, 0.0), t2 = dci_v(0.0, 0.0, 0.0);
+    dci_v3 force;
+    int sliding = 0, rolling_sliding = 0;
+    out->f_n = f;
+    if (!(s->overlap > 0.0)) {
+        /* not touching: history reset, only an adhesive normal law acts */
+        for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++) h[i] = 0.0;
+        force = dci_normal_vector(f, k.n);
+    } else if (lay.len == 0 && m->rolling == DC_ROLLING_NONE) {
+        force = dci_normal_vector(f, k.n);
+    } else {
+        if (lay.len > 0) {
+            h[0] = k.n.x;
+            h[1] = k.n.y;
+            h[2] = k.n.z;
+        }
+        force = dci_normal_vector(f, k.n);
+        if (lay.tangential >= 0) {
+            dci_v3 xi = dci_v(h[lay.tangential], h[lay.tangential + 1], h[lay.tangential + 2]);
+            const double kt = m->tangential == DC_TANGENTIAL_MINDLIN ? m->kt * sqrt(k.r_eff * k.d)
+                                                                    : m->kt;
+            if (m->tangential == DC_TANGENTIAL_LINEAR || m->tangential == DC_TANGENTIAL_MINDLIN)
+                ft = dci_tangential_step(m, &k, kt, f, dt, &frame, &xi, &sliding);
+            h[lay.tangential] = xi.x;
+            h[lay.tangential + 1] = xi.y;
+            h[lay.tangential + 2] = xi.z;
+            force = dci_add(force, ft);
+            const dci_v3 nft = dci_cross(k.n, ft);
+            t1 = dci_scale(-k.a1, nft);
+            if (!k.wall) t2 = dci_scale(-k.a2, nft);
+        }
+        if (m->rolling == DC_ROLLING_CONSTANT) {
+            const dci_v3 mr = dci_rolling_constant(m, &k, f, &rolling_sliding);
+            t1 = dci_add(t1, mr);
+            if (!k.wall) t2 = dci_sub(t2, mr);
+        } else if (m->rolling == DC_ROLLING_EPSD && lay.rolling >= 0) {
+            double kn = 0.0;
+            if (!(m->k_r > 0.0)) {
+                /* the normal law's elastic tangent stiffness p F_el/d (vn = 0: no damping) */
+                const double fe =
+                    dc_normal_force_kernel_inline(pair->kernel, pair, k.d, 0.0, k.r_eff, k.m_eff);
+                kn = pair->p * fe / k.d;
+            }
+            dci_v3 mk = dci_v(h[lay.rolling], h[lay.rolling + 1], h[lay.rolling + 2]);
+            const dci_v3 mr = dci_rolling_epsd(m, &k, f, kn, dt, &frame, &mk, &rolling_sliding);
+            h[lay.rolling] = mk.x;
+            h[lay.rolling + 1] = mk.y;
+            h[lay.rolling + 2] = mk.z;
+            t1 = dci_add(t1, mr);
+            if (!k.wall) t2 = dci_sub(t2, mr);
+        }
+        if (lay.twisting >= 0) {
+            int lim;
+            const double t = dci_twisting(m, &k, f, dt, &h[lay.twisting], &lim);
+            const dci_v3 mr = dci_scale(t, k.n);
+            t1 = dci_add(t1, mr);
+            if (!k.wall) t2 = dci_sub(t2, mr);
+            rolling_sliding |= lim;
+        }
+    }
+    dci_store3(out->force, force);
+    dci_store3(out->torque1, t1);
+    dci_store3(out->torque2, t2);
+    dci_store3(out->ft, ft);
+    out->sliding = sliding;
+    out->rolling_sliding = rolling_sliding;
+}
+
+/* The structural and value checks of dc_contact_force on a model (DC_OK or
+ * DC_ERR_CONTACT_MODEL_INVALID). */
+DC_INLINE_FN int32_t dci_check_contact_model(const dc_contact_model *m, dci_layout lay) {
+    const dc_pair *p = &m->normal;
+    int ok = ((p->criterion == DC_END_OVERLAP && p->clamp == 0) ||
+              (p->criterion == DC_END_FORCE && p->clamp == 1)) &&
+             m->magic == DCI_CONTACT_MAGIC && m->history_len == (uint32_t)lay.len &&
+             m->reserved_i == 0;
+    for (int i = 0; i < 6; i++) ok = ok && dci_bits(m->reserved[i]) == 0;
+    if (!ok) return DC_ERR_CONTACT_MODEL_INVALID;
+    ok = p->kernel >= DC_KERNEL_LIN_ELASTIC && p->kernel <= DC_KERNEL_DMT_DAMPED;
+    ok = ok && (m->tangential == DC_TANGENTIAL_NONE || m->tangential == DC_TANGENTIAL_LINEAR ||
+                m->tangential == DC_TANGENTIAL_MINDLIN);
+    ok = ok && (m->rolling == DC_ROLLING_NONE || m->rolling == DC_ROLLING_CONSTANT ||
+                m->rolling == DC_ROLLING_EPSD);
+    ok = ok && (m->twisting == DC_TWISTING_NONE || m->twisting == DC_TWISTING_SDS);
+    const double c[13] = {p->k,     p->c,  p->h,   m->mu,    m->kt,   m->zeta_t, m->kappa,
+                          m->mu_r,  m->k_r, m->eta_r, m->mu_tw, m->k_tw, m->eta_tw};
+    for (int i = 0; i < 13; i++) ok = ok && isfinite(c[i]) && c[i] >= 0.0;
+    ok = ok && m->kappa > 0.0;
+    ok = ok && (m->tangential == DC_TANGENTIAL_NONE || m->kt > 0.0);
+    return ok ? DC_OK : DC_ERR_CONTACT_MODEL_INVALID;
+}
+
+DC_INLINE_FN int32_t dci_check_contact_state(const dc_contact_state *s) {
+    const int body2 = (isfinite(s->r2) || s->r2 == (double)INFINITY) &&
+                      (isfinite(s->m2) || s->m2 == (double)INFINITY);
+    if (!(dci_finite3(dci_load3(s->n)) && isfinite(s->overlap) && dci_finite3(dci_load3(s->v1)) &&
+          dci_finite3(dci_load3(s->v2)) && dci_finite3(dci_load3(s->w1)) &&
+          dci_finite3(dci_load3(s->w2)) && isfinite(s->r1) && isfinite(s->m1) && body2))
+        return DC_ERR_NOT_FINITE;
+    if (!(s->r1 > 0.0 && s->r2 > 0.0 && s->m1 > 0.0 && s->m2 > 0.0)) return DC_ERR_NOT_POSITIVE;
+    const double u = dci_norm2(dci_load3(s->n)) - 1.0;
+    if (!(fabs(u) <= 1e-6)) return DC_ERR_NOT_UNIT;
+    return DC_OK;
+}
+
+/* Force and torques of one sphere-sphere or sphere-wall contact, advancing its history by one
+ * step dt: the library's dc_contact_force (same arguments, meaning, statuses; same bits).
+ * `model` from dc_contact_model_init or dc_contact_model_init_inline; `history`:
+ * history_len >= model->history_len doubles, all zero for a new contact, updated in place on
+ * success (NULL allowed when the model needs none). On error `out` and `history` are untouched. */
+DC_INLINE_FN int32_t dc_contact_force_inline(const dc_contact_model *model,
+                                             const dc_contact_state *state, double dt,
+                                             double *history, size_t history_len,
+                                             dc_contact_result *out) {
+    if (!state || !model || !out) return DC_ERR_NULL_POINTER;
+    const dci_layout lay = dci_layout_of(model->tangential, model->rolling, model->twisting);
+    const dc_pair *p = &model->normal;
+    int ok = ((p->criterion == DC_END_OVERLAP && p->clamp == 0) ||
+              (p->criterion == DC_END_FORCE && p->clamp == 1)) &&
+             model->magic == DCI_CONTACT_MAGIC && model->history_len == (uint32_t)lay.len &&
+             model->reserved_i == 0;
+    for (int i = 0; i < 6; i++) ok = ok && dci_bits(model->reserved[i]) == 0;
+    if (!ok) return DC_ERR_CONTACT_MODEL_INVALID;
+    const size_t need = (size_t)lay.len;
+    if (need > 0 && !history) return DC_ERR_NULL_POINTER;
+    if (history_len < need) return DC_ERR_BUFFER_TOO_SHORT;
+    if (need > 0 && ((uintptr_t)history % sizeof(double)) != 0) return DC_ERR_BUFFER_LAYOUT;
+    int32_t st = dci_check_contact_model(model, lay);
+    if (st != DC_OK) return st;
+    if (!isfinite(dt)) return DC_ERR_NOT_FINITE;
+    if (!(dt > 0.0)) return DC_ERR_NOT_POSITIVE;
+    if ((st = dci_check_contact_state(state)) != DC_OK) return st;
+    double h[DC_CONTACT_HISTORY_MAX];
+    for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++) h[i] = (size_t)i < need ? history[i] : 0.0;
+    for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++)
+        if (!isfinite(h[i])) return DC_ERR_NOT_FINITE;
+    dc_contact_result r;
+    dci_contact_evaluate(model, lay, state, dt, h, &r);
+    ok = isfinite(r.f_n) && dci_finite3(dci_load3(r.force)) && dci_finite3(dci_load3(r.ft)) &&
+         dci_finite3(dci_load3(r.torque1)) && dci_finite3(dci_load3(r.torque2));
+    for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++) ok = ok && isfinite(h[i]);
+    if (!ok) return DC_ERR_RESULT_RANGE;
+    for (size_t i = 0; i < need; i++) history[i] = h[i];
+    *out = r;
+    return DC_OK;
+}
+
+/* ---- dc_contact_model_init_inline (src/contact/spec.rs contact_model) */
+
+/* NaN = unset (DC_ERR_SPEC_UNSET) */
+DC_INLINE_FN int32_t dci_set(double x) { return x != x ? DC_ERR_SPEC_UNSET : DC_OK; }
+DC_INLINE_FN int32_t dci_non_negative(double x, double *out) {
+    if (x != x) return DC_ERR_SPEC_UNSET;
+    if (!isfinite(x)) return DC_ERR_NOT_FINITE;
+    if (!(x >= 0.0)) return DC_ERR_NEGATIVE;
+    *out = x;
+    return DC_OK;
+}
+DC_INLINE_FN int32_t dci_positive(double x, double *out) {
+    if (x != x) return DC_ERR_SPEC_UNSET;
+    if (!isfinite(x)) return DC_ERR_NOT_FINITE;
+    if (!(x > 0.0)) return DC_ERR_NOT_POSITIVE;
+    *out = x;
+    return DC_OK;
+}
+/* (1 - nu^2)/E of one material, E = +inf allowed (rigid) */
+DC_INLINE_FN int32_t dci_compliance(double e, double nu, double *out) {
+    if (e != e || nu != nu) return DC_ERR_SPEC_UNSET;
+    if (!isfinite(nu)) return DC_ERR_NOT_FINITE;
+    if (!(e > 0.0 && nu > -1.0 && nu <= 0.5)) return DC_ERR_NOT_POSITIVE;
+    *out = (1.0 - nu) * (1.0 + nu) / e;
+    return DC_OK;
+}
+DC_INLINE_FN int32_t dci_spec_hertz_factor(const dc_contact_spec *s, double *kf) {
+    double c1, c2;
+    int32_t st = dci_compliance(s->E1, s->nu1, &c1);
+    if (st != DC_OK) return st;
+    if ((st = dci_compliance(s->E2, s->nu2, &c2)) != DC_OK) return st;
+    const double v = 4.0 / 3.0 * (1.0 / (c1 + c2));
+    if (!isfinite(v)) return DC_ERR_NOT_FINITE;
+    if (!(v > 0.0)) return DC_ERR_RESULT_RANGE;
+    *kf = v;
+    return DC_OK;
+}
+DC_INLINE_FN int32_t dci_hertz_from_factor(double kf, double e, int32_t criterion, dc_pair *out) {
+    double alpha;
+    const int32_t st = dci_alpha_from_e(e, 1.5, criterion, &alpha);
+    if (st != DC_OK) return st;
+    const double c = alpha * sqrt(kf);
+    if (!isfinite(c)) return DC_ERR_RESULT_RANGE;
+    const int32_t kernel = dci_pick(alpha > 0.0, criterion, DC_KERNEL_HERTZ_ELASTIC,
+                                    DC_KERNEL_HERTZ_DAMPED, DC_KERNEL_HERTZ_DAMPED_CLAMPED);
+    dci_fill(out, DC_MODEL_HERTZ, kernel, criterion, 1.5, kf, alpha, 0.0, e, kf, c, 0.25);
+    return DC_OK;
+}
+DC_INLINE_FN int32_t dci_spec_normal(const dc_contact_spec *s, int32_t crit, dc_pair *out) {
+    double e_n, kf;
+    int32_t st;
+    if (s->damping == DC_DAMPING_NONE) e_n = 1.0;
+    else if (s->damping == DC_DAMPING_RESTITUTION) {
+        if ((st = dci_set(s->e_n)) != DC_OK) return st;
+        e_n = s->e_n;
+    } else
+        return DC_ERR_SPEC_MODEL;
+    switch (s->normal) {
+    case DC_NORMAL_HERTZ:
+        if ((st = dci_spec_hertz_factor(s, &kf)) != DC_OK) return st;
+        return dci_hertz_from_factor(kf, e_n, crit, out);
+    case DC_NORMAL_POWERLAW:
+    case DC_NORMAL_LINEAR: {
+        double p = 1.0;
+        if (s->normal == DC_NORMAL_POWERLAW) {
+            if ((st = dci_set(s->p)) != DC_OK) return st;
+            p = s->p;
+        }
+        if ((st = dci_set(s->k_n)) != DC_OK) return st;
+        return dc_pair_powerlaw_inline(p, s->k_n, e_n, crit, out);
+    }
+    case DC_NORMAL_VISCOELASTIC: {
+        if (s->damping != DC_DAMPING_NONE) return DC_ERR_SPEC_MODEL;
+        if ((st = dci_spec_hertz_factor(s, &kf)) != DC_OK) return st;
+        if ((st = dci_set(s->visco_A)) != DC_OK) return st;
+        const double A = s->visco_A;
+        if (!isfinite(A)) return DC_ERR_NOT_FINITE;
+        if (!(A >= 0.0)) return DC_ERR_NEGATIVE;
+        const double c = 1.5 * A;
+        if (!isfinite(c)) return DC_ERR_RESULT_RANGE;
+        const int32_t kernel = dci_pick(A > 0.0, crit, DC_KERNEL_HERTZ_ELASTIC,
+                                        DC_KERNEL_VISCO_DAMPED, DC_KERNEL_VISCO_DAMPED_CLAMPED);
+        dci_fill(out, DC_MODEL_VISCOELASTIC, kernel, crit, 1.5, kf, 0.0, A, (double)NAN, kf, c,
+                 0.25);
+        return DC_OK;
+    }
+    case DC_NORMAL_DMT: {
+        if ((st = dci_spec_hertz_factor(s, &kf)) != DC_OK) return st;
+        if ((st = dci_set(s->work_of_adhesion)) != DC_OK) return st;
+        const double w = s->work_of_adhesion;
+        if (!isfinite(w)) return DC_ERR_NOT_FINITE;
+        if (!(w >= 0.0)) return DC_ERR_NEGATIVE;
+        if (crit != DC_END_OVERLAP) return DC_ERR_SPEC_MODEL;
+        double alpha;
+        if ((st = dci_alpha_from_e(e_n, 1.5, crit, &alpha)) != DC_OK) return st;
+        const double c = alpha * sqrt(kf);
+        const double h = 2.0 * DCI_PI * w;
+        if (!(isfinite(c) && isfinite(h))) return DC_ERR_RESULT_RANGE;
+        dci_fill(out, DC_MODEL_DMT, alpha > 0.0 ? DC_KERNEL_DMT_DAMPED : DC_KERNEL_DMT_ELASTIC,
+                 crit, 1.5, kf, alpha, 0.0, e_n, kf, c, h);
+        return DC_OK;
+    }
+    default: return DC_ERR_SPEC_MODEL;
+    }
+}
+
+/* zeta_t = L/sqrt(pi^2 + L^2), L = -ln e_t */
+DC_INLINE_FN int32_t dci_zeta_from_e_t(double e_t, double *out) {
+    DCI_NO_CONTRACT
+    if (!isfinite(e_t)) return DC_ERR_NOT_FINITE;
+    if (!(e_t > 0.0 && e_t <= 1.0)) return DC_ERR_RESTITUTION_RANGE;
+    const double l = -log(e_t);
+    *out = l / sqrt(DCI_M(DCI_PI, DCI_PI) + DCI_M(l, l));
+    return DC_OK;
+}
+
+/* 8 G*, 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2 (src/contact/tangential_mindlin.rs) */
+DC_INLINE_FN int32_t dci_eight_g_star(double e1, double nu1, double e2, double nu2, double *out) {
+    const double c1 = 2.0 * (2.0 - nu1) * (1.0 + nu1) / e1;
+    const double c2 = 2.0 * (2.0 - nu2) * (1.0 + nu2) / e2;
+    const double v = 8.0 * (1.0 / (c1 + c2));
+    if (!isfinite(v)) return DC_ERR_NOT_FINITE;
+    if (!(v > 0.0)) return DC_ERR_RESULT_RANGE;
+    *out = v;
+    return DC_OK;
+}
+
+DC_INLINE_FN int32_t dci_contact_model(const dc_contact_spec *s, dc_contact_model *m) {
+    int32_t st;
+    if (s->criterion != DC_END_OVERLAP && s->criterion != DC_END_FORCE) return DC_ERR_CRITERION;
+    memset(m, 0, sizeof *m);
+    if ((st = dci_spec_normal(s, s->criterion, &m->normal)) != DC_OK) return st;
+    if ((st = dci_positive(s->inertia_factor, &m->kappa)) != DC_OK) return st;
+    if (!(m->kappa <= 1.0)) return DC_ERR_SPEC_MODEL;
+    if (s->tangential == DC_TANGENTIAL_LINEAR || s->tangential == DC_TANGENTIAL_MINDLIN) {
+        if ((st = dci_non_negative(s->mu, &m->mu)) != DC_OK) return st;
+        if ((st = dci_set(s->e_t)) != DC_OK) return st;
+        if ((st = dci_zeta_from_e_t(s->e_t, &m->zeta_t)) != DC_OK) return st;
+        if (s->tangential == DC_TANGENTIAL_LINEAR) {
+            if ((st = dci_positive(s->k_t, &m->kt)) != DC_OK) return st;
+        } else {
+            double c;
+            if ((st = dci_compliance(s->E1, s->nu1, &c)) != DC_OK) return st;
+            if ((st = dci_compliance(s->E2, s->nu2, &c)) != DC_OK) return st;
+            if ((st = dci_eight_g_star(s->E1, s->nu1, s->E2, s->nu2, &m->kt)) != DC_OK) return st;
+        }
+    } else if (s->tangential != DC_TANGENTIAL_NONE)
+        return DC_ERR_SPEC_MODEL;
+    if (s->rolling == DC_ROLLING_CONSTANT || s->rolling == DC_ROLLING_EPSD) {
+        if ((st = dci_non_negative(s->mu_r, &m->mu_r)) != DC_OK) return st;
+        if (s->rolling == DC_ROLLING_EPSD) {
+            if ((st = dci_non_negative(s->k_r, &m->k_r)) != DC_OK) return st;
+            if ((st = dci_non_negative(s->eta_r, &m->eta_r)) != DC_OK) return st;
+        }
+    } else if (s->rolling != DC_ROLLING_NONE)
+        return DC_ERR_SPEC_MODEL;
+    if (s->twisting == DC_TWISTING_SDS) {
+        if ((st = dci_non_negative(s->mu_tw, &m->mu_tw)) != DC_OK) return st;
+        if ((st = dci_positive(s->k_tw, &m->k_tw)) != DC_OK) return st;
+        if ((st = dci_non_negative(s->eta_tw, &m->eta_tw)) != DC_OK) return st;
+    } else if (s->twisting != DC_TWISTING_NONE)
+        return DC_ERR_SPEC_MODEL;
+    m->magic = DCI_CONTACT_MAGIC;
+    m->history_len = (uint32_t)dci_layout_of(s->tangential, s->rolling, s->twisting).len;
+    m->tangential = s->tangential;
+    m->rolling = s->rolling;
+    m->twisting = s->twisting;
+    return DC_OK;
+}
+
+/* A dc_contact_spec with its version, size and defaults: the library's dc_contact_spec_init. */
+DC_INLINE_FN int32_t dc_contact_spec_init_inline(dc_contact_spec *spec) {
+    if (!spec) return DC_ERR_NULL_POINTER;
+    const double u = (double)NAN;
+    memset(spec, 0, sizeof *spec);
+    spec->version = DC_CONTACT_SPEC_VERSION;
+    spec->size = (uint32_t)sizeof *spec;
+    spec->normal = 0;
+    spec->damping = DC_DAMPING_NONE;
+    spec->criterion = DC_END_FORCE;
+    spec->tangential = DC_TANGENTIAL_NONE;
+    spec->rolling = DC_ROLLING_NONE;
+    spec->twisting = DC_TWISTING_NONE;
+    spec->E1 = spec->nu1 = spec->E2 = spec->nu2 = spec->p = spec->k_n = spec->e_n = u;
+    spec->visco_A = spec->mu = spec->k_t = spec->mu_r = spec->mu_tw = spec->k_tw = u;
+    spec->work_of_adhesion = u;
+    spec->e_t = 1.0;
+    spec->k_r = 0.0;
+    spec->eta_r = spec->eta_tw = 0.0;
+    spec->inertia_factor = 0.4;
+    return DC_OK;
+}
+
+/* A validated contact model from a spec: the library's dc_contact_model_init (same statuses,
+ * the same model bits). `out` is written only on DC_OK. */
+DC_INLINE_FN int32_t dc_contact_model_init_inline(const dc_contact_spec *spec,
+                                                  dc_contact_model *out) {
+    if (!spec) return DC_ERR_NULL_POINTER;
+    if (spec->version != DC_CONTACT_SPEC_VERSION || spec->size != (uint32_t)sizeof(dc_contact_spec))
+        return out ? DC_ERR_SPEC_VERSION : DC_ERR_NULL_POINTER;
+    if (!out) return DC_ERR_NULL_POINTER;
+    dc_contact_model m;
+    const int32_t st = dci_contact_model(spec, &m);
+    if (st == DC_OK) *out = m;
+    return st;
 }
 
 #endif /* DEMCONTACT_INLINE_H */

@@ -12,3 +12,17 @@ __global__ void dc_forces(const dc_pair *pair, int n, const double *d, const dou
 __global__ void dc_setup(double e, dc_pair *pair) {
     dc_pair_hertz_inline(63e9, 0.23, 63e9, 0.23, e, DC_END_FORCE, pair);
 }
+
+/* The full contact on the device: one thread per contact, its history in device memory. */
+__global__ void dc_contacts(const dc_contact_model *model, int n, const dc_contact_state *state,
+                            double dt, double *history, dc_contact_result *out, int *status) {
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i < n)
+        status[i] = dc_contact_force_inline(model, &state[i], dt,
+                                            history + (long)i * DC_CONTACT_HISTORY_MAX,
+                                            DC_CONTACT_HISTORY_MAX, &out[i]);
+}
+
+__global__ void dc_contact_setup(const dc_contact_spec *spec, dc_contact_model *model, int *status) {
+    *status = dc_contact_model_init_inline(spec, model);
+}

@@ -16,5 +16,10 @@ __device__ double log(double);
 __device__ double hypot(double, double);
 __device__ double acos(double);
 __device__ int isfinite(double);
+__device__ double fabs(double);
+__device__ double sin(double);
+__device__ double copysign(double, double);
+__device__ double pow(double, double);
+__device__ void *memset(void *, int, unsigned long);
 __device__ void *memcpy(void *, const void *, unsigned long);
 #endif

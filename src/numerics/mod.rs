@@ -20,8 +20,10 @@ pub(crate) mod lagrange8;
 pub mod ode;
 pub(crate) mod pow;
 pub(crate) mod pow_dd;
+pub(crate) mod reduce;
 pub mod roots;
 pub(crate) mod series;
+pub(crate) mod simd;
 pub mod taylor;
 
 pub use roots::newton_bracketed;

@@ -4,90 +4,30 @@
 //! libm's `ln` and `exp` are calls with branches inside; over a slice they cost ~11 ns per
 //! element here (`cargo bench --bench powerlaw -- baseline_pow_1000`), half of a 1000-sample
 //! trajectory. The kernels below are straight-line arithmetic, so a loop over them runs in SIMD
-//! lanes (2 with SSE2, 4 with AVX2, the latter chosen at run time by [`vectorised`]). They use no fused
-//! multiply–add, so both paths round identically: the result does not depend on the machine.
+//! lanes (2 with SSE2, 4 with AVX2, 8 with AVX-512, chosen at run time by [`super::simd`]). No fused
+//! multiply–add is ever formed, so every path rounds identically: the result does not depend on
+//! the machine.
 //!
-//! * ln x: x = 2^e·m with m ∈ [√½, √2), s = (m−1)/(m+1), ln m = 2 atanh s = 2s Σ_k s^{2k}/(2k+1);
-//!   |s| ≤ 0.1716, so s² ≤ 0.0295 and thirteen terms leave < 1e−20. ln x = e·ln2 + ln m with ln 2
-//!   split in two (e·ln2_hi exact). Error ≤ 2 ulp of |ln x| (tests below).
-//! * exp y: y = k ln2 + r with k = round(y/ln2) (by the 1.5·2^52 shifter, which leaves k in the
-//!   low bits: no float→int conversion), |r| ≤ ln2/2, e^r by its Taylor series to r^13
-//!   (remainder < 5e−18), times 2^k built from its exponent bits. Error ≈ 1 ulp + |y|·ε (the
-//!   rounding of y itself).
-//! * Polynomials by Estrin's scheme ([`super::estrin`]): by Horner the loop is bound by the
-//!   latency of its chain.
+//! * ln x = e·ln2 + ln m, x = 2^e·m, ln m by the atanh series with thirteen terms (< 1e−20);
+//!   error ≤ 2 ulp of |ln x| (tests below).
+//! * exp y = 2^k e^r, e^r by its Taylor series to r^13; error ≈ 1 ulp + |y|·ε (the rounding of y
+//!   itself).
+//! * The reductions and series are [`super::reduce`]'s, shared with [`super::pow_dd`].
 //! * Outside x ∈ [2^−1000, 2^1000] (zero, subnormal, huge, non-finite) the caller uses libm
 //!   ([`in_kernel_range`]); inside, |q ln x| ≤ 694 stays in exp's kernel range for q ≤ 1.
 
-/// ln 2 with its low 21 mantissa bits cleared, so that e·LN2_HI is exact for |e| < 2^21.
-const LN2_HI: f64 = f64::from_bits(core::f64::consts::LN_2.to_bits() & !((1u64 << 21) - 1));
-/// ln 2 − LN2_HI to double precision (from ln 2 to 60 digits, 0.693147180559945309417232121458…).
-const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
-use super::estrin::estrin;
+use super::reduce::{LN2_HI, LN2_LO, atanh_tail12, exp_reduced, exp2i, ln_reduced, split};
 
-const LOG2_E: f64 = core::f64::consts::LOG2_E;
-/// 1.5·2^52: adding it rounds to an integer and leaves that integer in the low mantissa bits.
-const SHIFTER: f64 = 6_755_399_441_055_744.0;
-/// 2^52, for the integer-to-float trick in ln.
-const TWO52: f64 = 4_503_599_627_370_496.0;
 /// Range of x handled by the kernels.
 const X_MIN: f64 = 9.332_636_185_032_189e-302; // 2^−1000
 const X_MAX: f64 = 1.071_508_607_186_267_3e301; // 2^1000
 
-/// 1/(2k+1), k = 1..=12: the atanh series after its leading term.
-const ATANH_TAIL: [f64; 12] = [
-    1.0 / 3.0,
-    1.0 / 5.0,
-    1.0 / 7.0,
-    1.0 / 9.0,
-    1.0 / 11.0,
-    1.0 / 13.0,
-    1.0 / 15.0,
-    1.0 / 17.0,
-    1.0 / 19.0,
-    1.0 / 21.0,
-    1.0 / 23.0,
-    1.0 / 25.0,
-];
-
-/// 1/k!, k = 2..=13: the exp series after 1 + r.
-const EXP_TAIL: [f64; 12] = [
-    1.0 / 2.0,
-    1.0 / 6.0,
-    1.0 / 24.0,
-    1.0 / 120.0,
-    1.0 / 720.0,
-    1.0 / 5040.0,
-    1.0 / 40320.0,
-    1.0 / 362_880.0,
-    1.0 / 3_628_800.0,
-    1.0 / 39_916_800.0,
-    1.0 / 479_001_600.0,
-    1.0 / 6_227_020_800.0,
-];
-
-/// ln x for normal x in [X_MIN, X_MAX]; branch-free.
+/// ln x for normal x in [X_MIN, X_MAX]; branch-free. ln x = e·ln2 + ln m with ln 2 split in two
+/// (e·LN2_HI exact).
 #[inline(always)]
 fn ln_kernel(x: f64) -> f64 {
-    let bits = x.to_bits();
-    // Biased exponent as a float via the 2^52 trick (no int→float conversion instruction).
-    let e_biased = f64::from_bits(0x4330_0000_0000_0000 | (bits >> 52)) - TWO52;
-    let m = f64::from_bits((bits & 0x000f_ffff_ffff_ffff) | 0x3ff0_0000_0000_0000);
-    let big = m > core::f64::consts::SQRT_2;
-    let m = if big { 0.5 * m } else { m };
-    let e = if big {
-        e_biased - 1022.0
-    } else {
-        e_biased - 1023.0
-    };
-    // m − 1 is exact (Sterbenz), and s carries one rounding.
-    let f = m - 1.0;
-    let s = f / (2.0 + f);
-    // ln m = 2s + 2s·z·T(z): the small correction added last, to the leading 2s.
-    let z = s * s;
-    let two_s = 2.0 * s;
-    let ln_m = two_s + two_s * (z * estrin(z, &ATANH_TAIL));
-    e * LN2_HI + (e * LN2_LO + ln_m)
+    let (e, m) = split(x);
+    e * LN2_HI + (e * LN2_LO + ln_reduced(m, atanh_tail12))
 }
 
 /// Largest |y| for [`exp_kernel`].
@@ -96,17 +36,8 @@ pub(crate) const EXP_KERNEL_MAX: f64 = 700.0;
 /// e^y for |y| ≤ [`EXP_KERNEL_MAX`]; branch-free (about 1 ulp).
 #[inline(always)]
 pub(crate) fn exp_kernel(y: f64) -> f64 {
-    let kf = (y * LOG2_E + SHIFTER) - SHIFTER;
-    let r = (y - kf * LN2_HI) - kf * LN2_LO;
-    // e^r = 1 + (r + r²·T(r)): the exact 1 added last.
-    let p = 1.0 + (r + r * r * estrin(r, &EXP_TAIL));
-    // k + 1023 sits in the low bits of kf + SHIFTER + 1023 (an integer below 2^52 in magnitude
-    // offset): shift it into the exponent field.
-    let biased = (kf + (SHIFTER + 1023.0))
-        .to_bits()
-        .wrapping_sub(SHIFTER.to_bits())
-        << 52;
-    p * f64::from_bits(biased)
+    let (kf, p) = exp_reduced(y);
+    p * exp2i(kf)
 }
 
 /// x^q = exp(q ln x) for x in [2^−1000, 2^1000] and 0 < q ≤ 1 (see [`in_kernel_range`]);
@@ -124,38 +55,7 @@ pub(crate) fn in_kernel_range(x: f64) -> bool {
     (X_MIN..=X_MAX).contains(&x)
 }
 
-/// A loop to run under [`vectorised`]. Implementations mark `run` `#[inline(always)]`: only code
-/// inlined into the AVX2 wrapper is compiled for AVX2 (a closure would stay a separate, SSE2
-/// function).
-pub(crate) trait SimdLoop {
-    /// Runs the loop.
-    fn run(self);
-}
-
-/// # Safety
-/// The CPU must support AVX2 ([`vectorised`] checks it before the call).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn run_avx2<L: SimdLoop>(l: L) {
-    l.run();
-}
-
-/// Runs `l` compiled for AVX2 when the CPU has it (4 lanes instead of SSE2's 2), else as is. No
-/// fused multiply–add is enabled, so both compile to the same roundings: results do not depend
-/// on the machine.
-#[inline(always)]
-pub(crate) fn vectorised<L: SimdLoop>(l: L) {
-    #[cfg(all(target_arch = "x86_64", not(miri)))]
-    {
-        if std::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU supports AVX2 (checked just above), the only requirement of the
-            // target_feature function.
-            unsafe { run_avx2(l) };
-            return;
-        }
-    }
-    l.run();
-}
+pub(crate) use super::simd::{SimdLoop, vectorised};
 
 #[cfg(test)]
 mod tests {
@@ -174,13 +74,7 @@ mod tests {
     }
 
     #[test]
-    fn ln2_split() {
-        assert_eq!(LN2_HI + LN2_LO, core::f64::consts::LN_2);
-        assert_eq!(LN2_HI.to_bits() & ((1 << 21) - 1), 0);
-        // The split carries ln 2 beyond double precision: ln 2 − LN_2 ≈ 2.3e−17.
-        assert!(
-            ((LN2_HI - core::f64::consts::LN_2) + LN2_LO - 2.319_046_813_846_3e-17).abs() < 1e-24
-        );
+    fn kernel_range() {
         assert_eq!(X_MIN, 2f64.powi(-1000));
         assert_eq!(X_MAX, 2f64.powi(1000));
     }

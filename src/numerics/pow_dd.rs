@@ -14,84 +14,25 @@
 //! * e^t = 2^k e^r, r = (t − k·LN2_HI) − k·LN2_LO (the first difference exact), e^r by its Taylor
 //!   series to r^13; 2^(n+k) applied as two factors so that overflow gives ∞ and underflow a
 //!   (gradually) subnormal or zero result, as IEEE arithmetic does.
-//! * Polynomials by Estrin's scheme written out (the loop is not bound by one long dependency
-//!   chain); plain multiplication and addition only, never contracted in Rust, so the result does
-//!   not depend on the CPU (SSE2, AVX2, AVX-512 flavours of the batch give the same bits).
+//! * The exponent split, ln m, the exp reduction and series are [`super::reduce`]'s (shared with
+//!   the trajectory kernel [`super::pow`]), polynomials by Estrin's scheme (the C header writes
+//!   the same expression trees out); plain multiplication and addition only, never contracted in
+//!   Rust, so the result does not depend on the CPU (SSE2, AVX2, AVX-512 flavours of the batch
+//!   give the same bits).
 //!
 //! Measured error (tests below): ≤ 2 ulp against glibc's `pow` (itself < 1 ulp) over the whole
 //! double range of x (subnormal x included) for q = 1e−9…2 (p ≤ 5), ≤ 1 + q ulp for larger q
 //! (the rounding of q·ln m); subnormal results within one subnormal ulp. Range: every x ≥ 0 (0 and +∞ selected exactly) and finite q > 0.
 
-/// ln 2 with its low 21 mantissa bits cleared, so that k·LN2_HI is exact for |k| < 2^21.
-const LN2_HI: f64 = f64::from_bits(core::f64::consts::LN_2.to_bits() & !((1u64 << 21) - 1));
-/// ln 2 − LN2_HI to double precision (from ln 2 to 60 digits, 0.693147180559945309417232121458…).
-const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
-const LOG2_E: f64 = core::f64::consts::LOG2_E;
-/// 1.5·2^52: adding it rounds to an integer and leaves that integer in the low mantissa bits.
-const SHIFTER: f64 = 6_755_399_441_055_744.0;
-/// 2^52, for the integer-to-float trick in ln.
-const TWO52: f64 = 4_503_599_627_370_496.0;
+use super::reduce::{atanh_tail10, exp_reduced, exp2i, ln_reduced, split};
+
+/// 1.5·2^52: adding it rounds to an integer.
+const SHIFTER: f64 = super::reduce::SHIFTER;
 /// 2^54, the prescale that makes a subnormal x normal.
 const TWO54: f64 = 18_014_398_509_481_984.0;
 /// |n + k| beyond which 2^(n+k)·p (1/2 < p < 2) is 0 or ∞ for sure; the two factors 2^k1, 2^k2
 /// of the scale stay normal numbers.
 const K_CLAMP: f64 = 2044.0;
-
-/// Σ_{k<10} x^k/(2k+3): the atanh series after its leading term (z^11/23 · 2s < 2e−19), by
-/// Estrin's scheme written out (straight-line code; the C header has the same expression tree).
-#[inline(always)]
-fn atanh_tail(x: f64) -> f64 {
-    let x2 = x * x;
-    let x4 = x2 * x2;
-    let x8 = x4 * x4;
-    let b0 = 1.0 / 3.0 + (1.0 / 5.0) * x;
-    let b1 = 1.0 / 7.0 + (1.0 / 9.0) * x;
-    let b2 = 1.0 / 11.0 + (1.0 / 13.0) * x;
-    let b3 = 1.0 / 15.0 + (1.0 / 17.0) * x;
-    let b4 = 1.0 / 19.0 + (1.0 / 21.0) * x;
-    let c0 = b0 + b1 * x2;
-    let c1 = b2 + b3 * x2;
-    (c0 + c1 * x4) + b4 * x8
-}
-
-/// Σ_{k<12} x^k/(k+2)!: the exp series after 1 + r (remainder r^14/14! < 5e−18), Estrin.
-#[inline(always)]
-fn exp_tail(x: f64) -> f64 {
-    let x2 = x * x;
-    let x4 = x2 * x2;
-    let x8 = x4 * x4;
-    let b0 = 1.0 / 2.0 + (1.0 / 6.0) * x;
-    let b1 = 1.0 / 24.0 + (1.0 / 120.0) * x;
-    let b2 = 1.0 / 720.0 + (1.0 / 5040.0) * x;
-    let b3 = 1.0 / 40320.0 + (1.0 / 362_880.0) * x;
-    let b4 = 1.0 / 3_628_800.0 + (1.0 / 39_916_800.0) * x;
-    let b5 = 1.0 / 479_001_600.0 + (1.0 / 6_227_020_800.0) * x;
-    let c0 = b0 + b1 * x2;
-    let c1 = b2 + b3 * x2;
-    let c2 = b4 + b5 * x2;
-    (c0 + c1 * x4) + c2 * x8
-}
-
-/// ln m for m ∈ [√½, √2): 2 atanh s, s = (m−1)/(m+1) (|ln m| ≤ 0.35, error ≲ 1e−16 absolute).
-#[inline(always)]
-fn ln_reduced(m: f64) -> f64 {
-    // f = m − 1 exact (Sterbenz); s carries one rounding.
-    let f = m - 1.0;
-    let s = f / (2.0 + f);
-    let z = s * s;
-    let two_s = 2.0 * s;
-    two_s + two_s * (z * atanh_tail(z))
-}
-
-/// 2^k for an integer-valued k in [−1022, 1023], from its exponent bits.
-#[inline(always)]
-fn exp2i(kf: f64) -> f64 {
-    let biased = (kf + (SHIFTER + 1023.0))
-        .to_bits()
-        .wrapping_sub(SHIFTER.to_bits())
-        << 52;
-    f64::from_bits(biased)
-}
 
 /// x^q for x ≥ 0 (including subnormal x and +∞) and finite q > 0: straight-line code, no libm.
 /// Negative or NaN x give an unspecified finite number (the force kernels mask them).
@@ -101,18 +42,7 @@ pub(crate) fn pow_dd(x: f64, q: f64) -> f64 {
     let safe = if pos { x } else { 1.0 };
     // x = 2^e · m, m ∈ [√½, √2); subnormal x prescaled by 2^54.
     let sub = safe < f64::MIN_POSITIVE;
-    let safe = if sub { safe * TWO54 } else { safe };
-    let bits = safe.to_bits();
-    // Biased exponent as a float via the 2^52 trick (no int→float conversion instruction).
-    let e_biased = f64::from_bits(0x4330_0000_0000_0000 | (bits >> 52)) - TWO52;
-    let m = f64::from_bits((bits & 0x000f_ffff_ffff_ffff) | 0x3ff0_0000_0000_0000);
-    let big = m > core::f64::consts::SQRT_2;
-    let m = if big { 0.5 * m } else { m };
-    let e = if big {
-        e_biased - 1022.0
-    } else {
-        e_biased - 1023.0
-    };
+    let (e, m) = split(if sub { safe * TWO54 } else { safe });
     let e = if sub { e - 54.0 } else { e };
     // q·e exactly, as P + Q: q split into 26 high and 27 low bits, e has at most 11 bits.
     let qh = f64::from_bits(q.to_bits() & !((1u64 << 27) - 1));
@@ -122,11 +52,9 @@ pub(crate) fn pow_dd(x: f64, q: f64) -> f64 {
     // n = round(P) (|P| < 2^51); P − n is exact, so x^q = 2^n · e^t with |t| ≲ ln2/2 + q·0.35.
     let n = (big_p + SHIFTER) - SHIFTER;
     let frac = (big_p - n) + small_q;
-    let t = frac * core::f64::consts::LN_2 + q * ln_reduced(m);
-    // e^t = 2^k e^r, r = t − k ln2 (k·LN2_HI exact, the difference exact by Sterbenz).
-    let kf = (t * LOG2_E + SHIFTER) - SHIFTER;
-    let r = (t - kf * LN2_HI) - kf * LN2_LO;
-    let p = 1.0 + (r + r * r * exp_tail(r));
+    let t = frac * core::f64::consts::LN_2 + q * ln_reduced(m, atanh_tail10);
+    // e^t = 2^k · p (k·LN2_HI exact, the reduction's difference exact by Sterbenz).
+    let (kf, p) = exp_reduced(t);
     // 2^(n + k) as two factors, clamped where the result is 0 or ∞ anyway (p < 2).
     let total = n + kf;
     let total = total.clamp(-K_CLAMP, K_CLAMP);
@@ -169,7 +97,6 @@ mod tests {
 
     #[test]
     fn constants() {
-        assert_eq!(LN2_HI + LN2_LO, core::f64::consts::LN_2);
         assert_eq!(TWO54, 2f64.powi(54));
         // 2^±2044 · p is 0 / ∞ for p in (1/2, 2), and each half 2^±1022 is a normal number.
         assert_eq!(2f64.powi(-1022) * 2f64.powi(-1022) * 1.99, 0.0);

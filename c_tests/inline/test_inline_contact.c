@@ -1,0 +1,382 @@
+/* dc_contact_force_inline / dc_contact_model_init_inline / dc_contact_spec_init_inline against the
+ * library's dc_contact_force / dc_contact_model_init / dc_contact_spec_init, bit for bit. Compiled
+ * as C99 and (test_inline_contact.cpp) as C++17 with -Wall -Wextra -Werror, and once more with
+ * FMA contraction forced on (-O3 -march=native -ffp-contract=fast).
+ *
+ *  - specs: random models of every normal law (Hertz, power law incl. p = 1, 3/2, 2, linear,
+ *    viscoelastic, DMT), damping, criterion, tangential (none, linear, Mindlin), rolling (none,
+ *    constant, EPSD with given k_r or Ai's rule), twisting (none, SDS), rigid body 2 (E = inf),
+ *    and random invalid ones (NaN = unset, inf, negative, out-of-range, bad selector, bad
+ *    version): the same status, and on DC_OK the same model bytes;
+ *  - trajectories: for each valid model a contact evolved over many steps, the library and the
+ *    header each carrying its own history: the normal turns (small steps, and now and then by
+ *    more than 120 degrees), the overlap goes through contact and separation, velocities and spins
+ *    random-walk over decades (sticking and sliding; the frame's spin rotation on both of its
+ *    branches, series and sin), sphere-sphere and sphere-wall. Every step:
+ *    same status, same result bytes, same history bits. Argument 1: total steps (default 4e6);
+ *    the test also requires that sliding, sticking, rolling-limit and separation steps occurred;
+ *  - bad input: NULL pointers, short/misaligned history, dt NaN/0/<0, NaN/inf/zero/non-unit
+ *    states, NaN in the history, corrupted models: the same status, outputs untouched.
+ * Prints "test_inline_contact[...]: N passed, M failed". */
+#include <demcontact_inline.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef __cplusplus
+#define LANG "C++"
+#else
+#define LANG "C"
+#endif
+
+static uint64_t rng_state = 0xD1B54A32D192ED03ull;
+static double uni(void) {
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return (double)(rng_state >> 11) / 9007199254740992.0;
+}
+static int pick(int n) { return (int)(uni() * n) % n; }
+static double logu(double lo, double hi) { return exp(2.302585092994046 * (lo + (hi - lo) * uni())); }
+
+static long n_pass = 0, n_fail = 0;
+static void fail(const char *what, long i) {
+    if (n_fail < 20) fprintf(stderr, "FAIL (%s): %s at %ld\n", LANG, what, i);
+    n_fail++;
+}
+
+/* A random spec; `bad` corrupts one field. */
+static void random_spec(dc_contact_spec *s, int bad) {
+    dc_contact_spec_init(s);
+    s->normal = 1 + pick(5);
+    s->damping = pick(2);
+    s->criterion = s->normal == DC_NORMAL_DMT || uni() < 0.3 ? DC_END_OVERLAP : DC_END_FORCE;
+    s->E1 = logu(6, 11);
+    s->nu1 = -0.5 + uni();
+    s->E2 = uni() < 0.2 ? (double)INFINITY : logu(6, 11);
+    s->nu2 = -0.5 + uni();
+    const double ps[4] = {1.0, 1.5, 2.0, 1.0 + 2.0 * uni()};
+    s->p = ps[pick(4)];
+    s->k_n = logu(3, 9);
+    s->e_n = uni() < 0.1 ? 1.0 : logu(-3, 0);
+    if (s->normal == DC_NORMAL_VISCOELASTIC) {
+        s->damping = DC_DAMPING_NONE;
+        s->visco_A = uni() < 0.2 ? 0.0 : logu(-9, -5);
+    }
+    s->work_of_adhesion = uni() < 0.2 ? 0.0 : logu(-3, 1);
+    s->tangential = pick(3);
+    s->mu = uni() < 0.1 ? 0.0 : 1.2 * uni();
+    s->k_t = logu(3, 8);
+    s->e_t = uni() < 0.3 ? 1.0 : logu(-2, 0);
+    s->rolling = pick(3);
+    s->mu_r = uni() < 0.1 ? 0.0 : 0.3 * uni();
+    s->k_r = uni() < 0.5 ? 0.0 : logu(-6, 0);
+    s->eta_r = uni() < 0.3 ? 0.0 : uni();
+    s->twisting = pick(2);
+    s->mu_tw = logu(-6, -3);
+    s->k_tw = logu(-6, 0);
+    s->eta_tw = uni() < 0.3 ? 0.0 : uni();
+    s->inertia_factor = uni() < 0.7 ? 0.4 : 0.1 + 0.9 * uni();
+    if (!bad) return;
+    double *f[] = {&s->E1, &s->nu1, &s->E2, &s->nu2, &s->p, &s->k_n, &s->e_n, &s->visco_A,
+                   &s->mu, &s->k_t, &s->e_t, &s->mu_r, &s->k_r, &s->eta_r, &s->mu_tw, &s->k_tw,
+                   &s->eta_tw, &s->inertia_factor, &s->work_of_adhesion};
+    const double vals[8] = {(double)NAN, (double)INFINITY, -(double)INFINITY, -1.0, 0.0, 2.0,
+                            1e-320, 1e308};
+    const int which = pick(25);
+    if (which < 19) *f[which] = vals[pick(8)];
+    else if (which == 19) s->normal = pick(2) ? 0 : 6;
+    else if (which == 20) s->tangential = 3;
+    else if (which == 21) s->rolling = -1;
+    else if (which == 22) s->twisting = 2;
+    else if (which == 23) s->criterion = 2;
+    else s->damping = 2;
+}
+
+static void unit(double n[3]) {
+    const double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int i = 0; i < 3; i++) n[i] /= l;
+}
+static void vec(double v[3], double mag) {
+    for (int i = 0; i < 3; i++) v[i] = mag * (2.0 * uni() - 1.0);
+}
+
+static int same_result(const dc_contact_result *a, const dc_contact_result *b) {
+    return memcmp(a, b, sizeof *a) == 0;
+}
+
+/* One contact evolved over `steps` steps of `m`; counts of regimes seen added to `seen`. */
+static void trajectory(const dc_contact_model *m, long steps, long *seen) {
+    double hl[DC_CONTACT_HISTORY_MAX] = {0}, hi[DC_CONTACT_HISTORY_MAX] = {0};
+    dc_contact_state s;
+    memset(&s, 0, sizeof s);
+    const int wall = uni() < 0.25;
+    s.r1 = logu(-5, -1);
+    s.r2 = wall ? (double)INFINITY : logu(-5, -1);
+    s.m1 = 2500.0 * 4.18879 * s.r1 * s.r1 * s.r1;
+    s.m2 = wall ? (uni() < 0.5 ? (double)INFINITY : logu(-3, 3)) : 2500.0 * 4.18879 * s.r2 * s.r2 * s.r2;
+    vec(s.n, 1.0);
+    unit(s.n);
+    const double dt = logu(-8, -4);
+    const double amp = s.r1 * logu(-5, -1.5);       /* overlap amplitude */
+    const double vscale = logu(-5, 1);              /* tangential speeds over decades */
+    const double wscale = vscale / s.r1 * logu(-2, 1);
+    const double phase = 2.0 * uni(), freq = 0.01 + 0.2 * uni();
+    vec(s.v1, vscale);
+    vec(s.v2, vscale);
+    vec(s.w1, wscale);
+    vec(s.w2, wscale);
+    for (long i = 0; i < steps; i++) {
+        /* overlap: mostly in contact, with separations (history reset, DMT tail) */
+        s.overlap = amp * (0.3 + sin(phase + freq * (double)i));
+        /* the normal turns a little each step; now and then by a lot */
+        if (uni() < 0.002) {
+            vec(s.n, 1.0);
+            unit(s.n);
+        } else {
+            const double tilt = uni() < 0.5 ? 0.0 : logu(-8, -2);
+            for (int j = 0; j < 3; j++) s.n[j] += tilt * (2.0 * uni() - 1.0);
+            unit(s.n);
+        }
+        for (int j = 0; j < 3; j++) {
+            s.v1[j] += 0.05 * vscale * (2.0 * uni() - 1.0);
+            s.v2[j] += 0.05 * vscale * (2.0 * uni() - 1.0);
+            s.w1[j] += 0.05 * wscale * (2.0 * uni() - 1.0);
+            s.w2[j] += 0.05 * wscale * (2.0 * uni() - 1.0);
+        }
+        if (uni() < 0.01) vec(s.w1, 0.0); /* exactly zero spins: t = 0 twist, w_r = 0 */
+        dc_contact_result rl, ri;
+        memset(&rl, 0x5A, sizeof rl);
+        memset(&ri, 0x5A, sizeof ri);
+        const int32_t sl = dc_contact_force(m, &s, dt, hl, DC_CONTACT_HISTORY_MAX, &rl);
+        const int32_t si = dc_contact_force_inline(m, &s, dt, hi, DC_CONTACT_HISTORY_MAX, &ri);
+        if (sl != si) {
+            fail("contact status", i);
+            return;
+        }
+        if (!same_result(&rl, &ri) || memcmp(hl, hi, sizeof hl) != 0) {
+            if (n_fail < 5)
+                fprintf(stderr, "  step %ld: f_n %.17g vs %.17g, force[0] %.17g vs %.17g, "
+                        "hist[3] %.17g vs %.17g\n", i, rl.f_n, ri.f_n, rl.force[0], ri.force[0],
+                        hl[3], hi[3]);
+            fail("contact result/history bits", i);
+            return;
+        }
+        n_pass++;
+        if (sl == DC_OK) {
+            seen[0]++;
+            seen[1] += rl.sliding;
+            seen[2] += s.overlap > 0.0 && !rl.sliding && m->tangential != DC_TANGENTIAL_NONE;
+            seen[3] += rl.rolling_sliding;
+            seen[4] += !(s.overlap > 0.0);
+            /* the frame's spin q = (w1 + w2)/2 dt: series branch (|q|^2 < 1e-3) and sin branch */
+            double q2 = 0.0;
+            for (int j = 0; j < 3; j++) q2 += 0.25 * dt * dt * (s.w1[j] + s.w2[j]) * (s.w1[j] + s.w2[j]);
+            if (s.overlap > 0.0 && m->history_len > 0) seen[q2 < 1e-3 ? 6 : 7]++;
+        } else {
+            seen[5]++;
+        }
+    }
+}
+
+static void bad_inputs(const dc_contact_model *m) {
+    dc_contact_state s;
+    memset(&s, 0, sizeof s);
+    s.n[2] = 1.0;
+    s.overlap = 1e-6;
+    s.r1 = s.r2 = 1e-3;
+    s.m1 = s.m2 = 1e-5;
+    s.v1[0] = 0.1;
+    double hbuf[DC_CONTACT_HISTORY_MAX + 1] = {0};
+    double *h = hbuf;
+    const double dt = 1e-6;
+    /* each case: (model, state, dt, history, len) */
+    for (int c = 0; c < 40; c++) {
+        dc_contact_model mm = *m;
+        dc_contact_state ss = s;
+        double hist[DC_CONTACT_HISTORY_MAX + 1];
+        for (int i = 0; i <= DC_CONTACT_HISTORY_MAX; i++) hist[i] = 1e-9 * i;
+        double *hp = hist;
+        size_t len = DC_CONTACT_HISTORY_MAX;
+        double d = dt;
+        const dc_contact_model *mp = &mm;
+        const dc_contact_state *sp = &ss;
+        int null_out = 0;
+        switch (c) {
+        case 0: mp = NULL; break;
+        case 1: sp = NULL; break;
+        case 2: null_out = 1; break;
+        case 3: hp = NULL; break;
+        case 4: len = m->history_len ? m->history_len - 1 : 0; break;
+        case 5: hp = (double *)(void *)((char *)hbuf + 4); break; /* misaligned */
+        case 6: d = (double)NAN; break;
+        case 7: d = 0.0; break;
+        case 8: d = -1e-6; break;
+        case 9: d = (double)INFINITY; break;
+        case 10: ss.n[0] = (double)NAN; break;
+        case 11: ss.n[0] = 0.5; break; /* not unit */
+        case 12: ss.overlap = (double)INFINITY; break;
+        case 13: ss.r1 = 0.0; break;
+        case 14: ss.m2 = -1.0; break;
+        case 15: ss.r2 = (double)INFINITY; ss.m2 = (double)INFINITY; break; /* wall: valid */
+        case 16: ss.r1 = (double)INFINITY; break;
+        case 17: ss.w2[1] = -(double)INFINITY; break;
+        case 18: hist[m->history_len ? m->history_len - 1 : 0] = (double)NAN; break;
+        case 19: mm.magic ^= 1u; break;
+        case 20: mm.history_len += 1; break;
+        case 21: mm.reserved[3] = -0.0; break;
+        case 22: mm.reserved_i = 1; break;
+        case 23: mm.normal.kernel = 99; break;
+        case 24: mm.normal.clamp = !mm.normal.clamp; break;
+        case 25: mm.mu = -1.0; break;
+        case 26: mm.kt = 0.0; break;
+        case 27: mm.kappa = 0.0; break;
+        case 28: mm.tangential = 7; break;
+        case 29: mm.rolling = 5; break;
+        case 30: mm.normal.k = (double)NAN; break;
+        case 31: mm.eta_tw = (double)INFINITY; break;
+        case 32: ss.v1[0] = 1e300; ss.overlap = 1e-1; break; /* result overflow? */
+        case 33: ss.overlap = -1e-3; break;                  /* separated: valid */
+        case 34: ss.overlap = 0.0; break;
+        case 35: ss.n[2] = 1.0 + 2e-6; break;
+        case 36: ss.n[2] = 1.0 + 5e-7; break;
+        case 37: mm.normal.criterion = 2; break;
+        case 38: ss.m1 = 1e-300; ss.v1[0] = 1e150; break;
+        default: len = 0; break;
+        }
+        double hl[DC_CONTACT_HISTORY_MAX + 1], hi2[DC_CONTACT_HISTORY_MAX + 1];
+        double *hlp = hp, *hip = hp;
+        if (hp == hist) {
+            memcpy(hl, hist, sizeof hl);
+            memcpy(hi2, hist, sizeof hi2);
+            hlp = hl;
+            hip = hi2;
+        }
+        dc_contact_result rl, ri;
+        memset(&rl, 0x5A, sizeof rl);
+        memset(&ri, 0x5A, sizeof ri);
+        const int32_t sl = dc_contact_force(mp, sp, d, hlp, len, null_out ? NULL : &rl);
+        const int32_t si = dc_contact_force_inline(mp, sp, d, hip, len, null_out ? NULL : &ri);
+        if (sl != si) {
+            fprintf(stderr, "  bad case %d: library %d, inline %d\n", c, (int)sl, (int)si);
+            fail("bad-input status", c);
+            continue;
+        }
+        if (!same_result(&rl, &ri) || (hp == hist && memcmp(hl, hi2, sizeof hl) != 0)) {
+            fail("bad-input outputs", c);
+            continue;
+        }
+        if (sl != DC_OK && hp == hist) {
+            dc_contact_result untouched;
+            memset(&untouched, 0x5A, sizeof untouched);
+            if (!same_result(&ri, &untouched) || memcmp(hi2, hist, sizeof hist) != 0) {
+                fail("outputs written on error", c);
+                continue;
+            }
+        }
+        n_pass++;
+    }
+    (void)h;
+}
+
+/* The DMT kernels (codes 18, 19) of dc_normal_force_inline against dc_normal_force, bit for bit:
+ * overlaps from deep contact through the attractive tail (-2 d_c .. 0) and beyond, NaN. */
+static void dmt_forces(long n) {
+    long diff = 0, done = 0;
+    while (done < n) {
+        dc_contact_spec s;
+        random_spec(&s, 0);
+        s.normal = DC_NORMAL_DMT;
+        s.criterion = DC_END_OVERLAP;
+        dc_contact_model m;
+        if (dc_contact_model_init(&s, &m) != DC_OK) continue;
+        for (int i = 0; i < 1000; i++, done++) {
+            const double r = logu(-5, -1), mm = logu(-12, 1), vn = (2.0 * uni() - 1.0) * logu(-3, 3);
+            const double dc = pow(m.normal.h * sqrt(r) / m.normal.k, 2.0 / 3.0);
+            const double d = i % 97 == 0 ? (double)NAN
+                             : i % 3 == 0 ? -2.0 * dc * uni()
+                                          : r * logu(-12, -1) * (uni() < 0.1 ? -1.0 : 1.0);
+            const double a = dc_normal_force(&m.normal, d, vn, r, mm);
+            const double b = dc_normal_force_inline(&m.normal, d, vn, r, mm);
+            if (memcmp(&a, &b, sizeof a) != 0) diff++;
+        }
+    }
+    if (diff) fail("DMT forces", diff);
+    else n_pass++;
+    printf("test_inline_contact[%s]: DMT kernels: %ld forces, %ld differences\n", LANG, done, diff);
+}
+
+int main(int argc, char **argv) {
+    const long total = argc > 1 ? atol(argv[1]) : 4000000L;
+    const long per = 1000;
+    long seen[8] = {0};
+    long specs_ok = 0, specs_bad = 0, models = 0;
+
+    /* spec_init */
+    {
+        dc_contact_spec a, b;
+        memset(&a, 0x11, sizeof a);
+        memset(&b, 0x11, sizeof b);
+        if (dc_contact_spec_init(&a) != dc_contact_spec_init_inline(&b) ||
+            memcmp(&a, &b, sizeof a) != 0)
+            fail("spec_init", 0);
+        else
+            n_pass++;
+        if (dc_contact_spec_init_inline(NULL) != DC_ERR_NULL_POINTER) fail("spec_init NULL", 0);
+    }
+    /* model_init: statuses and bytes over random valid and invalid specs */
+    for (long i = 0; i < 200000; i++) {
+        dc_contact_spec s;
+        random_spec(&s, i % 2);
+        if (i % 1000 == 999) s.version = 2;
+        if (i % 1000 == 998) s.size -= 8;
+        dc_contact_model a, b;
+        memset(&a, 0x77, sizeof a);
+        memset(&b, 0x77, sizeof b);
+        const int32_t sa = dc_contact_model_init(&s, &a);
+        const int32_t sb = dc_contact_model_init_inline(&s, &b);
+        if (sa != sb || memcmp(&a, &b, sizeof a) != 0) {
+            if (n_fail < 5)
+                fprintf(stderr, "  spec %ld: normal %d status %d vs %d\n", i, s.normal, (int)sa,
+                        (int)sb);
+            fail("model_init", i);
+            continue;
+        }
+        n_pass++;
+        if (sa == DC_OK) specs_ok++;
+        else specs_bad++;
+    }
+    {
+        dc_contact_spec s;
+        dc_contact_model a;
+        random_spec(&s, 0);
+        if (dc_contact_model_init_inline(NULL, &a) != DC_ERR_NULL_POINTER ||
+            dc_contact_model_init_inline(&s, NULL) != DC_ERR_NULL_POINTER ||
+            dc_contact_model_init(&s, NULL) != DC_ERR_NULL_POINTER)
+            fail("model_init NULL", 0);
+    }
+    dmt_forces(total / 4);
+    /* trajectories */
+    while (models * per < total) {
+        dc_contact_spec s;
+        random_spec(&s, 0);
+        dc_contact_model m;
+        if (dc_contact_model_init(&s, &m) != DC_OK) continue;
+        trajectory(&m, per, seen);
+        if (models % 50 == 0) bad_inputs(&m);
+        models++;
+    }
+    printf("test_inline_contact[%s]: %ld models built (%ld specs rejected with the same status), "
+           "%ld trajectories x %ld steps: %ld ok steps (%ld sliding, %ld sticking, %ld at the "
+           "rolling/twisting limit, %ld separated; frame spin by series %ld, by sin %ld), %ld error "
+           "steps\n",
+           LANG, specs_ok, specs_bad, models, per, seen[0], seen[1], seen[2], seen[3], seen[4],
+           seen[6], seen[7], seen[5]);
+    /* the comparison must have exercised every regime */
+    if (!(seen[1] > 1000 && seen[2] > 1000 && seen[3] > 1000 && seen[4] > 1000 && seen[6] > 1000 &&
+          seen[7] > 1000 && specs_bad > 1000))
+        fail("coverage of regimes", 0);
+    printf("test_inline_contact[%s]: %ld passed, %ld failed\n", LANG, n_pass, n_fail);
+    return n_fail ? 1 : 0;
+}

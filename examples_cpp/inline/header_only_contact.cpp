@@ -1,0 +1,2 @@
+/* The header-only contact example built as C++17: same program, same numbers. */
+#include "header_only_contact.c"
