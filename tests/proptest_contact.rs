@@ -8,20 +8,12 @@ use demcontact::ffi::contact::*;
 use demcontact::ffi::status::*;
 use proptest::prelude::*;
 
-fn known(s: i32) -> bool {
-    s == DC_OK || (6101..=6139).contains(&s)
-}
+#[path = "common/proptest_util.rs"]
+mod proptest_util;
+use proptest_util::known;
 
 fn config(cases: u32) -> ProptestConfig {
-    let mut c = ProptestConfig {
-        cases,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    };
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        c.rng_seed = proptest::test_runner::RngSeed::Fixed(20_261_123);
-    }
-    c
+    proptest_util::config(cases, 20_261_123)
 }
 
 fn any_f64() -> impl Strategy<Value = f64> {

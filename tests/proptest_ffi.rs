@@ -7,14 +7,11 @@ use demcontact::ffi::{
 };
 use proptest::prelude::*;
 
-const SENTINEL: f64 = -9.87654321e123;
+#[path = "common/proptest_util.rs"]
+mod proptest_util;
+use proptest_util::known;
 
-/// Every status an export may return: DC_OK or a documented DC_ERR_* code (never
-/// DC_ERR_INTERNAL, which would mean a caught panic).
-fn known(s: i32) -> bool {
-    // The library's status table decides (no hard-coded range).
-    dc_status_known(s) == 1 && s != DC_ERR_INTERNAL
-}
+const SENTINEL: f64 = -9.87654321e123;
 
 fn pair_bytes(p: &dc_pair) -> Vec<u8> {
     let ptr = (p as *const dc_pair).cast::<u8>();
@@ -47,19 +44,8 @@ fn contract(f: impl Fn(*mut f64) -> i32) -> Result<(i32, f64), TestCaseError> {
     Ok((s, out))
 }
 
-/// `cases` cases from a fixed seed, so that `cargo test` (and CI) is reproducible; set
-/// PROPTEST_RNG_SEED (a number) to explore other inputs, e.g.
-/// `for s in $(seq 1 50); do PROPTEST_RNG_SEED=$s cargo test --release --test proptest_ffi || break; done`.
 fn config(cases: u32) -> ProptestConfig {
-    let mut c = ProptestConfig {
-        cases,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    };
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        c.rng_seed = proptest::test_runner::RngSeed::Fixed(20_261_121);
-    }
-    c
+    proptest_util::config(cases, 20_261_121)
 }
 
 fn any_f64() -> impl Strategy<Value = f64> {

@@ -6,8 +6,8 @@
  *   F = max(kf q d + c sqrt(m* q) vn, 0), q = sqrt(R* d); force = F n.
  * hmc_loop: the same normal force plus the Hertz-Mindlin-Coulomb tangential history spring
  *   exactly as in src/contact (the spring carried into the current tangent plane by the
- *   Rodrigues tilt from the stored normal and the Cayley twist by the mean spin, incremented by
- *   v_t dt, k_t = 8 G* sqrt(R* d), dashpot 2 zeta sqrt(m_t k_t), Coulomb cap mu F with LAMMPS's
+ *   rotation by the mean spin over dt, the minimal tilt from the spun stored normal and the
+ *   projection, incremented by v_t dt, k_t = 8 G* sqrt(R* d), dashpot 2 zeta sqrt(m_t k_t), Coulomb cap mu F with LAMMPS's
  *   reset), torques -a_i n x F_t, history = (n, xi) per contact (6 doubles).                  */
 #include <math.h>
 #include <stddef.h>
@@ -81,23 +81,34 @@ void CAT(hmc_loop, BASE)(size_t n, const hmc_params *p, const double *restrict n
         for (int k = 0; k < 3; k++) vt[k] = vr[k] - ax[k];
         double vcn = dot(vt, e);
         for (int k = 0; k < 3; k++) vt[k] -= vcn * e[k];
-        /* carry the spring: tilt from the stored normal, twist by the mean spin, project */
-        double xi[3] = {h[3], h[4], h[5]}, kk[3], kx[3];
-        double cth = dot(h, e);
-        cross(h, e, kk);
+        /* carry the spring: rotate by the mean spin q = (w1 + w2) dt/2 (Rodrigues), tilt from the
+         * spun stored normal to n, project */
+        double xi[3] = {h[3], h[4], h[5]};
+        double qv[3], q2, sq, cq;
+        for (int k = 0; k < 3; k++) qv[k] = 0.5 * p->dt * (w1[3 * i + k] + w2[3 * i + k]);
+        q2 = dot(qv, qv);
+        if (q2 < 1e-3) {
+            sq = 1.0 - q2 / 6.0 * (1.0 - q2 / 20.0 * (1.0 - q2 / 42.0));
+            cq = 0.5 * (1.0 - q2 / 12.0 * (1.0 - q2 / 30.0 * (1.0 - q2 / 56.0)));
+        } else {
+            double th = sqrt(q2), hs = sin(0.5 * th);
+            sq = sin(th) / th;
+            cq = 2.0 * hs * hs / q2;
+        }
+        double sp[3], x1[3], x2[3];
+        cross(qv, h, x1);
+        cross(qv, x1, x2);
+        for (int k = 0; k < 3; k++) sp[k] = h[k] + sq * x1[k] + cq * x2[k];
+        double cth = dot(sp, e), kk[3];
+        cross(sp, e, kk);
         if (cth > -0.5 && dot(h, h) > 0.25) {
+            double kx[3];
+            cross(qv, xi, x1);
+            cross(qv, x1, x2);
+            for (int k = 0; k < 3; k++) xi[k] += sq * x1[k] + cq * x2[k];
             cross(kk, xi, kx);
             double s = dot(kk, xi) / (1.0 + cth);
             for (int k = 0; k < 3; k++) xi[k] = cth * xi[k] + kx[k] + s * kk[k];
-        }
-        double ws[3] = {w1[3 * i] + w2[3 * i], w1[3 * i + 1] + w2[3 * i + 1], w1[3 * i + 2] + w2[3 * i + 2]};
-        double t = 0.5 * (0.5 * dot(ws, e) * p->dt);
-        if (t != 0.0) {
-            double nx[3], nnx[3];
-            cross(e, xi, nx);
-            cross(e, nx, nnx);
-            double g = 2.0 / (1.0 + t * t);
-            for (int k = 0; k < 3; k++) xi[k] += g * (t * nx[k] + t * t * nnx[k]);
         }
         double xn = dot(xi, e);
         for (int k = 0; k < 3; k++) xi[k] -= xn * e[k];

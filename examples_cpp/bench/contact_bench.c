@@ -33,26 +33,69 @@ typedef struct {
 DECL(plain)
 DECL(fast)
 
-enum { N_C_PLAIN, N_C_FAST, N_TODAY, N_KERNEL, N_BATCH, T_C_PLAIN, T_C_FAST, T_BATCH, R_BATCH, NVAR };
-static const char *NAMES[NVAR] = {
-    "normal: C loop, -O3",
-    "normal: C loop, -O3 -fno-math-errno",
-    "normal: host vn/R*/m* + dc_normal_force_batch + F n",
-    "normal: dc_normal_force_batch alone (vn, R*, m* precomputed)",
-    "normal: dc_contact_force_batch",
-    "+ Mindlin tangential: C loop, -O3",
-    "+ Mindlin tangential: C loop, -O3 -fno-math-errno",
-    "+ Mindlin tangential: dc_contact_force_batch",
-    "+ Mindlin + EPSD rolling: dc_contact_force_batch",
-};
+static const dc_contact_model *MODELS[3];
+static hmc_params P;
 
 typedef struct {
     size_t n;
     double *nv, *ov, *v1, *v2, *w1, *w2, *r1, *r2, *m1, *m2, *hist, *f_n, *force, *t1, *t2, *vn, *reff, *meff;
 } arrays;
 
-static const dc_contact_model *MODELS[3];
-static hmc_params P;
+enum {
+    N_C_PLAIN,
+    N_C_FAST,
+    N_TODAY,
+    N_KERNEL,
+    N_BATCH,
+    N_SCALAR_TODAY,
+    N_SCALAR,
+    T_C_PLAIN,
+    T_C_FAST,
+    T_BATCH,
+    T_SCALAR,
+    R_BATCH,
+    R_SCALAR,
+    NVAR
+};
+static const char *NAMES[NVAR] = {
+    "normal: C loop, -O3",
+    "normal: C loop, -O3 -fno-math-errno",
+    "normal: host vn/R*/m* + dc_normal_force_batch + F n",
+    "normal: dc_normal_force_batch alone (vn, R*, m* precomputed)",
+    "normal: dc_contact_force_batch",
+    "normal: host vn/R*/m* + dc_normal_force (unchecked) per contact + F n",
+    "normal: dc_contact_force per contact",
+    "+ Mindlin tangential: C loop, -O3",
+    "+ Mindlin tangential: C loop, -O3 -fno-math-errno",
+    "+ Mindlin tangential: dc_contact_force_batch",
+    "+ Mindlin tangential: dc_contact_force per contact",
+    "+ Mindlin + EPSD rolling: dc_contact_force_batch",
+    "+ Mindlin + EPSD rolling: dc_contact_force per contact",
+};
+
+/* One dc_contact_force call per contact, as a host's pair loop does: state from the arrays,
+ * history at stride, force and torques stored. */
+static void scalar_loop(const dc_contact_model *m, const arrays *a, size_t stride) {
+    for (size_t i = 0; i < a->n; i++) {
+        dc_contact_state st;
+        memcpy(st.n, a->nv + 3 * i, sizeof st.n);
+        st.overlap = a->ov[i];
+        memcpy(st.v1, a->v1 + 3 * i, sizeof st.v1);
+        memcpy(st.v2, a->v2 + 3 * i, sizeof st.v2);
+        memcpy(st.w1, a->w1 + 3 * i, sizeof st.w1);
+        memcpy(st.w2, a->w2 + 3 * i, sizeof st.w2);
+        st.r1 = a->r1[i], st.r2 = a->r2[i], st.m1 = a->m1[i], st.m2 = a->m2[i];
+        dc_contact_result r;
+        double *h = stride ? a->hist + stride * i : NULL;
+        if (dc_contact_force(m, &st, P.dt, h, stride, &r) != DC_OK) abort();
+        memcpy(a->force + 3 * i, r.force, sizeof r.force);
+        memcpy(a->t1 + 3 * i, r.torque1, sizeof r.torque1);
+        memcpy(a->t2 + 3 * i, r.torque2, sizeof r.torque2);
+        a->f_n[i] = r.f_n;
+    }
+}
+
+
 
 static void run(int var, const arrays *a) {
     size_t n = a->n;
@@ -77,6 +120,20 @@ static void run(int var, const arrays *a) {
             for (size_t i = 0; i < n; i++)
                 for (int k = 0; k < 3; k++) a->force[3 * i + k] = a->f_n[i] * a->nv[3 * i + k];
         break;
+    case N_SCALAR_TODAY:
+        for (size_t i = 0; i < n; i++) {
+            const double *e = a->nv + 3 * i, *x = a->v1 + 3 * i, *y = a->v2 + 3 * i;
+            double vn = (y[0] - x[0]) * e[0] + (y[1] - x[1]) * e[1] + (y[2] - x[2]) * e[2];
+            double reff = 1.0 / (1.0 / a->r1[i] + 1.0 / a->r2[i]);
+            double meff = 1.0 / (1.0 / a->m1[i] + 1.0 / a->m2[i]);
+            double f = dc_normal_force(&MODELS[0]->normal, a->ov[i], vn, reff, meff);
+            a->f_n[i] = f;
+            for (int k = 0; k < 3; k++) a->force[3 * i + k] = f * e[k];
+        }
+        break;
+    case N_SCALAR: scalar_loop(MODELS[0], a, 0); break;
+    case T_SCALAR: scalar_loop(MODELS[1], a, 6); break;
+    case R_SCALAR: scalar_loop(MODELS[2], a, DC_CONTACT_HISTORY_MAX); break;
     case T_C_PLAIN:
     case T_C_FAST: {
         /* the C loops keep a 6-double history: use the tail of the same buffer layout */
@@ -184,7 +241,8 @@ int main(int argc, char **argv) {
     {
         size_t n = sizes[0];
         double *ref = malloc(4 * 3 * n * sizeof(double)), *hist = calloc(DC_CONTACT_HISTORY_MAX * n, sizeof(double));
-        if (!ref || !hist) return 1;
+        double *hist2 = calloc(DC_CONTACT_HISTORY_MAX * n, sizeof(double));
+        if (!ref || !hist || !hist2) return 1;
         arrays c = a;
         c.n = n;
         c.hist = hist;
@@ -193,17 +251,21 @@ int main(int argc, char **argv) {
             run(T_C_FAST, &c);
             memcpy(ref, c.force, 3 * n * sizeof(double));
             memcpy(ref + 3 * n, c.t1, 3 * n * sizeof(double));
-            arrays d = a;
-            d.n = n;
-            /* dc_contact_force_batch with stride 6 (same layout as the C loop's history) */
-            run(T_BATCH, &d);
-            for (size_t i = 0; i < 3 * n; i++) {
-                double scale = fabs(c.f_n[i / 3]) + 1e-30;
-                if (fabs(ref[i] - d.force[i]) > 1e-12 * scale ||
-                    fabs(ref[3 * n + i] - d.t1[i]) > 1e-12 * scale * a.r1[i / 3]) {
-                    fprintf(stderr, "step %d: HMC C loop and ABI differ at %zu: %.17g vs %.17g\n", step, i, ref[i],
-                            d.force[i]);
-                    return 1;
+            /* dc_contact_force_batch with stride 6 (same layout as the C loop's history), then
+             * dc_contact_force per contact on its own history */
+            for (int v = T_BATCH; v <= T_SCALAR; v++) {
+                arrays d = a;
+                d.n = n;
+                if (v == T_SCALAR) d.hist = hist2;
+                run(v, &d);
+                for (size_t i = 0; i < 3 * n; i++) {
+                    double scale = fabs(c.f_n[i / 3]) + 1e-30;
+                    if (fabs(ref[i] - d.force[i]) > 1e-12 * scale ||
+                        fabs(ref[3 * n + i] - d.t1[i]) > 1e-12 * scale * a.r1[i / 3]) {
+                        fprintf(stderr, "step %d: HMC C loop and %s differ at %zu: %.17g vs %.17g\n", step,
+                                NAMES[v], i, ref[i], d.force[i]);
+                        return 1;
+                    }
                 }
             }
         }
@@ -211,7 +273,7 @@ int main(int argc, char **argv) {
         d.n = n;
         run(N_C_FAST, &d);
         memcpy(ref, d.force, 3 * n * sizeof(double));
-        for (int v = N_TODAY; v <= N_BATCH; v++) {
+        for (int v = N_TODAY; v <= N_SCALAR; v++) {
             if (v == N_KERNEL) continue;
             run(v, &d);
             for (size_t i = 0; i < 3 * n; i++)
@@ -222,6 +284,7 @@ int main(int argc, char **argv) {
         }
         free(ref);
         free(hist);
+        free(hist2);
     }
     if (smoke) {
         for (int v = 0; v < NVAR; v++) {
@@ -263,6 +326,10 @@ int main(int argc, char **argv) {
     printf("\nratios: to the -O3 -fno-math-errno C loop of the same stages. normal-only batch / today's path "
            "(host prepass + dc_normal_force_batch + F n): %.2f in-cache, %.2f streaming\n",
            best[0][N_BATCH] / best[0][N_TODAY], best[1][N_BATCH] / best[1][N_TODAY]);
+    printf("per-contact calls: dc_contact_force normal-only / host + dc_normal_force: %.2f in-cache, %.2f streaming; "
+           "dc_contact_force Mindlin / C loop: %.2f in-cache, %.2f streaming\n",
+           best[0][N_SCALAR] / best[0][N_SCALAR_TODAY], best[1][N_SCALAR] / best[1][N_SCALAR_TODAY],
+           best[0][T_SCALAR] / best[0][T_C_FAST], best[1][T_SCALAR] / best[1][T_C_FAST]);
     free(buf);
     return 0;
 }

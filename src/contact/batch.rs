@@ -15,7 +15,9 @@ use super::model::{ContactModel, select};
 use super::tangential::{TangentialLaw, step};
 use super::tangential_linear::Linear;
 use super::tangential_mindlin::Mindlin;
-use super::vec3::{V3, add, cross, dot, normal_vector, scale, sub};
+use super::vec3::{
+    V3, add, all_finite, all_positive, cross, dot, no_nan, normal_vector, scale, sub,
+};
 use super::{rolling_constant, rolling_epsd, twisting_sds};
 use crate::Error;
 use crate::force::pair::{Consts, Law, Visit, eval};
@@ -134,30 +136,31 @@ fn normal_pass<L: Law, const CLAMP: bool>(
     }
 }
 
-/// All inputs valid? Separate passes per array with no early exit (non-short-circuit `&`
-/// reductions, which the compiler vectorises); the detailed status is looked for only when one
-/// fails. Angular velocities are checked only when the model reads them.
+/// All inputs valid? Separate passes per array with no early exit, each an OR reduction of bit
+/// arithmetic (no float compare per value: a 64-bit compare has no packed form in the portable
+/// x86-64 baseline, while the integer add/and/or do), which the compiler vectorises; the
+/// detailed status is looked for only when one fails. Angular velocities are checked only when
+/// the model reads them.
 fn all_valid(b: &BatchIn<'_>, uses_w: bool) -> bool {
-    let finite = |x: &[f64]| x.iter().fold(true, |ok, v| ok & v.is_finite());
-    let body1 = |x: &[f64]| {
-        x.iter()
-            .fold(true, |ok, &v| ok & (v > 0.0) & (v < f64::INFINITY))
-    };
-    let body2 = |x: &[f64]| x.iter().fold(true, |ok, &v| ok & (v > 0.0));
     // |n|² within 1e-6 of 1 also rejects NaN and ±∞ components.
     let unit = b
         .normal
         .iter()
         .fold(true, |ok, &n| ok & ((dot(n, n) - 1.0).abs() <= 1e-6));
-    let w_ok = !uses_w || (finite(b.w1.as_flattened()) & finite(b.w2.as_flattened()));
-    unit & finite(b.overlap)
-        & finite(b.v1.as_flattened())
-        & finite(b.v2.as_flattened())
+    let w_ok = !uses_w || (all_finite(b.w1.as_flattened()) & all_finite(b.w2.as_flattened()));
+    // Body 1: finite and > 0; body 2: > 0, +∞ allowed (a wall, a fixed body), no NaN.
+    unit & all_finite(b.overlap)
+        & all_finite(b.v1.as_flattened())
+        & all_finite(b.v2.as_flattened())
         & w_ok
-        & body1(b.r1)
-        & body1(b.m1)
-        & body2(b.r2)
-        & body2(b.m2)
+        & all_finite(b.r1)
+        & all_positive(b.r1)
+        & all_finite(b.m1)
+        & all_positive(b.m1)
+        & no_nan(b.r2)
+        & all_positive(b.r2)
+        & no_nan(b.m2)
+        & all_positive(b.m2)
 }
 
 fn put(c: &mut [f64], v: V3) {
@@ -188,7 +191,8 @@ fn tangential_pass<T: TangentialLaw>(
         if !(s.overlap > 0.0) {
             continue;
         }
-        let (k, frame) = Kin::of(&s, v3(h.get(0..3).unwrap_or(&[])), dt);
+        let k = Kin::of(&s);
+        let frame = Kin::frame(&s, v3(h.get(0..3).unwrap_or(&[])), dt);
         let Some(xs) = h.get_mut(at..at + 3) else {
             continue;
         };
@@ -229,7 +233,8 @@ fn rolling_pass<const EPSD: bool>(
             continue;
         }
         let n_old = h.as_deref().and_then(|h| h.get(0..3)).map_or([0.0; 3], v3);
-        let (k, frame) = Kin::of(&s, n_old, dt);
+        let k = Kin::of(&s);
+        let frame = Kin::frame(&s, n_old, dt);
         let mr = if EPSD {
             let Some(h) = h else { continue };
             let kn = if m.k_r > 0.0 {
@@ -273,7 +278,7 @@ fn twisting_pass(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_
         if !(s.overlap > 0.0) {
             continue;
         }
-        let (k, _) = Kin::of(&s, [0.0; 3], dt);
+        let k = Kin::of(&s);
         let Some(mk) = h.get_mut(at) else { continue };
         let (t, _) = twisting_sds::step(m, &k, f, dt, mk);
         let mt = scale(t, k.n);

@@ -7,7 +7,7 @@ use super::model::{ContactModel, HISTORY_MAX, select};
 use super::tangential::{TangentialOut, step};
 use super::tangential_linear::Linear;
 use super::tangential_mindlin::Mindlin;
-use super::vec3::{V3, add, cross, finite, normal_vector, scale, sub};
+use super::vec3::{V3, add, all_finite, cross, none_negative, normal_vector, scale, sub};
 use super::{rolling_constant, rolling_epsd, twisting_sds};
 use crate::Error;
 use crate::force::registry::{needs, normal_force_raw};
@@ -56,7 +56,8 @@ pub(crate) fn check_model(m: &ContactModel) -> Result<(), Error> {
         m.k_tw,
         m.eta_tw,
     ];
-    let consts_ok = consts.iter().all(|x| x.is_finite() && *x >= 0.0);
+    // Integer reductions instead of a test and a branch per value (this runs on every call).
+    let consts_ok = all_finite(&consts) & none_negative(&consts);
     let layout_ok = m.layout == super::model::Layout::of(m.tangential, m.rolling, m.twisting)
         && m.layout.len <= HISTORY_MAX;
     if !(codes_ok && consts_ok && layout_ok && m.kappa > 0.0) {
@@ -70,25 +71,28 @@ pub(crate) fn check_model(m: &ContactModel) -> Result<(), Error> {
 
 /// Checks a state: finite values (r2, m2 may be +∞), positive radii and masses, unit normal.
 pub(crate) fn check_state(s: &ContactState) -> Result<(), Error> {
-    let body2 = |x: f64| x.is_finite() || x == f64::INFINITY;
-    if !(finite(s.n)
-        && s.overlap.is_finite()
-        && finite(s.v1)
-        && finite(s.v2)
-        && finite(s.w1)
-        && finite(s.w2)
-        && s.r1.is_finite()
-        && s.m1.is_finite()
-        && body2(s.r2)
-        && body2(s.m2))
-    {
+    // Integer reductions, no branch per value (this runs on every scalar call); the status is
+    // then picked in the documented order.
+    let [n1, n2, n3] = s.n;
+    let [a1, a2, a3] = s.v1;
+    let [b1, b2, b3] = s.v2;
+    let [c1, c2, c3] = s.w1;
+    let [d1, d2, d3] = s.w2;
+    let all = [
+        n1, n2, n3, s.overlap, a1, a2, a3, b1, b2, b3, c1, c2, c3, d1, d2, d3, s.r1, s.m1,
+    ];
+    // r2, m2: finite or +∞ (NaN and −∞ fail).
+    let finite_ok = all_finite(&all) & (s.r2 > f64::NEG_INFINITY) & (s.m2 > f64::NEG_INFINITY);
+    let positive_ok = s.r1.min(s.r2).min(s.m1.min(s.m2)) > 0.0;
+    let [x, y, z] = s.n;
+    let unit_ok = (x * x + y * y + z * z - 1.0).abs() <= 1e-6;
+    if !finite_ok {
         return Err(Error::NotFinite);
     }
-    if !(s.r1 > 0.0 && s.r2 > 0.0 && s.m1 > 0.0 && s.m2 > 0.0) {
+    if !positive_ok {
         return Err(Error::NotPositive);
     }
-    let [x, y, z] = s.n;
-    if !((x * x + y * y + z * z - 1.0).abs() <= 1e-6) {
+    if !unit_ok {
         return Err(Error::NotUnit);
     }
     Ok(())
@@ -115,7 +119,7 @@ pub(crate) fn evaluate(
     dt: f64,
     h: &mut [f64; HISTORY_MAX],
 ) -> ContactForce {
-    let (k, frame) = Kin::of(s, get3(h, 0), dt);
+    let k = Kin::of(s);
     let pair = &m.normal;
     let f = normal_force_raw(pair.kernel, pair.consts, k.d, k.vn, k.r_eff, k.m_eff);
     if !(s.overlap > 0.0) {
@@ -136,6 +140,10 @@ pub(crate) fn evaluate(
         out.force = normal_vector(f, k.n);
         return out;
     }
+    // The frame step reads the stored normal before it is replaced; only vector springs need
+    // it (the tangential spring or the EPSD rolling torque).
+    let frame = (m.layout.tangential.is_some() || m.layout.rolling.is_some())
+        .then(|| Kin::frame(s, get3(h, 0), dt));
     if m.layout.len > 0 {
         put3(h, 0, k.n);
     }
@@ -143,11 +151,11 @@ pub(crate) fn evaluate(
     // the sign of zero).
     out.force = normal_vector(f, k.n);
     let (mut t1, mut t2) = ([0.0; 3], [0.0; 3]);
-    if let Some(at) = m.layout.tangential {
+    if let (Some(at), Some(frame)) = (m.layout.tangential, &frame) {
         let mut xi = get3(h, at);
         let t = match m.tangential {
-            select::TANGENTIAL_LINEAR => step::<Linear>(m, &k, f, dt, &frame, &mut xi),
-            select::TANGENTIAL_MINDLIN => step::<Mindlin>(m, &k, f, dt, &frame, &mut xi),
+            select::TANGENTIAL_LINEAR => step::<Linear>(m, &k, f, dt, frame, &mut xi),
+            select::TANGENTIAL_MINDLIN => step::<Mindlin>(m, &k, f, dt, frame, &mut xi),
             _ => TangentialOut {
                 ft: [0.0; 3],
                 sliding: false,
@@ -179,7 +187,7 @@ pub(crate) fn evaluate(
             out.rolling_sliding = on;
         }
         select::ROLLING_EPSD => {
-            if let Some(at) = m.layout.rolling {
+            if let (Some(at), Some(frame)) = (m.layout.rolling, &frame) {
                 let kn = if m.k_r > 0.0 {
                     0.0
                 } else {
@@ -188,7 +196,7 @@ pub(crate) fn evaluate(
                     pair.p * fe / k.d
                 };
                 let mut mk = get3(h, at);
-                let (t, lim) = rolling_epsd::step(m, &k, f, kn, dt, &frame, &mut mk);
+                let (t, lim) = rolling_epsd::step(m, &k, f, kn, dt, frame, &mut mk);
                 put3(h, at, mk);
                 moment(t);
                 out.rolling_sliding = lim;
@@ -228,16 +236,16 @@ pub fn contact_force(
     if let Some(dst) = h.get_mut(..len) {
         dst.copy_from_slice(hist);
     }
-    if !h.iter().all(|x| x.is_finite()) {
+    if !all_finite(&h) {
         return Err(Error::NotFinite);
     }
     let out = evaluate(m, s, dt, &mut h);
-    let ok = out.fn_.is_finite()
-        && finite(out.force)
-        && finite(out.ft)
-        && finite(out.torque1)
-        && finite(out.torque2)
-        && h.iter().all(|x| x.is_finite());
+    let [f1, f2, f3] = out.force;
+    let [g1, g2, g3] = out.ft;
+    let [t1, t2, t3] = out.torque1;
+    let [u1, u2, u3] = out.torque2;
+    let outs = [out.fn_, f1, f2, f3, g1, g2, g3, t1, t2, t3, u1, u2, u3];
+    let ok = all_finite(&outs) & all_finite(&h);
     if !ok {
         return Err(Error::ResultRange);
     }

@@ -75,6 +75,7 @@ fn tilt(c: f64, k: V3, v: V3) -> V3 {
 fn rodrigues_coefficients(q2: f64) -> (f64, f64) {
     if q2 < SERIES_Q2 {
         // Horner forms of 1 − θ²/6 + θ⁴/120 − θ⁶/5040 and ½ − θ²/24 + θ⁴/720 − θ⁶/40320.
+        // (Divisions, as include/demcontact_inline.h has them bit for bit: keep the order.)
         let s = 1.0 - q2 / 6.0 * (1.0 - q2 / 20.0 * (1.0 - q2 / 42.0));
         let c = 0.5 * (1.0 - q2 / 12.0 * (1.0 - q2 / 30.0 * (1.0 - q2 / 56.0)));
         (s, c)

@@ -69,20 +69,25 @@ pub(crate) struct Kin {
 /// overflow of a b (written a (b/(a + b))).
 #[inline(always)]
 pub(crate) fn harmonic(a: f64, b: f64) -> f64 {
-    if b == f64::INFINITY {
-        a
-    } else {
-        a * (b / (a + b))
-    }
+    // Computed on both branches then selected (b = +∞ gives NaN, discarded): no branch, so the
+    // batch loops can vectorise.
+    let h = a * (b / (a + b));
+    if b == f64::INFINITY { a } else { h }
 }
 
 impl Kin {
-    /// Kinematics of a state with overlap > 0 (checked by the caller), and the frame step from
-    /// the stored normal `n_old` (zeros: new contact or no history).
+    /// The frame step from the stored normal `n_old` (zeros: new contact or no history) to the
+    /// state's normal, with the bodies' mean spin over dt. Only the stages with vector history
+    /// need it (a normal-only or twisting-only model never computes it).
     #[inline(always)]
-    pub(crate) fn of(s: &ContactState, n_old: V3, dt: f64) -> (Kin, FrameStep) {
+    pub(crate) fn frame(s: &ContactState, n_old: V3, dt: f64) -> FrameStep {
+        FrameStep::new(n_old, s.n, scale(0.5 * dt, add(s.w1, s.w2)))
+    }
+
+    /// Kinematics of a state with overlap > 0 (checked by the caller).
+    #[inline(always)]
+    pub(crate) fn of(s: &ContactState) -> Kin {
         let n = s.n;
-        let frame = FrameStep::new(n_old, n, scale(0.5 * dt, add(s.w1, s.w2)));
         let d = s.overlap;
         let wall = s.r2 == f64::INFINITY;
         let a1 = s.r1 - 0.5 * d;
@@ -96,7 +101,7 @@ impl Kin {
         };
         let vc = sub(vr, cross(arm, n));
         let w_rel = sub(s.w1, s.w2);
-        let kin = Kin {
+        Kin {
             n,
             d,
             vn,
@@ -112,7 +117,6 @@ impl Kin {
             m2: s.m2,
             r1: s.r1,
             r2: s.r2,
-        };
-        (kin, frame)
+        }
     }
 }

@@ -67,3 +67,91 @@ pub fn finite(a: V3) -> bool {
 pub fn normal_vector(f: f64, n: V3) -> V3 {
     if f == 0.0 { [0.0; 3] } else { scale(f, n) }
 }
+
+const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
+const SIGN: u64 = 1 << 63;
+
+/// True when every value is finite. Branch-free, and an OR reduction (which the compiler may
+/// split into parallel chains or vectorise, unlike a float sum or a min chain): the exponent
+/// field plus one unit of the exponent reaches the sign bit exactly when it is all ones (NaN, ±∞).
+#[inline(always)]
+pub fn all_finite(xs: &[f64]) -> bool {
+    xs.iter()
+        .fold(0u64, |acc, x| acc | ((x.to_bits() & EXPONENT) + (1 << 52)))
+        & SIGN
+        == 0
+}
+
+/// True when no value is below zero (−0.0 counts as zero; NaN must be excluded first, e.g. by
+/// [`all_finite`]). Branch-free OR reduction: sign bit set and a nonzero magnitude (the
+/// magnitude plus 2^63 − 1 reaches the sign bit exactly when it is ≥ 1).
+#[inline(always)]
+pub fn none_negative(xs: &[f64]) -> bool {
+    xs.iter().fold(0u64, |acc, x| {
+        let b = x.to_bits();
+        acc | (b & ((b & !SIGN) + (SIGN - 1)))
+    }) & SIGN
+        == 0
+}
+
+/// True when every value is > 0 (+∞ included; 0, −0, negatives fail; a NaN passes or fails by
+/// its sign bit: exclude NaN separately). Branch-free OR reduction: b | (b − 1) has the sign bit
+/// set exactly when b = 0 or the sign bit of b is set.
+#[inline(always)]
+pub fn all_positive(xs: &[f64]) -> bool {
+    xs.iter().fold(0u64, |acc, x| {
+        let b = x.to_bits();
+        acc | b | b.wrapping_sub(1)
+    }) & SIGN
+        == 0
+}
+
+/// True when no value is NaN (±∞ allowed). Branch-free OR reduction: the magnitude's bits plus
+/// 2^52 − 1 reach the sign bit exactly when they exceed those of +∞.
+#[inline(always)]
+pub fn no_nan(xs: &[f64]) -> bool {
+    xs.iter().fold(0u64, |acc, x| {
+        acc | ((x.to_bits() & !SIGN) + ((1 << 52) - 1))
+    }) & SIGN
+        == 0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finite_and_sign_reductions_match_the_plain_tests() {
+        let vals = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            5e-324,
+            -5e-324,
+            f64::MAX,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            -f64::NAN,
+        ];
+        for &a in &vals {
+            for &b in &vals {
+                let xs = [1.5, a, -0.0, b];
+                assert_eq!(all_finite(&xs), a.is_finite() && b.is_finite(), "{a} {b}");
+                if a.is_finite() && b.is_finite() {
+                    assert_eq!(none_negative(&xs), a >= 0.0 && b >= 0.0, "{a} {b}");
+                }
+                assert_eq!(no_nan(&xs), !a.is_nan() && !b.is_nan(), "{a} {b}");
+                let ys = [1.5, a, b];
+                if !a.is_nan() && !b.is_nan() {
+                    assert_eq!(all_positive(&ys), a > 0.0 && b > 0.0, "{a} {b}");
+                }
+            }
+        }
+        assert!(all_finite(&[]) && none_negative(&[]));
+    }
+}
