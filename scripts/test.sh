@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Runs every test: formatting, Rust unit/integration/property tests (release: the ODE references
-# are heavy), the no-panic lints on src/, a benchmark smoke run, every C/C++/Fortran program
+# Runs every test: formatting, Rust unit/integration/property tests (cargo profile ci, the release
+# optimisation without cross-crate LTO: the ODE references are heavy), the no-panic lints on src/, a benchmark smoke run, every C/C++/Fortran program
 # through ctest (plain and under ASan+UBSan), the FFI tests under Miri, a short libFuzzer run and
 # the fuzzer's self-test. Steps that cannot run on this machine (Miri without nightly, simulators
 # that cannot be installed, ...) are skipped and listed by name at the end; nothing else skips.
@@ -9,8 +9,8 @@ cd "$(dirname "$0")/.."
 export DC_SKIP_LOG="$PWD/build-skips.log"
 : >"$DC_SKIP_LOG"
 
-# step NAME CMD ARGS...: runs one external command (no shell function or pipeline: those would run
-# with errexit off inside `if`), prints its wall and CPU seconds (user+sys of all its waited-for
+# step NAME CMD ARGS...: runs one external command (not a shell function: it would run with errexit
+# off inside `cmd || rc=$?`; pipelines and redirections go through `bash -c`), prints its wall and CPU seconds (user+sys of all its waited-for
 # descendants, from the `times` builtin) and records them for the table at the end. A failing
 # step prints the table so far and ends the script with the step's own exit status.
 steps_tsv="$PWD/build-steps.tsv"
