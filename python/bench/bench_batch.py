@@ -9,6 +9,12 @@
    the result). C and Python runs alternate; medians of `repeats` runs, ns per contact.
 2. Scalar call overhead: demcontact.<f>(scalars) against the same C function through ctypes
    and the in-library cost (the batch/array path per element).
+3. Full-contact batch over n contacts (same n) for three models (normal only; Hertz + Mindlin on
+   walls; Hertz + Mindlin + EPSD rolling + SDS twisting): dc_contact_force_batch through ctypes
+   on the same numpy buffers against demcontact.contact_force_batch with out= and without; each
+   side keeps its own history (evolving over the runs, compared bit for bit at the end).
+4. Full-contact scalar call overhead: demcontact.contact_force against dc_contact_force through
+   ctypes (a prebuilt dc_contact_state) and the per-contact cost inside the batch.
 """
 
 from __future__ import annotations
@@ -94,3 +100,79 @@ for label, py, cc, arr, size in rows:
     tc = min(timeit.repeat(cc, number=20000, repeat=7)) / 20000 * 1e9 if cc else float("nan")
     ta = min(timeit.repeat(arr, number=3, repeat=5)) / 3 / size * 1e9
     print(f"{label:32} {tp:>14.0f} {tc:>10.0f} {ta:>30.1f}")
+
+
+# ---- 3. full-contact batch --------------------------------------------------------------------
+import math  # noqa: E402
+
+import cabi_contact as cc  # noqa: E402
+
+INF = math.inf
+contact_specs = {
+    "hertz normal only": dict(normal=dc.Normal.HERTZ, damping=dc.Damping.RESTITUTION, e_n=0.5, E1=7e10, nu1=0.3, E2=7e10, nu2=0.3),
+    "hertz+mindlin": dict(normal=dc.Normal.HERTZ, damping=dc.Damping.RESTITUTION, e_n=0.9, E1=7e10, nu1=0.3, E2=7e10, nu2=0.3,
+                          tangential=dc.Tangential.MINDLIN, mu=0.3, e_t=0.7),
+    "hertz+mindlin+epsd+sds": dict(normal=dc.Normal.HERTZ, damping=dc.Damping.RESTITUTION, e_n=0.9, E1=7e10, nu1=0.3, E2=7e10, nu2=0.3,
+                                   tangential=dc.Tangential.MINDLIN, mu=0.3, e_t=0.7, rolling=dc.Rolling.EPSD, mu_r=0.05, eta_r=0.3,
+                                   twisting=dc.Twisting.SDS, mu_tw=1e-4, k_tw=0.01, eta_tw=0.2),
+}
+creps = max(3, reps // 3)
+rng = np.random.default_rng(12)
+nv = rng.normal(size=(n, 3))
+normal = nv / np.linalg.norm(nv, axis=1)[:, None]
+overlap = rng.uniform(-1e-6, 1e-5, n)
+v1, v2 = rng.normal(0, 0.3, (n, 3)), rng.normal(0, 0.3, (n, 3))
+w1, w2 = rng.normal(0, 300, (n, 3)), rng.normal(0, 300, (n, 3))
+r1, r2 = rng.uniform(5e-4, 2e-3, n), rng.uniform(5e-4, 2e-3, n)
+m1, m2 = 2500 * 4 / 3 * np.pi * r1**3, 2500 * 4 / 3 * np.pi * r2**3
+ins = (normal, overlap, v1, v2, w1, w2, r1, r2, m1, m2)
+DT = 1e-7
+c_out = (np.empty(n), np.empty((n, 3)), np.empty((n, 3)), np.empty((n, 3)))
+py_out = (np.empty(n), np.empty((n, 3)), np.empty((n, 3)), np.empty((n, 3)))
+
+print()
+print(f"contact batch, n = {n:.0e} contacts, {creps} alternating runs, median ns/contact (min)")
+print(f"{'model':24} {'C batch':>14} {'py out=':>14} {'py alloc':>14} {'ratio (out=/C)':>15}")
+for label, kw in contact_specs.items():
+    model = dc.contact_model_init(dc.ContactSpec(**kw))
+    st, cmodel = cc.c_model(**kw)
+    assert st == 0 and model.to_bytes() == bytes(cmodel)
+    L = model.history_len
+    h_c, h_py = np.zeros((n, max(L, 1))), np.zeros((n, max(L, 1)))
+    batch = cc.Batch(n, h_c.shape[1] if L else 0, *[cc.ptr(a) for a in ins], cc.ptr(h_c) if L else None, *[cc.ptr(a) for a in c_out])
+    hp = h_py if L else None
+    runs = {k: [] for k in ("c", "out", "alloc")}
+    for _ in range(creps):
+        runs["c"].append(t(lambda: cc.force_batch(C.byref(cmodel), C.byref(batch), DT)))
+        runs["out"].append(t(lambda: dc.contact_force_batch(model, *ins, DT, hp, out=py_out)))
+        runs["alloc"].append(t(lambda: dc.contact_force_batch(model, *ins, DT, hp)))
+    # the same number of calls on each side: one more C call to match the alloc runs
+    for _ in range(creps):
+        cc.force_batch(C.byref(cmodel), C.byref(batch), DT)
+    last = dc.contact_force_batch(model, *ins, DT, hp, out=py_out)
+    cc.force_batch(C.byref(cmodel), C.byref(batch), DT)
+    assert all(a.tobytes() == b.tobytes() for a, b in zip(py_out, c_out)) and h_c.tobytes() == h_py.tobytes()
+    med = {k: statistics.median(v) / n * 1e9 for k, v in runs.items()}
+    mn = {k: min(v) / n * 1e9 for k, v in runs.items()}
+    cell = lambda k: f"{med[k]:.2f} ({mn[k]:.2f})"  # noqa: E731
+    print(f"{label:24} {cell('c'):>14} {cell('out'):>14} {cell('alloc'):>14} {med['out'] / med['c']:>15.3f}")
+
+# ---- 4. full-contact scalar call --------------------------------------------------------------
+kw = contact_specs["hertz+mindlin+epsd+sds"]
+model = dc.contact_model_init(dc.ContactSpec(**kw))
+_, cmodel = cc.c_model(**kw)
+args = (normal[0], 5e-6, v1[0], v2[0], w1[0], w2[0], float(r1[0]), float(r2[0]), float(m1[0]), float(m2[0]))
+hist, chist = np.zeros(model.history_len), np.zeros(model.history_len)
+cstate = cc.c_state(*args)
+cres = cc.Result()
+chp = cc.ptr(chist)
+tp = min(timeit.repeat(lambda: dc.contact_force(model, *args, DT, hist), number=20000, repeat=7)) / 20000 * 1e9
+tc = min(timeit.repeat(lambda: cc.force(C.byref(cmodel), C.byref(cstate), DT, chp, chist.size, C.byref(cres)), number=20000, repeat=7)) / 20000 * 1e9
+m_small = 100_000
+small = [a[:m_small].copy() for a in ins]
+hs = np.zeros((m_small, model.history_len))
+tb = min(timeit.repeat(lambda: dc.contact_force_batch(model, *small, DT, hs), number=3, repeat=5)) / 3 / m_small * 1e9
+print()
+print("contact_force scalar call (hertz+mindlin+epsd+sds): ns per call")
+print(f"{'python contact_force':>22} {'ctypes dc_contact_force':>25} {'per contact in a batch of 1e5':>32}")
+print(f"{tp:>22.0f} {tc:>25.0f} {tb:>32.1f}")

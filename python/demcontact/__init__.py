@@ -9,7 +9,10 @@ The Python face of the demcontact Rust library: the same functions as its C ABI 
 * a status other than DC_OK raises a ``DemcontactError`` subclass carrying ``code`` and
   ``message`` (e.g. ``RestitutionRangeError``), never a NaN;
 * force kernels: ``pair_*`` constructors return a ``Pair``; ``normal_force`` (checked,
-  broadcasting) and ``normal_force_batch`` (zero-copy over float64 arrays, GIL released).
+  broadcasting) and ``normal_force_batch`` (zero-copy over float64 arrays, GIL released);
+* full contact (tangential, rolling, twisting with caller-owned history): a ``ContactSpec``
+  built by keyword, ``contact_model_init`` -> ``ContactModel``, ``contact_force`` (one contact)
+  and ``contact_force_batch`` (structure of arrays, zero-copy, GIL released).
 
 >>> import demcontact
 >>> round(demcontact.alpha_from_e(0.5, 1.5, demcontact.Criterion.FORCE), 12)
@@ -26,6 +29,14 @@ from . import _native
 from ._errors import *  # noqa: F401,F403  (the exception hierarchy)
 from ._errors import __all__ as _errors_all
 from ._native import (
+    ContactModel,
+    ContactSpec,
+    contact_force,
+    contact_force_batch,
+    contact_force_spheres,
+    contact_history_len,
+    contact_model_init,
+    contact_spec_init,
     builtin_realised_e,
     builtin_value_for_e,
     builtin_yade_viscel_cn,
@@ -72,7 +83,7 @@ from ._native import (
     viscoelastic_k_gamma,
     viscoelastic_speed_for_e,
 )
-from ._types import EnergyPartition, FitResult, Trajectory
+from ._types import ContactBatchResult, ContactResult, EnergyPartition, FitResult, Trajectory
 
 
 class Criterion(_enum.IntEnum):
@@ -94,6 +105,54 @@ class Model(_enum.IntEnum):
     HERTZ = _native.MODEL_HERTZ
     VISCOELASTIC = _native.MODEL_VISCOELASTIC
 
+
+class Normal(_enum.IntEnum):
+    """Normal law of a ContactSpec (C: DC_NORMAL_*).
+
+    HERTZ: from E, nu of both bodies; POWERLAW: k_n d^p; LINEAR: k_n d; VISCOELASTIC: Hertz with
+    Brilliantov damping visco_A; DMT: adhesive Hertz (work_of_adhesion, Criterion.OVERLAP only).
+    """
+
+    HERTZ = _native.NORMAL_HERTZ
+    POWERLAW = _native.NORMAL_POWERLAW
+    LINEAR = _native.NORMAL_LINEAR
+    VISCOELASTIC = _native.NORMAL_VISCOELASTIC
+    DMT = _native.NORMAL_DMT
+
+
+class Damping(_enum.IntEnum):
+    """Normal damping of a ContactSpec (C: DC_DAMPING_*): none, or calibrated exactly from e_n."""
+
+    NONE = _native.DAMPING_NONE
+    RESTITUTION = _native.DAMPING_RESTITUTION
+
+
+class Tangential(_enum.IntEnum):
+    """Tangential law (C: DC_TANGENTIAL_*): Cundall-Strack k_t spring or Mindlin 8 G* a, Coulomb cap."""
+
+    NONE = _native.TANGENTIAL_NONE
+    LINEAR = _native.TANGENTIAL_LINEAR
+    MINDLIN = _native.TANGENTIAL_MINDLIN
+
+
+class Rolling(_enum.IntEnum):
+    """Rolling resistance (C: DC_ROLLING_*): constant torque or elastic-plastic spring-dashpot."""
+
+    NONE = _native.ROLLING_NONE
+    CONSTANT = _native.ROLLING_CONSTANT
+    EPSD = _native.ROLLING_EPSD
+
+
+class Twisting(_enum.IntEnum):
+    """Twisting resistance (C: DC_TWISTING_*): spring-dashpot-slider about n."""
+
+    NONE = _native.TWISTING_NONE
+    SDS = _native.TWISTING_SDS
+
+
+#: Doubles of history per contact of the largest contact model; version of dc_contact_spec read.
+CONTACT_HISTORY_MAX: int = _native.CONTACT_HISTORY_MAX
+CONTACT_SPEC_VERSION: int = _native.CONTACT_SPEC_VERSION
 
 #: Simulators' builtin contact models (C: DC_BUILTIN_*), for builtin_value_for_e and
 #: builtin_realised_e.
@@ -150,6 +209,23 @@ __all__ = [
     "Trajectory",
     "Pair",
     "DurationPlan",
+    "Normal",
+    "Damping",
+    "Tangential",
+    "Rolling",
+    "Twisting",
+    "CONTACT_HISTORY_MAX",
+    "CONTACT_SPEC_VERSION",
+    "ContactSpec",
+    "ContactModel",
+    "ContactResult",
+    "ContactBatchResult",
+    "contact_spec_init",
+    "contact_model_init",
+    "contact_history_len",
+    "contact_force",
+    "contact_force_spheres",
+    "contact_force_batch",
     "alpha_from_e",
     "e_from_alpha",
     "max_overlap",

@@ -16,6 +16,7 @@ from ._errors import (
     BuiltinUnreachableError as BuiltinUnreachableError,
     BuiltinModelError as BuiltinModelError,
     BufferTooShortError as BufferTooShortError,
+    ContactModelInvalidError as ContactModelInvalidError,
     CriterionError as CriterionError,
     DemcontactError as DemcontactError,
     ExponentRangeError as ExponentRangeError,
@@ -27,11 +28,15 @@ from ._errors import (
     NoEventError as NoEventError,
     NotFiniteError as NotFiniteError,
     NotPositiveError as NotPositiveError,
+    NotUnitError as NotUnitError,
     NullPointerError as NullPointerError,
     PairInvalidError as PairInvalidError,
     PanicError as PanicError,
     PlanError as PlanError,
     RestitutionRangeError as RestitutionRangeError,
+    SpecModelError as SpecModelError,
+    SpecUnsetError as SpecUnsetError,
+    SpecVersionError as SpecVersionError,
     ResultRangeError as ResultRangeError,
     UsageError as UsageError,
 )
@@ -55,6 +60,23 @@ __all__: list[str] = [
     "Trajectory",
     "Pair",
     "DurationPlan",
+    "Normal",
+    "Damping",
+    "Tangential",
+    "Rolling",
+    "Twisting",
+    "CONTACT_HISTORY_MAX",
+    "CONTACT_SPEC_VERSION",
+    "ContactSpec",
+    "ContactModel",
+    "ContactResult",
+    "ContactBatchResult",
+    "contact_spec_init",
+    "contact_model_init",
+    "contact_history_len",
+    "contact_force",
+    "contact_force_spheres",
+    "contact_force_batch",
     "alpha_from_e",
     "e_from_alpha",
     "max_overlap",
@@ -115,6 +137,11 @@ __all__: list[str] = [
     "BuiltinUnreachableError",
     "FitTooFewError",
     "FitDegenerateError",
+    "NotUnitError",
+    "SpecModelError",
+    "SpecUnsetError",
+    "SpecVersionError",
+    "ContactModelInvalidError",
     "NullPointerError",
     "BufferTooShortError",
     "BufferLayoutError",
@@ -149,6 +176,34 @@ class Builtin(enum.IntEnum):
 class FitModel(enum.IntEnum):
     CONSTANT = 0
     VISCOELASTIC = 1
+
+class Normal(enum.IntEnum):
+    HERTZ = 1
+    POWERLAW = 2
+    LINEAR = 3
+    VISCOELASTIC = 4
+    DMT = 5
+
+class Damping(enum.IntEnum):
+    NONE = 0
+    RESTITUTION = 1
+
+class Tangential(enum.IntEnum):
+    NONE = 0
+    LINEAR = 1
+    MINDLIN = 2
+
+class Rolling(enum.IntEnum):
+    NONE = 0
+    CONSTANT = 1
+    EPSD = 2
+
+class Twisting(enum.IntEnum):
+    NONE = 0
+    SDS = 1
+
+CONTACT_HISTORY_MAX: int
+CONTACT_SPEC_VERSION: int
 
 class FitResult(NamedTuple):
     beta: float
@@ -348,3 +403,190 @@ def fit_restitution(
 def status_str(status: int) -> str: ...
 def status_known(status: int) -> bool: ...
 def version() -> str: ...
+
+# full contact (normal + tangential + rolling + twisting, caller-owned history)
+_Vec3 = Union[Sequence[float], npt.NDArray[np.floating]]
+_F64 = npt.NDArray[np.float64]
+
+class ContactResult(NamedTuple):
+    force: _F64
+    torque1: _F64
+    torque2: _F64
+    f_n: float
+    ft: _F64
+    sliding: bool
+    rolling_sliding: bool
+
+class ContactBatchResult(NamedTuple):
+    f_n: _F64
+    force: _F64
+    torque1: _F64
+    torque2: _F64
+
+@final
+class ContactSpec:
+    def __new__(
+        cls,
+        *,
+        normal: Optional[_Code] = None,
+        damping: Optional[_Code] = None,
+        criterion: Optional[_Code] = None,
+        tangential: Optional[_Code] = None,
+        rolling: Optional[_Code] = None,
+        twisting: Optional[_Code] = None,
+        E1: Optional[_Real] = None,
+        nu1: Optional[_Real] = None,
+        E2: Optional[_Real] = None,
+        nu2: Optional[_Real] = None,
+        p: Optional[_Real] = None,
+        k_n: Optional[_Real] = None,
+        e_n: Optional[_Real] = None,
+        visco_A: Optional[_Real] = None,
+        mu: Optional[_Real] = None,
+        k_t: Optional[_Real] = None,
+        e_t: Optional[_Real] = None,
+        mu_r: Optional[_Real] = None,
+        k_r: Optional[_Real] = None,
+        eta_r: Optional[_Real] = None,
+        mu_tw: Optional[_Real] = None,
+        k_tw: Optional[_Real] = None,
+        eta_tw: Optional[_Real] = None,
+        inertia_factor: Optional[_Real] = None,
+        work_of_adhesion: Optional[_Real] = None,
+    ) -> ContactSpec: ...
+    @property
+    def normal(self) -> int: ...
+    @property
+    def damping(self) -> int: ...
+    @property
+    def criterion(self) -> int: ...
+    @property
+    def tangential(self) -> int: ...
+    @property
+    def rolling(self) -> int: ...
+    @property
+    def twisting(self) -> int: ...
+    @property
+    def E1(self) -> float: ...
+    @property
+    def nu1(self) -> float: ...
+    @property
+    def E2(self) -> float: ...
+    @property
+    def nu2(self) -> float: ...
+    @property
+    def p(self) -> float: ...
+    @property
+    def k_n(self) -> float: ...
+    @property
+    def e_n(self) -> float: ...
+    @property
+    def visco_A(self) -> float: ...
+    @property
+    def mu(self) -> float: ...
+    @property
+    def k_t(self) -> float: ...
+    @property
+    def e_t(self) -> float: ...
+    @property
+    def mu_r(self) -> float: ...
+    @property
+    def k_r(self) -> float: ...
+    @property
+    def eta_r(self) -> float: ...
+    @property
+    def mu_tw(self) -> float: ...
+    @property
+    def k_tw(self) -> float: ...
+    @property
+    def eta_tw(self) -> float: ...
+    @property
+    def inertia_factor(self) -> float: ...
+    @property
+    def work_of_adhesion(self) -> float: ...
+    def model(self) -> ContactModel: ...
+
+@final
+class ContactModel:
+    @property
+    def history_len(self) -> int: ...
+    @property
+    def normal(self) -> Pair: ...
+    @property
+    def tangential(self) -> int: ...
+    @property
+    def rolling(self) -> int: ...
+    @property
+    def twisting(self) -> int: ...
+    @property
+    def mu(self) -> float: ...
+    @property
+    def kt(self) -> float: ...
+    @property
+    def zeta_t(self) -> float: ...
+    @property
+    def kappa(self) -> float: ...
+    @property
+    def mu_r(self) -> float: ...
+    @property
+    def k_r(self) -> float: ...
+    @property
+    def eta_r(self) -> float: ...
+    @property
+    def mu_tw(self) -> float: ...
+    @property
+    def k_tw(self) -> float: ...
+    @property
+    def eta_tw(self) -> float: ...
+    def to_bytes(self) -> bytes: ...
+
+def contact_spec_init() -> ContactSpec: ...
+def contact_model_init(spec: ContactSpec) -> ContactModel: ...
+def contact_history_len(model: ContactModel) -> int: ...
+def contact_force(
+    model: ContactModel,
+    n: _Vec3,
+    overlap: _Real,
+    v1: _Vec3,
+    v2: _Vec3,
+    w1: _Vec3,
+    w2: _Vec3,
+    r1: _Real,
+    r2: _Real,
+    m1: _Real,
+    m2: _Real,
+    dt: _Real,
+    history: Optional[_F64] = None,
+) -> ContactResult: ...
+def contact_force_spheres(
+    model: ContactModel,
+    x1: _Vec3,
+    x2: _Vec3,
+    v1: _Vec3,
+    v2: _Vec3,
+    w1: _Vec3,
+    w2: _Vec3,
+    r1: _Real,
+    r2: _Real,
+    m1: _Real,
+    m2: _Real,
+    dt: _Real,
+    history: Optional[_F64] = None,
+) -> ContactResult: ...
+def contact_force_batch(
+    model: ContactModel,
+    normal: _ArrayLike,
+    overlap: _ArrayLike,
+    v1: _ArrayLike,
+    v2: _ArrayLike,
+    w1: Optional[_ArrayLike],
+    w2: Optional[_ArrayLike],
+    r1: _ArrayLike,
+    r2: _ArrayLike,
+    m1: _ArrayLike,
+    m2: _ArrayLike,
+    dt: _Real,
+    history: Optional[_F64] = None,
+    *,
+    out: Optional[tuple[_F64, _F64, _F64, _F64]] = None,
+) -> ContactBatchResult: ...

@@ -129,6 +129,36 @@ class FitDegenerateError(InputError):
     status = 6133
 
 
+class NotUnitError(InputError):
+    """A contact normal that is not a unit vector (| |n|^2 - 1 | > 1e-6, 6126)."""
+
+    status = 6126
+
+
+class SpecModelError(InputError):
+    """ContactSpec: unknown sub-model or an invalid combination of sub-models (6123)."""
+
+    status = 6123
+
+
+class SpecUnsetError(InputError):
+    """ContactSpec: a parameter the chosen sub-models need was left unset (6124)."""
+
+    status = 6124
+
+
+class SpecVersionError(UsageError):
+    """A dc_contact_spec of another version or size (6122; cannot happen through ContactSpec)."""
+
+    status = 6122
+
+
+class ContactModelInvalidError(UsageError):
+    """A contact model not made by contact_model_init, or altered since (6125)."""
+
+    status = 6125
+
+
 class NullPointerError(UsageError):
     """A required buffer was missing (6101)."""
 
@@ -185,6 +215,11 @@ STATUS_CLASSES: Dict[int, Type[DemcontactError]] = {
         BuiltinUnreachableError,
         FitTooFewError,
         FitDegenerateError,
+        NotUnitError,
+        SpecModelError,
+        SpecUnsetError,
+        SpecVersionError,
+        ContactModelInvalidError,
         ResultRangeError,
         NoEventError,
         NullPointerError,
@@ -223,6 +258,11 @@ __all__ = [
     "BuiltinUnreachableError",
     "FitTooFewError",
     "FitDegenerateError",
+    "NotUnitError",
+    "SpecModelError",
+    "SpecUnsetError",
+    "SpecVersionError",
+    "ContactModelInvalidError",
     "NullPointerError",
     "BufferTooShortError",
     "BufferLayoutError",

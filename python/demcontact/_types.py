@@ -57,3 +57,26 @@ class FitResult(NamedTuple):
     robust: bool
     resid_viscoelastic: np.ndarray
     resid_constant: np.ndarray
+
+
+class ContactResult(NamedTuple):
+    """One contact (C: dc_contact_result): force, torques [N, N m] on body 1 / body 2 and the
+    tangential force on body 1 (numpy 3-vectors), the applied normal force f_n [N] (positive
+    repulsive), whether the Coulomb limit (sliding) or the rolling/twisting limit was reached."""
+
+    force: np.ndarray
+    torque1: np.ndarray
+    torque2: np.ndarray
+    f_n: float
+    ft: np.ndarray
+    sliding: bool
+    rolling_sliding: bool
+
+
+class ContactBatchResult(NamedTuple):
+    """n contacts (C: dc_contact_batch outputs): f_n (n,), force, torque1, torque2 (n, 3)."""
+
+    f_n: np.ndarray
+    force: np.ndarray
+    torque1: np.ndarray
+    torque2: np.ndarray

@@ -55,7 +55,7 @@ const BLOCK: usize = 4096;
 const INPUTS: [&str; 3] = ["vn", "r_eff", "m_eff"];
 
 impl Pair {
-    fn new(raw: dc_pair) -> Self {
+    pub(crate) fn new(raw: dc_pair) -> Self {
         // Which of vn, r_eff, m_eff the kernel reads, asked of the library itself: the checked
         // force reports a NaN input as DC_ERR_NOT_FINITE only if the kernel reads it.
         let probe = |i: usize| {

@@ -9,6 +9,7 @@
 
 mod args;
 mod builtin;
+mod contact;
 mod error;
 mod force;
 mod functions;
@@ -71,6 +72,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
         m.add_function(f)?;
     }
     m.add_class::<force::Pair>()?;
+    contact::register(m)?;
     m.add_class::<powerlaw::DurationPlan>()?;
 
     // Constants straight from the core, so the Python enums cannot drift from the C header.

@@ -268,6 +268,24 @@ def test_batch_zero_copy_reads_the_callers_memory():
         dc.normal_force_batch(pair, d, d, None, d, out=d)
 
 
+def test_batch_hands_the_callers_memory_to_the_library():
+    # Stronger than the borrow tracking above: two views of one buffer with different bases
+    # (invisible to rust-numpy) as input and `out` are refused by dc_normal_force_batch's own
+    # overlap check, which only sees them overlap if the caller's memory is passed uncopied.
+    pair = dc.pair_linear(1e4, 0.5, F)
+    n = 64
+    buf = bytearray(8 * n)
+    d = np.frombuffer(memoryview(buf), dtype=np.float64)
+    out = np.frombuffer(memoryview(buf), dtype=np.float64)
+    d[:] = 1e-4
+    vn, m = np.full(n, 0.1), np.full(n, 1e-5)
+    for check in (False, True):
+        with pytest.raises(dc.BufferLayoutError) as ei:
+            dc.normal_force_batch(pair, d, vn, None, m, out=out, check=check)
+        assert "borrowed" not in str(ei.value)  # the library's check, not the borrow tracking
+    dc.normal_force_batch(pair, d.copy(), vn, None, m, out=out)  # a copy passes
+
+
 # ---- threads --------------------------------------------------------------------------------
 
 

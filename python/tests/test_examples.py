@@ -18,6 +18,7 @@ SCRIPTS = {
         "seed_viscoelastic_e.png",
     ],
     "dt_for_accuracy.py": ["dt_for_accuracy.png"],
+    "chung_ooi_oblique.py": ["chung_ooi_oblique.png"],
 }
 
 

@@ -1,0 +1,1207 @@
+//! Full contact (normal, tangential, rolling, twisting; issue 13) for Python.
+//!
+//! `ContactSpec` is a `dc_contact_spec` built by keyword (unset fields keep the defaults of
+//! `dc_contact_spec_init`), `ContactModel` the `dc_contact_model` of `dc_contact_model_init`,
+//! `contact_force` / `contact_force_spheres` one contact (its history updated in place) and
+//! `contact_force_batch` n contacts as a structure of arrays, zero-copy over C-contiguous float64
+//! arrays, with the GIL released. Every number is computed by the library's exports; this file
+//! only marshals arrays and turns statuses into exceptions.
+
+use demcontact::ffi as c;
+use demcontact::ffi::contact::{
+    dc_contact_batch, dc_contact_force, dc_contact_force_batch, dc_contact_force_spheres,
+    dc_contact_history_len, dc_contact_model, dc_contact_model_init, dc_contact_result,
+    dc_contact_spec, dc_contact_spec_init, dc_contact_state,
+};
+use ndarray::IxDyn;
+use numpy::{
+    PyArray1, PyArray2, PyArrayDescrMethods, PyArrayDyn, PyArrayMethods, PyReadwriteArrayDyn,
+    PyUntypedArray, PyUntypedArrayMethods,
+};
+use pyo3::prelude::*;
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyFloat, PyInt, PyList, PyTuple, PyType};
+
+use crate::args::{Arg, arg, code, real};
+use crate::error::{status_error, type_error, value_error};
+use crate::force::Pair;
+
+/// Registers the contact classes, functions and constants in `demcontact._native`.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<ContactSpec>()?;
+    m.add_class::<ContactModel>()?;
+    m.add_function(wrap_pyfunction!(contact_spec_init, m)?)?;
+    m.add_function(wrap_pyfunction!(contact_model_init, m)?)?;
+    m.add_function(wrap_pyfunction!(contact_history_len, m)?)?;
+    m.add_function(wrap_pyfunction!(contact_force, m)?)?;
+    m.add_function(wrap_pyfunction!(contact_force_spheres, m)?)?;
+    m.add_function(wrap_pyfunction!(contact_force_batch, m)?)?;
+    use c::contact::*;
+    m.add("CONTACT_SPEC_VERSION", DC_CONTACT_SPEC_VERSION)?;
+    m.add("CONTACT_HISTORY_MAX", DC_CONTACT_HISTORY_MAX)?;
+    for (name, v) in [
+        ("NORMAL_HERTZ", DC_NORMAL_HERTZ),
+        ("NORMAL_POWERLAW", DC_NORMAL_POWERLAW),
+        ("NORMAL_LINEAR", DC_NORMAL_LINEAR),
+        ("NORMAL_VISCOELASTIC", DC_NORMAL_VISCOELASTIC),
+        ("NORMAL_DMT", DC_NORMAL_DMT),
+        ("DAMPING_NONE", DC_DAMPING_NONE),
+        ("DAMPING_RESTITUTION", DC_DAMPING_RESTITUTION),
+        ("TANGENTIAL_NONE", DC_TANGENTIAL_NONE),
+        ("TANGENTIAL_LINEAR", DC_TANGENTIAL_LINEAR),
+        ("TANGENTIAL_MINDLIN", DC_TANGENTIAL_MINDLIN),
+        ("ROLLING_NONE", DC_ROLLING_NONE),
+        ("ROLLING_CONSTANT", DC_ROLLING_CONSTANT),
+        ("ROLLING_EPSD", DC_ROLLING_EPSD),
+        ("TWISTING_NONE", DC_TWISTING_NONE),
+        ("TWISTING_SDS", DC_TWISTING_SDS),
+    ] {
+        m.add(name, v)?;
+    }
+    Ok(())
+}
+
+fn library_defaults() -> dc_contact_spec {
+    let mut s = std::mem::MaybeUninit::<dc_contact_spec>::uninit();
+    // SAFETY: `s` is a live local; dc_contact_spec_init writes the whole struct on DC_OK, the
+    // only status it returns for a non-NULL pointer.
+    unsafe {
+        let st = dc_contact_spec_init(s.as_mut_ptr());
+        debug_assert_eq!(st, c::status::DC_OK);
+        s.assume_init()
+    }
+}
+
+/// What a contact model is made of (C: dc_contact_spec), built by keyword; every field left out
+/// keeps the library's default (dc_contact_spec_init): no normal law (`normal` must be given),
+/// Damping.NONE, Criterion.FORCE, no tangential/rolling/twisting part, every parameter unset
+/// (NaN) except e_t = 1, k_r = 0, eta_r = eta_tw = 0, inertia_factor = 0.4. Parameters of
+/// sub-models not chosen are ignored; one a chosen sub-model needs and left unset makes
+/// contact_model_init raise SpecUnsetError. Units and meanings: include/demcontact.h.
+///
+/// >>> spec = ContactSpec(normal=Normal.HERTZ, damping=Damping.RESTITUTION, e_n=0.9,
+/// ...                    E1=7e10, nu1=0.3, E2=math.inf, nu2=0.3,
+/// ...                    tangential=Tangential.MINDLIN, mu=0.3)
+/// >>> model = contact_model_init(spec)
+#[pyclass(frozen, get_all, module = "demcontact", name = "ContactSpec")]
+#[allow(non_snake_case)]
+#[derive(Clone)]
+pub struct ContactSpec {
+    normal: i32,
+    damping: i32,
+    criterion: i32,
+    tangential: i32,
+    rolling: i32,
+    twisting: i32,
+    E1: f64,
+    nu1: f64,
+    E2: f64,
+    nu2: f64,
+    p: f64,
+    k_n: f64,
+    e_n: f64,
+    visco_A: f64,
+    mu: f64,
+    k_t: f64,
+    e_t: f64,
+    mu_r: f64,
+    k_r: f64,
+    eta_r: f64,
+    mu_tw: f64,
+    k_tw: f64,
+    eta_tw: f64,
+    inertia_factor: f64,
+    work_of_adhesion: f64,
+}
+
+impl ContactSpec {
+    fn from_raw(s: &dc_contact_spec) -> Self {
+        ContactSpec {
+            normal: s.normal,
+            damping: s.damping,
+            criterion: s.criterion,
+            tangential: s.tangential,
+            rolling: s.rolling,
+            twisting: s.twisting,
+            E1: s.E1,
+            nu1: s.nu1,
+            E2: s.E2,
+            nu2: s.nu2,
+            p: s.p,
+            k_n: s.k_n,
+            e_n: s.e_n,
+            visco_A: s.visco_A,
+            mu: s.mu,
+            k_t: s.k_t,
+            e_t: s.e_t,
+            mu_r: s.mu_r,
+            k_r: s.k_r,
+            eta_r: s.eta_r,
+            mu_tw: s.mu_tw,
+            k_tw: s.k_tw,
+            eta_tw: s.eta_tw,
+            inertia_factor: s.inertia_factor,
+            work_of_adhesion: s.work_of_adhesion,
+        }
+    }
+
+    /// The C struct: version and size from dc_contact_spec_init, every field from self.
+    fn raw(&self) -> dc_contact_spec {
+        dc_contact_spec {
+            normal: self.normal,
+            damping: self.damping,
+            criterion: self.criterion,
+            tangential: self.tangential,
+            rolling: self.rolling,
+            twisting: self.twisting,
+            E1: self.E1,
+            nu1: self.nu1,
+            E2: self.E2,
+            nu2: self.nu2,
+            p: self.p,
+            k_n: self.k_n,
+            e_n: self.e_n,
+            visco_A: self.visco_A,
+            mu: self.mu,
+            k_t: self.k_t,
+            e_t: self.e_t,
+            mu_r: self.mu_r,
+            k_r: self.k_r,
+            eta_r: self.eta_r,
+            mu_tw: self.mu_tw,
+            k_tw: self.k_tw,
+            eta_tw: self.eta_tw,
+            inertia_factor: self.inertia_factor,
+            work_of_adhesion: self.work_of_adhesion,
+            ..library_defaults()
+        }
+    }
+
+    fn describe(&self) -> String {
+        let ints = [
+            ("normal", self.normal),
+            ("damping", self.damping),
+            ("criterion", self.criterion),
+            ("tangential", self.tangential),
+            ("rolling", self.rolling),
+            ("twisting", self.twisting),
+        ];
+        let reals = [
+            ("E1", self.E1),
+            ("nu1", self.nu1),
+            ("E2", self.E2),
+            ("nu2", self.nu2),
+            ("p", self.p),
+            ("k_n", self.k_n),
+            ("e_n", self.e_n),
+            ("visco_A", self.visco_A),
+            ("mu", self.mu),
+            ("k_t", self.k_t),
+            ("e_t", self.e_t),
+            ("mu_r", self.mu_r),
+            ("k_r", self.k_r),
+            ("eta_r", self.eta_r),
+            ("mu_tw", self.mu_tw),
+            ("k_tw", self.k_tw),
+            ("eta_tw", self.eta_tw),
+            ("inertia_factor", self.inertia_factor),
+            ("work_of_adhesion", self.work_of_adhesion),
+        ];
+        let mut parts: Vec<String> = ints.iter().map(|(n, v)| format!("{n}={v}")).collect();
+        // Unset (NaN) parameters are left out: they are what ContactSpec() gives anyway.
+        parts.extend(
+            reals
+                .iter()
+                .filter(|(_, v)| !v.is_nan())
+                .map(|(n, v)| format!("{n}={v:?}")),
+        );
+        parts.join(", ")
+    }
+}
+
+#[pymethods]
+impl ContactSpec {
+    #[new]
+    #[pyo3(signature = (*, normal=None, damping=None, criterion=None, tangential=None,
+        rolling=None, twisting=None, E1=None, nu1=None, E2=None, nu2=None, p=None, k_n=None,
+        e_n=None, visco_A=None, mu=None, k_t=None, e_t=None, mu_r=None, k_r=None, eta_r=None,
+        mu_tw=None, k_tw=None, eta_tw=None, inertia_factor=None, work_of_adhesion=None))]
+    #[allow(non_snake_case, clippy::too_many_arguments)]
+    fn new(
+        normal: Option<&Bound<'_, PyAny>>,
+        damping: Option<&Bound<'_, PyAny>>,
+        criterion: Option<&Bound<'_, PyAny>>,
+        tangential: Option<&Bound<'_, PyAny>>,
+        rolling: Option<&Bound<'_, PyAny>>,
+        twisting: Option<&Bound<'_, PyAny>>,
+        E1: Option<&Bound<'_, PyAny>>,
+        nu1: Option<&Bound<'_, PyAny>>,
+        E2: Option<&Bound<'_, PyAny>>,
+        nu2: Option<&Bound<'_, PyAny>>,
+        p: Option<&Bound<'_, PyAny>>,
+        k_n: Option<&Bound<'_, PyAny>>,
+        e_n: Option<&Bound<'_, PyAny>>,
+        visco_A: Option<&Bound<'_, PyAny>>,
+        mu: Option<&Bound<'_, PyAny>>,
+        k_t: Option<&Bound<'_, PyAny>>,
+        e_t: Option<&Bound<'_, PyAny>>,
+        mu_r: Option<&Bound<'_, PyAny>>,
+        k_r: Option<&Bound<'_, PyAny>>,
+        eta_r: Option<&Bound<'_, PyAny>>,
+        mu_tw: Option<&Bound<'_, PyAny>>,
+        k_tw: Option<&Bound<'_, PyAny>>,
+        eta_tw: Option<&Bound<'_, PyAny>>,
+        inertia_factor: Option<&Bound<'_, PyAny>>,
+        work_of_adhesion: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        const F: &str = "ContactSpec";
+        let mut s = ContactSpec::from_raw(&library_defaults());
+        let ints: [(&str, Option<&Bound<'_, PyAny>>, &mut i32); 6] = [
+            ("normal", normal, &mut s.normal),
+            ("damping", damping, &mut s.damping),
+            ("criterion", criterion, &mut s.criterion),
+            ("tangential", tangential, &mut s.tangential),
+            ("rolling", rolling, &mut s.rolling),
+            ("twisting", twisting, &mut s.twisting),
+        ];
+        for (name, given, slot) in ints {
+            if let Some(o) = given {
+                *slot = code(F, name, o)?;
+            }
+        }
+        let reals: [(&str, Option<&Bound<'_, PyAny>>, &mut f64); 19] = [
+            ("E1", E1, &mut s.E1),
+            ("nu1", nu1, &mut s.nu1),
+            ("E2", E2, &mut s.E2),
+            ("nu2", nu2, &mut s.nu2),
+            ("p", p, &mut s.p),
+            ("k_n", k_n, &mut s.k_n),
+            ("e_n", e_n, &mut s.e_n),
+            ("visco_A", visco_A, &mut s.visco_A),
+            ("mu", mu, &mut s.mu),
+            ("k_t", k_t, &mut s.k_t),
+            ("e_t", e_t, &mut s.e_t),
+            ("mu_r", mu_r, &mut s.mu_r),
+            ("k_r", k_r, &mut s.k_r),
+            ("eta_r", eta_r, &mut s.eta_r),
+            ("mu_tw", mu_tw, &mut s.mu_tw),
+            ("k_tw", k_tw, &mut s.k_tw),
+            ("eta_tw", eta_tw, &mut s.eta_tw),
+            ("inertia_factor", inertia_factor, &mut s.inertia_factor),
+            (
+                "work_of_adhesion",
+                work_of_adhesion,
+                &mut s.work_of_adhesion,
+            ),
+        ];
+        for (name, given, slot) in reals {
+            if let Some(o) = given {
+                *slot = real(F, name, o)?;
+            }
+        }
+        Ok(s)
+    }
+
+    /// contact_model_init(self).
+    fn model(&self, py: Python<'_>) -> PyResult<ContactModel> {
+        model_init(py, self)
+    }
+
+    fn __repr__(&self) -> String {
+        format!("ContactSpec({})", self.describe())
+    }
+}
+
+/// The library's default spec (C: dc_contact_spec_init): the same as ContactSpec().
+#[pyfunction]
+pub fn contact_spec_init() -> ContactSpec {
+    ContactSpec::from_raw(&library_defaults())
+}
+
+/// A composed contact model for one material pair (C: dc_contact_model), made by
+/// contact_model_init (never directly); immutable, shareable between threads. Attributes mirror
+/// the C struct; `normal` is its normal law as a Pair (usable with normal_force),
+/// `history_len` the doubles of history one contact needs (dc_contact_history_len).
+#[pyclass(frozen, module = "demcontact", name = "ContactModel")]
+pub struct ContactModel {
+    raw: dc_contact_model,
+    /// Doubles of history per contact (0 for a normal-only or constant-rolling model).
+    #[pyo3(get)]
+    history_len: usize,
+}
+
+impl ContactModel {
+    /// The batch may be given no angular velocities and no torques (C: normal_only).
+    fn normal_only(&self) -> bool {
+        self.history_len == 0 && self.raw.rolling == c::contact::DC_ROLLING_NONE
+    }
+}
+
+#[pymethods]
+impl ContactModel {
+    /// The normal law as a Pair (a valid dc_pair, usable with normal_force).
+    #[getter]
+    fn normal(&self) -> Pair {
+        Pair::new(self.raw.normal)
+    }
+    /// Tangential.* chosen.
+    #[getter]
+    fn tangential(&self) -> i32 {
+        self.raw.tangential
+    }
+    /// Rolling.* chosen.
+    #[getter]
+    fn rolling(&self) -> i32 {
+        self.raw.rolling
+    }
+    /// Twisting.* chosen.
+    #[getter]
+    fn twisting(&self) -> i32 {
+        self.raw.twisting
+    }
+    /// Friction coefficient mu.
+    #[getter]
+    fn mu(&self) -> f64 {
+        self.raw.mu
+    }
+    /// k_t [N/m] (linear) or 8 G* [Pa] (Mindlin).
+    #[getter]
+    fn kt(&self) -> f64 {
+        self.raw.kt
+    }
+    /// Tangential damping ratio from e_t.
+    #[getter]
+    fn zeta_t(&self) -> f64 {
+        self.raw.zeta_t
+    }
+    /// Inertia factor kappa.
+    #[getter]
+    fn kappa(&self) -> f64 {
+        self.raw.kappa
+    }
+    /// Rolling friction coefficient.
+    #[getter]
+    fn mu_r(&self) -> f64 {
+        self.raw.mu_r
+    }
+    /// Rolling stiffness (0: Ai's rule).
+    #[getter]
+    fn k_r(&self) -> f64 {
+        self.raw.k_r
+    }
+    /// Rolling damping ratio.
+    #[getter]
+    fn eta_r(&self) -> f64 {
+        self.raw.eta_r
+    }
+    /// Twisting friction coefficient [m].
+    #[getter]
+    fn mu_tw(&self) -> f64 {
+        self.raw.mu_tw
+    }
+    /// Twisting stiffness.
+    #[getter]
+    fn k_tw(&self) -> f64 {
+        self.raw.k_tw
+    }
+    /// Twisting damping ratio.
+    #[getter]
+    fn eta_tw(&self) -> f64 {
+        self.raw.eta_tw
+    }
+    /// The C struct's bytes (sizeof(dc_contact_model)), to hand the model to C code.
+    fn to_bytes<'py>(&self, py: Python<'py>) -> Bound<'py, pyo3::types::PyBytes> {
+        let p = (&self.raw as *const dc_contact_model).cast::<u8>();
+        // SAFETY: dc_contact_model is repr(C) plain data of u32/i32/f64 fields with no padding
+        // (4 x u32/i32 + 2 x i32, then 8-byte fields), so all its bytes are initialised.
+        let b = unsafe { std::slice::from_raw_parts(p, std::mem::size_of::<dc_contact_model>()) };
+        pyo3::types::PyBytes::new(py, b)
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "ContactModel(tangential={}, rolling={}, twisting={}, history_len={}, mu={:?}, kt={:?}, zeta_t={:?})",
+            self.raw.tangential,
+            self.raw.rolling,
+            self.raw.twisting,
+            self.history_len,
+            self.raw.mu,
+            self.raw.kt,
+            self.raw.zeta_t
+        )
+    }
+}
+
+fn model_init(py: Python<'_>, spec: &ContactSpec) -> PyResult<ContactModel> {
+    const F: &str = "contact_model_init";
+    let raw_spec = spec.raw();
+    let mut raw = std::mem::MaybeUninit::<dc_contact_model>::uninit();
+    // SAFETY: live locals; the spec carries the version and size of this library.
+    let s = unsafe { dc_contact_model_init(&raw_spec, raw.as_mut_ptr()) };
+    if s != c::status::DC_OK {
+        return Err(status_error(py, s, F, &format!("with {}", spec.describe())));
+    }
+    // SAFETY: DC_OK means the whole struct was written.
+    let raw = unsafe { raw.assume_init() };
+    let mut len = 0usize;
+    // SAFETY: live locals.
+    let s = unsafe { dc_contact_history_len(&raw, &mut len) };
+    if s != c::status::DC_OK {
+        return Err(status_error(py, s, "contact_history_len", ""));
+    }
+    Ok(ContactModel {
+        raw,
+        history_len: len,
+    })
+}
+
+/// Builds a contact model from a spec (C: dc_contact_model_init): validates every parameter the
+/// chosen sub-models read and calibrates the damping. Raises SpecModelError (unknown selector,
+/// viscoelastic with restitution damping, ...), SpecUnsetError (a needed parameter left unset),
+/// RestitutionRangeError, NotFiniteError, ... naming the spec.
+#[pyfunction]
+pub fn contact_model_init(py: Python<'_>, spec: &Bound<'_, ContactSpec>) -> PyResult<ContactModel> {
+    model_init(py, spec.get())
+}
+
+/// Doubles of history one contact of `model` needs (C: dc_contact_history_len).
+#[pyfunction]
+pub fn contact_history_len(py: Python<'_>, model: &Bound<'_, ContactModel>) -> PyResult<usize> {
+    let raw = model.get().raw;
+    let mut len = 0usize;
+    // SAFETY: live locals.
+    let s = unsafe { dc_contact_history_len(&raw, &mut len) };
+    if s != c::status::DC_OK {
+        return Err(status_error(py, s, "contact_history_len", ""));
+    }
+    Ok(len)
+}
+
+fn vec3(function: &str, name: &str, obj: &Bound<'_, PyAny>) -> PyResult<[f64; 3]> {
+    // Fast path for a list or tuple of three Python floats/ints (numpy.asarray costs ~1 us).
+    let items = if let Ok(t) = obj.cast::<PyTuple>() {
+        (t.len() == 3).then(|| [t.get_item(0), t.get_item(1), t.get_item(2)])
+    } else if let Ok(l) = obj.cast::<PyList>() {
+        (l.len() == 3).then(|| [l.get_item(0), l.get_item(1), l.get_item(2)])
+    } else if let Ok(a) = obj.cast::<PyUntypedArray>()
+        && a.shape() == [3]
+        && a.dtype().is_equiv_to(&numpy::dtype::<f64>(obj.py()))
+    {
+        // A float64 3-vector: its items are numpy float64 scalars (float subclasses), read
+        // through the sequence protocol (cheaper than a borrow-tracked view).
+        let mut out = [0.0; 3];
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = obj.get_item(i)?.extract::<f64>()?;
+        }
+        return Ok(out);
+    } else {
+        None
+    };
+    if let Some([Ok(a), Ok(b), Ok(c)]) = items {
+        let plain = |x: &Bound<'_, PyAny>| {
+            (x.is_exact_instance_of::<PyFloat>() || x.is_exact_instance_of::<PyInt>())
+                .then(|| x.extract::<f64>().ok())
+                .flatten()
+        };
+        if let (Some(a), Some(b), Some(c)) = (plain(&a), plain(&b), plain(&c)) {
+            return Ok([a, b, c]);
+        }
+    }
+    match arg(function, name, obj)? {
+        Arg::Array(a) if a.shape() == [3] => {
+            let mut out = [0.0; 3];
+            for (o, x) in out.iter_mut().zip(a.as_array().iter()) {
+                *o = *x;
+            }
+            Ok(out)
+        }
+        other => Err(value_error(
+            function,
+            &format!(
+                "{name} must be a 3-vector, got shape {}",
+                shape_str(other.shape())
+            ),
+        )),
+    }
+}
+
+/// Why a float64 array cannot be written in place, as a Python exception.
+fn writable<'py>(
+    function: &str,
+    name: &str,
+    obj: &Bound<'py, PyAny>,
+    shape: Option<&[usize]>,
+) -> PyResult<PyReadwriteArrayDyn<'py, f64>> {
+    let py = obj.py();
+    let Ok(untyped) = obj.cast::<PyUntypedArray>() else {
+        return Err(type_error(
+            function,
+            name,
+            "must be a numpy float64 array (it is written in place)",
+        ));
+    };
+    let dtype = untyped.dtype();
+    if !dtype.is_equiv_to(&numpy::dtype::<f64>(py)) {
+        let shown = dtype.str().map(|s| s.to_string()).unwrap_or_default();
+        return Err(type_error(
+            function,
+            name,
+            &format!(
+                "has dtype {shown}; it must be float64 (it is written in place: a converted copy would lose the update)"
+            ),
+        ));
+    }
+    if let Some(want) = shape
+        && untyped.shape() != want
+    {
+        return Err(value_error(
+            function,
+            &format!(
+                "{name} has shape {}, expected {}",
+                shape_str(untyped.shape()),
+                shape_str(want)
+            ),
+        ));
+    }
+    if !untyped.is_c_contiguous() {
+        return Err(value_error(
+            function,
+            &format!(
+                "{name} must be C-contiguous (it is written in place; use numpy.ascontiguousarray and keep that array)"
+            ),
+        ));
+    }
+    let typed = untyped.cast::<PyArrayDyn<f64>>()?;
+    match typed.try_readwrite() {
+        Ok(rw) => Ok(rw),
+        Err(numpy::BorrowError::NotWriteable) => Err(value_error(
+            function,
+            &format!("{name} is read-only (it is written in place)"),
+        )),
+        // Overlapping an input array (rust-numpy's borrow tracking) or written by another
+        // thread right now.
+        Err(e) => Err(status_error(
+            py,
+            c::status::DC_ERR_BUFFER_LAYOUT,
+            function,
+            &format!("({name}: {e})"),
+        )),
+    }
+}
+
+/// The history of one contact: None (model without history), or a writable C-contiguous
+/// float64 numpy array whose first dc_contact_history_len doubles are used.
+fn history_arg<'py>(
+    function: &str,
+    model: &ContactModel,
+    history: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Option<PyReadwriteArrayDyn<'py, f64>>> {
+    match history {
+        None if model.history_len > 0 => Err(type_error(
+            function,
+            "history",
+            &format!(
+                "is required: this model keeps {n} doubles per contact (numpy.zeros({n}) for a new contact, then pass the same array every step)",
+                n = model.history_len
+            ),
+        )),
+        None => Ok(None),
+        Some(h) if h.is_none() && model.history_len == 0 => Ok(None),
+        Some(h) => writable(function, "history", h, None).map(Some),
+    }
+}
+
+/// The named-tuple classes of demcontact._types, looked up once.
+static CONTACT_RESULT: PyOnceLock<Py<PyType>> = PyOnceLock::new();
+static CONTACT_BATCH_RESULT: PyOnceLock<Py<PyType>> = PyOnceLock::new();
+
+fn result_tuple<'py>(py: Python<'py>, r: &dc_contact_result) -> PyResult<Bound<'py, PyAny>> {
+    CONTACT_RESULT
+        .import(py, "demcontact._types", "ContactResult")?
+        .call1((
+            PyArray1::from_slice(py, &r.force),
+            PyArray1::from_slice(py, &r.torque1),
+            PyArray1::from_slice(py, &r.torque2),
+            r.f_n,
+            PyArray1::from_slice(py, &r.ft),
+            r.sliding != 0,
+            r.rolling_sliding != 0,
+        ))
+}
+
+#[allow(clippy::too_many_arguments)]
+fn state_of(
+    function: &str,
+    n: Option<&Bound<'_, PyAny>>,
+    overlap: Option<&Bound<'_, PyAny>>,
+    v1: &Bound<'_, PyAny>,
+    v2: &Bound<'_, PyAny>,
+    w1: &Bound<'_, PyAny>,
+    w2: &Bound<'_, PyAny>,
+    r1: &Bound<'_, PyAny>,
+    r2: &Bound<'_, PyAny>,
+    m1: &Bound<'_, PyAny>,
+    m2: &Bound<'_, PyAny>,
+) -> PyResult<dc_contact_state> {
+    Ok(dc_contact_state {
+        n: match n {
+            Some(n) => vec3(function, "n", n)?,
+            None => [1.0, 0.0, 0.0],
+        },
+        overlap: match overlap {
+            Some(d) => real(function, "overlap", d)?,
+            None => 0.0,
+        },
+        v1: vec3(function, "v1", v1)?,
+        v2: vec3(function, "v2", v2)?,
+        w1: vec3(function, "w1", w1)?,
+        w2: vec3(function, "w2", w2)?,
+        r1: real(function, "r1", r1)?,
+        r2: real(function, "r2", r2)?,
+        m1: real(function, "m1", m1)?,
+        m2: real(function, "m2", m2)?,
+    })
+}
+
+fn describe_state(s: &dc_contact_state) -> String {
+    format!(
+        "n={:?}, overlap={:?}, v1={:?}, v2={:?}, w1={:?}, w2={:?}, r1={:?}, r2={:?}, m1={:?}, m2={:?}",
+        s.n, s.overlap, s.v1, s.v2, s.w1, s.w2, s.r1, s.r2, s.m1, s.m2
+    )
+}
+
+/// Force and torques of one sphere-sphere or sphere-wall contact, advancing its history by one
+/// step dt (C: dc_contact_force). Returns ContactResult(force, torque1, torque2, f_n, ft,
+/// sliding, rolling_sliding): vectors as numpy 3-vectors, forces on body 1.
+///
+/// n: unit normal from body 2 to body 1; overlap [m] (> 0 in contact; <= 0 resets the history);
+/// v1, v2, w1, w2: centre and angular velocities (3-vectors); r1, r2 radii [m] and m1, m2
+/// masses [kg] (a wall: r2 = m2 = math.inf, v2 its velocity at the contact point, w2 its
+/// angular velocity); dt the host's time step [s]. history: this contact's numpy float64 array
+/// (at least model.history_len doubles, zeros for a new contact), updated in place on success;
+/// None only for a model without history. On error nothing is written.
+#[pyfunction]
+#[pyo3(signature = (model, n, overlap, v1, v2, w1, w2, r1, r2, m1, m2, dt, history=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn contact_force<'py>(
+    model: &Bound<'py, ContactModel>,
+    n: &Bound<'py, PyAny>,
+    overlap: &Bound<'py, PyAny>,
+    v1: &Bound<'py, PyAny>,
+    v2: &Bound<'py, PyAny>,
+    w1: &Bound<'py, PyAny>,
+    w2: &Bound<'py, PyAny>,
+    r1: &Bound<'py, PyAny>,
+    r2: &Bound<'py, PyAny>,
+    m1: &Bound<'py, PyAny>,
+    m2: &Bound<'py, PyAny>,
+    dt: &Bound<'py, PyAny>,
+    history: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    const F: &str = "contact_force";
+    let py = model.py();
+    let m = model.get();
+    let state = state_of(F, Some(n), Some(overlap), v1, v2, w1, w2, r1, r2, m1, m2)?;
+    let dt = real(F, "dt", dt)?;
+    let mut hist = history_arg(F, m, history)?;
+    let (hp, hl) = match hist.as_mut() {
+        Some(h) => {
+            let s = h
+                .as_slice_mut()
+                .map_err(|e| value_error(F, &e.to_string()))?;
+            (s.as_mut_ptr(), s.len())
+        }
+        None => (std::ptr::null_mut(), 0),
+    };
+    let mut out = std::mem::MaybeUninit::<dc_contact_result>::uninit();
+    // SAFETY: model, state and out are live locals; history is NULL with length 0 or a
+    // borrowed-for-writing contiguous run of `hl` doubles.
+    let s = unsafe { dc_contact_force(&m.raw, &state, dt, hp, hl, out.as_mut_ptr()) };
+    drop(hist);
+    if s != c::status::DC_OK {
+        return Err(status_error(
+            py,
+            s,
+            F,
+            &format!(
+                "with {}, dt={dt:?}, history of {hl} doubles",
+                describe_state(&state)
+            ),
+        ));
+    }
+    // SAFETY: DC_OK means the whole result was written.
+    result_tuple(py, &unsafe { out.assume_init() })
+}
+
+/// contact_force for two spheres given by their centres x1, x2 (C: dc_contact_force_spheres):
+/// n = (x1 - x2)/|x1 - x2| and overlap = r1 + r2 - |x1 - x2| are computed by the library.
+#[pyfunction]
+#[pyo3(signature = (model, x1, x2, v1, v2, w1, w2, r1, r2, m1, m2, dt, history=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn contact_force_spheres<'py>(
+    model: &Bound<'py, ContactModel>,
+    x1: &Bound<'py, PyAny>,
+    x2: &Bound<'py, PyAny>,
+    v1: &Bound<'py, PyAny>,
+    v2: &Bound<'py, PyAny>,
+    w1: &Bound<'py, PyAny>,
+    w2: &Bound<'py, PyAny>,
+    r1: &Bound<'py, PyAny>,
+    r2: &Bound<'py, PyAny>,
+    m1: &Bound<'py, PyAny>,
+    m2: &Bound<'py, PyAny>,
+    dt: &Bound<'py, PyAny>,
+    history: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    const F: &str = "contact_force_spheres";
+    let py = model.py();
+    let m = model.get();
+    let (a, b) = (vec3(F, "x1", x1)?, vec3(F, "x2", x2)?);
+    let state = state_of(F, None, None, v1, v2, w1, w2, r1, r2, m1, m2)?;
+    let dt = real(F, "dt", dt)?;
+    let mut hist = history_arg(F, m, history)?;
+    let (hp, hl) = match hist.as_mut() {
+        Some(h) => {
+            let s = h
+                .as_slice_mut()
+                .map_err(|e| value_error(F, &e.to_string()))?;
+            (s.as_mut_ptr(), s.len())
+        }
+        None => (std::ptr::null_mut(), 0),
+    };
+    let mut out = std::mem::MaybeUninit::<dc_contact_result>::uninit();
+    // SAFETY: as contact_force; x1, x2 are live local 3-vectors.
+    let s = unsafe {
+        dc_contact_force_spheres(
+            &m.raw,
+            a.as_ptr(),
+            b.as_ptr(),
+            &state,
+            dt,
+            hp,
+            hl,
+            out.as_mut_ptr(),
+        )
+    };
+    drop(hist);
+    if s != c::status::DC_OK {
+        return Err(status_error(
+            py,
+            s,
+            F,
+            &format!(
+                "with x1={a:?}, x2={b:?}, v1={:?}, v2={:?}, w1={:?}, w2={:?}, r1={:?}, r2={:?}, m1={:?}, m2={:?}, dt={dt:?}",
+                state.v1, state.v2, state.w1, state.w2, state.r1, state.r2, state.m1, state.m2
+            ),
+        ));
+    }
+    // SAFETY: DC_OK means the whole result was written.
+    result_tuple(py, &unsafe { out.assume_init() })
+}
+
+/// One batch input as a contiguous run of doubles of the target shape: the caller's memory when
+/// it already is one (zero copy), else one copy of its broadcast.
+enum Run<'a> {
+    Borrowed(&'a [f64]),
+    Owned(Vec<f64>),
+}
+
+impl Run<'_> {
+    fn ptr(&self) -> *const f64 {
+        match self {
+            Run::Borrowed(s) => s.as_ptr(),
+            Run::Owned(v) => v.as_ptr(),
+        }
+    }
+}
+
+/// A shape as Python prints it: (6,), (6, 3).
+fn shape_str(s: &[usize]) -> String {
+    match s {
+        [n] => format!("({n},)"),
+        _ => format!(
+            "({})",
+            s.iter()
+                .map(usize::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    }
+}
+
+fn run<'a>(
+    function: &str,
+    name: &str,
+    a: &'a Arg<'_>,
+    scalar: &'a f64,
+    shape: &[usize],
+) -> PyResult<Run<'a>> {
+    let view = match a {
+        Arg::Scalar(_) => ndarray::aview0(scalar).into_dyn(),
+        Arg::Array(ro) => ro.as_array(),
+    };
+    if view.shape() == shape
+        && let Some(s) = view.to_slice()
+    {
+        return Ok(Run::Borrowed(s));
+    }
+    match view.broadcast(IxDyn(shape)) {
+        Some(b) => Ok(Run::Owned(b.iter().copied().collect())),
+        None => Err(value_error(
+            function,
+            &format!(
+                "{name} has shape {}, expected {} (or one that broadcasts to it)",
+                shape_str(view.shape()),
+                shape_str(shape)
+            ),
+        )),
+    }
+}
+
+/// Raw pointers of one batch, moved into the GIL-free closure.
+struct Job {
+    model: dc_contact_model,
+    batch: dc_contact_batch,
+    dt: f64,
+}
+// SAFETY: the pointers refer to arrays borrowed (rust-numpy borrow flags or owned Vecs) for the
+// whole closure; the closure runs on this thread (detach does not move work elsewhere).
+unsafe impl Send for Job {}
+
+/// Statuses that come from a value of one contact (the batch is then rerun contact by contact
+/// to name the first offending one).
+fn per_contact(s: i32) -> bool {
+    use c::status::*;
+    matches!(
+        s,
+        DC_ERR_NOT_FINITE | DC_ERR_NOT_POSITIVE | DC_ERR_NOT_UNIT | DC_ERR_RESULT_RANGE
+    )
+}
+
+impl Job {
+    /// The first contact whose own dc_contact_force fails, with its status (history copied).
+    fn locate(&self) -> Option<(usize, i32, dc_contact_state)> {
+        let b = &self.batch;
+        let len = self.model.history_len as usize;
+        for i in 0..b.n {
+            // SAFETY: every pointer is valid for its documented length (checked by the caller
+            // and by dc_contact_force_batch's layout checks before the per-value ones).
+            let st = unsafe {
+                let v = |p: *const f64| -> [f64; 3] {
+                    if p.is_null() {
+                        [0.0; 3]
+                    } else {
+                        p.add(3 * i).cast::<[f64; 3]>().read()
+                    }
+                };
+                dc_contact_state {
+                    n: v(b.normal),
+                    overlap: b.overlap.add(i).read(),
+                    v1: v(b.v1),
+                    v2: v(b.v2),
+                    w1: v(b.w1),
+                    w2: v(b.w2),
+                    r1: b.r1.add(i).read(),
+                    r2: b.r2.add(i).read(),
+                    m1: b.m1.add(i).read(),
+                    m2: b.m2.add(i).read(),
+                }
+            };
+            let mut h = [0.0f64; c::contact::DC_CONTACT_HISTORY_MAX];
+            if len > 0 && !b.history.is_null() {
+                for (k, slot) in h.iter_mut().take(len).enumerate() {
+                    // SAFETY: contact i's history is history_stride >= len doubles.
+                    *slot = unsafe { b.history.add(i * b.history_stride + k).read() };
+                }
+            }
+            let mut r = std::mem::MaybeUninit::<dc_contact_result>::uninit();
+            // SAFETY: live locals.
+            let s = unsafe {
+                dc_contact_force(
+                    &self.model,
+                    &st,
+                    self.dt,
+                    h.as_mut_ptr(),
+                    h.len(),
+                    r.as_mut_ptr(),
+                )
+            };
+            if s != c::status::DC_OK {
+                return Some((i, s, st));
+            }
+        }
+        None
+    }
+}
+
+/// Forces and torques of n contacts of one model, one call of the library's batch
+/// (C: dc_contact_force_batch), with the GIL released. Returns ContactBatchResult(f_n (n,),
+/// force (n, 3), torque1 (n, 3), torque2 (n, 3)).
+///
+/// Structure of arrays: `overlap` is 1-D of n contacts; normal, v1, v2, w1, w2 are (n, 3)
+/// (3 consecutive doubles per contact); r1, r2, m1, m2 are (n,). float64 C-contiguous arrays of
+/// exactly these shapes are read in place (zero copy); anything else that broadcasts to them
+/// (a scalar such as r2=math.inf for walls, a 3-vector, another real dtype, a strided view) is
+/// copied once. w1 and w2 may be None for a model without tangential/rolling/twisting parts.
+/// history: float64, C-contiguous, writable, shape (n, L) with L >= model.history_len (zeros for
+/// new contacts), updated in place; None only for a model without history. out: optionally
+/// (f_n, force, torque1, torque2) arrays of those shapes to write into. Every value is checked
+/// before anything is written: on error (NotFiniteError, NotUnitError, ... naming the first bad
+/// contact) outputs and history are untouched. An empty batch (n = 0) returns empty arrays.
+#[pyfunction]
+#[pyo3(signature = (model, normal, overlap, v1, v2, w1, w2, r1, r2, m1, m2, dt, history=None, *, out=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn contact_force_batch<'py>(
+    model: &Bound<'py, ContactModel>,
+    normal: &Bound<'py, PyAny>,
+    overlap: &Bound<'py, PyAny>,
+    v1: &Bound<'py, PyAny>,
+    v2: &Bound<'py, PyAny>,
+    w1: Option<&Bound<'py, PyAny>>,
+    w2: Option<&Bound<'py, PyAny>>,
+    r1: &Bound<'py, PyAny>,
+    r2: &Bound<'py, PyAny>,
+    m1: &Bound<'py, PyAny>,
+    m2: &Bound<'py, PyAny>,
+    dt: &Bound<'py, PyAny>,
+    history: Option<&Bound<'py, PyAny>>,
+    out: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    const F: &str = "contact_force_batch";
+    let py = model.py();
+    let m = model.get();
+    let dt = real(F, "dt", dt)?;
+    let d = arg(F, "overlap", overlap)?;
+    let n = match d.shape() {
+        [n] => *n,
+        s => {
+            return Err(value_error(
+                F,
+                &format!(
+                    "overlap must be a 1-D array of the n contacts, got shape {}",
+                    shape_str(s)
+                ),
+            ));
+        }
+    };
+    let (s1, s3) = ([n], [n, 3]);
+    // Angular velocities: required unless the model is normal-only (the C reads them not).
+    let w = |name: &str, o: Option<&Bound<'py, PyAny>>| -> PyResult<Option<Arg<'py>>> {
+        match o {
+            Some(o) if !o.is_none() => Ok(Some(arg(F, name, o)?)),
+            _ if m.normal_only() => Ok(None),
+            _ => Err(type_error(
+                F,
+                name,
+                "is required: this model has tangential, rolling or twisting parts",
+            )),
+        }
+    };
+    let args3 = [
+        ("normal", Some(arg(F, "normal", normal)?)),
+        ("v1", Some(arg(F, "v1", v1)?)),
+        ("v2", Some(arg(F, "v2", v2)?)),
+        ("w1", w("w1", w1)?),
+        ("w2", w("w2", w2)?),
+    ];
+    let args1 = [
+        ("r1", arg(F, "r1", r1)?),
+        ("r2", arg(F, "r2", r2)?),
+        ("m1", arg(F, "m1", m1)?),
+        ("m2", arg(F, "m2", m2)?),
+    ];
+    let scalar_of = |a: &Arg<'_>| match a {
+        Arg::Scalar(x) => *x,
+        Arg::Array(_) => f64::NAN,
+    };
+    let sc3: [f64; 5] = std::array::from_fn(|i| args3[i].1.as_ref().map_or(f64::NAN, scalar_of));
+    let sc1: [f64; 4] = std::array::from_fn(|i| scalar_of(&args1[i].1));
+    let sd = scalar_of(&d);
+    let rd = run(F, "overlap", &d, &sd, &s1)?;
+    let mut r3: Vec<Option<Run<'_>>> = Vec::with_capacity(5);
+    for ((name, a), s) in args3.iter().zip(&sc3) {
+        r3.push(match a {
+            Some(a) => Some(run(F, name, a, s, &s3)?),
+            None => None,
+        });
+    }
+    let mut r1v: Vec<Run<'_>> = Vec::with_capacity(4);
+    for ((name, a), s) in args1.iter().zip(&sc1) {
+        r1v.push(run(F, name, a, s, &s1)?);
+    }
+
+    // History: (n, L) float64, C-contiguous, writable (the library checks L >= history_len).
+    let mut hist = match history {
+        Some(h) if !h.is_none() => {
+            let rw = writable(F, "history", h, None)?;
+            match rw.shape() {
+                [hn, _] if *hn == n => {}
+                s => {
+                    return Err(value_error(
+                        F,
+                        &format!(
+                            "history has shape {}, expected ({n}, L) with L >= {} (one row per contact)",
+                            shape_str(s),
+                            m.history_len
+                        ),
+                    ));
+                }
+            }
+            Some(rw)
+        }
+        _ if m.history_len > 0 => {
+            return Err(type_error(
+                F,
+                "history",
+                &format!(
+                    "is required: this model keeps {l} doubles per contact (numpy.zeros((n, {l})) for new contacts)",
+                    l = m.history_len
+                ),
+            ));
+        }
+        _ => None,
+    };
+    let stride = hist
+        .as_ref()
+        .and_then(|h| h.shape().get(1).copied())
+        .unwrap_or(0);
+
+    // Outputs: the caller's arrays, or new ones.
+    let outs: [Bound<'py, PyAny>; 4] = match out {
+        Some(o) if !o.is_none() => {
+            let t = o.cast::<PyTuple>().map_err(|_| {
+                type_error(
+                    F,
+                    "out",
+                    "must be a tuple (f_n, force, torque1, torque2) of float64 arrays",
+                )
+            })?;
+            if t.len() != 4 {
+                return Err(type_error(
+                    F,
+                    "out",
+                    "must be a tuple (f_n, force, torque1, torque2) of float64 arrays",
+                ));
+            }
+            [
+                t.get_item(0)?,
+                t.get_item(1)?,
+                t.get_item(2)?,
+                t.get_item(3)?,
+            ]
+        }
+        _ => [
+            // SAFETY (all four): uninitialised, but fully written on success; dropped unread on
+            // error.
+            unsafe { PyArray1::<f64>::new(py, [n], false) }.into_any(),
+            unsafe { PyArray2::<f64>::new(py, [n, 3], false) }.into_any(),
+            unsafe { PyArray2::<f64>::new(py, [n, 3], false) }.into_any(),
+            unsafe { PyArray2::<f64>::new(py, [n, 3], false) }.into_any(),
+        ],
+    };
+    let names = [
+        "out[0] (f_n)",
+        "out[1] (force)",
+        "out[2] (torque1)",
+        "out[3] (torque2)",
+    ];
+    let shapes: [&[usize]; 4] = [&s1, &s3, &s3, &s3];
+    let mut rws = Vec::with_capacity(4);
+    for ((o, name), shape) in outs.iter().zip(names).zip(shapes) {
+        rws.push(writable(F, name, o, Some(shape))?);
+    }
+    let result = CONTACT_BATCH_RESULT.import(py, "demcontact._types", "ContactBatchResult")?;
+    if n == 0 {
+        drop(rws);
+        return result.call1((
+            outs[0].clone(),
+            outs[1].clone(),
+            outs[2].clone(),
+            outs[3].clone(),
+        ));
+    }
+    let mut optr = [std::ptr::null_mut::<f64>(); 4];
+    for (p, rw) in optr.iter_mut().zip(rws.iter_mut()) {
+        *p = rw
+            .as_slice_mut()
+            .map_err(|e| value_error(F, &e.to_string()))?
+            .as_mut_ptr();
+    }
+    let hptr = match hist.as_mut() {
+        Some(h) => h
+            .as_slice_mut()
+            .map_err(|e| value_error(F, &e.to_string()))?
+            .as_mut_ptr(),
+        None => std::ptr::null_mut(),
+    };
+    let p3 = |i: usize| {
+        r3.get(i)
+            .and_then(Option::as_ref)
+            .map_or(std::ptr::null(), Run::ptr)
+    };
+    let p1 = |i: usize| r1v.get(i).map_or(std::ptr::null(), Run::ptr);
+    let job = Job {
+        model: m.raw,
+        batch: dc_contact_batch {
+            n,
+            history_stride: stride,
+            normal: p3(0),
+            overlap: rd.ptr(),
+            v1: p3(1),
+            v2: p3(2),
+            w1: p3(3),
+            w2: p3(4),
+            r1: p1(0),
+            r2: p1(1),
+            m1: p1(2),
+            m2: p1(3),
+            history: hptr,
+            f_n: optr[0],
+            force: optr[1],
+            torque1: optr[2],
+            torque2: optr[3],
+        },
+        dt,
+    };
+    let outcome = py.detach(move || {
+        // SAFETY: every pointer refers to an array borrowed above for this whole call, of the
+        // documented length (shapes checked); outputs and history are borrowed for writing, so
+        // no other Python thread touches them meanwhile.
+        let s = unsafe { dc_contact_force_batch(&job.model, &job.batch, job.dt) };
+        if s == c::status::DC_OK {
+            Ok(())
+        } else if per_contact(s) {
+            Err((s, job.locate().map(Box::new)))
+        } else {
+            Err((s, None))
+        }
+    });
+    drop(rws);
+    drop(hist);
+    match outcome {
+        Ok(()) => result.call1((
+            outs[0].clone(),
+            outs[1].clone(),
+            outs[2].clone(),
+            outs[3].clone(),
+        )),
+        Err((s, None)) => Err(status_error(
+            py,
+            s,
+            F,
+            &format!("(n={n}, history stride {stride}, dt={dt:?}; outputs and history untouched)"),
+        )),
+        Err((s, Some(located))) => {
+            let (i, _, st) = *located;
+            Err(status_error(
+                py,
+                s,
+                F,
+                &format!(
+                    "at contact {i} with {}, dt={dt:?} (outputs and history untouched)",
+                    describe_state(&st)
+                ),
+            ))
+        }
+    }
+}
