@@ -16,13 +16,15 @@ if ! command -v clang >/dev/null || ! ls /usr/lib/llvm-*/lib/clang/*/lib/linux/l
 fi
 out=build-fuzz
 # An explicit --target keeps RUSTFLAGS off build scripts and proc macros; LTO off keeps the
-# SanitizerCoverage instrumentation in the archive.
+# SanitizerCoverage instrumentation in the archive. --no-default-features: the library does not
+# use the CLI's dependencies (clap, serde_json, plotters), so they need no instrumented build.
 target=$(rustc -vV | sed -n "s/^host: //p")
 mkdir -p "$out/corpus"
 RUSTFLAGS="-Cpasses=sancov-module -Cllvm-args=-sanitizer-coverage-level=3 \
  -Cllvm-args=-sanitizer-coverage-inline-8bit-counters -Cllvm-args=-sanitizer-coverage-pc-table \
  -Cllvm-args=-sanitizer-coverage-trace-compares -Cdebug-assertions -Coverflow-checks -Cforce-frame-pointers" \
-  CARGO_PROFILE_RELEASE_LTO=false cargo build --release --lib --locked --target-dir "$out/cargo" -q --target "$target"
+  CARGO_PROFILE_RELEASE_LTO=false cargo build --release --lib --no-default-features --locked \
+    --target-dir "$out/cargo" -q --target "$target"
 clang -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -Iinclude \
   c_tests/fuzz/fuzz_abi.c "$out/cargo/$target/release/libdemcontact.a" -lpthread -ldl -lm -o "$out/fuzz_abi"
 # The fuzzer's own exit status decides: libFuzzer exits non-zero on a crash, a sanitizer report,

@@ -9,14 +9,16 @@
 # first run cargo only checks that it is fresh: the races this looks for are in the CMake part.
 #
 #   scripts/parallel_builds.sh [N] [JOBS]     (default N = 3, JOBS = 4)
-# Environment: DC_PB_DIR (scratch directory, default build-parallel) is removed at the start.
+# Environment: DC_PB_DIR (scratch directory, default build-parallel) is removed at the start;
+# DC_PB_CARGO_DIR (cargo target directory, default DC_PB_DIR/cargo; scripts/test.sh passes the
+# repository's target/, where the release library is already built) is kept.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 n="${1:-3}"
 jobs="${2:-4}"
 [[ "$n" =~ ^[1-9][0-9]*$ ]] || { echo "usage: $0 [N>=1] [JOBS]" >&2; exit 2; }
 root="${DC_PB_DIR:-$PWD/build-parallel}"
-cargo_dir="$root/cargo"
+cargo_dir="${DC_PB_CARGO_DIR:-$root/cargo}"
 rm -rf "$root/build"
 mkdir -p "$root"
 start=$(date +%s)

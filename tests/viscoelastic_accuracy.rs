@@ -162,3 +162,53 @@ fn force_large_b_law() {
     );
     assert!(worst < 1e-10);
 }
+
+/// The figures docs/viscoelastic.md quotes for the reference's cost (Taylor steps) and for the
+/// approach to the large-b laws, recomputed here so that the page cannot drift from the code.
+#[test]
+fn documented_step_counts_and_large_b_approach() {
+    let steps = |b: f64, ev: Event| integrate(b, ev, 1e-18, 50_000_000).unwrap().steps;
+    let small: Vec<u32> = [0.01, 0.1, 1.0, 3.0, 10.0]
+        .iter()
+        .flat_map(|&b| [steps(b, Event::Force), steps(b, Event::Overlap)])
+        .collect();
+    let (lo, hi) = (*small.iter().min().unwrap(), *small.iter().max().unwrap());
+    let (o1e3, o3e3) = (steps(1e3, Event::Overlap), steps(3e3, Event::Overlap));
+    // Beyond 3e3 the overlap integration fails: NO_CONVERGENCE at b = 5e3.
+    let o5e3 = integrate(5e3, Event::Overlap, 1e-18, 50_000_000).map(|h| h.steps);
+    let f_max = [1.0, 10.0, 1e2, 1e3, 1e4, 1e5, 1e6]
+        .iter()
+        .map(|&b| steps(b, Event::Force))
+        .max()
+        .unwrap();
+    println!(
+        "Taylor steps: {lo}..{hi} for b in [0.01, 10] (both criteria); overlap b=1e3: {o1e3}, \
+         b=3e3: {o3e3}, b=5e3: {o5e3:?}; force, b up to 1e6: at most {f_max}"
+    );
+    assert!(lo >= 8 && hi <= 36, "{lo}..{hi}");
+    assert!((17_000..19_000).contains(&o1e3) && (105_000..120_000).contains(&o3e3));
+    assert!(
+        o5e3 == Err(demcontact::Error::NoConvergence) && f_max <= 20,
+        "{o5e3:?} {f_max}"
+    );
+    let eo: Vec<f64> = [2.0, 3.0, 5.0, 7.0]
+        .iter()
+        .map(|&b: &f64| e_reference(b, Overlap).unwrap() * b.powi(5))
+        .collect();
+    let ef: Vec<f64> = [1.0, 5.0, 30.0, 1e3]
+        .iter()
+        .map(|&b: &f64| e_reference(b, Force).unwrap() * b.powf(5.0 / 3.0))
+        .collect();
+    println!("e_O b^5 at b = 2, 3, 5, 7: {eo:.16?}");
+    println!("e_F b^(5/3) at b = 1, 5, 30, 1e3: {ef:.6?}");
+    let quoted_o = [
+        (3.0506, 5e-5),
+        (5.0258, 5e-5),
+        (5.15838147, 5e-9),
+        (5.158381704267682, 5e-15),
+    ];
+    let quoted_f = [(0.394, 5e-4), (1.007, 5e-4), (1.273, 5e-4), (1.3101, 5e-5)];
+    for (v, (q, tol)) in eo.iter().chain(&ef).zip(quoted_o.iter().chain(&quoted_f)) {
+        assert!((v - q).abs() <= *tol, "{v} vs quoted {q}");
+    }
+}
