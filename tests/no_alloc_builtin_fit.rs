@@ -26,15 +26,25 @@ fn exports_do_not_allocate() {
     let mut calls = 0usize;
     let n = count_allocations(|| {
         let mut o = 0.0;
+        // Under Miri (each builtin solve about 10^4 times slower; the full set took 20 min) a
+        // subset: one invalid, one ordinary, one limit value and NaN.
+        let inputs: &[f64] = if cfg!(miri) {
+            &[-1.0, 0.5, 1.0, f64::NAN]
+        } else {
+            &INPUTS
+        };
         for model in -1..=9 {
             for clamp in [0, 1, 2] {
-                for &x in &INPUTS {
+                for &x in inputs {
                     unsafe {
                         std::hint::black_box(dc_builtin_value_for_e(model, clamp, x, &mut o));
                         std::hint::black_box(dc_builtin_realised_e(model, clamp, x, &mut o));
                     }
                     calls += 2;
-                    for wall in [-1, 0, 1, 2] {
+                    // Under Miri one invalid and the wall flag only: 0 is the plain call above and 2
+                    // takes the same invalid path as -1.
+                    let walls: &[i32] = if cfg!(miri) { &[-1, 1] } else { &[-1, 0, 1, 2] };
+                    for &wall in walls {
                         unsafe {
                             std::hint::black_box(dc_builtin_value_for_e_wall(
                                 model, clamp, wall, x, &mut o,
