@@ -139,6 +139,25 @@ int main(int argc, char** argv) {
         CHECK(threw);
         ::dc_contact_result out{};
         CHECK(dc::contact_force(model, st, 1e-8, dc::span<double>(hist.data(), 2), out) == dc::status::buffer_too_short);
+        // Two contacts through the fused batch: the second has a NaN overlap, the first is
+        // computed exactly as dc_contact_force, the second's outputs are NaN.
+        {
+            st.n[1] = 1.0;
+            std::vector<double> nv{0, 1, 0, 0, 1, 0}, ov{1e-6, NAN}, v1{0.5, 0, 0, 0.5, 0, 0}, z(6, 0.0);
+            std::vector<double> r1{1e-3, 1e-3}, r2{INFINITY, INFINITY}, m1{1e-5, 1e-5}, m2{INFINITY, INFINITY};
+            std::vector<double> h(12, 0.0), fn(2, 0.0), f(6, 0.0), t1(6, 0.0), t2(6, 0.0);
+            ::dc_contact_batch b{2, 6, nv.data(), ov.data(), v1.data(), z.data(), z.data(), z.data(), r1.data(),
+                                 r2.data(), m1.data(), m2.data(), h.data(), fn.data(), f.data(), t1.data(), t2.data()};
+            std::size_t bad = 99;
+            CHECK(dc::contact_force_batch_fused(model, b, 1e-8, bad) == dc::status::not_finite && bad == 1);
+            std::vector<double> h1(6, 0.0);
+            ::dc_contact_result r0 = dc::contact_force(model, st, 1e-8, dc::span<double>(h1));
+            CHECK(fn[0] == r0.f_n && f[0] == r0.force[0] && h[3] == h1[3] && std::isnan(fn[1]) && std::isnan(t2[5]) &&
+                  h[6] == 0.0);
+            b.n = 1;
+            bad = 99;
+            CHECK(dc::contact_force_batch_fused(model, b, 1e-8, bad) == dc::status::ok && bad == 99);
+        }
         spec.mu = NAN;
         CHECK(dc::contact_model_init(spec, model) == dc::status::spec_unset);
     }

@@ -1,11 +1,13 @@
 # Builds and runs c_tests/inline/test_inline.c with a second compiler or compiles the CUDA check.
 #   -DMODE=clang   clang -O3 -march=native (default contraction: bits), and with
 #                  -ffp-contract=fast (clang then ignores the header's pragma: within 8 ulp)
-#   -DMODE=cuda    nvcc, or clang++ -x cuda with a CUDA installation: compile cuda_kernels.cu
+#   -DMODE=cuda    nvcc (-DNVCC=<path>, else PATH): the checks of nvcc_checks() below; else
+#                  clang++ -x cuda with a CUDA installation: compile cuda_kernels.cu
 #   -DMODE=cuda_stub  clang++ -x cuda -nocudainc --cuda-device-only with cuda_stub.h: device PTX
 # A missing compiler prints "SKIPPED: <name> (<reason>)" and stops; the test's
 # SKIP_REGULAR_EXPRESSION turns that line into ctest's "Skipped" (never a pass).
-# Inputs: SRC (source dir), LIBDIR (libdemcontact.so), OUT (scratch dir), N (inputs per kernel).
+# Inputs: SRC (source dir), LIBDIR (libdemcontact.so), OUT (scratch dir), N (inputs per kernel),
+# NVCC (optional: the nvcc to use).
 function(skip name reason)
   message(FATAL_ERROR "SKIPPED: ${name} (${reason})")
 endfunction()
@@ -17,6 +19,57 @@ function(run)
   endif()
 endfunction()
 file(MAKE_DIRECTORY "${OUT}")
+# The nvcc checks (no GPU here: device code is compiled, never run).
+#  1. test_inline.c and test_inline_contact.c compiled by nvcc as CUDA (test_inline_nvcc.cu,
+#     test_inline_contact_nvcc.cu, each with cuda_kernels.cu: device code through cicc to PTX and
+#     ptxas to an sm_75 cubin in the same binary), and their host side run against the library:
+#     every dc_pair kernel, constructors, calibrations, the full contact with its history, bit for
+#     bit. Twice: nvcc -O2 (host: x86-64 baseline, no FMA), and with the host compiler on FMA
+#     hardware (-Xcompiler -O3,-march=native,-ffp-contract=off: nvcc's front end lacks
+#     __builtin_assoc_barrier, so the header's host side under nvcc needs contraction off).
+#  2. dc_forces_arith (the 17 kernels without libm) compiled to an sm_90 cubin with -fmad=true
+#     (nvcc's default) and -fmad=false: its machine code must be the same bytes, i.e. nothing was
+#     fused and every + - * / sqrt is rounded as on the host (prec-div, prec-sqrt on by default).
+function(nvcc_checks)
+  get_filename_component(bindir "${NVCC}" DIRECTORY)
+  set(nv ${NVCC} -std=c++17 -Werror all-warnings -Xcompiler -Wall,-Wextra,-Werror ${inc})
+  set(link -L${bindir}/../lib -L${LIBDIR} -ldemcontact -lm -Xlinker -rpath,${LIBDIR})
+  run(${NVCC} --version)
+  math(EXPR quarter "${N} / 4")
+  foreach(t test_inline test_inline_contact)
+    run(${nv} -O2 -arch=sm_75 ${SRC}/c_tests/inline/${t}_nvcc.cu ${link} -o ${OUT}/${t}_nvcc)
+    run(${OUT}/${t}_nvcc ${N})
+    run(${nv} -arch=sm_75 -Xcompiler -O3,-march=native,-ffp-contract=off
+        ${SRC}/c_tests/inline/${t}_nvcc.cu ${link} -o ${OUT}/${t}_nvcc_native)
+    run(${OUT}/${t}_nvcc_native ${quarter})
+  endforeach()
+  find_program(READELF readelf)
+  if(NOT READELF)
+    message(FATAL_ERROR "readelf (binutils) not found: cannot compare the cubins")
+  endif()
+  foreach(fmad true false)
+    run(${nv} -arch=sm_90 -fmad=${fmad} -cubin ${SRC}/c_tests/inline/cuda_kernels.cu
+        -o ${OUT}/cuda_kernels_fmad_${fmad}.cubin)
+    execute_process(COMMAND ${READELF} -S -W ${OUT}/cuda_kernels_fmad_${fmad}.cubin
+                    OUTPUT_VARIABLE sections ERROR_QUIET)
+    string(REGEX MATCH "\\.text\\.[A-Za-z0-9_]*dc_forces_arith[A-Za-z0-9_]*" sec "${sections}")
+    if(NOT sec)
+      message(FATAL_ERROR "no dc_forces_arith code section in the -fmad=${fmad} cubin")
+    endif()
+    execute_process(COMMAND ${READELF} -x ${sec} ${OUT}/cuda_kernels_fmad_${fmad}.cubin
+                    OUTPUT_VARIABLE hex_${fmad} ERROR_QUIET)
+    string(LENGTH "${hex_${fmad}}" len_${fmad})
+  endforeach()
+  if(len_true LESS 1000 OR NOT hex_true STREQUAL hex_false)
+    file(WRITE ${OUT}/dc_forces_arith_fmad_true.hex "${hex_true}")
+    file(WRITE ${OUT}/dc_forces_arith_fmad_false.hex "${hex_false}")
+    message(FATAL_ERROR "dc_forces_arith: the sm_90 machine code differs between -fmad=true and "
+            "-fmad=false (a product fused with an addition; hex dumps in ${OUT})")
+  endif()
+  message("dc_forces_arith: sm_90 machine code identical with -fmad=true and -fmad=false "
+          "(${len_true} characters of hex dump): no contraction in the 17 force kernels")
+endfunction()
+
 set(inc "-I${SRC}/include")
 if(MODE STREQUAL "clang")
   find_program(CLANG clang)
@@ -34,21 +87,26 @@ if(MODE STREQUAL "clang")
       ${SRC}/c_tests/inline/test_inline_contact.c ${link} -o ${OUT}/test_inline_contact_clang)
   run(${OUT}/test_inline_contact_clang ${N})
 elseif(MODE STREQUAL "cuda")
-  find_program(NVCC nvcc)
+  # NVCC: the build's DEMCONTACT_NVCC (scripts/setup_cuda.sh installs NVIDIA's nvcc wheels into
+  # .venv-cuda; scripts/test.sh passes it to CMake), else an nvcc on PATH.
+  if(NOT NVCC OR NOT EXISTS "${NVCC}")
+    find_program(NVCC_ON_PATH nvcc)
+    set(NVCC "${NVCC_ON_PATH}")
+  endif()
   find_program(CLANGXX clang++)
   if(NVCC)
-    run(${NVCC} -std=c++17 ${inc} -c ${SRC}/c_tests/inline/cuda_kernels.cu -o ${OUT}/cuda_kernels.o)
+    nvcc_checks()
   elseif(CLANGXX)
     execute_process(COMMAND ${CLANGXX} -x cuda -std=c++17 --cuda-gpu-arch=sm_70 ${inc}
                     -c ${SRC}/c_tests/inline/cuda_kernels.cu -o ${OUT}/cuda_kernels.o
                     RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
     if(NOT rc EQUAL 0 AND err MATCHES "cannot find (CUDA installation|libdevice)")
-      skip(inline_cuda "no nvcc, and clang finds no CUDA installation")
+      skip(inline_cuda "no nvcc (scripts/setup_cuda.sh installs one), and clang finds no CUDA installation")
     elseif(NOT rc EQUAL 0)
       message(FATAL_ERROR "clang CUDA compile failed:\n${err}")
     endif()
   else()
-    skip(inline_cuda "neither nvcc nor clang++ installed")
+    skip(inline_cuda "neither nvcc (scripts/setup_cuda.sh installs one) nor clang++ installed")
   endif()
 elseif(MODE STREQUAL "cuda_stub")
   find_program(CLANGXX clang++)

@@ -1,8 +1,8 @@
 # Header-only kernels (include/demcontact_inline.h): bit-identical to the library over 10^7 random
 # inputs per kernel, as C99 and as C++17 (-Wall -Wextra -Werror), once more with FMA contraction
-# forced on (-march=native -ffp-contract=fast), with clang, and in CUDA device code where a CUDA
-# compiler exists (else the test prints "SKIPPED: <name> (<reason>)" and ctest reports it
-# skipped); the header-only example links nothing of demcontact (only libm), as C99 and C++17.
+# forced on (-march=native -ffp-contract=fast), with clang, and as CUDA where a CUDA compiler
+# exists (nvcc: the host side run against the library, the device code compiled to cubins; else
+# the test prints "SKIPPED: <name> (<reason>)" and ctest reports it skipped); the header-only example links nothing of demcontact (only libm), as C99 and C++17.
 
 add_executable(test_inline_c c_tests/inline/test_inline.c)
 target_compile_options(test_inline_c PRIVATE -std=c99 -pedantic -Wall -Wextra -Werror -O2)
@@ -30,9 +30,19 @@ add_test(NAME inline_fma COMMAND test_inline_fma 2000000)
 add_test(NAME inline_contact_c COMMAND test_inline_contact_c 10000000)
 add_test(NAME inline_contact_cpp COMMAND test_inline_contact_cpp 10000000)
 add_test(NAME inline_contact_fma COMMAND test_inline_contact_fma 2000000)
+# nvcc for inline_cuda: from DEMCONTACT_CUDA_VENV (a venv holding NVIDIA's nvcc wheels, made by
+# scripts/setup_cuda.sh; scripts/test.sh passes it), else PATH. Not found: inline_cuda tries clang,
+# then says SKIPPED.
+set(DEMCONTACT_CUDA_VENV "" CACHE PATH "venv with NVIDIA's nvcc wheels (scripts/setup_cuda.sh)")
+set(_dc_nvcc_hints "")
+if(DEMCONTACT_CUDA_VENV)
+  file(GLOB _dc_nvcc_hints "${DEMCONTACT_CUDA_VENV}/lib/python3*/site-packages/nvidia/cu*/bin")
+endif()
+find_program(DEMCONTACT_NVCC nvcc HINTS ${_dc_nvcc_hints} DOC "nvcc for ctest inline_cuda")
 foreach(mode clang cuda cuda_stub)
   add_test(NAME inline_${mode}
     COMMAND "${CMAKE_COMMAND}" -DMODE=${mode} -DSRC=${CMAKE_SOURCE_DIR} -DLIBDIR=${DC_LIB_DIR}
+            -DNVCC=${DEMCONTACT_NVCC}
             -DOUT=${CMAKE_BINARY_DIR}/inline_${mode} -DN=2000000
             -P "${CMAKE_SOURCE_DIR}/cmake/InlineCompilers.cmake")
   set_tests_properties(inline_${mode} PROPERTIES SKIP_REGULAR_EXPRESSION "SKIPPED: ")

@@ -153,4 +153,13 @@ inline void contact_force_batch_checked(const ::dc_contact_model& model, const :
     detail::check(::dc_contact_force_batch(&model, &batch, dt));
 }
 
+/// n contacts, each input read from memory once (dc_contact_force_batch_fused). Returns the
+/// status: on a per-contact status (not_finite, not_positive, not_unit) every other contact is
+/// computed, the bad ones' outputs are NaN and `first_bad` is the first bad index; on any other
+/// error nothing is written. noexcept: a non-OK status always needs the caller's attention.
+inline status contact_force_batch_fused(const ::dc_contact_model& model, const ::dc_contact_batch& batch, double dt,
+                                        std::size_t& first_bad) noexcept {
+    return static_cast<status>(::dc_contact_force_batch_fused(&model, &batch, dt, &first_bad));
+}
+
 }  // namespace demcontact

@@ -333,6 +333,15 @@ module demcontact_c
       real(c_double), value, intent(in) :: dt
       integer(c_int32_t) :: dc_contact_force_batch
     end function dc_contact_force_batch
+    function dc_contact_force_batch_fused(model, batch, dt, first_bad) bind(c, &
+        name='dc_contact_force_batch_fused')
+      import
+      type(dc_contact_model), intent(in) :: model
+      type(dc_contact_batch), intent(in) :: batch
+      real(c_double), value, intent(in) :: dt
+      integer(c_size_t), intent(inout) :: first_bad(*)
+      integer(c_int32_t) :: dc_contact_force_batch_fused
+    end function dc_contact_force_batch_fused
     function dc_fit_restitution(n, v, e, sigma, criterion, tol, robust, resid_viscoelastic, &
         resid_constant, out) bind(c, name='dc_fit_restitution')
       import

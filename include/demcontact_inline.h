@@ -15,6 +15,9 @@
  *   dc_contact_spec_init_inline(&spec);    // then spec.normal = DC_NORMAL_HERTZ, ... as for the library
  *   dc_contact_model_init_inline(&spec, &model);   // or the library's dc_contact_model_init
  *   int32_t st = dc_contact_force_inline(&model, &state, dt, history, history_len, &result);
+ *   // a host loop over many contacts: check the model once, then the fast entry per contact
+ *   if (dc_contact_model_check_inline(&model) == DC_OK)
+ *       st = dc_contact_force_checked_inline(&model, &state, dt, history, &result);
  *
  * Contract: the same meaning, statuses and results as the library's functions of the same name
  * without `_inline` (dc_normal_force, dc_alpha_from_e, dc_e_from_alpha, dc_effective_modulus,
@@ -35,7 +38,9 @@
  * keeps every product rounded by itself: with GCC >= 12 through __builtin_assoc_barrier (which
  * also survives inlining into a caller compiled with -ffp-contract=fast -march=native), with
  * clang through `#pragma clang fp contract(off)` in each function, and in CUDA device code
- * through __dmul_rn. Other compilers: build with contraction off (-ffp-contract=off, /fp:precise
+ * through __dmul_rn. nvcc's host side cannot use the barrier (its front end lacks it): with host
+ * flags that enable FMA (-Xcompiler -march=...) add -Xcompiler -ffp-contract=off there.
+ * Other compilers: build with contraction off (-ffp-contract=off, /fp:precise
  * without /fp:contract); otherwise results may differ from the library by a few ulp of the
  * larger force term. Value-changing options (-ffast-math, -Ofast) void the bit-identity.
  *
@@ -60,7 +65,7 @@
 #define DCI_M(a, b) __dmul_rn((a), (b))
 #elif defined(__clang__)
 #define DCI_M(a, b) ((a) * (b))
-#elif defined(__GNUC__) && __GNUC__ >= 12
+#elif defined(__GNUC__) && __GNUC__ >= 12 && !defined(__NVCC__)
 #define DCI_M(a, b) __builtin_assoc_barrier((a) * (b))
 #else
 #define DCI_M(a, b) ((a) * (b))
@@ -119,46 +124,24 @@ DC_INLINE_FN double dci_from_bits(uint64_t u) {
 
 #define DCI_LN2_HI 0x1.62e42fee00000p-1      /* ln 2 with its low 21 mantissa bits cleared */
 #define DCI_LN2_LO 0x1.a39ef35793c76p-33     /* ln 2 - DCI_LN2_HI */
-#define DCI_LOG2_E 0x1.71547652b82fep+0
-#define DCI_SQRT_2 0x1.6a09e667f3bcdp+0
+#define DCI_LN2_32_HI (DCI_LN2_HI / 32.0)    /* exact */
+#define DCI_LN2_32_LO (DCI_LN2_LO / 32.0)    /* exact */
+#define DCI_INV_LN2_32 (32.0 * 0x1.71547652b82fep+0) /* 32 log2(e), exact scaling */
 #define DCI_SHIFTER 6755399441055744.0       /* 1.5 * 2^52 */
 #define DCI_TWO52 4503599627370496.0
 #define DCI_TWO54 18014398509481984.0
 #define DCI_LN2 0x1.62e42fefa39efp-1
 #define DCI_K_CLAMP 2044.0
 #define DCI_DBL_MIN 0x1p-1022
+#define DCI_POW_OFF UINT64_C(0x3fe5c00000000000) /* bits of 0.6796875 */
 
-/* Sum_{k<10} x^k/(2k+3) by Estrin's scheme, in the library's order. */
-DC_INLINE_FN double dci_atanh_tail(double x) {
-    DCI_NO_CONTRACT
-    const double x2 = DCI_M(x, x), x4 = DCI_M(x2, x2), x8 = DCI_M(x4, x4);
-    const double b0 = 1.0 / 3.0 + DCI_M(1.0 / 5.0, x);
-    const double b1 = 1.0 / 7.0 + DCI_M(1.0 / 9.0, x);
-    const double b2 = 1.0 / 11.0 + DCI_M(1.0 / 13.0, x);
-    const double b3 = 1.0 / 15.0 + DCI_M(1.0 / 17.0, x);
-    const double b4 = 1.0 / 19.0 + DCI_M(1.0 / 21.0, x);
-    const double c0 = b0 + DCI_M(b1, x2);
-    const double c1 = b2 + DCI_M(b3, x2);
-    const double d0 = c0 + DCI_M(c1, x4);
-    return d0 + DCI_M(b4, x8);
-}
-
-/* Sum_{k<12} x^k/(k+2)! by Estrin's scheme, in the library's order. */
-DC_INLINE_FN double dci_exp_tail(double x) {
-    DCI_NO_CONTRACT
-    const double x2 = DCI_M(x, x), x4 = DCI_M(x2, x2), x8 = DCI_M(x4, x4);
-    const double b0 = 1.0 / 2.0 + DCI_M(1.0 / 6.0, x);
-    const double b1 = 1.0 / 24.0 + DCI_M(1.0 / 120.0, x);
-    const double b2 = 1.0 / 720.0 + DCI_M(1.0 / 5040.0, x);
-    const double b3 = 1.0 / 40320.0 + DCI_M(1.0 / 362880.0, x);
-    const double b4 = 1.0 / 3628800.0 + DCI_M(1.0 / 39916800.0, x);
-    const double b5 = 1.0 / 479001600.0 + DCI_M(1.0 / 6227020800.0, x);
-    const double c0 = b0 + DCI_M(b1, x2);
-    const double c1 = b2 + DCI_M(b3, x2);
-    const double c2 = b4 + DCI_M(b5, x2);
-    const double d0 = c0 + DCI_M(c1, x4);
-    return d0 + DCI_M(c2, x8);
-}
+/* The power's 32-entry tables (src/numerics/pow_table.rs): function-local, so that they work
+ * in CUDA/HIP device code too (static elsewhere: no copy per call). */
+#if defined(__CUDACC__) || defined(__HIPCC__)
+#define DCI_TABLE const
+#else
+#define DCI_TABLE static const
+#endif
 
 /* 2^k for an integer-valued k in [-1022, 1023]. */
 DC_INLINE_FN double dci_exp2i(double kf) {
@@ -168,28 +151,84 @@ DC_INLINE_FN double dci_exp2i(double kf) {
 
 /* x^q for x >= 0 (subnormal and +inf included) and finite q > 0: branch-free, no libm; within
  * 2 ulp of glibc's pow for q <= 2 (p <= 5), 1 + q ulp beyond; subnormal results within one
- * subnormal ulp. Negative or NaN x give an unspecified number. x = 2^e m, m in [sqrt(1/2),
- * sqrt(2)); q e = P + Q exactly (q cut into 26 + 27 bits); x^q = 2^n e^t, n = round(P),
- * t = (P - n + Q) ln 2 + q ln m. */
+ * subnormal ulp. Negative or NaN x give an unspecified number. x = 2^e z, z in [0.6797, 1.3594);
+ * ln z = ln c_i + ln(1 + u), u = (z - c_i) RN(1/c_i), c_i the middle of z's 1/32 of the range;
+ * q e = P + Q exactly (q cut into 26 + 27 bits); x^q = 2^n e^t, n = round(P),
+ * t = (P - n + Q) ln 2 + q ln z; e^t = 2^((k-j)/32) 2^(j/32) e^r, k = round(32 t/ln 2),
+ * j = k mod 32. */
 DC_INLINE_FN double dc_pow_inline(double x, double q) {
     DCI_NO_CONTRACT
+    DCI_TABLE double invc[32] = {
+        0x1.745d1745d1746p+0, 0x1.6c16c16c16c17p+0, 0x1.642c8590b2164p+0,
+        0x1.5c9882b931057p+0, 0x1.5555555555555p+0, 0x1.4e5e0a72f0539p+0,
+        0x1.47ae147ae147bp+0, 0x1.4141414141414p+0, 0x1.3b13b13b13b14p+0,
+        0x1.3521cfb2b78c1p+0, 0x1.2f684bda12f68p+0, 0x1.29e4129e4129ep+0,
+        0x1.2492492492492p+0, 0x1.1f7047dc11f70p+0, 0x1.1a7b9611a7b96p+0,
+        0x1.15b1e5f75270dp+0, 0x1.1111111111111p+0, 0x1.0c9714fbcda3bp+0,
+        0x1.0842108421084p+0, 0x1.0410410410410p+0, 0x1.0000000000000p+0,
+        0x1.f07c1f07c1f08p-1, 0x1.e1e1e1e1e1e1ep-1, 0x1.d41d41d41d41dp-1,
+        0x1.c71c71c71c71cp-1, 0x1.bacf914c1bad0p-1, 0x1.af286bca1af28p-1,
+        0x1.a41a41a41a41ap-1, 0x1.999999999999ap-1, 0x1.8f9c18f9c18fap-1,
+        0x1.8618618618618p-1, 0x1.7d05f417d05f4p-1};
+    DCI_TABLE double logc[32] = {
+        -0x1.7fafa3bd8151cp-2, -0x1.68ac83e9c6a14p-2, -0x1.522ae0738a3d8p-2,
+        -0x1.3c25277333184p-2, -0x1.269621134db92p-2, -0x1.1178e8227e47cp-2,
+        -0x1.f991c6cb3b379p-3, -0x1.d1037f2655e7bp-3, -0x1.a93ed3c8ad9e3p-3,
+        -0x1.823c16551a3c2p-3, -0x1.5bf406b543db2p-3, -0x1.365fcb0159016p-3,
+        -0x1.1178e8227e47cp-3, -0x1.da727638446a2p-4, -0x1.9335e5d594989p-4,
+        -0x1.4d3115d207eacp-4, -0x1.08598b59e3a07p-4, -0x1.894aa149fb343p-5,
+        -0x1.0415d89e74444p-5, -0x1.0205658935847p-6, 0x0.0p+0,
+        0x1.f829b0e783300p-6, 0x1.f0a30c01162a6p-5, 0x1.6f0d28ae56b4cp-4,
+        0x1.e27076e2af2e6p-4, 0x1.29552f81ff523p-3, 0x1.5ff3070a793d4p-3,
+        0x1.9525a9cf456b4p-3, 0x1.c8ff7c79a9a22p-3, 0x1.fb9186d5e3e2bp-3,
+        0x1.1675cababa60ep-2, 0x1.2e8e2bae11d31p-2};
+    DCI_TABLE double exp2_hi[32] = {
+        0x1.0000000000000p+0, 0x1.059b0d3158574p+0, 0x1.0b5586cf9890fp+0,
+        0x1.11301d0125b51p+0, 0x1.172b83c7d517bp+0, 0x1.1d4873168b9aap+0,
+        0x1.2387a6e756238p+0, 0x1.29e9df51fdee1p+0, 0x1.306fe0a31b715p+0,
+        0x1.371a7373aa9cbp+0, 0x1.3dea64c123422p+0, 0x1.44e086061892dp+0,
+        0x1.4bfdad5362a27p+0, 0x1.5342b569d4f82p+0, 0x1.5ab07dd485429p+0,
+        0x1.6247eb03a5585p+0, 0x1.6a09e667f3bcdp+0, 0x1.71f75e8ec5f74p+0,
+        0x1.7a11473eb0187p+0, 0x1.82589994cce13p+0, 0x1.8ace5422aa0dbp+0,
+        0x1.93737b0cdc5e5p+0, 0x1.9c49182a3f090p+0, 0x1.a5503b23e255dp+0,
+        0x1.ae89f995ad3adp+0, 0x1.b7f76f2fb5e47p+0, 0x1.c199bdd85529cp+0,
+        0x1.cb720dcef9069p+0, 0x1.d5818dcfba487p+0, 0x1.dfc97337b9b5fp+0,
+        0x1.ea4afa2a490dap+0, 0x1.f50765b6e4540p+0};
+    DCI_TABLE double exp2_lo[32] = {
+        0x0.0p+0, 0x1.d73e2a475b465p-55, 0x1.8a62e4adc610bp-54,
+        -0x1.6c51039449b3ap-54, -0x1.19041b9d78a76p-55, 0x1.e016e00a2643cp-54,
+        0x1.9b07eb6c70573p-54, 0x1.612e8afad1255p-55, 0x1.6f46ad23182e4p-55,
+        -0x1.63aeabf42eae2p-54, 0x1.ada0911f09ebcp-55, 0x1.89b7a04ef80d0p-59,
+        0x1.d4397afec42e2p-56, -0x1.07abe1db13cadp-55, 0x1.6324c054647adp-54,
+        -0x1.383c17e40b497p-54, -0x1.bdd3413b26456p-54, -0x1.16e4786887a99p-55,
+        -0x1.41577ee04992fp-55, -0x1.d4c1dd41532d8p-54, 0x1.6e9f156864b27p-54,
+        -0x1.75fc781b57ebcp-57, 0x1.c7c46b071f2bep-56, -0x1.d2f6edb8d41e1p-54,
+        0x1.7a1cd345dcc81p-54, -0x1.5584f7e54ac3bp-56, 0x1.11065895048ddp-55,
+        0x1.503cbd1e949dbp-56, 0x1.2ed02d75b3707p-55, -0x1.1a5cd4f184b5cp-54,
+        -0x1.e9c23179c2893p-54, 0x1.9d3e12dd8a18bp-54};
     const int pos = x > 0.0 && x < (double)INFINITY;
     double safe = pos ? x : 1.0;
     const int sub = safe < DCI_DBL_MIN;
     safe = sub ? DCI_M(safe, DCI_TWO54) : safe;
-    const uint64_t bits = dci_bits(safe);
-    const double e_biased = dci_from_bits(UINT64_C(0x4330000000000000) | (bits >> 52)) - DCI_TWO52;
-    double m = dci_from_bits((bits & UINT64_C(0x000fffffffffffff)) | UINT64_C(0x3ff0000000000000));
-    const int big_m = m > DCI_SQRT_2;
-    m = big_m ? DCI_M(0.5, m) : m;
-    double e = big_m ? e_biased - 1022.0 : e_biased - 1023.0;
+    /* x = 2^e z, and ln z */
+    const uint64_t ix = dci_bits(safe);
+    const uint64_t tmp = ix - DCI_POW_OFF;
+    const uint64_t eb = (tmp + (UINT64_C(1024) << 52)) >> 52;
+    double e = dci_from_bits(UINT64_C(0x4330000000000000) | eb) - (DCI_TWO52 + 1024.0);
+    const double z = dci_from_bits(ix - (tmp & (UINT64_C(0xfff) << 52)));
+    const double c = dci_from_bits(DCI_POW_OFF + (tmp & (UINT64_C(31) << 47)) + (UINT64_C(1) << 46));
+    const unsigned i = (unsigned)((tmp >> 47) & 31u);
+    const double u = DCI_M(z - c, invc[i]);
+    const double u2 = DCI_M(u, u), u4 = DCI_M(u2, u2);
+    const double b0 = -1.0 / 2.0 + DCI_M(1.0 / 3.0, u);
+    const double b1 = -1.0 / 4.0 + DCI_M(1.0 / 5.0, u);
+    const double b2 = -1.0 / 6.0 + DCI_M(1.0 / 7.0, u);
+    const double b3 = -1.0 / 8.0 + DCI_M(1.0 / 9.0, u);
+    const double c0 = b0 + DCI_M(b1, u2);
+    const double c1 = b2 + DCI_M(b3, u2);
+    const double l = c0 + DCI_M(c1, u4);
+    const double ln_z = logc[i] + (u + DCI_M(u2, l));
     e = sub ? e - 54.0 : e;
-    /* ln m = 2 atanh s */
-    const double f = m - 1.0;
-    const double s = f / (2.0 + f);
-    const double z = DCI_M(s, s);
-    const double two_s = DCI_M(2.0, s);
-    const double ln_m = two_s + DCI_M(two_s, DCI_M(z, dci_atanh_tail(z)));
     /* q e = P + Q exactly; n = round(P) */
     const double qh = dci_from_bits(dci_bits(q) & ~((UINT64_C(1) << 27) - 1));
     const double ql = q - qh;
@@ -197,12 +236,22 @@ DC_INLINE_FN double dc_pow_inline(double x, double q) {
     const double small_q = DCI_M(ql, e);
     const double n = (big_p + DCI_SHIFTER) - DCI_SHIFTER;
     const double frac = (big_p - n) + small_q;
-    const double t = DCI_M(frac, DCI_LN2) + DCI_M(q, ln_m);
-    /* e^t = 2^k e^r */
-    const double kf = (DCI_M(t, DCI_LOG2_E) + DCI_SHIFTER) - DCI_SHIFTER;
-    const double r = (t - DCI_M(kf, DCI_LN2_HI)) - DCI_M(kf, DCI_LN2_LO);
-    const double poly = 1.0 + (r + DCI_M(DCI_M(r, r), dci_exp_tail(r)));
-    double total = n + kf;
+    const double t = DCI_M(frac, DCI_LN2) + DCI_M(q, ln_z);
+    /* e^t = 2^k_hi p */
+    const double y = DCI_M(t, DCI_INV_LN2_32) + DCI_SHIFTER;
+    const double kf = y - DCI_SHIFTER;
+    const unsigned j = (unsigned)(dci_bits(y) & 31u);
+    const double jf = dci_from_bits(UINT64_C(0x4330000000000000) | j) - DCI_TWO52;
+    const double k_hi = DCI_M(kf - jf, 1.0 / 32.0);
+    const double r = (t - DCI_M(kf, DCI_LN2_32_HI)) - DCI_M(kf, DCI_LN2_32_LO);
+    const double r2 = DCI_M(r, r);
+    const double e0 = 1.0 / 2.0 + DCI_M(1.0 / 6.0, r);
+    const double e1 = 1.0 / 24.0 + DCI_M(1.0 / 120.0, r);
+    const double e2 = e0 + DCI_M(e1, r2);
+    const double w = r + DCI_M(r2, e2 + DCI_M(1.0 / 720.0, DCI_M(r2, r2)));
+    const double hi = exp2_hi[j];
+    const double poly = hi + (exp2_lo[j] + DCI_M(hi, w));
+    double total = n + k_hi;
     total = total < -DCI_K_CLAMP ? -DCI_K_CLAMP : (total > DCI_K_CLAMP ? DCI_K_CLAMP : total);
     const double k1 = (DCI_M(0.5, total) + DCI_SHIFTER) - DCI_SHIFTER;
     const double v = DCI_M(DCI_M(poly, dci_exp2i(k1)), dci_exp2i(total - k1));
@@ -1082,6 +1131,62 @@ DC_INLINE_FN int32_t dc_contact_force_inline(const dc_contact_model *model,
     for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++) ok = ok && isfinite(h[i]);
     if (!ok) return DC_ERR_RESULT_RANGE;
     for (size_t i = 0; i < need; i++) history[i] = h[i];
+    *out = r;
+    return DC_OK;
+}
+
+/* ---- validated-model fast entry (a host's per-contact loop: check the model once, not per call) */
+
+/* The model checks of dc_contact_force / dc_contact_force_inline alone: DC_OK when they accept
+ * `model` (given a long enough history), else the status they return for it
+ * (DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID). */
+DC_INLINE_FN int32_t dc_contact_model_check_inline(const dc_contact_model *model) {
+    if (!model) return DC_ERR_NULL_POINTER;
+    const dci_layout lay = dci_layout_of(model->tangential, model->rolling, model->twisting);
+    const dc_pair *p = &model->normal;
+    int ok = ((p->criterion == DC_END_OVERLAP && p->clamp == 0) ||
+              (p->criterion == DC_END_FORCE && p->clamp == 1)) &&
+             model->magic == DCI_CONTACT_MAGIC && model->history_len == (uint32_t)lay.len &&
+             model->reserved_i == 0;
+    for (int i = 0; i < 6; i++) ok = ok && dci_bits(model->reserved[i]) == 0;
+    if (!ok) return DC_ERR_CONTACT_MODEL_INVALID;
+    return dci_check_contact_model(model, lay);
+}
+
+/* dc_contact_force_inline for a model that dc_contact_model_check_inline accepted (and that has
+ * not changed since), with `history` holding model->history_len doubles, 8-byte aligned (NULL
+ * allowed when history_len is 0). It skips the model checks and the history pointer, length and
+ * alignment checks (the caller's contract above); it keeps every check of the call's own
+ * inputs (NULL state/out, dt, the state's values, the history's values, the results' range), in
+ * the same order. For such a model and history: the same status, result and history bits as
+ * dc_contact_force (ctest inline_contact_*); outputs untouched on error. */
+DC_INLINE_FN int32_t dc_contact_force_checked_inline(const dc_contact_model *model,
+                                                     const dc_contact_state *state, double dt,
+                                                     double *history, dc_contact_result *out) {
+    if (!state || !out) return DC_ERR_NULL_POINTER;
+    const dci_layout lay = dci_layout_of(model->tangential, model->rolling, model->twisting);
+    if (!isfinite(dt)) return DC_ERR_NOT_FINITE;
+    if (!(dt > 0.0)) return DC_ERR_NOT_POSITIVE;
+    int32_t st = dci_check_contact_state(state);
+    if (st != DC_OK) return st;
+    /* entries from lay.len on are zero in and, as the evaluation writes only the layout's entries
+     * or zeros, zero out: only the first lay.len can be non-finite */
+    const int need = lay.len;
+    double h[DC_CONTACT_HISTORY_MAX];
+    int finite = 1;
+    for (int i = 0; i < need; i++) {
+        h[i] = history[i];
+        finite &= isfinite(h[i]) != 0;
+    }
+    if (!finite) return DC_ERR_NOT_FINITE;
+    for (int i = need; i < DC_CONTACT_HISTORY_MAX; i++) h[i] = 0.0;
+    dc_contact_result r;
+    dci_contact_evaluate(model, lay, state, dt, h, &r);
+    int ok = isfinite(r.f_n) && dci_finite3(dci_load3(r.force)) && dci_finite3(dci_load3(r.ft)) &&
+             dci_finite3(dci_load3(r.torque1)) && dci_finite3(dci_load3(r.torque2));
+    for (int i = 0; i < need; i++) ok &= isfinite(h[i]) != 0;
+    if (!ok) return DC_ERR_RESULT_RANGE;
+    for (int i = 0; i < need; i++) history[i] = h[i];
     *out = r;
     return DC_OK;
 }

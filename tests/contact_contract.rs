@@ -4,10 +4,21 @@
 #![allow(clippy::unwrap_used, clippy::indexing_slicing)]
 
 mod contact_sim;
-use contact_sim::model;
+use contact_sim::{ZERO_RESULT, model};
 use demcontact::ffi::contact::*;
 use demcontact::ffi::force::*;
 use demcontact::ffi::status::*;
+
+/// A table of edits and what each must give: `edits![x: T; [f = v, g[i] = w] => want, ...]`
+/// is a Vec of (boxed closure setting those fields of `x: &mut T`, want). Values may read `x`.
+macro_rules! edits {
+    ($x:ident: $T:ty; $([$($($f:ident).+ $([$i:expr])? = $v:expr),+ $(,)?] => $want:expr),* $(,)?) => {
+        vec![$((
+            Box::new(|$x: &mut $T| { $($x.$($f).+ $([$i])? = $v;)+ }) as Box<dyn Fn(&mut $T) + '_>,
+            $want,
+        )),*]
+    };
+}
 
 fn spec() -> dc_contact_spec {
     let mut s: dc_contact_spec = unsafe { std::mem::zeroed() };
@@ -105,20 +116,10 @@ fn states() -> Vec<dc_contact_state> {
     ]
 }
 
-const ZERO_RES: dc_contact_result = dc_contact_result {
-    force: [0.0; 3],
-    torque1: [0.0; 3],
-    torque2: [0.0; 3],
-    f_n: 0.0,
-    ft: [0.0; 3],
-    sliding: 0,
-    rolling_sliding: 0,
-};
-
 fn sentinel_res() -> dc_contact_result {
     dc_contact_result {
         f_n: -7.5,
-        ..ZERO_RES
+        ..ZERO_RESULT
     }
 }
 
@@ -149,211 +150,77 @@ fn model_init_statuses() {
     assert_eq!(init(&base).0, DC_OK);
     // An unset normal law.
     assert_eq!(init(&spec()).0, DC_ERR_SPEC_MODEL);
-    let cases: Vec<(Box<dyn Fn(&mut dc_contact_spec)>, i32)> = vec![
-        (Box::new(|s| s.version = 2), DC_ERR_SPEC_VERSION),
-        (Box::new(|s| s.version = 0), DC_ERR_SPEC_VERSION),
-        (Box::new(|s| s.size -= 8), DC_ERR_SPEC_VERSION),
-        (Box::new(|s| s.size += 8), DC_ERR_SPEC_VERSION),
-        (Box::new(|s| s.normal = 99), DC_ERR_SPEC_MODEL),
-        (Box::new(|s| s.damping = 2), DC_ERR_SPEC_MODEL),
-        (Box::new(|s| s.tangential = 3), DC_ERR_SPEC_MODEL),
-        (Box::new(|s| s.rolling = -1), DC_ERR_SPEC_MODEL),
-        (Box::new(|s| s.twisting = 2), DC_ERR_SPEC_MODEL),
-        (Box::new(|s| s.criterion = 2), DC_ERR_CRITERION),
-        (Box::new(|s| s.E1 = f64::NAN), DC_ERR_SPEC_UNSET),
-        (Box::new(|s| s.nu2 = f64::NAN), DC_ERR_SPEC_UNSET),
-        (Box::new(|s| s.E1 = -1.0), DC_ERR_NOT_POSITIVE),
-        (Box::new(|s| s.E1 = f64::NEG_INFINITY), DC_ERR_NOT_POSITIVE),
-        (Box::new(|s| s.nu1 = 0.6), DC_ERR_NOT_POSITIVE),
-        (Box::new(|s| s.nu1 = f64::INFINITY), DC_ERR_NOT_FINITE),
-        (
-            Box::new(|s| {
-                s.E1 = f64::INFINITY;
-                s.E2 = f64::INFINITY;
-            }),
-            DC_ERR_NOT_FINITE,
-        ),
-        (
-            Box::new(|s| s.damping = DC_DAMPING_RESTITUTION),
-            DC_ERR_SPEC_UNSET,
-        ),
-        (
-            Box::new(|s| {
-                s.damping = DC_DAMPING_RESTITUTION;
-                s.e_n = 1.5;
-            }),
-            DC_ERR_RESTITUTION_RANGE,
-        ),
-        (
-            Box::new(|s| {
-                s.damping = DC_DAMPING_RESTITUTION;
-                s.e_n = 0.0;
-            }),
-            DC_ERR_RESTITUTION_RANGE,
-        ),
-        (
-            Box::new(|s| s.tangential = DC_TANGENTIAL_LINEAR),
-            DC_ERR_SPEC_UNSET,
-        ),
-        (
-            Box::new(|s| {
-                s.tangential = DC_TANGENTIAL_LINEAR;
-                s.mu = 0.5;
-            }),
-            DC_ERR_SPEC_UNSET,
-        ),
-        (
-            Box::new(|s| {
-                s.tangential = DC_TANGENTIAL_LINEAR;
-                s.mu = 0.5;
-                s.k_t = 0.0;
-            }),
-            DC_ERR_NOT_POSITIVE,
-        ),
-        (
-            Box::new(|s| {
-                s.tangential = DC_TANGENTIAL_MINDLIN;
-                s.mu = -0.5;
-            }),
-            DC_ERR_NEGATIVE,
-        ),
-        (
-            Box::new(|s| {
-                s.tangential = DC_TANGENTIAL_MINDLIN;
-                s.mu = f64::INFINITY;
-            }),
-            DC_ERR_NOT_FINITE,
-        ),
-        (
-            Box::new(|s| {
-                s.tangential = DC_TANGENTIAL_MINDLIN;
-                s.mu = 0.5;
-                s.e_t = 0.0;
-            }),
-            DC_ERR_RESTITUTION_RANGE,
-        ),
-        (
-            Box::new(|s| s.rolling = DC_ROLLING_CONSTANT),
-            DC_ERR_SPEC_UNSET,
-        ),
-        (
-            Box::new(|s| {
-                s.rolling = DC_ROLLING_EPSD;
-                s.mu_r = 0.1;
-                s.k_r = -1.0;
-            }),
-            DC_ERR_NEGATIVE,
-        ),
-        (
-            Box::new(|s| {
-                s.rolling = DC_ROLLING_EPSD;
-                s.mu_r = 0.1;
-                s.eta_r = f64::NAN;
-            }),
-            DC_ERR_SPEC_UNSET,
-        ),
-        (
-            Box::new(|s| {
-                s.twisting = DC_TWISTING_SDS;
-                s.mu_tw = 0.1;
-            }),
-            DC_ERR_SPEC_UNSET,
-        ),
+    const INF: f64 = f64::INFINITY;
+    const NAN: f64 = f64::NAN;
+    let (restitution, linear, mindlin, epsd) = (
+        DC_DAMPING_RESTITUTION,
+        DC_TANGENTIAL_LINEAR,
+        DC_TANGENTIAL_MINDLIN,
+        DC_ROLLING_EPSD,
+    );
+    let (visco, powerlaw) = (DC_NORMAL_VISCOELASTIC, DC_NORMAL_POWERLAW);
+    #[rustfmt::skip]
+    let cases = edits![s: dc_contact_spec;
+        [version = 2] => DC_ERR_SPEC_VERSION,
+        [version = 0] => DC_ERR_SPEC_VERSION,
+        [size = s.size - 8] => DC_ERR_SPEC_VERSION,
+        [size = s.size + 8] => DC_ERR_SPEC_VERSION,
+        [normal = 99] => DC_ERR_SPEC_MODEL,
+        [damping = 2] => DC_ERR_SPEC_MODEL,
+        [tangential = 3] => DC_ERR_SPEC_MODEL,
+        [rolling = -1] => DC_ERR_SPEC_MODEL,
+        [twisting = 2] => DC_ERR_SPEC_MODEL,
+        [criterion = 2] => DC_ERR_CRITERION,
+        [E1 = NAN] => DC_ERR_SPEC_UNSET,
+        [nu2 = NAN] => DC_ERR_SPEC_UNSET,
+        [E1 = -1.0] => DC_ERR_NOT_POSITIVE,
+        [E1 = -INF] => DC_ERR_NOT_POSITIVE,
+        [nu1 = 0.6] => DC_ERR_NOT_POSITIVE,
+        [nu1 = INF] => DC_ERR_NOT_FINITE,
+        [E1 = INF, E2 = INF] => DC_ERR_NOT_FINITE,
+        [damping = restitution] => DC_ERR_SPEC_UNSET,
+        [damping = restitution, e_n = 1.5] => DC_ERR_RESTITUTION_RANGE,
+        [damping = restitution, e_n = 0.0] => DC_ERR_RESTITUTION_RANGE,
+        [tangential = linear] => DC_ERR_SPEC_UNSET,
+        [tangential = linear, mu = 0.5] => DC_ERR_SPEC_UNSET,
+        [tangential = linear, mu = 0.5, k_t = 0.0] => DC_ERR_NOT_POSITIVE,
+        [tangential = mindlin, mu = -0.5] => DC_ERR_NEGATIVE,
+        [tangential = mindlin, mu = INF] => DC_ERR_NOT_FINITE,
+        [tangential = mindlin, mu = 0.5, e_t = 0.0] => DC_ERR_RESTITUTION_RANGE,
+        [rolling = DC_ROLLING_CONSTANT] => DC_ERR_SPEC_UNSET,
+        [rolling = epsd, mu_r = 0.1, k_r = -1.0] => DC_ERR_NEGATIVE,
+        [rolling = epsd, mu_r = 0.1, eta_r = NAN] => DC_ERR_SPEC_UNSET,
+        [twisting = DC_TWISTING_SDS, mu_tw = 0.1] => DC_ERR_SPEC_UNSET,
         // Found by fuzzing: a subnormal E gives kf = 0 (compliance overflows); the model was
         // accepted and then refused by every force call.
-        (Box::new(|s| s.E1 = 1e-320), DC_ERR_RESULT_RANGE),
-        (
-            Box::new(|s| {
-                s.normal = DC_NORMAL_LINEAR;
-                s.k_n = 1e6;
-                s.tangential = DC_TANGENTIAL_MINDLIN;
-                s.mu = 0.3;
-                s.E2 = 1e-320;
-            }),
-            DC_ERR_RESULT_RANGE,
-        ),
-        (Box::new(|s| s.inertia_factor = 0.0), DC_ERR_NOT_POSITIVE),
-        (Box::new(|s| s.inertia_factor = 1.5), DC_ERR_SPEC_MODEL),
-        (
-            Box::new(|s| {
-                s.normal = DC_NORMAL_VISCOELASTIC;
-                s.visco_A = 1e-6;
-                s.damping = DC_DAMPING_RESTITUTION;
-                s.e_n = 0.5;
-            }),
-            DC_ERR_SPEC_MODEL,
-        ),
-        (
-            Box::new(|s| s.normal = DC_NORMAL_VISCOELASTIC),
-            DC_ERR_SPEC_UNSET,
-        ),
-        (
-            Box::new(|s| {
-                s.normal = DC_NORMAL_VISCOELASTIC;
-                s.visco_A = -1.0;
-            }),
-            DC_ERR_NEGATIVE,
-        ),
-        (
-            Box::new(|s| s.normal = DC_NORMAL_POWERLAW),
-            DC_ERR_SPEC_UNSET,
-        ),
-        (
-            Box::new(|s| {
-                s.normal = DC_NORMAL_POWERLAW;
-                s.p = 0.5;
-                s.k_n = 1e6;
-            }),
-            DC_ERR_EXPONENT_RANGE,
-        ),
-        (
-            Box::new(|s| {
-                s.normal = DC_NORMAL_LINEAR;
-                s.k_n = -1e6;
-            }),
-            DC_ERR_NOT_POSITIVE,
-        ),
+        [E1 = 1e-320] => DC_ERR_RESULT_RANGE,
+        [normal = DC_NORMAL_LINEAR, k_n = 1e6, tangential = mindlin, mu = 0.3, E2 = 1e-320]
+            => DC_ERR_RESULT_RANGE,
+        [inertia_factor = 0.0] => DC_ERR_NOT_POSITIVE,
+        [inertia_factor = 1.5] => DC_ERR_SPEC_MODEL,
+        [normal = visco, visco_A = 1e-6, damping = restitution, e_n = 0.5] => DC_ERR_SPEC_MODEL,
+        [normal = visco] => DC_ERR_SPEC_UNSET,
+        [normal = visco, visco_A = -1.0] => DC_ERR_NEGATIVE,
+        [normal = powerlaw] => DC_ERR_SPEC_UNSET,
+        [normal = powerlaw, p = 0.5, k_n = 1e6] => DC_ERR_EXPONENT_RANGE,
+        [normal = DC_NORMAL_LINEAR, k_n = -1e6] => DC_ERR_NOT_POSITIVE,
+        // Valid: a rigid wall, each normal law, parameters of unchosen sub-models ignored.
+        [E2 = INF] => DC_OK,
+        [normal = powerlaw, p = 1.7, k_n = 1e6, E1 = NAN] => DC_OK,
+        [normal = DC_NORMAL_LINEAR, k_n = 1e6, tangential = mindlin, mu = 0.2] => DC_OK,
+        [normal = visco, visco_A = 1e-6, mu_r = -5.0] => DC_OK,
     ];
     for (i, (edit, want)) in cases.iter().enumerate() {
         let mut s = base;
         edit(&mut s);
         assert_eq!(init(&s).0, *want, "case {i}");
     }
-    // Valid: a rigid wall, each normal law, parameters of unchosen sub-models ignored.
-    for edit in [
-        Box::new(|s: &mut dc_contact_spec| s.E2 = f64::INFINITY)
-            as Box<dyn Fn(&mut dc_contact_spec)>,
-        Box::new(|s| {
-            s.normal = DC_NORMAL_POWERLAW;
-            s.p = 1.7;
-            s.k_n = 1e6;
-            s.E1 = f64::NAN;
-        }),
-        Box::new(|s| {
-            s.normal = DC_NORMAL_LINEAR;
-            s.k_n = 1e6;
-            s.tangential = DC_TANGENTIAL_MINDLIN;
-            s.mu = 0.2;
-        }),
-        Box::new(|s| {
-            s.normal = DC_NORMAL_VISCOELASTIC;
-            s.visco_A = 1e-6;
-            s.mu_r = -5.0;
-        }),
-    ] {
-        let mut s = base;
-        edit(&mut s);
-        assert_eq!(init(&s).0, DC_OK);
-    }
     let mut m: dc_contact_model = unsafe { std::mem::zeroed() };
-    assert_eq!(
+    let null_cases = [
         unsafe { dc_contact_model_init(std::ptr::null(), &mut m) },
-        DC_ERR_NULL_POINTER
-    );
-    assert_eq!(
         unsafe { dc_contact_model_init(&base, std::ptr::null_mut()) },
-        DC_ERR_NULL_POINTER
-    );
+    ];
+    assert_eq!(null_cases, [DC_ERR_NULL_POINTER; 2]);
 }
 
 #[test]
@@ -376,21 +243,27 @@ fn history_len_per_model_and_invalid_models() {
     let good = all_models()[20];
     let zero: dc_contact_model = unsafe { std::mem::zeroed() };
     assert_eq!(len(&zero), (DC_ERR_CONTACT_MODEL_INVALID, 999));
-    let edits: Vec<Box<dyn Fn(&mut dc_contact_model)>> = vec![
-        Box::new(|m| m.magic ^= 1),
-        Box::new(|m| m.history_len += 1),
-        Box::new(|m| m.tangential = 7),
-        Box::new(|m| m.normal.kernel = 0),
-        Box::new(|m| m.normal.clamp ^= 1),
-        Box::new(|m| m.mu = f64::NAN),
-        Box::new(|m| m.kt = -1.0),
-        Box::new(|m| m.kappa = 0.0),
-        Box::new(|m| m.reserved[3] = 1.0),
+    const INVALID: i32 = DC_ERR_CONTACT_MODEL_INVALID;
+    #[rustfmt::skip]
+    let edits = edits![m: dc_contact_model;
+        [magic = m.magic ^ 1] => INVALID,
+        [history_len = m.history_len + 1] => INVALID,
+        [tangential = 7] => INVALID,
+        [normal.kernel = 0] => INVALID,
+        [normal.clamp = m.normal.clamp ^ 1] => INVALID,
+        [mu = f64::NAN] => INVALID,
+        [kt = -1.0] => INVALID,
+        [kappa = 0.0] => INVALID,
+        [reserved[3] = 1.0] => INVALID,
+        [kt = 0.0] => INVALID,
+        [normal.k = f64::INFINITY] => INVALID,
+        [eta_tw = -1.0] => INVALID,
+        [rolling = 9] => INVALID,
     ];
-    for (i, e) in edits.iter().enumerate() {
+    for (i, (e, want)) in edits.iter().enumerate() {
         let mut m = good;
         e(&mut m);
-        assert_eq!(len(&m).0, DC_ERR_CONTACT_MODEL_INVALID, "edit {i}");
+        assert_eq!(len(&m).0, *want, "edit {i}");
         let st = states()[0];
         let mut h = [0.0; DC_CONTACT_HISTORY_MAX];
         let mut r = sentinel_res();
@@ -399,14 +272,11 @@ fn history_len_per_model_and_invalid_models() {
         assert_eq!(r, sentinel_res());
     }
     let mut l = 0usize;
-    assert_eq!(
+    let null_cases = [
         unsafe { dc_contact_history_len(std::ptr::null(), &mut l) },
-        DC_ERR_NULL_POINTER
-    );
-    assert_eq!(
         unsafe { dc_contact_history_len(&good, std::ptr::null_mut()) },
-        DC_ERR_NULL_POINTER
-    );
+    ];
+    assert_eq!(null_cases, [DC_ERR_NULL_POINTER; 2]);
 }
 
 #[test]
@@ -472,29 +342,26 @@ fn force_statuses_leave_outputs_and_history_untouched() {
     assert_eq!(run(&good, 0.0, 10), DC_ERR_NOT_POSITIVE);
     assert_eq!(run(&good, f64::NAN, 10), DC_ERR_NOT_FINITE);
     assert_eq!(run(&good, f64::INFINITY, 10), DC_ERR_NOT_FINITE);
-    let edits: Vec<(Box<dyn Fn(&mut dc_contact_state)>, i32)> = vec![
-        (Box::new(|s| s.n[1] = f64::NAN), DC_ERR_NOT_FINITE),
-        (Box::new(|s| s.n = [1.0, 1e-2, 0.0]), DC_ERR_NOT_UNIT),
-        (Box::new(|s| s.n = [0.0; 3]), DC_ERR_NOT_UNIT),
-        (Box::new(|s| s.overlap = f64::INFINITY), DC_ERR_NOT_FINITE),
-        (Box::new(|s| s.v1[2] = f64::NAN), DC_ERR_NOT_FINITE),
-        (Box::new(|s| s.v2[0] = f64::INFINITY), DC_ERR_NOT_FINITE),
-        (Box::new(|s| s.w1[0] = f64::NEG_INFINITY), DC_ERR_NOT_FINITE),
-        (Box::new(|s| s.w2[1] = f64::NAN), DC_ERR_NOT_FINITE),
-        (Box::new(|s| s.r1 = f64::INFINITY), DC_ERR_NOT_FINITE),
-        (Box::new(|s| s.m1 = f64::INFINITY), DC_ERR_NOT_FINITE),
-        (Box::new(|s| s.r2 = f64::NAN), DC_ERR_NOT_FINITE),
-        (Box::new(|s| s.m2 = f64::NEG_INFINITY), DC_ERR_NOT_FINITE),
-        (Box::new(|s| s.r1 = 0.0), DC_ERR_NOT_POSITIVE),
-        (Box::new(|s| s.m2 = -1.0), DC_ERR_NOT_POSITIVE),
-        (Box::new(|s| s.r2 = -0.0), DC_ERR_NOT_POSITIVE),
-        (
-            Box::new(|s| {
-                s.overlap = 1e300;
-                s.v1 = [1e300, 0.0, 0.0];
-            }),
-            DC_ERR_RESULT_RANGE,
-        ),
+    const INF: f64 = f64::INFINITY;
+    const NAN: f64 = f64::NAN;
+    #[rustfmt::skip]
+    let edits = edits![s: dc_contact_state;
+        [n[1] = NAN] => DC_ERR_NOT_FINITE,
+        [n = [1.0, 1e-2, 0.0]] => DC_ERR_NOT_UNIT,
+        [n = [0.0; 3]] => DC_ERR_NOT_UNIT,
+        [overlap = INF] => DC_ERR_NOT_FINITE,
+        [v1[2] = NAN] => DC_ERR_NOT_FINITE,
+        [v2[0] = INF] => DC_ERR_NOT_FINITE,
+        [w1[0] = -INF] => DC_ERR_NOT_FINITE,
+        [w2[1] = NAN] => DC_ERR_NOT_FINITE,
+        [r1 = INF] => DC_ERR_NOT_FINITE,
+        [m1 = INF] => DC_ERR_NOT_FINITE,
+        [r2 = NAN] => DC_ERR_NOT_FINITE,
+        [m2 = -INF] => DC_ERR_NOT_FINITE,
+        [r1 = 0.0] => DC_ERR_NOT_POSITIVE,
+        [m2 = -1.0] => DC_ERR_NOT_POSITIVE,
+        [r2 = -0.0] => DC_ERR_NOT_POSITIVE,
+        [overlap = 1e300, v1 = [1e300, 0.0, 0.0]] => DC_ERR_RESULT_RANGE,
     ];
     for (i, (e, want)) in edits.iter().enumerate() {
         let mut st = good;
@@ -519,8 +386,10 @@ fn force_statuses_leave_outputs_and_history_untouched() {
     ];
     assert_eq!(null_cases, [DC_ERR_NULL_POINTER; 4]);
     // Misaligned history.
-    let mut buf = [0u8; 8 * 12];
-    let p = unsafe { buf.as_mut_ptr().add(1) }.cast::<f64>();
+    // The base is an f64 array so that one byte past it is misaligned on every run: a u8 array
+    // may itself start one byte before an 8-byte boundary (Miri picks such addresses).
+    let mut buf = [0.0f64; 12];
+    let p = unsafe { buf.as_mut_ptr().cast::<u8>().add(1) }.cast::<f64>();
     assert_eq!(
         unsafe { dc_contact_force(&m, &good, 1e-7, p, 10, &mut r) },
         DC_ERR_BUFFER_LAYOUT
@@ -547,7 +416,7 @@ fn separation_resets_history_and_gives_zero() {
             unsafe { dc_contact_force(&m, &st, 1e-6, h.as_mut_ptr(), 10, &mut r) },
             DC_OK
         );
-        assert_eq!(r, ZERO_RES);
+        assert_eq!(r, ZERO_RESULT);
         assert_eq!(h, [0.0; DC_CONTACT_HISTORY_MAX]);
     }
 }
@@ -567,6 +436,41 @@ struct Soa {
     r2: Vec<f64>,
     m1: Vec<f64>,
     m2: Vec<f64>,
+}
+
+impl Soa {
+    /// The batch over these inputs with the given history (pointer, stride) and outputs. The
+    /// outputs are taken as Vecs: `Vec::as_mut_ptr` makes no reference to the elements, so the
+    /// pointers stay valid under Miri while the test reads the Vecs between calls.
+    #[allow(clippy::ptr_arg)]
+    fn batch(
+        &self,
+        history: (*mut f64, usize),
+        f_n: &mut Vec<f64>,
+        force: &mut Vec<f64>,
+        t1: &mut Vec<f64>,
+        t2: &mut Vec<f64>,
+    ) -> dc_contact_batch {
+        dc_contact_batch {
+            n: self.d.len(),
+            history_stride: history.1,
+            normal: self.n.as_ptr(),
+            overlap: self.d.as_ptr(),
+            v1: self.v1.as_ptr(),
+            v2: self.v2.as_ptr(),
+            w1: self.w1.as_ptr(),
+            w2: self.w2.as_ptr(),
+            r1: self.r1.as_ptr(),
+            r2: self.r2.as_ptr(),
+            m1: self.m1.as_ptr(),
+            m2: self.m2.as_ptr(),
+            history: history.0,
+            f_n: f_n.as_mut_ptr(),
+            force: force.as_mut_ptr(),
+            torque1: t1.as_mut_ptr(),
+            torque2: t2.as_mut_ptr(),
+        }
+    }
 }
 
 fn soa(st: &[dc_contact_state]) -> Soa {
@@ -610,25 +514,13 @@ fn batch_equals_scalar_bit_for_bit() {
                 vec![9.0; 3 * nc],
                 vec![9.0; 3 * nc],
             );
-            let b = dc_contact_batch {
-                n: nc,
-                history_stride: stride,
-                normal: a.n.as_ptr(),
-                overlap: a.d.as_ptr(),
-                v1: a.v1.as_ptr(),
-                v2: a.v2.as_ptr(),
-                w1: a.w1.as_ptr(),
-                w2: a.w2.as_ptr(),
-                r1: a.r1.as_ptr(),
-                r2: a.r2.as_ptr(),
-                m1: a.m1.as_ptr(),
-                m2: a.m2.as_ptr(),
-                history: hb.as_mut_ptr(),
-                f_n: f_n.as_mut_ptr(),
-                force: force.as_mut_ptr(),
-                torque1: t1.as_mut_ptr(),
-                torque2: t2.as_mut_ptr(),
-            };
+            let b = a.batch(
+                (hb.as_mut_ptr(), stride),
+                &mut f_n,
+                &mut force,
+                &mut t1,
+                &mut t2,
+            );
             assert_eq!(unsafe { dc_contact_force_batch(&m, &b, 1e-6) }, DC_OK);
             for (i, w) in want.iter().enumerate() {
                 assert_eq!(f_n[i].to_bits(), w.f_n.to_bits(), "step {step} contact {i}");
@@ -681,30 +573,7 @@ fn batch_statuses_leave_everything_untouched() {
         vec![5.0; 3 * nc],
         vec![0.5; 10 * nc],
     );
-    let mk = |f_n: &mut Vec<f64>,
-              force: &mut Vec<f64>,
-              t1: &mut Vec<f64>,
-              t2: &mut Vec<f64>,
-              h: &mut Vec<f64>| dc_contact_batch {
-        n: nc,
-        history_stride: 10,
-        normal: a.n.as_ptr(),
-        overlap: a.d.as_ptr(),
-        v1: a.v1.as_ptr(),
-        v2: a.v2.as_ptr(),
-        w1: a.w1.as_ptr(),
-        w2: a.w2.as_ptr(),
-        r1: a.r1.as_ptr(),
-        r2: a.r2.as_ptr(),
-        m1: a.m1.as_ptr(),
-        m2: a.m2.as_ptr(),
-        history: h.as_mut_ptr(),
-        f_n: f_n.as_mut_ptr(),
-        force: force.as_mut_ptr(),
-        torque1: t1.as_mut_ptr(),
-        torque2: t2.as_mut_ptr(),
-    };
-    let base = mk(&mut f_n, &mut force, &mut t1, &mut t2, &mut h);
+    let base = a.batch((h.as_mut_ptr(), 10), &mut f_n, &mut force, &mut t1, &mut t2);
     let bad_n = {
         let mut v = a.n.clone();
         v[4] = f64::NAN;
@@ -722,69 +591,29 @@ fn batch_statuses_leave_everything_untouched() {
     };
     let misaligned = vec![0.0f64; 3 * nc + 1];
     let mis_ptr = unsafe { misaligned.as_ptr().cast::<u8>().add(4).cast::<f64>() };
-    let cases: Vec<(Box<dyn Fn(&mut dc_contact_batch)>, i32, &dc_contact_model)> = vec![
-        (Box::new(|b| b.n = 0), DC_ERR_BUFFER_TOO_SHORT, &m),
-        (
-            Box::new(|b| b.history_stride = 9),
-            DC_ERR_BUFFER_TOO_SHORT,
-            &m,
-        ),
-        (
-            Box::new(|b| b.normal = std::ptr::null()),
-            DC_ERR_NULL_POINTER,
-            &m,
-        ),
-        (
-            Box::new(|b| b.w1 = std::ptr::null()),
-            DC_ERR_NULL_POINTER,
-            &m,
-        ),
-        (
-            Box::new(|b| b.torque2 = std::ptr::null_mut()),
-            DC_ERR_NULL_POINTER,
-            &m,
-        ),
-        (
-            Box::new(|b| b.history = std::ptr::null_mut()),
-            DC_ERR_NULL_POINTER,
-            &m,
-        ),
-        (
-            Box::new(|b| b.f_n = std::ptr::null_mut()),
-            DC_ERR_NULL_POINTER,
-            &m,
-        ),
-        (Box::new(|b| b.n = usize::MAX / 2), DC_ERR_BUFFER_LAYOUT, &m),
-        (Box::new(|b| b.torque1 = b.force), DC_ERR_BUFFER_LAYOUT, &m),
-        (
-            Box::new(|b| b.f_n = b.overlap.cast_mut()),
-            DC_ERR_BUFFER_LAYOUT,
-            &m,
-        ),
-        (
-            Box::new(|b| b.history = unsafe { b.torque2.add(1) }),
-            DC_ERR_BUFFER_LAYOUT,
-            &m,
-        ),
-        (Box::new(move |b| b.v2 = mis_ptr), DC_ERR_BUFFER_LAYOUT, &m),
-        (
-            Box::new(|b| b.normal = bad_n.as_ptr()),
-            DC_ERR_NOT_FINITE,
-            &m,
-        ),
-        (
-            Box::new(|b| b.normal = bad_unit.as_ptr()),
-            DC_ERR_NOT_UNIT,
-            &m,
-        ),
-        (Box::new(|b| b.r1 = bad_r.as_ptr()), DC_ERR_NOT_POSITIVE, &m),
-        (
-            Box::new(|b| b.normal = bad_n.as_ptr()),
-            DC_ERR_NOT_FINITE,
-            &normal_only,
-        ),
+    let null = std::ptr::null_mut::<f64>();
+    let (short, layout) = (DC_ERR_BUFFER_TOO_SHORT, DC_ERR_BUFFER_LAYOUT);
+    #[rustfmt::skip]
+    let cases = edits![b: dc_contact_batch;
+        [n = 0] => (short, &m),
+        [history_stride = 9] => (short, &m),
+        [normal = null] => (DC_ERR_NULL_POINTER, &m),
+        [w1 = null] => (DC_ERR_NULL_POINTER, &m),
+        [torque2 = null] => (DC_ERR_NULL_POINTER, &m),
+        [history = null] => (DC_ERR_NULL_POINTER, &m),
+        [f_n = null] => (DC_ERR_NULL_POINTER, &m),
+        [n = usize::MAX / 2] => (layout, &m),
+        [torque1 = b.force] => (layout, &m),
+        [f_n = b.overlap.cast_mut()] => (layout, &m),
+        [history = unsafe { b.torque2.add(1) }] => (layout, &m),
+        [v2 = mis_ptr] => (layout, &m),
+        [normal = bad_n.as_ptr()] => (DC_ERR_NOT_FINITE, &m),
+        [normal = bad_unit.as_ptr()] => (DC_ERR_NOT_UNIT, &m),
+        [r1 = bad_r.as_ptr()] => (DC_ERR_NOT_POSITIVE, &m),
+        [normal = bad_n.as_ptr()] => (DC_ERR_NOT_FINITE, &normal_only),
     ];
-    for (i, (e, want, model)) in cases.iter().enumerate() {
+    let mut bad = 77usize;
+    for (i, (e, (want, model))) in cases.iter().enumerate() {
         let mut b = base;
         e(&mut b);
         assert_eq!(
@@ -792,19 +621,42 @@ fn batch_statuses_leave_everything_untouched() {
             *want,
             "case {i}"
         );
+        // The fused batch: the same call-level statuses, nothing written (per-contact
+        // statuses are its own test).
+        if [
+            DC_ERR_BUFFER_TOO_SHORT,
+            DC_ERR_NULL_POINTER,
+            DC_ERR_BUFFER_LAYOUT,
+        ]
+        .contains(want)
+        {
+            assert_eq!(
+                unsafe { dc_contact_force_batch_fused(*model, &b, 1e-7, &mut bad) },
+                *want,
+                "fused case {i}"
+            );
+        }
     }
     for dt in [0.0, -1.0, f64::NAN] {
         let s = unsafe { dc_contact_force_batch(&m, &base, dt) };
         assert!(s == DC_ERR_NOT_POSITIVE || s == DC_ERR_NOT_FINITE);
+        let s = unsafe { dc_contact_force_batch_fused(&m, &base, dt, &mut bad) };
+        assert!(s == DC_ERR_NOT_POSITIVE || s == DC_ERR_NOT_FINITE);
     }
     assert_eq!(
-        unsafe { dc_contact_force_batch(std::ptr::null(), &base, 1e-7) },
+        unsafe { dc_contact_force_batch_fused(std::ptr::null(), &base, 1e-7, &mut bad) },
         DC_ERR_NULL_POINTER
     );
     assert_eq!(
-        unsafe { dc_contact_force_batch(&m, std::ptr::null(), 1e-7) },
+        unsafe { dc_contact_force_batch_fused(&m, std::ptr::null(), 1e-7, &mut bad) },
         DC_ERR_NULL_POINTER
     );
+    assert_eq!(bad, 77, "first_bad written on a call-level error");
+    let null_cases = [
+        unsafe { dc_contact_force_batch(std::ptr::null(), &base, 1e-7) },
+        unsafe { dc_contact_force_batch(&m, std::ptr::null(), 1e-7) },
+    ];
+    assert_eq!(null_cases, [DC_ERR_NULL_POINTER; 2]);
     assert!(
         f_n.iter()
             .chain(&force)
@@ -830,6 +682,14 @@ fn batch_statuses_leave_everything_untouched() {
 #[test]
 fn spheres_helper_equals_state_form() {
     for m in all_models().into_iter().step_by(5) {
+        // dc_contact_force_spheres of this model at dt = 1e-6, with a history of 10 doubles.
+        let spheres = |a: *const f64,
+                       b: *const f64,
+                       st: &dc_contact_state,
+                       h: &mut [f64; 10],
+                       r: &mut dc_contact_result| unsafe {
+            dc_contact_force_spheres(&m, a, b, st, 1e-6, h.as_mut_ptr(), 10, r)
+        };
         let x1: [f64; 3] = [0.1, 0.2, 0.3];
         let x2 = [0.1 + 2.9e-3 * 0.6, 0.2 - 2.9e-3 * 0.8, 0.3];
         let mut st = states()[0];
@@ -838,18 +698,7 @@ fn spheres_helper_equals_state_form() {
         let (mut h1, mut h2) = ([0.0; 10], [0.0; 10]);
         let (mut r1, mut r2) = (sentinel_res(), sentinel_res());
         assert_eq!(
-            unsafe {
-                dc_contact_force_spheres(
-                    &m,
-                    x1.as_ptr(),
-                    x2.as_ptr(),
-                    &st,
-                    1e-6,
-                    h1.as_mut_ptr(),
-                    10,
-                    &mut r1,
-                )
-            },
+            spheres(x1.as_ptr(), x2.as_ptr(), &st, &mut h1, &mut r1),
             DC_OK
         );
         st.n = [d[0] / dist, d[1] / dist, d[2] / dist];
@@ -861,55 +710,241 @@ fn spheres_helper_equals_state_form() {
         );
         assert_eq!(r1, r2);
         assert_eq!(h1, h2);
-        // Walls and coincident centres are refused.
+        // Walls, coincident centres and a NULL centre are refused.
         let mut wall = st;
         wall.r2 = f64::INFINITY;
         let mut r = sentinel_res();
-        assert_eq!(
-            unsafe {
-                dc_contact_force_spheres(
-                    &m,
-                    x1.as_ptr(),
-                    x2.as_ptr(),
-                    &wall,
-                    1e-6,
-                    h1.as_mut_ptr(),
-                    10,
-                    &mut r,
-                )
-            },
-            DC_ERR_NOT_FINITE
-        );
-        assert_eq!(
-            unsafe {
-                dc_contact_force_spheres(
-                    &m,
-                    x1.as_ptr(),
-                    x1.as_ptr(),
-                    &st,
-                    1e-6,
-                    h1.as_mut_ptr(),
-                    10,
-                    &mut r,
-                )
-            },
-            DC_ERR_NOT_POSITIVE
-        );
-        assert_eq!(
-            unsafe {
-                dc_contact_force_spheres(
-                    &m,
-                    std::ptr::null(),
-                    x1.as_ptr(),
-                    &st,
-                    1e-6,
-                    h1.as_mut_ptr(),
-                    10,
-                    &mut r,
-                )
-            },
-            DC_ERR_NULL_POINTER
-        );
+        let refused = [
+            (x1.as_ptr(), x2.as_ptr(), &wall, DC_ERR_NOT_FINITE),
+            (x1.as_ptr(), x1.as_ptr(), &st, DC_ERR_NOT_POSITIVE),
+            (std::ptr::null(), x1.as_ptr(), &st, DC_ERR_NULL_POINTER),
+        ];
+        for (a, b, s, want) in refused {
+            assert_eq!(spheres(a, b, s, &mut h1, &mut r), want);
+        }
         assert_eq!(r, sentinel_res());
     }
+}
+
+/// `nc` states cycling through [`states`], each with its velocities and spins scaled a little
+/// differently (so no two contacts are equal).
+fn many_states(nc: usize) -> Vec<dc_contact_state> {
+    let base = states();
+    (0..nc)
+        .map(|i| {
+            let mut s = base[i % base.len()];
+            let f = 1.0 + 1e-3 * i as f64;
+            for k in 0..3 {
+                s.v1[k] *= f;
+                s.w2[k] *= f;
+            }
+            s
+        })
+        .collect()
+}
+
+struct Outs {
+    f_n: Vec<f64>,
+    force: Vec<f64>,
+    t1: Vec<f64>,
+    t2: Vec<f64>,
+}
+
+/// One batch call over `a` (checked or fused), outputs prefilled with 5.0.
+fn call(
+    m: &dc_contact_model,
+    a: &Soa,
+    h: &mut [f64],
+    stride: usize,
+    fused: Option<&mut usize>,
+) -> (i32, Outs) {
+    let nc = a.d.len();
+    let mut o = Outs {
+        f_n: vec![5.0; nc],
+        force: vec![5.0; 3 * nc],
+        t1: vec![5.0; 3 * nc],
+        t2: vec![5.0; 3 * nc],
+    };
+    let b = dc_contact_batch {
+        n: nc,
+        history_stride: stride,
+        normal: a.n.as_ptr(),
+        overlap: a.d.as_ptr(),
+        v1: a.v1.as_ptr(),
+        v2: a.v2.as_ptr(),
+        w1: a.w1.as_ptr(),
+        w2: a.w2.as_ptr(),
+        r1: a.r1.as_ptr(),
+        r2: a.r2.as_ptr(),
+        m1: a.m1.as_ptr(),
+        m2: a.m2.as_ptr(),
+        history: h.as_mut_ptr(),
+        f_n: o.f_n.as_mut_ptr(),
+        force: o.force.as_mut_ptr(),
+        torque1: o.t1.as_mut_ptr(),
+        torque2: o.t2.as_mut_ptr(),
+    };
+    let s = match fused {
+        Some(bad) => unsafe { dc_contact_force_batch_fused(m, &b, 1e-6, bad) },
+        None => unsafe { dc_contact_force_batch(m, &b, 1e-6) },
+    };
+    (s, o)
+}
+
+fn same_bits(a: &[f64], b: &[f64]) -> bool {
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
+}
+
+/// The fused batch equals the checked batch bit for bit (outputs and history) over several
+/// blocks (two full blocks of 1024 contacts and a partial one) and 3 steps, for every model.
+#[test]
+fn fused_batch_equals_checked_bit_for_bit() {
+    // Under Miri (a UB check, ~10^5 times slower) one partial block of 40 contacts and every
+    // 18th model: the sub-slicing and the per-block path, not the block boundaries.
+    let (nc, every) = if cfg!(miri) { (40, 18) } else { (2085, 1) };
+    let a = soa(&many_states(nc));
+    let stride = 11;
+    for m in all_models().into_iter().step_by(every) {
+        let mut hc = vec![0.0f64; nc * stride];
+        let mut hf = hc.clone();
+        for step in 0..3 {
+            let (sc, oc) = call(&m, &a, &mut hc, stride, None);
+            let mut bad = 77usize;
+            let (sf, of) = call(&m, &a, &mut hf, stride, Some(&mut bad));
+            let what = (step, m.tangential, m.rolling, m.twisting);
+            assert_eq!((sc, sf, bad), (DC_OK, DC_OK, 77), "{what:?}");
+            assert!(same_bits(&oc.f_n, &of.f_n), "f_n {what:?}");
+            assert!(same_bits(&oc.force, &of.force), "force {what:?}");
+            assert!(same_bits(&oc.t1, &of.t1), "t1 {what:?}");
+            assert!(same_bits(&oc.t2, &of.t2), "t2 {what:?}");
+            assert!(same_bits(&hc, &hf), "history {what:?}");
+        }
+    }
+}
+
+/// Bad contacts in the fused batch: the first one's status and index are reported, every bad
+/// contact's outputs are NaN and its history untouched, and every good contact equals
+/// dc_contact_force on its own (bit for bit), also in the blocks that hold a bad contact.
+#[test]
+#[cfg_attr(
+    miri,
+    ignore = "2 x 1030 scalar calls plus batches take over 10 min under Miri; the same pointer paths run in fused_batch_equals_checked_bit_for_bit and batch_statuses_leave_everything_untouched"
+)]
+fn fused_batch_poisons_bad_contacts_and_names_the_first() {
+    let models = all_models();
+    // The full model (blocks) and a normal-only one (one fused loop).
+    poisoned(models.iter().find(|m| m.history_len == 10).unwrap());
+    poisoned(&models[0]);
+}
+
+fn poisoned(m: &dc_contact_model) {
+    let nc = 1030;
+    let st = many_states(nc);
+    let stride = 10;
+    // (index, how it is broken, the status dc_contact_force gives it)
+    let mut a = soa(&st);
+    let mut h = vec![0.0f64; nc * stride];
+    a.r1[1023] = -1.0; // not positive
+    a.n[3 * 7] = 1.1; // not unit
+    a.v2[3 * 9 + 1] = f64::INFINITY; // not finite
+    h[1024 * stride + 4] = f64::NAN; // history not finite
+    // A model without history does not read it: contact 1024 is then good.
+    let hist = m.history_len > 0;
+    let bad_at: &[usize] = if hist {
+        &[7, 9, 1023, 1024]
+    } else {
+        &[7, 9, 1023]
+    };
+    // The reference: each good contact alone through dc_contact_force, from the same history.
+    let h0 = h.clone();
+    let mut want = Vec::new();
+    for (i, s) in st.iter().enumerate() {
+        let mut hs = h0[i * stride..(i + 1) * stride].to_vec();
+        let mut r = sentinel_res();
+        let st_i = dc_contact_state {
+            n: [a.n[3 * i], a.n[3 * i + 1], a.n[3 * i + 2]],
+            v2: [a.v2[3 * i], a.v2[3 * i + 1], a.v2[3 * i + 2]],
+            r1: a.r1[i],
+            ..*s
+        };
+        let code = unsafe { dc_contact_force(m, &st_i, 1e-6, hs.as_mut_ptr(), stride, &mut r) };
+        assert_eq!(code != DC_OK, bad_at.contains(&i), "contact {i}: {code}");
+        want.push((code, r, hs));
+    }
+    let mut bad = 77usize;
+    let (s, o) = call(m, &a, &mut h, stride, Some(&mut bad));
+    assert_eq!((s, bad), (DC_ERR_NOT_UNIT, 7));
+    assert_eq!(want[7].0, DC_ERR_NOT_UNIT);
+    for (i, (code, r, hs)) in want.iter().enumerate() {
+        let hb = &h[i * stride..(i + 1) * stride];
+        if *code != DC_OK {
+            assert!(o.f_n[i].is_nan(), "{i}");
+            for k in 0..3 {
+                assert!(o.force[3 * i + k].is_nan() && o.t1[3 * i + k].is_nan());
+                assert!(o.t2[3 * i + k].is_nan());
+            }
+            assert!(same_bits(hb, &h0[i * stride..(i + 1) * stride]), "{i}");
+        } else {
+            assert_eq!(o.f_n[i].to_bits(), r.f_n.to_bits(), "{i}");
+            assert!(same_bits(&o.force[3 * i..3 * i + 3], &r.force), "{i}");
+            assert!(same_bits(&o.t1[3 * i..3 * i + 3], &r.torque1), "{i}");
+            assert!(same_bits(&o.t2[3 * i..3 * i + 3], &r.torque2), "{i}");
+            assert!(same_bits(hb, hs), "history {i}");
+        }
+    }
+    // Statuses of the other kinds of bad contact, each first: history, radius, infinity.
+    for (fix, want_i, want_s) in [
+        (7usize, 9usize, DC_ERR_NOT_FINITE),
+        (9, 1023, DC_ERR_NOT_POSITIVE),
+        (1023, 1024, DC_ERR_NOT_FINITE),
+    ]
+    .into_iter()
+    .take(if hist { 3 } else { 2 })
+    {
+        let b = soa(&st);
+        match fix {
+            7 => a.n[3 * 7] = b.n[3 * 7],
+            9 => a.v2[3 * 9 + 1] = b.v2[3 * 9 + 1],
+            _ => a.r1[1023] = b.r1[1023],
+        }
+        let mut hh = h0.clone();
+        let mut bad = 77usize;
+        let (s, o) = call(m, &a, &mut hh, stride, Some(&mut bad));
+        assert_eq!((s, bad), (want_s, want_i));
+        assert!(o.f_n[want_i].is_nan() && !o.f_n[0].is_nan());
+    }
+    // NULL first_bad: the status alone.
+    a.r1[1023] = soa(&st).r1[1023];
+    let mut hh = h0.clone();
+    let nc = a.d.len();
+    let (mut f_n, mut force, mut t1, mut t2) = (
+        vec![0.0; nc],
+        vec![0.0; 3 * nc],
+        vec![0.0; 3 * nc],
+        vec![0.0; 3 * nc],
+    );
+    let b = dc_contact_batch {
+        n: nc,
+        history_stride: stride,
+        normal: a.n.as_ptr(),
+        overlap: a.d.as_ptr(),
+        v1: a.v1.as_ptr(),
+        v2: a.v2.as_ptr(),
+        w1: a.w1.as_ptr(),
+        w2: a.w2.as_ptr(),
+        r1: a.r1.as_ptr(),
+        r2: a.r2.as_ptr(),
+        m1: a.m1.as_ptr(),
+        m2: a.m2.as_ptr(),
+        history: hh.as_mut_ptr(),
+        f_n: f_n.as_mut_ptr(),
+        force: force.as_mut_ptr(),
+        torque1: t1.as_mut_ptr(),
+        torque2: t2.as_mut_ptr(),
+    };
+    assert_eq!(
+        unsafe { dc_contact_force_batch_fused(m, &b, 1e-6, std::ptr::null_mut()) },
+        if hist { DC_ERR_NOT_FINITE } else { DC_OK }
+    );
+    assert!(f_n[1024].is_nan() == hist && !f_n[1023].is_nan());
 }

@@ -55,9 +55,10 @@ fn inputs(n: usize) -> [Vec<f64>; 4] {
 
 #[test]
 fn batch_equals_scalar_bitwise() {
-    // Under Miri (scripts/miri.sh, 10^4 to 10^6 times slower) without the long array: the batch
-    // loop has no blocking, so 64 contacts reach every region of src/ that 1001 do
-    // (scripts/miri_coverage.sh).
+    // Under Miri (scripts/miri.sh, 10^4 to 10^6 times slower) without the long array: 64
+    // contacts reach every loop of the batch (the general-p batch works in chunks of 256
+    // contacts, src/force/batch.rs; 1001 also crosses chunk boundaries and, with AVX-512, ends
+    // in a masked group of lanes) (scripts/miri_coverage.sh).
     let sizes: &[usize] = if cfg!(miri) {
         &[1, 2, 3, 7, 64]
     } else {

@@ -128,7 +128,14 @@ fn contact_exports_do_not_allocate() {
                             let mut bad = batch;
                             bad.n = 0;
                             black_box(dc_contact_force_batch(&model, &bad, 1e-7));
-                            calls += 7;
+                            // The fused batch: valid, a bad dt / value of x, a call-level error.
+                            let mut first = 0usize;
+                            black_box(dc_contact_force_batch_fused(
+                                &model, &batch, 1e-7, &mut first,
+                            ));
+                            black_box(dc_contact_force_batch_fused(&model, &batch, x, &mut first));
+                            black_box(dc_contact_force_batch_fused(&model, &bad, 1e-7, &mut first));
+                            calls += 10;
                         }
                     }
                 }

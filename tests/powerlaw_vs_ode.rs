@@ -504,3 +504,43 @@ fn reference_tolerance_for_trajectory_benchmark() {
         }
     }
 }
+
+/// docs/powerlaw.md ("Verified"): the worst force-end τ error of `observables_match_reference`
+/// shrinks as the reference is tightened (rtol 1e-14 → 2e-15 → 5e-16 gives 2.2e-12 → 6.4e-13 →
+/// 5.0e-13), so it is the reference's own error, not the library's.
+#[test]
+fn force_end_tau_error_shrinks_with_reference_tolerance() {
+    let worst_at = |rtol: f64| {
+        let mut w: f64 = 0.0;
+        for &p in PS.iter().filter(|&&p| p != 1.0) {
+            for (alpha, crit, _) in cases(p) {
+                if crit != EndCriterion::Force {
+                    continue;
+                }
+                for &(v0, w0) in &[(1.0, 1.0), (0.03, 250.0)] {
+                    let r = collide(p, alpha, v0, w0, crit, rtol);
+                    let mut tau = 0.0;
+                    assert_eq!(
+                        unsafe { dc_contact_duration(p, alpha, v0, w0, crit.code(), &mut tau) },
+                        DC_OK
+                    );
+                    w = w.max(rel(tau, r.tau));
+                }
+            }
+        }
+        w
+    };
+    let quoted = [(1e-14, 2.2e-12), (2e-15, 6.4e-13), (RTOL, 5.0e-13)];
+    let got: Vec<f64> = quoted.iter().map(|&(rtol, _)| worst_at(rtol)).collect();
+    println!(
+        "worst force-end tau error at reference rtol 1e-14, 2e-15, 5e-16: {:.1e} {:.1e} {:.1e}",
+        got[0], got[1], got[2]
+    );
+    for (g, (rtol, q)) in got.iter().zip(&quoted) {
+        assert!(
+            (g - q).abs() < 0.05 * q,
+            "rtol {rtol:e}: {g:e} vs quoted {q:e}"
+        );
+    }
+    assert!(got[0] > got[1] && got[1] > got[2]);
+}

@@ -10,7 +10,7 @@ use proptest::prelude::*;
 
 #[path = "common/proptest_util.rs"]
 mod proptest_util;
-use proptest_util::known;
+use proptest_util::{bytes, known, untouched_on_error};
 
 fn config(cases: u32) -> ProptestConfig {
     proptest_util::config(cases, 20_261_123)
@@ -27,11 +27,6 @@ fn any_f64() -> impl Strategy<Value = f64> {
         Just(f64::NAN),
         1e-6f64..1e11,
     ]
-}
-
-fn bytes<T>(x: &T) -> Vec<u8> {
-    unsafe { std::slice::from_raw_parts((x as *const T).cast::<u8>(), std::mem::size_of::<T>()) }
-        .to_vec()
 }
 
 fn v3() -> impl Strategy<Value = [f64; 3]> {
@@ -178,12 +173,8 @@ proptest! {
             [x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], x[8], x[9], x[10], x[11], x[12], x[13], x[14], x[15], x[16], x[17]];
         let mut m: dc_contact_model = unsafe { std::mem::zeroed() };
         m.kt = -3.25;
-        let before = bytes(&m);
-        let st = unsafe { dc_contact_model_init(&s, &mut m) };
-        prop_assert!(known(st), "status {}", st);
-        if st != DC_OK {
-            prop_assert_eq!(bytes(&m), before);
-        } else {
+        let st = untouched_on_error(&mut m, |o| unsafe { dc_contact_model_init(&s, o) })?;
+        if st == DC_OK {
             let mut len = 99usize;
             prop_assert_eq!(unsafe { dc_contact_history_len(&m, &mut len) }, DC_OK);
             prop_assert!(len <= DC_CONTACT_HISTORY_MAX);
@@ -196,17 +187,14 @@ proptest! {
         let mut h = h0;
         let mut r: dc_contact_result = unsafe { std::mem::zeroed() };
         r.f_n = -1.25;
-        let before = bytes(&r);
-        let s = if spheres {
+        let s = untouched_on_error(&mut r, |o| if spheres {
             let z = [0.0; 3];
-            unsafe { dc_contact_force_spheres(&m, x.as_ptr(), z.as_ptr(), &st, dt, h.as_mut_ptr(), h.len(), &mut r) }
+            unsafe { dc_contact_force_spheres(&m, x.as_ptr(), z.as_ptr(), &st, dt, h.as_mut_ptr(), h.len(), o) }
         } else {
-            unsafe { dc_contact_force(&m, &st, dt, h.as_mut_ptr(), h.len(), &mut r) }
-        };
-        prop_assert!(known(s), "status {}", s);
+            unsafe { dc_contact_force(&m, &st, dt, h.as_mut_ptr(), h.len(), o) }
+        })?;
         if s != DC_OK {
-            prop_assert_eq!(bytes(&r), before);
-            prop_assert_eq!(bytes(&h), bytes(&h0));
+            prop_assert_eq!(bytes(&h), bytes(&h0), "history touched on error (status {})", s);
         } else {
             let fnv = [r.f_n];
             let all = r.force.iter().chain(&r.torque1).chain(&r.torque2).chain(&r.ft).chain(&fnv).chain(&h);
@@ -254,6 +242,63 @@ proptest! {
                 }
             }
             prop_assert!(hs.iter().zip(&hb).all(|(a, b)| a.to_bits() == b.to_bits()));
+        }
+    }
+
+    /// The fused batch over a mix of valid and any-bits contacts and histories: its status and
+    /// first_bad are those of the first contact dc_contact_force refuses for a value (state or
+    /// history); that contact's and every refused contact's outputs are NaN and history
+    /// untouched; every contact dc_contact_force accepts equals it bit for bit. (A contact
+    /// whose result overflows, DC_ERR_RESULT_RANGE from dc_contact_force, is not reported by
+    /// either batch: its outputs are only checked to be written.)
+    #[test]
+    fn fused_batch_any_bits(c in choice_valid(), sts in prop::collection::vec(prop_oneof![3 => state_valid(), 1 => state_any()], 1..6), hbad in prop::collection::vec(prop_oneof![3 => Just(0.0), 1 => any_f64()], 6 * DC_CONTACT_HISTORY_MAX)) {
+        let m = model_valid(c, 0.5, 0.5);
+        let nc = sts.len();
+        let stride = DC_CONTACT_HISTORY_MAX;
+        let mut hb: Vec<f64> = hbad[..nc * stride].to_vec();
+        let h0 = hb.clone();
+        let flat = |f: &dyn Fn(&dc_contact_state) -> [f64; 3]| sts.iter().flat_map(f).collect::<Vec<f64>>();
+        let one = |f: &dyn Fn(&dc_contact_state) -> f64| sts.iter().map(f).collect::<Vec<f64>>();
+        let (n, v1, v2, w1, w2) = (flat(&|s| s.n), flat(&|s| s.v1), flat(&|s| s.v2), flat(&|s| s.w1), flat(&|s| s.w2));
+        let (d, r1, r2, m1, m2) = (one(&|s| s.overlap), one(&|s| s.r1), one(&|s| s.r2), one(&|s| s.m1), one(&|s| s.m2));
+        let (mut f_n, mut force, mut t1, mut t2) = (vec![7.0; nc], vec![7.0; 3 * nc], vec![7.0; 3 * nc], vec![7.0; 3 * nc]);
+        let b = dc_contact_batch {
+            n: nc, history_stride: stride, normal: n.as_ptr(), overlap: d.as_ptr(), v1: v1.as_ptr(), v2: v2.as_ptr(),
+            w1: w1.as_ptr(), w2: w2.as_ptr(), r1: r1.as_ptr(), r2: r2.as_ptr(), m1: m1.as_ptr(), m2: m2.as_ptr(),
+            history: hb.as_mut_ptr(), f_n: f_n.as_mut_ptr(), force: force.as_mut_ptr(), torque1: t1.as_mut_ptr(), torque2: t2.as_mut_ptr(),
+        };
+        let mut bad = usize::MAX;
+        let sf = unsafe { dc_contact_force_batch_fused(&m, &b, 1e-7, &mut bad) };
+        prop_assert!(known(sf), "status {}", sf);
+        let mut first: Option<(usize, i32)> = None;
+        let len = m.history_len as usize;
+        for (i, st) in sts.iter().enumerate() {
+            let mut hs = h0[i * stride..(i + 1) * stride].to_vec();
+            let mut r: dc_contact_result = unsafe { std::mem::zeroed() };
+            let s = unsafe { dc_contact_force(&m, st, 1e-7, hs.as_mut_ptr(), stride, &mut r) };
+            let hbi = &hb[i * stride..i * stride + len];
+            if s == DC_OK {
+                prop_assert_eq!(r.f_n.to_bits(), f_n[i].to_bits());
+                for k in 0..3 {
+                    prop_assert_eq!(r.force[k].to_bits(), force[3 * i + k].to_bits());
+                    prop_assert_eq!(r.torque1[k].to_bits(), t1[3 * i + k].to_bits());
+                    prop_assert_eq!(r.torque2[k].to_bits(), t2[3 * i + k].to_bits());
+                }
+                prop_assert!(hbi.iter().zip(&hs).all(|(a, b)| a.to_bits() == b.to_bits()));
+            } else if s == DC_ERR_RESULT_RANGE {
+                prop_assert!(f_n[i] != 7.0 || force[3 * i] != 7.0);
+            } else {
+                prop_assert!([DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE, DC_ERR_NOT_UNIT].contains(&s), "{}", s);
+                first = first.or(Some((i, s)));
+                prop_assert!(f_n[i].is_nan());
+                prop_assert!((0..3).all(|k| force[3 * i + k].is_nan() && t1[3 * i + k].is_nan() && t2[3 * i + k].is_nan()));
+                prop_assert!(hbi.iter().zip(&h0[i * stride..]).all(|(a, b)| a.to_bits() == b.to_bits()));
+            }
+        }
+        match first {
+            None => prop_assert_eq!((sf, bad), (DC_OK, usize::MAX)),
+            Some((i, s)) => prop_assert_eq!((sf, bad), (s, i)),
         }
     }
 }

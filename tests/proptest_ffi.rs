@@ -9,39 +9,14 @@ use proptest::prelude::*;
 
 #[path = "common/proptest_util.rs"]
 mod proptest_util;
-use proptest_util::known;
-
-const SENTINEL: f64 = -9.87654321e123;
-
-fn pair_bytes(p: &dc_pair) -> Vec<u8> {
-    let ptr = (p as *const dc_pair).cast::<u8>();
-    unsafe { std::slice::from_raw_parts(ptr, std::mem::size_of::<dc_pair>()) }.to_vec()
-}
+use proptest_util::{SENTINEL, contract, known, untouched_on_error};
 
 /// A constructor's boundary contract: known status, output untouched on error.
 fn pair_contract(f: impl Fn(*mut dc_pair) -> i32) -> Result<(i32, dc_pair), TestCaseError> {
     let mut pair: dc_pair = unsafe { std::mem::zeroed() };
     pair.p = SENTINEL;
-    let before = pair_bytes(&pair);
-    let s = f(&mut pair);
-    prop_assert!(known(s), "unknown or internal status {}", s);
-    if s != DC_OK {
-        prop_assert_eq!(pair_bytes(&pair), before, "pair touched on error");
-    }
+    let s = untouched_on_error(&mut pair, f)?;
     Ok((s, pair))
-}
-
-/// Runs an export with one output and checks the boundary contract; returns (status, output).
-fn contract(f: impl Fn(*mut f64) -> i32) -> Result<(i32, f64), TestCaseError> {
-    let mut out = SENTINEL;
-    let s = f(&mut out);
-    prop_assert!(known(s), "unknown or internal status {}", s);
-    if s == DC_OK {
-        prop_assert!(out.is_finite(), "non-finite output on success");
-    } else {
-        prop_assert_eq!(out.to_bits(), SENTINEL.to_bits(), "output touched on error");
-    }
-    Ok((s, out))
 }
 
 fn config(cases: u32) -> ProptestConfig {
@@ -169,8 +144,7 @@ fn energy_contract(f: impl Fn(*mut dc_energy) -> i32) -> Result<(i32, dc_energy)
         clamped: SENTINEL,
     };
     let mut out = sentinel;
-    let s = f(&mut out);
-    prop_assert!(known(s), "unknown or internal status {}", s);
+    let s = untouched_on_error(&mut out, f)?;
     if s == DC_OK {
         let parts = [out.e, out.loading, out.unloading, out.returned, out.clamped];
         prop_assert!(
@@ -191,8 +165,6 @@ fn energy_contract(f: impl Fn(*mut dc_energy) -> i32) -> Result<(i32, dc_energy)
             "returned != e^2: {:?}",
             out
         );
-    } else {
-        prop_assert_eq!(out, sentinel, "dc_energy touched on error");
     }
     Ok((s, out))
 }

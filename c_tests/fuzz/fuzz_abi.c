@@ -106,12 +106,15 @@ static void fuzz_contact(int which, const uint8_t *data, size_t n) {
                             all_finite(&r.f_n, 1) && all_finite(h, DC_CONTACT_HISTORY_MAX)))
             abort();
         break;
-    case 27: { /* batch of 2 contacts: fuzzed arrays (aliasing the fuzzed doubles), NULL mask */
+    case 27: { /* batch of 2 contacts: fuzzed arrays (aliasing the fuzzed doubles), NULL mask;
+                * checked or fused (d[6] & 1) */
         if (!full_model(&m, d[0] & 1)) abort();
-        double out[2 + 6 + 6 + 6], out0[20], hb[20];
-        for (int i = 0; i < 20; i++) out[i] = SENTINEL, hb[i] = y[i];
+        /* history: 2 contacts at a stride of up to 11 doubles */
+        double out[2 + 6 + 6 + 6], out0[20], hb[22];
+        for (int i = 0; i < 20; i++) out[i] = SENTINEL;
+        for (int i = 0; i < 22; i++) hb[i] = y[i];
         memcpy(out0, out, sizeof out);
-        double hb0[20];
+        double hb0[22];
         memcpy(hb0, hb, sizeof hb);
         uint32_t mask = (uint32_t)d[3] | ((uint32_t)d[4] << 8);
         const double *in[10] = {y, y + 6, y + 8, y + 14, y + 20, y + 26, y + 32, y + 34, y + 36, y + 38};
@@ -121,10 +124,21 @@ static void fuzz_contact(int which, const uint8_t *data, size_t n) {
                               .v1 = in[2], .v2 = in[3], .w1 = in[4], .w2 = in[5], .r1 = in[6], .r2 = in[7],
                               .m1 = in[8], .m2 = in[9], .history = (mask & 1024) ? NULL : hb, .f_n = out,
                               .force = out + 2, .torque1 = out + 8, .torque2 = out + 14};
-        s = dc_contact_force_batch(&m, &b, y[39]);
+        size_t bad = 7;
+        int fused = d[6] & 1;
+        s = fused ? dc_contact_force_batch_fused(&m, &b, y[39], &bad) : dc_contact_force_batch(&m, &b, y[39]);
         if (!known(s)) abort();
-        if (s != DC_OK && (memcmp(out, out0, sizeof out) != 0 || memcmp(hb, hb0, sizeof hb) != 0)) abort();
-        if (s == DC_OK && !all_finite(out, 20)) abort();
+        if (fused && bad != 7) {
+            /* a bad contact: its outputs NaN, its history (10 doubles) untouched */
+            if (s == DC_OK || bad > 1 || !isnan(out[bad])) abort();
+            for (int k = 0; k < 3; k++)
+                if (!isnan(out[2 + 3 * bad + k]) || !isnan(out[8 + 3 * bad + k]) || !isnan(out[14 + 3 * bad + k]))
+                    abort();
+            if (memcmp(hb + bad * b.history_stride, hb0 + bad * b.history_stride, 10 * sizeof(double)) != 0) abort();
+        } else {
+            if (s != DC_OK && (memcmp(out, out0, sizeof out) != 0 || memcmp(hb, hb0, sizeof hb) != 0)) abort();
+            if (s == DC_OK && !all_finite(out, 20)) abort();
+        }
         break;
     }
     case 28: /* arbitrary bytes as a model: rejected or computed, never a crash */

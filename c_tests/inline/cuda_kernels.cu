@@ -1,6 +1,8 @@
 /* demcontact_inline.h in CUDA device code: a kernel per contact and the calibration on the device.
- * Compiled (not run) by ctest's inline_cuda (nvcc, or clang with a CUDA installation) and
- * inline_cuda_stub (clang's CUDA mode without the SDK, cuda_stub.h standing in for its headers). */
+ * Compiled (not run: no GPU in CI) by ctest's inline_cuda (nvcc, or clang with a CUDA
+ * installation; with nvcc also inside test_inline_nvcc.cu / test_inline_contact_nvcc.cu, whose
+ * host side runs) and inline_cuda_stub (clang's CUDA mode without the SDK, cuda_stub.h standing in
+ * for its headers). */
 #include <demcontact_inline.h>
 
 __global__ void dc_forces(const dc_pair *pair, int n, const double *d, const double *vn,
@@ -8,6 +10,25 @@ __global__ void dc_forces(const dc_pair *pair, int n, const double *d, const dou
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i < n) out[i] = dc_normal_force_inline(pair, d[i], vn[i], r[i], m[i]);
 }
+
+/* The 17 kernels that need no libm (only + - * / sqrt and dc_pow_inline), each with its code as a
+ * constant: ctest inline_cuda compiles this one to a cubin with -fmad=true (nvcc's default) and
+ * with -fmad=false and requires the same machine code, i.e. nothing in it was fused. */
+#define DCI_CASE(K)                                                                   \
+    case K: out[i] = dc_normal_force_kernel_inline(K, pair, d[i], vn[i], r[i], m[i]); \
+        break;
+__global__ void dc_forces_arith(const dc_pair *pair, int n, const double *d, const double *vn,
+                                const double *r, const double *m, double *out) {
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n) return;
+    switch (pair->kernel) {
+        DCI_CASE(1) DCI_CASE(2) DCI_CASE(3) DCI_CASE(4) DCI_CASE(5) DCI_CASE(6) DCI_CASE(7)
+        DCI_CASE(8) DCI_CASE(9) DCI_CASE(10) DCI_CASE(11) DCI_CASE(12) DCI_CASE(13)
+        DCI_CASE(14) DCI_CASE(15) DCI_CASE(16) DCI_CASE(17)
+    default: out[i] = 0.0;
+    }
+}
+#undef DCI_CASE
 
 __global__ void dc_setup(double e, dc_pair *pair) {
     dc_pair_hertz_inline(63e9, 0.23, 63e9, 0.23, e, DC_END_FORCE, pair);

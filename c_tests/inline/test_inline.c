@@ -21,7 +21,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifdef __cplusplus
+#if defined(__CUDACC__)
+#define LANG "CUDA host"
+#elif defined(__cplusplus)
 #define LANG "C++"
 #else
 #define LANG "C"

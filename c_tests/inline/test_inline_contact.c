@@ -15,6 +15,8 @@
  *    branches, series and sin), sphere-sphere and sphere-wall. Every step:
  *    same status, same result bytes, same history bits. Argument 1: total steps (default 4e6);
  *    the test also requires that sliding, sticking, rolling-limit and separation steps occurred;
+ *  - the fast entry dc_contact_force_checked_inline (model checked once by
+ *    dc_contact_model_check_inline) along the same trajectories and bad inputs: same bits;
  *  - bad input: NULL pointers, short/misaligned history, dt NaN/0/<0, NaN/inf/zero/non-unit
  *    states, NaN in the history, corrupted models: the same status, outputs untouched.
  * Prints "test_inline_contact[...]: N passed, M failed". */
@@ -24,7 +26,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifdef __cplusplus
+#if defined(__CUDACC__)
+#define LANG "CUDA host"
+#elif defined(__cplusplus)
 #define LANG "C++"
 #else
 #define LANG "C"
@@ -109,6 +113,11 @@ static int same_result(const dc_contact_result *a, const dc_contact_result *b) {
 /* One contact evolved over `steps` steps of `m`; counts of regimes seen added to `seen`. */
 static void trajectory(const dc_contact_model *m, long steps, long *seen) {
     double hl[DC_CONTACT_HISTORY_MAX] = {0}, hi[DC_CONTACT_HISTORY_MAX] = {0};
+    double hc[DC_CONTACT_HISTORY_MAX] = {0}; /* dc_contact_force_checked_inline's own history */
+    if (dc_contact_model_check_inline(m) != DC_OK) {
+        fail("model_check of a valid model", 0);
+        return;
+    }
     dc_contact_state s;
     memset(&s, 0, sizeof s);
     const int wall = uni() < 0.25;
@@ -151,8 +160,15 @@ static void trajectory(const dc_contact_model *m, long steps, long *seen) {
         memset(&ri, 0x5A, sizeof ri);
         const int32_t sl = dc_contact_force(m, &s, dt, hl, DC_CONTACT_HISTORY_MAX, &rl);
         const int32_t si = dc_contact_force_inline(m, &s, dt, hi, DC_CONTACT_HISTORY_MAX, &ri);
-        if (sl != si) {
+        dc_contact_result rc;
+        memset(&rc, 0x5A, sizeof rc);
+        const int32_t sc = dc_contact_force_checked_inline(m, &s, dt, hc, &rc);
+        if (sl != si || sl != sc) {
             fail("contact status", i);
+            return;
+        }
+        if (!same_result(&rl, &rc) || memcmp(hl, hc, sizeof hl) != 0) {
+            fail("checked entry: contact result/history bits", i);
             return;
         }
         if (!same_result(&rl, &ri) || memcmp(hl, hi, sizeof hl) != 0) {
@@ -189,7 +205,6 @@ static void bad_inputs(const dc_contact_model *m) {
     s.m1 = s.m2 = 1e-5;
     s.v1[0] = 0.1;
     double hbuf[DC_CONTACT_HISTORY_MAX + 1] = {0};
-    double *h = hbuf;
     const double dt = 1e-6;
     /* each case: (model, state, dt, history, len) */
     for (int c = 0; c < 40; c++) {
@@ -258,6 +273,27 @@ static void bad_inputs(const dc_contact_model *m) {
         memset(&ri, 0x5A, sizeof ri);
         const int32_t sl = dc_contact_force(mp, sp, d, hlp, len, null_out ? NULL : &rl);
         const int32_t si = dc_contact_force_inline(mp, sp, d, hip, len, null_out ? NULL : &ri);
+        /* the fast entry: the model status of dc_contact_model_check_inline, and for an accepted
+         * model with a valid history buffer (not cases 3-5, 39: NULL, short, misaligned) the library's status,
+         * outputs and history */
+        const int32_t mc = dc_contact_model_check_inline(mp);
+        if (mc != DC_OK && mc != sl) {
+            fprintf(stderr, "  bad case %d: library %d, model_check %d\n", c, (int)sl, (int)mc);
+            fail("model_check status", c);
+            continue;
+        }
+        if (mc == DC_OK && hp == hist && len >= mp->history_len) {
+            double hc[DC_CONTACT_HISTORY_MAX + 1];
+            memcpy(hc, hist, sizeof hc);
+            dc_contact_result rc;
+            memset(&rc, 0x5A, sizeof rc);
+            const int32_t sc = dc_contact_force_checked_inline(mp, sp, d, hc, null_out ? NULL : &rc);
+            if (sc != sl || !same_result(&rl, &rc) || memcmp(hl, hc, sizeof hc) != 0) {
+                fprintf(stderr, "  bad case %d: library %d, checked entry %d\n", c, (int)sl, (int)sc);
+                fail("checked entry: bad-input status/outputs", c);
+                continue;
+            }
+        }
         if (sl != si) {
             fprintf(stderr, "  bad case %d: library %d, inline %d\n", c, (int)sl, (int)si);
             fail("bad-input status", c);
@@ -277,7 +313,6 @@ static void bad_inputs(const dc_contact_model *m) {
         }
         n_pass++;
     }
-    (void)h;
 }
 
 /* The DMT kernels (codes 18, 19) of dc_normal_force_inline against dc_normal_force, bit for bit:

@@ -47,13 +47,16 @@ enum {
     N_TODAY,
     N_KERNEL,
     N_BATCH,
+    N_FUSED,
     N_SCALAR_TODAY,
     N_SCALAR,
     T_C_PLAIN,
     T_C_FAST,
     T_BATCH,
+    T_FUSED,
     T_SCALAR,
     R_BATCH,
+    R_FUSED,
     R_SCALAR,
     NVAR
 };
@@ -63,13 +66,16 @@ static const char *NAMES[NVAR] = {
     "normal: host vn/R*/m* + dc_normal_force_batch + F n",
     "normal: dc_normal_force_batch alone (vn, R*, m* precomputed)",
     "normal: dc_contact_force_batch",
+    "normal: dc_contact_force_batch_fused",
     "normal: host vn/R*/m* + dc_normal_force (unchecked) per contact + F n",
     "normal: dc_contact_force per contact",
     "+ Mindlin tangential: C loop, -O3",
     "+ Mindlin tangential: C loop, -O3 -fno-math-errno",
     "+ Mindlin tangential: dc_contact_force_batch",
+    "+ Mindlin tangential: dc_contact_force_batch_fused",
     "+ Mindlin tangential: dc_contact_force per contact",
     "+ Mindlin + EPSD rolling: dc_contact_force_batch",
+    "+ Mindlin + EPSD rolling: dc_contact_force_batch_fused",
     "+ Mindlin + EPSD rolling: dc_contact_force per contact",
 };
 
@@ -145,7 +151,8 @@ static void run(int var, const arrays *a) {
         break;
     }
     default: {
-        int m = var == N_BATCH ? 0 : var == T_BATCH ? 1 : 2;
+        int m = (var == N_BATCH || var == N_FUSED) ? 0 : (var == T_BATCH || var == T_FUSED) ? 1 : 2;
+        int fused = var == N_FUSED || var == T_FUSED || var == R_FUSED;
         if (m == 0) {
             b.w1 = b.w2 = NULL;
             b.torque1 = b.torque2 = NULL;
@@ -153,7 +160,8 @@ static void run(int var, const arrays *a) {
             b.history_stride = 0;
         }
         if (m == 1) b.history_stride = 6;
-        int32_t s = dc_contact_force_batch(MODELS[m], &b, P.dt);
+        size_t bad = 0;
+        int32_t s = fused ? dc_contact_force_batch_fused(MODELS[m], &b, P.dt, &bad) : dc_contact_force_batch(MODELS[m], &b, P.dt);
         if (s != DC_OK) {
             fprintf(stderr, "%s: %s\n", NAMES[var], dc_status_str(s));
             abort();
@@ -242,7 +250,8 @@ int main(int argc, char **argv) {
         size_t n = sizes[0];
         double *ref = malloc(4 * 3 * n * sizeof(double)), *hist = calloc(DC_CONTACT_HISTORY_MAX * n, sizeof(double));
         double *hist2 = calloc(DC_CONTACT_HISTORY_MAX * n, sizeof(double));
-        if (!ref || !hist || !hist2) return 1;
+        double *hist3 = calloc(DC_CONTACT_HISTORY_MAX * n, sizeof(double));
+        if (!ref || !hist || !hist2 || !hist3) return 1;
         arrays c = a;
         c.n = n;
         c.hist = hist;
@@ -257,6 +266,7 @@ int main(int argc, char **argv) {
                 arrays d = a;
                 d.n = n;
                 if (v == T_SCALAR) d.hist = hist2;
+                if (v == T_FUSED) d.hist = hist3;
                 run(v, &d);
                 for (size_t i = 0; i < 3 * n; i++) {
                     double scale = fabs(c.f_n[i / 3]) + 1e-30;
@@ -285,6 +295,7 @@ int main(int argc, char **argv) {
         free(ref);
         free(hist);
         free(hist2);
+        free(hist3);
     }
     if (smoke) {
         for (int v = 0; v < NVAR; v++) {
@@ -326,6 +337,11 @@ int main(int argc, char **argv) {
     printf("\nratios: to the -O3 -fno-math-errno C loop of the same stages. normal-only batch / today's path "
            "(host prepass + dc_normal_force_batch + F n): %.2f in-cache, %.2f streaming\n",
            best[0][N_BATCH] / best[0][N_TODAY], best[1][N_BATCH] / best[1][N_TODAY]);
+    printf("normal-only fused batch / today's path: %.2f in-cache, %.2f streaming; fused / checked batch: normal "
+           "%.2f / %.2f, Mindlin %.2f / %.2f, Mindlin + EPSD %.2f / %.2f (in-cache / streaming)\n",
+           best[0][N_FUSED] / best[0][N_TODAY], best[1][N_FUSED] / best[1][N_TODAY], best[0][N_FUSED] / best[0][N_BATCH],
+           best[1][N_FUSED] / best[1][N_BATCH], best[0][T_FUSED] / best[0][T_BATCH], best[1][T_FUSED] / best[1][T_BATCH],
+           best[0][R_FUSED] / best[0][R_BATCH], best[1][R_FUSED] / best[1][R_BATCH]);
     printf("per-contact calls: dc_contact_force normal-only / host + dc_normal_force: %.2f in-cache, %.2f streaming; "
            "dc_contact_force Mindlin / C loop: %.2f in-cache, %.2f streaming\n",
            best[0][N_SCALAR] / best[0][N_SCALAR_TODAY], best[1][N_SCALAR] / best[1][N_SCALAR_TODAY],

@@ -297,7 +297,9 @@ inline int32_t make_model(const Coeff &a, const Coeff &b, const Coeff &m, Model 
         s = dc_contact_history_len(&out.cm, &len);
         out.nh = static_cast<int>(len);
         out.pair = out.cm.normal;
-        return s;
+        if (s != DC_OK) return s;
+        // checked once here: contact_eval then takes the header's fast entry (no per-call model checks)
+        return dc_contact_model_check_inline(&out.cm);
     }
     out.nh = 0;
     if (m.damping == DAMP_VISCOELASTIC)
@@ -317,13 +319,15 @@ struct Result {
 
 /* THE per-contact call of both styles (pair and wall). `history`: the caller-owned nh doubles of
    this contact, zero for a new contact, advanced in place. Returns the library status (the normal
-   path cannot fail). The full contact is dc_contact_force_inline from the header-only
-   demcontact_inline.h (compiled into this loop, bit-identical to the library's dc_contact_force). */
+   path cannot fail). The full contact is dc_contact_force_checked_inline from the header-only
+   demcontact_inline.h (compiled into this loop, bit-identical to the library's dc_contact_force;
+   the model checks run once, in make_model). */
 inline int32_t contact_eval(const Model &m, const State &s, double dt, double *history, Result &out)
 {
     if (m.full) {
         dc_contact_result r;
-        const int32_t st = dc_contact_force_inline(&m.cm, &s, dt, history, static_cast<size_t>(m.nh), &r);
+        // m.cm passed dc_contact_model_check_inline in make_model; history: m.nh doubles
+        const int32_t st = dc_contact_force_checked_inline(&m.cm, &s, dt, history, &r);
         if (st != DC_OK) return st;
         for (int k = 0; k < 3; k++) {
             out.force[k] = r.force[k];

@@ -9,10 +9,14 @@
  *  - a contact's history is kept by BOTH atoms, identical copies: the pair style always evaluates a
  *    contact with body 1 = the atom of smaller ID, and a half neighbour list with newton off, so a
  *    contact across a processor boundary is evaluated by both owners with the same (ghost-exact)
- *    inputs and each updates its own atom's copy; a contact of two owned atoms updates both copies;
- *  - this per-atom store is always the current state (no copy kept elsewhere), so it travels with
- *    the atom between ranks (grow_arrays/copy_arrays/pack_exchange/unpack_exchange) and into
- *    restart files (pack_restart/unpack_restart) without any synchronisation step; atoms inserted
+ *    inputs and each updates its own atom's copy; a contact of two owned atoms is evaluated once
+ *    and updates the list owner's copy only: the partner's copy (stamp and history) is brought up
+ *    to date lazily by sync(), before anything reads or moves the per-atom store (exchange, sort,
+ *    restart, insertion, the pair style's next slot mapping), not at every step;
+ *  - after sync() this per-atom store is the whole current state (no copy kept elsewhere), so it
+ *    travels with the atom between ranks (grow_arrays/copy_arrays/pack_exchange/unpack_exchange)
+ *    and into restart files (pack_restart/unpack_restart); every one of those calls sync() first
+ *    (a no-op unless a force evaluation advanced histories since the last sync); atoms inserted
  *    later (fix pour, fix deposit) start with no partners (set_arrays);
  *  - a slot is never moved while a neighbour list lives, so the pair style caches each list
  *    pair's slot indices at a list rebuild (no search per contact); a contact that ends leaves its
@@ -39,6 +43,7 @@
 #include "memory.h"
 
 #include <cstring>
+#include <vector>
 
 namespace demcontact_lammps {
 
@@ -70,7 +75,11 @@ public:
         memory->destroy(rec);
     }
 
-    int setmask() override { return 0; }
+    int setmask() override { return FixConst::PRE_EXCHANGE; }
+    // (the hooks below sync too; these make the store current at every exchange step and run end)
+    void pre_exchange() override { sync(); }
+    void setup_pre_exchange() override { sync(); }
+    void post_run() override { sync(); }
 
     void grow_arrays(int nmax) override
     {
@@ -80,6 +89,7 @@ public:
 
     void copy_arrays(int i, int j, int /*delflag*/) override
     {
+        sync();
         npartner[j] = npartner[i];
         std::memcpy(slot(j, 0), slot(i, 0), sizeof(double) * npartner[i] * stride());
         generation++;
@@ -87,12 +97,14 @@ public:
 
     void set_arrays(int i) override
     {
+        sync();
         npartner[i] = 0;
         generation++;
     }
 
     int pack_exchange(int i, double *buf) override
     {
+        sync();
         const int n = npartner[i] * stride();
         buf[0] = npartner[i];
         std::memcpy(buf + 1, slot(i, 0), sizeof(double) * n);
@@ -101,6 +113,7 @@ public:
 
     int unpack_exchange(int nlocal, double *buf) override
     {
+        sync();
         npartner[nlocal] = static_cast<int>(buf[0]);
         const int n = npartner[nlocal] * stride();
         std::memcpy(slot(nlocal, 0), buf + 1, sizeof(double) * n);
@@ -111,6 +124,7 @@ public:
     // restart record of atom i: [count, nh, n, n x (partner, nh doubles)], current slots only
     int pack_restart(int i, double *buf) override
     {
+        sync();
         int m = 3, n = 0;
         for (int k = 0; k < npartner[i]; k++) {
             if (stamp(i, k) != tick) continue;
@@ -127,6 +141,7 @@ public:
 
     void unpack_restart(int nlocal, int nth) override
     {
+        sync();
         double **extra = atom->extra;
         int m = 0;
         for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
@@ -156,6 +171,7 @@ public:
 
     int size_restart(int i) override
     {
+        sync();
         int n = 0;
         for (int k = 0; k < npartner[i]; k++) n += stamp(i, k) == tick;
         return 3 + n * (1 + nh);
@@ -199,6 +215,36 @@ public:
         return n;
     }
 
+    /* The owned-owned contacts of the current slot mapping whose partner copy sync() maintains:
+       (i, slot of i, j, slot of j), i the list owner. Set by the pair style at its slot mapping
+       (which calls sync() first) and when it creates slots; valid while the store's atom indices
+       do not change (generation), and every change calls sync() first. */
+    void set_partner_pairs_mapped() { opairs.clear(); opairs_generation = generation; dirty = false; }
+    void add_partner_pair(int i, int si, int j, int sj)
+    {
+        opairs.push_back(i);
+        opairs.push_back(si);
+        opairs.push_back(j);
+        opairs.push_back(sj);
+    }
+    // A force evaluation advanced list owners' copies: the partner copies are behind.
+    void mark_dirty() { dirty = true; }
+    // Copy the list owner's stamp and history into its owned partner's slot, for every pair.
+    void sync()
+    {
+        if (!dirty) return;
+        if (generation != opairs_generation)
+            error->one(FLERR, "fix demcontact/history: internal error: the per-atom store changed before the "
+                              "partner histories were synchronised");
+        const size_t n = opairs.size();
+        for (size_t q = 0; q + 3 < n; q += 4) {
+            const double *a = slot(opairs[q], opairs[q + 1]);
+            double *b = slot(opairs[q + 2], opairs[q + 3]);
+            for (int k = 1; k < stride(); k++) b[k] = a[k]; // stamp and history; b keeps its partner
+        }
+        dirty = false;
+    }
+
     // Keep only the current slots of owned atoms 0..nlocal-1 (order kept).
     void compact(int nlocal)
     {
@@ -219,6 +265,9 @@ public:
     bigint tick = 0;       // history-advancing force evaluations so far
     bigint generation = 0; // bumped by every change of the per-atom store outside the force loop
     bool warned_restart = false;
+    std::vector<int> opairs;         // 4 per owned-owned contact: i, si, j, sj (see sync())
+    bigint opairs_generation = -1;   // the store's generation they index
+    bool dirty = false;              // list owners' copies advanced since the last sync()
 };
 
 } // namespace demcontact_lammps

@@ -205,7 +205,9 @@ void PairDemcontact::map_slots()
     const int nlocal = atom->nlocal;
     const tagint *tag = atom->tag;
     FixDemcontactHistory &H = *history;
+    H.sync(); // partner copies current before compact() reads their stamps (indices: the old mapping)
     H.compact(nlocal);
+    H.set_partner_pairs_mapped();
     const int inum = list->inum;
     pofs.resize(inum + 1);
     pofs[0] = 0;
@@ -226,6 +228,7 @@ void PairDemcontact::map_slots()
             }
             c[2 * jj] = si;
             c[2 * jj + 1] = sj;
+            if (si >= 0 && sj >= 0) H.add_partner_pair(i, si, j, sj);
         }
     }
     mapped_ncalls = neighbor->ncalls;
@@ -251,7 +254,10 @@ void PairDemcontact::compute(int eflag, int vflag)
         if (neighbor->ncalls != mapped_ncalls || H->generation != mapped_generation || list != mapped_list ||
             (int)pofs.size() != list->inum + 1)
             map_slots();
-        if (advance) H->tick++;
+        if (advance) {
+            H->tick++;
+            H->mark_dirty(); // j's copies of owned-owned contacts: H->sync(), lazily
+        }
         tick = H->tick;
     }
     double scratch[32];
@@ -292,8 +298,10 @@ void PairDemcontact::compute(int eflag, int vflag)
                 int si = cache[2 * jj];
                 sj = cache[2 * jj + 1];
                 if (advance) {
+                    const bool fresh = si < 0 || (sj < 0 && j < nlocal);
                     if (si < 0) si = cache[2 * jj] = H->add(i, tag[j]);
                     if (sj < 0 && j < nlocal) sj = cache[2 * jj + 1] = H->add(j, tag[i]);
+                    if (fresh && sj >= 0) H->add_partner_pair(i, si, j, sj);
                 }
                 if (si >= 0) {
                     double *rec = H->slot(i, si);
@@ -319,12 +327,6 @@ void PairDemcontact::compute(int eflag, int vflag)
             const int32_t st = contact_eval(models[type[a] * N + type[b]], s, dt, h, out);
             if (st != DC_OK)
                 error->one(FLERR, "pair demcontact: atoms {} {}: {}", tag[a], tag[b], dc_status_str(st));
-            if (advance && sj >= 0) { // j owned here too: its copy
-                const int nhh = H->nh;
-                double *hj = H->history(j, sj);
-                for (int k = 0; k < nhh; k++) hj[k] = h[k];
-                H->set_stamp(j, sj, tick);
-            }
             // forces and torques to owned atoms only (the other owner adds its share)
             if (a < nlocal) {
                 for (int k = 0; k < 3; k++) {

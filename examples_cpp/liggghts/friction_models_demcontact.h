@@ -17,9 +17,12 @@
  * classes, called one after the other for each contact. When both are demcontact's, the rolling
  * class (whose connectToProperties runs last) hands the tangential class one combined model per
  * type pair (demcontact's normal law + tangential + rolling sub-models): the tangential class
- * evaluates it once (dc_contact_force_inline: demcontact_inline.h's header-only copy of the
- * library's dc_contact_force, bit-identical, compiled into LIGGGHTS' pair loop) and adds the
- * tangential force and the total torques; the rolling class adds nothing. Alone (rolling off or LIGGGHTS' cdt), the tangential class evaluates
+ * evaluates it once (dc_contact_force_checked_inline: demcontact_inline.h's header-only copy of
+ * the library's dc_contact_force, bit-identical, compiled into LIGGGHTS' pair loop, the model
+ * checked once per run) and adds the whole contact force (normal + tangential) and the total
+ * torques; the normal model class then computes nothing (its normal force would be the same law
+ * evaluated twice) and leaves sidata.Fn/kn/kt unset, which no class of this combination reads
+ * (cohesion off, rolling passive, surface default); the rolling class adds nothing. Alone (rolling off or LIGGGHTS' cdt), the tangential class evaluates
  * a model with its own sub-model only. Each class still validates its own parameters on its own
  * (so a rejected value is named).
  *
@@ -105,6 +108,7 @@ public:
         models.assign(np, dc_contact_model());
         eval_nh = nh;
         passive = false;
+        full_force = false;
         for (int i = 1; i <= ntypes; i++)
             for (int j = 1; j <= ntypes; j++) {
                 dc_contact_spec &s = specs[i * (ntypes + 1) + j];
@@ -120,7 +124,8 @@ public:
                     s.mu = coeff[i][j];
                     s.e_t = e_t;
                 }
-                const int32_t st = dc_contact_model_init(&s, &models[i * (ntypes + 1) + j]);
+                int32_t st = dc_contact_model_init(&s, &models[i * (ntypes + 1) + j]);
+                if (st == DC_OK) st = dc_contact_model_check_inline(&models[i * (ntypes + 1) + j]); // fast entry
                 if (st != DC_OK) {
                     char msg[400];
                     if (rolling)
@@ -141,7 +146,7 @@ public:
     /* Rolling sub-model only, after both build()s: hand the tangential sub-model of the same
        contact model one combined model per type pair, so each contact costs one library call;
        this sub-model then adds nothing itself. */
-    void combine_into(LAMMPS_NS::Error *error, DemcontactSubModel &t)
+    void combine_into(LAMMPS_NS::Error *error, DemcontactSubModel &t, const NormalModel<DEMCONTACT> *normal)
     {
         if (t.offset + t.nh != offset)
             error->all(FLERR, "tangential/rolling_friction demcontact: history blocks not adjacent");
@@ -160,6 +165,7 @@ public:
                 size_t len = 0;
                 int32_t st = dc_contact_model_init(&s, &m);
                 if (st == DC_OK) st = dc_contact_history_len(&m, &len);
+                if (st == DC_OK) st = dc_contact_model_check_inline(&m); // for the fast entry
                 if (st != DC_OK || static_cast<int>(len) > t.nh + nh || len > MAX_NH) {
                     char msg[300];
                     std::snprintf(msg, sizeof msg,
@@ -173,6 +179,14 @@ public:
             }
         t.eval_nh = static_cast<int>(len_max);
         passive = true;
+        // the combined model's normal force is the normal model's (same law and calibration,
+        // full_spec), so the tangential class applies the whole contact force and the normal
+        // model computes nothing (one normal-force evaluation per contact instead of two; the
+        // force on an atom then differs from the two-class sum by rounding only)
+        if (normal) {
+            t.full_force = true;
+            normal->deferred = true;
+        }
     }
 
     void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
@@ -220,8 +234,9 @@ public:
             h = copy;
         }
         dc_contact_result r;
-        const int32_t st = dc_contact_force_inline(&models[t1 * (ntypes + 1) + t2], &s, lmp->update->dt, h,
-                                            static_cast<size_t>(eval_nh), &r);
+        // models[] passed dc_contact_model_check_inline in build/combine_into; h: eval_nh >= the
+        // model's history length
+        const int32_t st = dc_contact_force_checked_inline(&models[t1 * (ntypes + 1) + t2], &s, lmp->update->dt, h, &r);
         if (st != DC_OK) {
             char msg[200];
             std::snprintf(msg, sizeof msg, "%s demcontact: atom %ld: %s", rolling ? "rolling_friction" : "tangential",
@@ -232,10 +247,12 @@ public:
         // torques, or with the combined model those of both; rolling class alone: rolling torques)
         const double *ti = swap ? r.torque2 : r.torque1, *tj = swap ? r.torque1 : r.torque2;
         const double scale = sidata.is_wall ? sidata.area_ratio : 1.0;
+        // (full_force: the normal force too, the normal model having deferred it)
+        const double *fr = full_force ? r.force : r.ft;
         for (int k = 0; k < 3; k++) {
             if (!rolling) {
-                i_forces.delta_F[k] += sg * scale * r.ft[k];
-                if (!sidata.is_wall) j_forces.delta_F[k] -= sg * r.ft[k];
+                i_forces.delta_F[k] += sg * scale * fr[k];
+                if (!sidata.is_wall) j_forces.delta_F[k] -= sg * fr[k];
             }
             i_forces.delta_torque[k] += scale * ti[k];
             if (!sidata.is_wall) j_forces.delta_torque[k] += tj[k];
@@ -253,6 +270,7 @@ public:
     const void *owner;
     bool rolling;
     bool passive = false; // rolling: evaluated by the tangential sub-model (combined model)
+    bool full_force = false; // tangential with the combined model: applies the normal force too
     int nh = 0, offset = 0, ntypes = 0;
     int eval_nh = 0; // history doubles of the evaluated model (nh, or tangential + rolling combined)
     std::vector<dc_contact_spec> specs;
@@ -323,7 +341,7 @@ public:
         // order: normal, cohesion, tangential, rolling): one combined evaluation per contact
         const auto &tangentials = DemcontactSubModel::tangentials();
         auto t = tangentials.find(sub.owner);
-        if (t != tangentials.end()) sub.combine_into(error, *t->second);
+        if (t != tangentials.end()) sub.combine_into(error, *t->second, it == normals.end() ? NULL : it->second);
     }
     void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {

@@ -117,6 +117,7 @@ public:
         registry.connect("Yeff", Yeff, "model demcontact");
         registry.connect("Geff", Geff, "model demcontact");
         registry.connect("coeffRest", coeffRest, "model demcontact");
+        deferred = false; // set again by rolling_friction demcontact's combine_into at this init
         // Called on every rank at each run's init, after the material fixes exist: calibrate here
         // (error->all is collective) rather than lazily at a first contact that not all ranks see.
         calibrate();
@@ -132,6 +133,10 @@ public:
     void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
         if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+        // tangential + rolling_friction demcontact: the combined evaluation of the tangential class
+        // applies the normal force too (nothing between reads sidata.Fn, kn, kt; see
+        // friction_models_demcontact.h), so it is computed once per contact, not twice
+        if (deferred) return;
 
         const int itype = sidata.itype, jtype = sidata.jtype;
         const double reff = sidata.is_wall ? sidata.radi
@@ -276,6 +281,10 @@ private:
     double exponent, v_ref = 1.0, r_ref = 0.0, rho_ref = 0.0;
     int ntypes;
     std::vector<dc_pair> pairs;
+
+public:
+    // the tangential class's combined model applies this model's normal force (set at each init)
+    mutable bool deferred = false;
 };
 
 } // namespace ContactModels

@@ -8,38 +8,10 @@ from typing import List, NamedTuple, Optional, Sequence, Union, final
 import numpy as np
 import numpy.typing as npt
 
-from ._errors import (
-    STATUS_CLASSES as STATUS_CLASSES,
-    BufferLayoutError as BufferLayoutError,
-    FitDegenerateError as FitDegenerateError,
-    FitTooFewError as FitTooFewError,
-    BuiltinUnreachableError as BuiltinUnreachableError,
-    BuiltinModelError as BuiltinModelError,
-    BufferTooShortError as BufferTooShortError,
-    ContactModelInvalidError as ContactModelInvalidError,
-    CriterionError as CriterionError,
-    DemcontactError as DemcontactError,
-    ExponentRangeError as ExponentRangeError,
-    InputError as InputError,
-    InternalError as InternalError,
-    LevelError as LevelError,
-    NegativeError as NegativeError,
-    NoConvergenceError as NoConvergenceError,
-    NoEventError as NoEventError,
-    NotFiniteError as NotFiniteError,
-    NotPositiveError as NotPositiveError,
-    NotUnitError as NotUnitError,
-    NullPointerError as NullPointerError,
-    PairInvalidError as PairInvalidError,
-    PanicError as PanicError,
-    PlanError as PlanError,
-    RestitutionRangeError as RestitutionRangeError,
-    SpecModelError as SpecModelError,
-    SpecUnsetError as SpecUnsetError,
-    SpecVersionError as SpecVersionError,
-    ResultRangeError as ResultRangeError,
-    UsageError as UsageError,
-)
+# The exception classes and their names in __all__ come from _errors (the one list of them):
+# mypy takes `from m import __all__ as __all__` as this module's __all__, extended below.
+from ._errors import *
+from ._errors import __all__ as __all__
 
 _Real = Union[float, int, np.floating, np.integer]
 _ArrayLike = Union[_Real, npt.ArrayLike]
@@ -47,7 +19,7 @@ _FloatOrArray = Union[float, npt.NDArray[np.float64]]
 _Code = Union[int, enum.IntEnum]
 
 __version__: str
-__all__: list[str] = [
+__all__ += [
     "Criterion",
     "Model",
     "Status",
@@ -120,36 +92,6 @@ __all__: list[str] = [
     "status_str",
     "status_known",
     "version",
-    "DemcontactError",
-    "InputError",
-    "ResultRangeError",
-    "NoEventError",
-    "UsageError",
-    "InternalError",
-    "NotFiniteError",
-    "RestitutionRangeError",
-    "ExponentRangeError",
-    "NotPositiveError",
-    "NegativeError",
-    "CriterionError",
-    "LevelError",
-    "BuiltinModelError",
-    "BuiltinUnreachableError",
-    "FitTooFewError",
-    "FitDegenerateError",
-    "NotUnitError",
-    "SpecModelError",
-    "SpecUnsetError",
-    "SpecVersionError",
-    "ContactModelInvalidError",
-    "NullPointerError",
-    "BufferTooShortError",
-    "BufferLayoutError",
-    "PairInvalidError",
-    "PlanError",
-    "NoConvergenceError",
-    "PanicError",
-    "STATUS_CLASSES",
 ]
 LEVEL_MIN: int
 LEVEL_MAX: int

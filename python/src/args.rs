@@ -9,6 +9,7 @@
 //!   argument: a restitution of `True` or `1+0j` is a bug in the caller, not a number.
 //! * Lists, tuples and other array-likes go through `numpy.asarray` first.
 
+use ndarray::IxDyn;
 use numpy::{
     PyArrayDescrMethods, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArray,
     PyUntypedArrayMethods,
@@ -32,6 +33,51 @@ impl Arg<'_> {
             Arg::Scalar(_) => &[],
             Arg::Array(a) => a.shape(),
         }
+    }
+}
+
+/// One batch input as a contiguous run of doubles of the target shape: the caller's memory when
+/// it already is one (zero copy), else one copy of its broadcast.
+pub enum Run<'a> {
+    Borrowed(&'a [f64]),
+    Owned(Vec<f64>),
+}
+
+impl Run<'_> {
+    pub fn slice(&self) -> &[f64] {
+        match self {
+            Run::Borrowed(s) => s,
+            Run::Owned(v) => v,
+        }
+    }
+}
+
+/// `a` as a run of `shape` (None when it does not broadcast to that shape).
+pub fn run<'a>(a: &'a Arg<'_>, shape: &[usize]) -> Option<Run<'a>> {
+    let view = match a {
+        Arg::Scalar(x) => ndarray::aview0(x).into_dyn(),
+        Arg::Array(ro) => ro.as_array(),
+    };
+    if view.shape() == shape
+        && let Some(s) = view.to_slice()
+    {
+        return Some(Run::Borrowed(s));
+    }
+    let b = view.broadcast(IxDyn(shape))?;
+    Some(Run::Owned(b.iter().copied().collect()))
+}
+
+/// A shape as Python prints it: (6,), (6, 3).
+pub fn shape_str(s: &[usize]) -> String {
+    match s {
+        [n] => format!("({n},)"),
+        _ => format!(
+            "({})",
+            s.iter()
+                .map(usize::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
     }
 }
 

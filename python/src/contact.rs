@@ -13,7 +13,6 @@ use demcontact::ffi::contact::{
     dc_contact_history_len, dc_contact_model, dc_contact_model_init, dc_contact_result,
     dc_contact_spec, dc_contact_spec_init, dc_contact_state,
 };
-use ndarray::IxDyn;
 use numpy::{
     PyArray1, PyArray2, PyArrayDescrMethods, PyArrayDyn, PyArrayMethods, PyReadwriteArrayDyn,
     PyUntypedArray, PyUntypedArrayMethods,
@@ -22,7 +21,7 @@ use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
 use pyo3::types::{PyFloat, PyInt, PyList, PyTuple, PyType};
 
-use crate::args::{Arg, arg, code, real};
+use crate::args::{Arg, Run, arg, code, real, run, shape_str};
 use crate::error::{status_error, type_error, value_error};
 use crate::force::Pair;
 
@@ -72,244 +71,102 @@ fn library_defaults() -> dc_contact_spec {
     }
 }
 
-/// What a contact model is made of (C: dc_contact_spec), built by keyword; every field left out
-/// keeps the library's default (dc_contact_spec_init): no normal law (`normal` must be given),
-/// Damping.NONE, Criterion.FORCE, no tangential/rolling/twisting part, every parameter unset
-/// (NaN) except e_t = 1, k_r = 0, eta_r = eta_tw = 0, inertia_factor = 0.4. Parameters of
-/// sub-models not chosen are ignored; one a chosen sub-model needs and left unset makes
-/// contact_model_init raise SpecUnsetError. Units and meanings: include/demcontact.h.
-///
-/// >>> spec = ContactSpec(normal=Normal.HERTZ, damping=Damping.RESTITUTION, e_n=0.9,
-/// ...                    E1=7e10, nu1=0.3, E2=math.inf, nu2=0.3,
-/// ...                    tangential=Tangential.MINDLIN, mu=0.3)
-/// >>> model = contact_model_init(spec)
-#[pyclass(frozen, get_all, module = "demcontact", name = "ContactSpec")]
-#[allow(non_snake_case)]
-#[derive(Clone)]
-pub struct ContactSpec {
-    normal: i32,
-    damping: i32,
-    criterion: i32,
-    tangential: i32,
-    rolling: i32,
-    twisting: i32,
-    E1: f64,
-    nu1: f64,
-    E2: f64,
-    nu2: f64,
-    p: f64,
-    k_n: f64,
-    e_n: f64,
-    visco_A: f64,
-    mu: f64,
-    k_t: f64,
-    e_t: f64,
-    mu_r: f64,
-    k_r: f64,
-    eta_r: f64,
-    mu_tw: f64,
-    k_tw: f64,
-    eta_tw: f64,
-    inertia_factor: f64,
-    work_of_adhesion: f64,
-}
-
-impl ContactSpec {
-    fn from_raw(s: &dc_contact_spec) -> Self {
-        ContactSpec {
-            normal: s.normal,
-            damping: s.damping,
-            criterion: s.criterion,
-            tangential: s.tangential,
-            rolling: s.rolling,
-            twisting: s.twisting,
-            E1: s.E1,
-            nu1: s.nu1,
-            E2: s.E2,
-            nu2: s.nu2,
-            p: s.p,
-            k_n: s.k_n,
-            e_n: s.e_n,
-            visco_A: s.visco_A,
-            mu: s.mu,
-            k_t: s.k_t,
-            e_t: s.e_t,
-            mu_r: s.mu_r,
-            k_r: s.k_r,
-            eta_r: s.eta_r,
-            mu_tw: s.mu_tw,
-            k_tw: s.k_tw,
-            eta_tw: s.eta_tw,
-            inertia_factor: s.inertia_factor,
-            work_of_adhesion: s.work_of_adhesion,
+/// Declares the ContactSpec class from one list of its fields (the C struct's names): the class,
+/// its conversions from and to dc_contact_spec, its keyword constructor and its repr. A field
+/// added to dc_contact_spec is named here once.
+macro_rules! contact_spec_class {
+    (codes: [$($i:ident),* $(,)?], reals: [$($r:ident),* $(,)?] $(,)?) => {
+        /// What a contact model is made of (C: dc_contact_spec), built by keyword; every field
+        /// left out keeps the library's default (dc_contact_spec_init): no normal law (`normal`
+        /// must be given), Damping.NONE, Criterion.FORCE, no tangential/rolling/twisting part,
+        /// every parameter unset (NaN) except e_t = 1, k_r = 0, eta_r = eta_tw = 0,
+        /// inertia_factor = 0.4. Parameters of sub-models not chosen are ignored; one a chosen
+        /// sub-model needs and left unset makes contact_model_init raise SpecUnsetError. Units
+        /// and meanings: include/demcontact.h.
+        ///
+        /// >>> spec = ContactSpec(normal=Normal.HERTZ, damping=Damping.RESTITUTION, e_n=0.9,
+        /// ...                    E1=7e10, nu1=0.3, E2=math.inf, nu2=0.3,
+        /// ...                    tangential=Tangential.MINDLIN, mu=0.3)
+        /// >>> model = contact_model_init(spec)
+        #[pyclass(frozen, get_all, module = "demcontact", name = "ContactSpec")]
+        #[allow(non_snake_case)]
+        #[derive(Clone)]
+        pub struct ContactSpec {
+            $($i: i32,)*
+            $($r: f64,)*
         }
-    }
 
-    /// The C struct: version and size from dc_contact_spec_init, every field from self.
-    fn raw(&self) -> dc_contact_spec {
-        dc_contact_spec {
-            normal: self.normal,
-            damping: self.damping,
-            criterion: self.criterion,
-            tangential: self.tangential,
-            rolling: self.rolling,
-            twisting: self.twisting,
-            E1: self.E1,
-            nu1: self.nu1,
-            E2: self.E2,
-            nu2: self.nu2,
-            p: self.p,
-            k_n: self.k_n,
-            e_n: self.e_n,
-            visco_A: self.visco_A,
-            mu: self.mu,
-            k_t: self.k_t,
-            e_t: self.e_t,
-            mu_r: self.mu_r,
-            k_r: self.k_r,
-            eta_r: self.eta_r,
-            mu_tw: self.mu_tw,
-            k_tw: self.k_tw,
-            eta_tw: self.eta_tw,
-            inertia_factor: self.inertia_factor,
-            work_of_adhesion: self.work_of_adhesion,
-            ..library_defaults()
-        }
-    }
+        impl ContactSpec {
+            fn from_raw(s: &dc_contact_spec) -> Self {
+                ContactSpec {
+                    $($i: s.$i,)*
+                    $($r: s.$r,)*
+                }
+            }
 
-    fn describe(&self) -> String {
-        let ints = [
-            ("normal", self.normal),
-            ("damping", self.damping),
-            ("criterion", self.criterion),
-            ("tangential", self.tangential),
-            ("rolling", self.rolling),
-            ("twisting", self.twisting),
-        ];
-        let reals = [
-            ("E1", self.E1),
-            ("nu1", self.nu1),
-            ("E2", self.E2),
-            ("nu2", self.nu2),
-            ("p", self.p),
-            ("k_n", self.k_n),
-            ("e_n", self.e_n),
-            ("visco_A", self.visco_A),
-            ("mu", self.mu),
-            ("k_t", self.k_t),
-            ("e_t", self.e_t),
-            ("mu_r", self.mu_r),
-            ("k_r", self.k_r),
-            ("eta_r", self.eta_r),
-            ("mu_tw", self.mu_tw),
-            ("k_tw", self.k_tw),
-            ("eta_tw", self.eta_tw),
-            ("inertia_factor", self.inertia_factor),
-            ("work_of_adhesion", self.work_of_adhesion),
-        ];
-        let mut parts: Vec<String> = ints.iter().map(|(n, v)| format!("{n}={v}")).collect();
-        // Unset (NaN) parameters are left out: they are what ContactSpec() gives anyway.
-        parts.extend(
-            reals
-                .iter()
-                .filter(|(_, v)| !v.is_nan())
-                .map(|(n, v)| format!("{n}={v:?}")),
-        );
-        parts.join(", ")
-    }
-}
+            /// The C struct: version and size from dc_contact_spec_init, every field from self.
+            fn raw(&self) -> dc_contact_spec {
+                dc_contact_spec {
+                    $($i: self.$i,)*
+                    $($r: self.$r,)*
+                    ..library_defaults()
+                }
+            }
 
-#[pymethods]
-impl ContactSpec {
-    #[new]
-    #[pyo3(signature = (*, normal=None, damping=None, criterion=None, tangential=None,
-        rolling=None, twisting=None, E1=None, nu1=None, E2=None, nu2=None, p=None, k_n=None,
-        e_n=None, visco_A=None, mu=None, k_t=None, e_t=None, mu_r=None, k_r=None, eta_r=None,
-        mu_tw=None, k_tw=None, eta_tw=None, inertia_factor=None, work_of_adhesion=None))]
-    #[allow(non_snake_case, clippy::too_many_arguments)]
-    fn new(
-        normal: Option<&Bound<'_, PyAny>>,
-        damping: Option<&Bound<'_, PyAny>>,
-        criterion: Option<&Bound<'_, PyAny>>,
-        tangential: Option<&Bound<'_, PyAny>>,
-        rolling: Option<&Bound<'_, PyAny>>,
-        twisting: Option<&Bound<'_, PyAny>>,
-        E1: Option<&Bound<'_, PyAny>>,
-        nu1: Option<&Bound<'_, PyAny>>,
-        E2: Option<&Bound<'_, PyAny>>,
-        nu2: Option<&Bound<'_, PyAny>>,
-        p: Option<&Bound<'_, PyAny>>,
-        k_n: Option<&Bound<'_, PyAny>>,
-        e_n: Option<&Bound<'_, PyAny>>,
-        visco_A: Option<&Bound<'_, PyAny>>,
-        mu: Option<&Bound<'_, PyAny>>,
-        k_t: Option<&Bound<'_, PyAny>>,
-        e_t: Option<&Bound<'_, PyAny>>,
-        mu_r: Option<&Bound<'_, PyAny>>,
-        k_r: Option<&Bound<'_, PyAny>>,
-        eta_r: Option<&Bound<'_, PyAny>>,
-        mu_tw: Option<&Bound<'_, PyAny>>,
-        k_tw: Option<&Bound<'_, PyAny>>,
-        eta_tw: Option<&Bound<'_, PyAny>>,
-        inertia_factor: Option<&Bound<'_, PyAny>>,
-        work_of_adhesion: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<Self> {
-        const F: &str = "ContactSpec";
-        let mut s = ContactSpec::from_raw(&library_defaults());
-        let ints: [(&str, Option<&Bound<'_, PyAny>>, &mut i32); 6] = [
-            ("normal", normal, &mut s.normal),
-            ("damping", damping, &mut s.damping),
-            ("criterion", criterion, &mut s.criterion),
-            ("tangential", tangential, &mut s.tangential),
-            ("rolling", rolling, &mut s.rolling),
-            ("twisting", twisting, &mut s.twisting),
-        ];
-        for (name, given, slot) in ints {
-            if let Some(o) = given {
-                *slot = code(F, name, o)?;
+            fn describe(&self) -> String {
+                let mut parts: Vec<String> = vec![$(format!("{}={}", stringify!($i), self.$i)),*];
+                // Unset (NaN) parameters are left out: they are what ContactSpec() gives anyway.
+                $(
+                    if !self.$r.is_nan() {
+                        parts.push(format!("{}={:?}", stringify!($r), self.$r));
+                    }
+                )*
+                parts.join(", ")
             }
         }
-        let reals: [(&str, Option<&Bound<'_, PyAny>>, &mut f64); 19] = [
-            ("E1", E1, &mut s.E1),
-            ("nu1", nu1, &mut s.nu1),
-            ("E2", E2, &mut s.E2),
-            ("nu2", nu2, &mut s.nu2),
-            ("p", p, &mut s.p),
-            ("k_n", k_n, &mut s.k_n),
-            ("e_n", e_n, &mut s.e_n),
-            ("visco_A", visco_A, &mut s.visco_A),
-            ("mu", mu, &mut s.mu),
-            ("k_t", k_t, &mut s.k_t),
-            ("e_t", e_t, &mut s.e_t),
-            ("mu_r", mu_r, &mut s.mu_r),
-            ("k_r", k_r, &mut s.k_r),
-            ("eta_r", eta_r, &mut s.eta_r),
-            ("mu_tw", mu_tw, &mut s.mu_tw),
-            ("k_tw", k_tw, &mut s.k_tw),
-            ("eta_tw", eta_tw, &mut s.eta_tw),
-            ("inertia_factor", inertia_factor, &mut s.inertia_factor),
-            (
-                "work_of_adhesion",
-                work_of_adhesion,
-                &mut s.work_of_adhesion,
-            ),
-        ];
-        for (name, given, slot) in reals {
-            if let Some(o) = given {
-                *slot = real(F, name, o)?;
+
+        #[pymethods]
+        impl ContactSpec {
+            #[new]
+            #[pyo3(signature = (*, $($i = None,)* $($r = None),*))]
+            #[allow(non_snake_case, clippy::too_many_arguments)]
+            fn new(
+                $($i: Option<&Bound<'_, PyAny>>,)*
+                $($r: Option<&Bound<'_, PyAny>>,)*
+            ) -> PyResult<Self> {
+                const F: &str = "ContactSpec";
+                let mut s = ContactSpec::from_raw(&library_defaults());
+                $(
+                    if let Some(o) = $i {
+                        s.$i = code(F, stringify!($i), o)?;
+                    }
+                )*
+                $(
+                    if let Some(o) = $r {
+                        s.$r = real(F, stringify!($r), o)?;
+                    }
+                )*
+                Ok(s)
+            }
+
+            /// contact_model_init(self).
+            fn model(&self, py: Python<'_>) -> PyResult<ContactModel> {
+                model_init(py, self)
+            }
+
+            fn __repr__(&self) -> String {
+                format!("ContactSpec({})", self.describe())
             }
         }
-        Ok(s)
-    }
+    };
+}
 
-    /// contact_model_init(self).
-    fn model(&self, py: Python<'_>) -> PyResult<ContactModel> {
-        model_init(py, self)
-    }
-
-    fn __repr__(&self) -> String {
-        format!("ContactSpec({})", self.describe())
-    }
+contact_spec_class! {
+    codes: [normal, damping, criterion, tangential, rolling, twisting],
+    reals: [
+        E1, nu1, E2, nu2, p, k_n, e_n, visco_A, mu, k_t, e_t, mu_r, k_r, eta_r, mu_tw, k_tw,
+        eta_tw, inertia_factor, work_of_adhesion,
+    ],
 }
 
 /// The library's default spec (C: dc_contact_spec_init): the same as ContactSpec().
@@ -699,38 +556,24 @@ pub fn contact_force<'py>(
     history: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     const F: &str = "contact_force";
-    let py = model.py();
-    let m = model.get();
     let state = state_of(F, Some(n), Some(overlap), v1, v2, w1, w2, r1, r2, m1, m2)?;
     let dt = real(F, "dt", dt)?;
-    let mut hist = history_arg(F, m, history)?;
-    let (hp, hl) = match hist.as_mut() {
-        Some(h) => {
-            let s = h
-                .as_slice_mut()
-                .map_err(|e| value_error(F, &e.to_string()))?;
-            (s.as_mut_ptr(), s.len())
-        }
-        None => (std::ptr::null_mut(), 0),
-    };
-    let mut out = std::mem::MaybeUninit::<dc_contact_result>::uninit();
-    // SAFETY: model, state and out are live locals; history is NULL with length 0 or a
-    // borrowed-for-writing contiguous run of `hl` doubles.
-    let s = unsafe { dc_contact_force(&m.raw, &state, dt, hp, hl, out.as_mut_ptr()) };
-    drop(hist);
-    if s != c::status::DC_OK {
-        return Err(status_error(
-            py,
-            s,
-            F,
-            &format!(
+    one_contact(
+        F,
+        model,
+        history,
+        |m, hp, hl, out| {
+            // SAFETY: model, state and out are live locals; history is NULL with length 0 or a
+            // borrowed-for-writing contiguous run of `hl` doubles (one_contact).
+            unsafe { dc_contact_force(m, &state, dt, hp, hl, out) }
+        },
+        |hl| {
+            format!(
                 "with {}, dt={dt:?}, history of {hl} doubles",
                 describe_state(&state)
-            ),
-        ));
-    }
-    // SAFETY: DC_OK means the whole result was written.
-    result_tuple(py, &unsafe { out.assume_init() })
+            )
+        },
+    )
 }
 
 /// contact_force for two spheres given by their centres x1, x2 (C: dc_contact_force_spheres):
@@ -754,108 +597,70 @@ pub fn contact_force_spheres<'py>(
     history: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     const F: &str = "contact_force_spheres";
-    let py = model.py();
-    let m = model.get();
     let (a, b) = (vec3(F, "x1", x1)?, vec3(F, "x2", x2)?);
     let state = state_of(F, None, None, v1, v2, w1, w2, r1, r2, m1, m2)?;
     let dt = real(F, "dt", dt)?;
-    let mut hist = history_arg(F, m, history)?;
+    one_contact(
+        F,
+        model,
+        history,
+        |m, hp, hl, out| {
+            // SAFETY: as contact_force; x1, x2 are live local 3-vectors.
+            unsafe { dc_contact_force_spheres(m, a.as_ptr(), b.as_ptr(), &state, dt, hp, hl, out) }
+        },
+        |_| {
+            format!(
+                "with x1={a:?}, x2={b:?}, v1={:?}, v2={:?}, w1={:?}, w2={:?}, r1={:?}, r2={:?}, m1={:?}, m2={:?}, dt={dt:?}",
+                state.v1, state.v2, state.w1, state.w2, state.r1, state.r2, state.m1, state.m2
+            )
+        },
+    )
+}
+
+/// What contact_force and contact_force_spheres share: the history borrowed for writing (NULL
+/// and 0 without one), the export run by `call(model, history, len, out)`, its status turned
+/// into an exception with `detail(len)`, and the result as a ContactResult.
+fn one_contact<'py>(
+    function: &str,
+    model: &Bound<'py, ContactModel>,
+    history: Option<&Bound<'py, PyAny>>,
+    call: impl FnOnce(&dc_contact_model, *mut f64, usize, *mut dc_contact_result) -> i32,
+    detail: impl FnOnce(usize) -> String,
+) -> PyResult<Bound<'py, PyAny>> {
+    let py = model.py();
+    let m = model.get();
+    let mut hist = history_arg(function, m, history)?;
     let (hp, hl) = match hist.as_mut() {
         Some(h) => {
             let s = h
                 .as_slice_mut()
-                .map_err(|e| value_error(F, &e.to_string()))?;
+                .map_err(|e| value_error(function, &e.to_string()))?;
             (s.as_mut_ptr(), s.len())
         }
         None => (std::ptr::null_mut(), 0),
     };
     let mut out = std::mem::MaybeUninit::<dc_contact_result>::uninit();
-    // SAFETY: as contact_force; x1, x2 are live local 3-vectors.
-    let s = unsafe {
-        dc_contact_force_spheres(
-            &m.raw,
-            a.as_ptr(),
-            b.as_ptr(),
-            &state,
-            dt,
-            hp,
-            hl,
-            out.as_mut_ptr(),
-        )
-    };
+    let s = call(&m.raw, hp, hl, out.as_mut_ptr());
     drop(hist);
     if s != c::status::DC_OK {
-        return Err(status_error(
-            py,
-            s,
-            F,
-            &format!(
-                "with x1={a:?}, x2={b:?}, v1={:?}, v2={:?}, w1={:?}, w2={:?}, r1={:?}, r2={:?}, m1={:?}, m2={:?}, dt={dt:?}",
-                state.v1, state.v2, state.w1, state.w2, state.r1, state.r2, state.m1, state.m2
-            ),
-        ));
+        return Err(status_error(py, s, function, &detail(hl)));
     }
     // SAFETY: DC_OK means the whole result was written.
     result_tuple(py, &unsafe { out.assume_init() })
 }
 
-/// One batch input as a contiguous run of doubles of the target shape: the caller's memory when
-/// it already is one (zero copy), else one copy of its broadcast.
-enum Run<'a> {
-    Borrowed(&'a [f64]),
-    Owned(Vec<f64>),
-}
-
-impl Run<'_> {
-    fn ptr(&self) -> *const f64 {
-        match self {
-            Run::Borrowed(s) => s.as_ptr(),
-            Run::Owned(v) => v.as_ptr(),
-        }
-    }
-}
-
-/// A shape as Python prints it: (6,), (6, 3).
-fn shape_str(s: &[usize]) -> String {
-    match s {
-        [n] => format!("({n},)"),
-        _ => format!(
-            "({})",
-            s.iter()
-                .map(usize::to_string)
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
-    }
-}
-
-fn run<'a>(
-    function: &str,
-    name: &str,
-    a: &'a Arg<'_>,
-    scalar: &'a f64,
-    shape: &[usize],
-) -> PyResult<Run<'a>> {
-    let view = match a {
-        Arg::Scalar(_) => ndarray::aview0(scalar).into_dyn(),
-        Arg::Array(ro) => ro.as_array(),
-    };
-    if view.shape() == shape
-        && let Some(s) = view.to_slice()
-    {
-        return Ok(Run::Borrowed(s));
-    }
-    match view.broadcast(IxDyn(shape)) {
-        Some(b) => Ok(Run::Owned(b.iter().copied().collect())),
-        None => Err(value_error(
+/// `a` as a run of `shape`, or the error naming it.
+fn run_of<'a>(function: &str, name: &str, a: &'a Arg<'_>, shape: &[usize]) -> PyResult<Run<'a>> {
+    run(a, shape).ok_or_else(|| {
+        value_error(
             function,
             &format!(
                 "{name} has shape {}, expected {} (or one that broadcasts to it)",
-                shape_str(view.shape()),
+                shape_str(a.shape()),
                 shape_str(shape)
             ),
-        )),
-    }
+        )
+    })
 }
 
 /// Raw pointers of one batch, moved into the GIL-free closure.
@@ -1010,24 +815,17 @@ pub fn contact_force_batch<'py>(
         ("m1", arg(F, "m1", m1)?),
         ("m2", arg(F, "m2", m2)?),
     ];
-    let scalar_of = |a: &Arg<'_>| match a {
-        Arg::Scalar(x) => *x,
-        Arg::Array(_) => f64::NAN,
-    };
-    let sc3: [f64; 5] = std::array::from_fn(|i| args3[i].1.as_ref().map_or(f64::NAN, scalar_of));
-    let sc1: [f64; 4] = std::array::from_fn(|i| scalar_of(&args1[i].1));
-    let sd = scalar_of(&d);
-    let rd = run(F, "overlap", &d, &sd, &s1)?;
+    let rd = run_of(F, "overlap", &d, &s1)?;
     let mut r3: Vec<Option<Run<'_>>> = Vec::with_capacity(5);
-    for ((name, a), s) in args3.iter().zip(&sc3) {
+    for (name, a) in &args3 {
         r3.push(match a {
-            Some(a) => Some(run(F, name, a, s, &s3)?),
+            Some(a) => Some(run_of(F, name, a, &s3)?),
             None => None,
         });
     }
     let mut r1v: Vec<Run<'_>> = Vec::with_capacity(4);
-    for ((name, a), s) in args1.iter().zip(&sc1) {
-        r1v.push(run(F, name, a, s, &s1)?);
+    for (name, a) in &args1 {
+        r1v.push(run_of(F, name, a, &s1)?);
     }
 
     // History: (n, L) float64, C-contiguous, writable (the library checks L >= history_len).
@@ -1137,16 +935,16 @@ pub fn contact_force_batch<'py>(
     let p3 = |i: usize| {
         r3.get(i)
             .and_then(Option::as_ref)
-            .map_or(std::ptr::null(), Run::ptr)
+            .map_or(std::ptr::null(), |r| r.slice().as_ptr())
     };
-    let p1 = |i: usize| r1v.get(i).map_or(std::ptr::null(), Run::ptr);
+    let p1 = |i: usize| r1v.get(i).map_or(std::ptr::null(), |r| r.slice().as_ptr());
     let job = Job {
         model: m.raw,
         batch: dc_contact_batch {
             n,
             history_stride: stride,
             normal: p3(0),
-            overlap: rd.ptr(),
+            overlap: rd.slice().as_ptr(),
             v1: p3(1),
             v2: p3(2),
             w1: p3(3),

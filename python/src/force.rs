@@ -7,7 +7,7 @@ use ndarray::IxDyn;
 use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
-use crate::args::{Arg, arg, code, real};
+use crate::args::{Arg, Run, arg, code, real, run};
 use crate::error::{status_error, type_error, value_error};
 use crate::vectorize::{Cost, broadcast_shape, one, unravel, vectorize};
 
@@ -207,19 +207,36 @@ impl Pair {
     }
 }
 
-fn make_pair(
+/// What every pair constructor does: reads the real parameters (`params`: name and object) and
+/// the criterion, runs the C constructor as `make(values, criterion, out)`, and turns its status
+/// into an exception naming every parameter.
+fn pair_from<const N: usize>(
     py: Python<'_>,
     function: &str,
-    detail: String,
-    f: impl FnOnce(*mut dc_pair) -> i32,
+    params: [(&str, &Bound<'_, PyAny>); N],
+    criterion: &Bound<'_, PyAny>,
+    make: impl FnOnce([f64; N], i32, *mut dc_pair) -> i32,
 ) -> PyResult<Pair> {
+    let mut x = [0.0; N];
+    for (slot, (name, obj)) in x.iter_mut().zip(params) {
+        *slot = real(function, name, obj)?;
+    }
+    let crit = code(function, "criterion", criterion)?;
     let mut raw = std::mem::MaybeUninit::<dc_pair>::uninit();
-    match f(raw.as_mut_ptr()) {
+    match make(x, crit, raw.as_mut_ptr()) {
         c::status::DC_OK => {
             // SAFETY: DC_OK means the constructor wrote the whole struct.
             Ok(Pair::new(unsafe { raw.assume_init() }))
         }
-        s => Err(status_error(py, s, function, &detail)),
+        s => {
+            let given: Vec<String> = params
+                .iter()
+                .zip(x)
+                .map(|((name, _), v)| format!("{name}={v:?}"))
+                .collect();
+            let detail = format!("with {}, criterion={crit}", given.join(", "));
+            Err(status_error(py, s, function, &detail))
+        }
     }
 }
 
@@ -235,14 +252,13 @@ pub fn pair_powerlaw(
     e: &Bound<'_, PyAny>,
     criterion: &Bound<'_, PyAny>,
 ) -> PyResult<Pair> {
-    const F: &str = "pair_powerlaw";
-    let (p, k, e) = (real(F, "p", p)?, real(F, "k", k)?, real(F, "e", e)?);
-    let crit = code(F, "criterion", criterion)?;
-    make_pair(
+    let params = [("p", p), ("k", k), ("e", e)];
+    pair_from(
         py,
-        F,
-        format!("with p={p:?}, k={k:?}, e={e:?}, criterion={crit}"),
-        |o| {
+        "pair_powerlaw",
+        params,
+        criterion,
+        |[p, k, e], crit, o| {
             // SAFETY: `o` points to a live local dc_pair.
             unsafe { c::force::dc_pair_powerlaw(p, k, e, crit, o) }
         },
@@ -260,14 +276,13 @@ pub fn pair_powerlaw_alpha(
     alpha: &Bound<'_, PyAny>,
     criterion: &Bound<'_, PyAny>,
 ) -> PyResult<Pair> {
-    const F: &str = "pair_powerlaw_alpha";
-    let (p, k, a) = (real(F, "p", p)?, real(F, "k", k)?, real(F, "alpha", alpha)?);
-    let crit = code(F, "criterion", criterion)?;
-    make_pair(
+    let params = [("p", p), ("k", k), ("alpha", alpha)];
+    pair_from(
         py,
-        F,
-        format!("with p={p:?}, k={k:?}, alpha={a:?}, criterion={crit}"),
-        |o| {
+        "pair_powerlaw_alpha",
+        params,
+        criterion,
+        |[p, k, a], crit, o| {
             // SAFETY: `o` points to a live local dc_pair.
             unsafe { c::force::dc_pair_powerlaw_alpha(p, k, a, crit, o) }
         },
@@ -284,14 +299,12 @@ pub fn pair_linear(
     e: &Bound<'_, PyAny>,
     criterion: &Bound<'_, PyAny>,
 ) -> PyResult<Pair> {
-    const F: &str = "pair_linear";
-    let (k, e) = (real(F, "k", k)?, real(F, "e", e)?);
-    let crit = code(F, "criterion", criterion)?;
-    make_pair(
+    pair_from(
         py,
-        F,
-        format!("with k={k:?}, e={e:?}, criterion={crit}"),
-        |o| {
+        "pair_linear",
+        [("k", k), ("e", e)],
+        criterion,
+        |[k, e], crit, o| {
             // SAFETY: `o` points to a live local dc_pair.
             unsafe { c::force::dc_pair_linear(k, e, crit, o) }
         },
@@ -314,20 +327,13 @@ pub fn pair_hertz(
     e: &Bound<'_, PyAny>,
     criterion: &Bound<'_, PyAny>,
 ) -> PyResult<Pair> {
-    const F: &str = "pair_hertz";
-    let (e1, n1, e2, n2) = (
-        real(F, "E1", E1)?,
-        real(F, "nu1", nu1)?,
-        real(F, "E2", E2)?,
-        real(F, "nu2", nu2)?,
-    );
-    let e = real(F, "e", e)?;
-    let crit = code(F, "criterion", criterion)?;
-    make_pair(
+    let params = [("E1", E1), ("nu1", nu1), ("E2", E2), ("nu2", nu2), ("e", e)];
+    pair_from(
         py,
-        F,
-        format!("with E1={e1:?}, nu1={n1:?}, E2={e2:?}, nu2={n2:?}, e={e:?}, criterion={crit}"),
-        |o| {
+        "pair_hertz",
+        params,
+        criterion,
+        |[e1, n1, e2, n2, e], crit, o| {
             // SAFETY: `o` points to a live local dc_pair.
             unsafe { c::force::dc_pair_hertz(e1, n1, e2, n2, e, crit, o) }
         },
@@ -350,20 +356,13 @@ pub fn pair_viscoelastic(
     A: &Bound<'_, PyAny>,
     criterion: &Bound<'_, PyAny>,
 ) -> PyResult<Pair> {
-    const F: &str = "pair_viscoelastic";
-    let (e1, n1, e2, n2) = (
-        real(F, "E1", E1)?,
-        real(F, "nu1", nu1)?,
-        real(F, "E2", E2)?,
-        real(F, "nu2", nu2)?,
-    );
-    let a = real(F, "A", A)?;
-    let crit = code(F, "criterion", criterion)?;
-    make_pair(
+    let params = [("E1", E1), ("nu1", nu1), ("E2", E2), ("nu2", nu2), ("A", A)];
+    pair_from(
         py,
-        F,
-        format!("with E1={e1:?}, nu1={n1:?}, E2={e2:?}, nu2={n2:?}, A={a:?}, criterion={crit}"),
-        |o| {
+        "pair_viscoelastic",
+        params,
+        criterion,
+        |[e1, n1, e2, n2, a], crit, o| {
             // SAFETY: `o` points to a live local dc_pair.
             unsafe { c::force::dc_pair_viscoelastic(e1, n1, e2, n2, a, crit, o) }
         },
@@ -462,36 +461,6 @@ pub fn normal_force_checked<'py>(
     )
 }
 
-/// An input of the batch as one contiguous run of doubles: borrowed from the caller's array
-/// when it already is one (zero copy), else one copy of its broadcast.
-enum Run<'a> {
-    Borrowed(&'a [f64]),
-    Owned(Vec<f64>),
-}
-
-impl Run<'_> {
-    fn slice(&self) -> &[f64] {
-        match self {
-            Run::Borrowed(s) => s,
-            Run::Owned(v) => v,
-        }
-    }
-}
-
-fn run<'a>(a: &'a Arg<'_>, scalar: &'a f64, shape: &[usize]) -> Option<Run<'a>> {
-    let view = match a {
-        Arg::Scalar(_) => ndarray::aview0(scalar).into_dyn(),
-        Arg::Array(ro) => ro.as_array(),
-    };
-    if view.shape() == shape
-        && let Some(s) = view.to_slice()
-    {
-        return Some(Run::Borrowed(s));
-    }
-    let b = view.broadcast(IxDyn(shape))?;
-    Some(Run::Owned(b.iter().copied().collect()))
-}
-
 fn batch<'py>(
     pair: &Pair,
     overlap: &Bound<'py, PyAny>,
@@ -525,18 +494,12 @@ fn batch<'py>(
         ));
     };
     let n: usize = shape.iter().product();
-    let scalar_of = |a: &Arg<'_>| match a {
-        Arg::Scalar(x) => *x,
-        Arg::Array(_) => f64::NAN,
-    };
-    let sd = scalar_of(&d);
-    let so: [f64; 3] = std::array::from_fn(|i| others[i].as_ref().map_or(f64::NAN, scalar_of));
     let bad = || value_error(F, "internal broadcast failure");
-    let rd = run(&d, &sd, &shape).ok_or_else(bad)?;
+    let rd = run(&d, &shape).ok_or_else(bad)?;
     let mut ro: [Option<Run<'_>>; 3] = [None, None, None];
-    for ((slot, a), s) in ro.iter_mut().zip(&others).zip(&so) {
+    for (slot, a) in ro.iter_mut().zip(&others) {
         if let Some(a) = a {
-            *slot = Some(run(a, s, &shape).ok_or_else(bad)?);
+            *slot = Some(run(a, &shape).ok_or_else(bad)?);
         }
     }
 

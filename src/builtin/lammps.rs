@@ -11,8 +11,8 @@
 //!   η = 1.2728 − 4.2783e + 11.087e² − 22.348e³ + 27.467e⁴ − 18.022e⁵ + 4.8218e⁶, so
 //!   ζ = η(e)/√(2(p+1)). η falls strictly from 1.2728 (e = 0) to 0.0003 (e = 1) (η' ≤ −0.459 on
 //!   [0, 1]), so it is inverted uniquely, and only α inside that range can be realised. This is the
-//!   22 Jul 2025 release (the PyPI wheel the harness runs, measured 0.616 for 0.5); later development
-//!   versions multiply η by √2, which this module does not model.
+//!   22 Jul 2025 release (the PyPI wheel the harness runs, measured 0.616 for 0.5); later
+//!   development versions multiply η by √2, which this module does not model.
 //! * `limit_damping`: `if (Fntot < 0) Fntot = 0` — the force-end criterion.
 //!
 //! Reachable with `tsuji` (e typed in (0, 1]): Hertz e ∈ (0.1136, 0.99958), with `limit_damping`

@@ -9,11 +9,11 @@
 //!
 //! `typed = builtin⁻¹(ζ_needed)`,  `ζ_needed = ζ_O(e)` (no clamp) or `ζ_F(e)` (clamp),
 //!
-//! with ζ_O, ζ_F the library's exact calibrations ([`crate::lsd`]). Where the builtin's map from the
-//! typed value to ζ saturates (the overlap-style formulas give ζ < 1 for every typed e, so under a
-//! clamp they never reach e ≤ e⁻²; Tsuji's polynomial stays between 0.0003 and 1.2728) the target
-//! cannot be realised and [`Error::BuiltinUnreachable`] is returned instead of a wrong number.
-//! The formulas each code applies, read from its source, are in the submodules.
+//! with ζ_O, ζ_F the library's exact calibrations ([`crate::lsd`]). Where the builtin's map from
+//! the typed value to ζ saturates (the overlap-style formulas give ζ < 1 for every typed e, so
+//! under a clamp they never reach e ≤ e⁻²; Tsuji's polynomial stays between 0.0003 and 1.2728) the
+//! target cannot be realised and [`Error::BuiltinUnreachable`] is returned instead of a wrong
+//! number. The formulas each code applies, read from its source, are in the submodules.
 
 pub mod lammps;
 pub mod liggghts;

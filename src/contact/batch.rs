@@ -136,6 +136,69 @@ fn normal_pass<L: Law, const CLAMP: bool>(
     }
 }
 
+/// Pass 1 of the fused batch for a normal-only model: the check of each contact folded into
+/// the loop that computes it (one read of each input); a bad contact's f_n and force are NaN.
+struct NormalPassFused<'a, 'b> {
+    c: Consts,
+    inp: &'b BatchIn<'a>,
+    f_n: &'b mut [f64],
+    force: &'b mut [[f64; 3]],
+}
+
+impl Visit for NormalPassFused<'_, '_> {
+    type Out = bool;
+    #[inline(always)]
+    fn visit<L: Law, const CLAMP: bool>(self) -> bool {
+        normal_pass_fused::<L, CLAMP>(self.c, self.inp, self.f_n, self.force)
+    }
+}
+
+/// The state of one contact valid, angular velocities aside (the conditions of
+/// [`check_state`] with ω = 0 and of [`all_valid`])? Branch-free and in floating point, cheap
+/// next to the kernel in one loop: 0·x is ±0 for finite x and NaN for NaN and ±∞, so the sum
+/// of the products is 0 exactly when every value is finite (no overflow possible); `> 0`
+/// is false for NaN, so r2, m2 > 0 also rejects NaN and admits +∞.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn state_ok(n: V3, d: f64, v1: V3, v2: V3, r1: f64, r2: f64, m1: f64, m2: f64) -> bool {
+    let unit = (dot(n, n) - 1.0).abs() <= 1e-6;
+    let [a1, a2, a3] = v1;
+    let [b1, b2, b3] = v2;
+    let z = 0.0 * d + 0.0 * a1 + 0.0 * a2 + 0.0 * a3 + 0.0 * b1 + 0.0 * b2 + 0.0 * b3;
+    let finite = z + 0.0 * r1 + 0.0 * m1 == 0.0;
+    unit & finite & (r1 > 0.0) & (m1 > 0.0) & (r2 > 0.0) & (m2 > 0.0)
+}
+
+/// Returns true if some contact was bad (poisoned).
+#[inline(never)]
+fn normal_pass_fused<L: Law, const CLAMP: bool>(
+    c: Consts,
+    b: &BatchIn<'_>,
+    f_n: &mut [f64],
+    force: &mut [[f64; 3]],
+) -> bool {
+    let it = b
+        .normal
+        .iter()
+        .zip(b.overlap)
+        .zip(b.v1.iter().zip(b.v2))
+        .zip(b.r1.iter().zip(b.r2).zip(b.m1.iter().zip(b.m2)))
+        .zip(f_n.iter_mut().zip(force.iter_mut()));
+    let mut bad = false;
+    for ((((&n, &d), (&v1, &v2)), ((&r1, &r2), (&m1, &m2))), (fo, fv)) in it {
+        let ok = state_ok(n, d, v1, v2, r1, r2, m1, m2);
+        // As normal_pass (same operations, same bits) where ok.
+        let vn = -dot(sub(v1, v2), n);
+        let f = eval::<L, CLAMP>(&c, d, vn, harmonic(r1, r2), harmonic(m1, m2));
+        let f = if ok { f } else { f64::NAN };
+        *fo = f;
+        // NaN f gives NaN components (f == 0 is false).
+        *fv = normal_vector(f, n);
+        bad |= !ok;
+    }
+    bad
+}
+
 /// All inputs valid? Separate passes per array with no early exit, each an OR reduction of bit
 /// arithmetic (no float compare per value: a 64-bit compare has no packed form in the portable
 /// x86-64 baseline, while the integer add/and/or do), which the compiler vectorises; the
@@ -312,18 +375,17 @@ fn frame_pass(m: &ContactModel, b: &BatchIn<'_>, o: &mut BatchOut<'_>) {
     }
 }
 
-/// Forces of n contacts of one model (n = `inp.overlap.len()`); every slice must have the
-/// documented length (checked). Nothing is written on error.
-pub fn contact_force_batch(
+/// The call-level checks (model, buffer lengths, dt): an error here is the whole call's.
+fn check_call(
     m: &ContactModel,
     inp: &BatchIn<'_>,
     dt: f64,
-    out: &mut BatchOut<'_>,
+    out: &BatchOut<'_>,
 ) -> Result<(), Error> {
     check_model(m)?;
     let n = inp.overlap.len();
     let len = m.layout.len;
-    let needs_torque = m.layout.len > 0 || m.rolling != select::ROLLING_NONE;
+    let needs_torque = needs_torque(m);
     let three = [inp.normal, inp.v1, inp.v2, inp.w1, inp.w2];
     let one = [inp.r1, inp.r2, inp.m1, inp.m2];
     let torque_ok = |t: &Option<&mut [[f64; 3]]>| match t {
@@ -348,6 +410,18 @@ pub fn contact_force_batch(
     if !(dt > 0.0) {
         return Err(Error::NotPositive);
     }
+    Ok(())
+}
+
+fn needs_torque(m: &ContactModel) -> bool {
+    m.layout.len > 0 || m.rolling != select::ROLLING_NONE
+}
+
+/// Every state and history value valid? The status of the first bad state (states first, then
+/// histories, as documented for the checked batch).
+fn check_values(m: &ContactModel, inp: &BatchIn<'_>, out: &BatchOut<'_>) -> Result<(), Error> {
+    let len = m.layout.len;
+    let needs_torque = needs_torque(m);
     if !all_valid(inp, needs_torque) {
         for s in states(inp) {
             let s = if needs_torque {
@@ -370,6 +444,16 @@ pub fn contact_force_batch(
     {
         return Err(Error::NotFinite);
     }
+    Ok(())
+}
+
+/// The stages over checked inputs.
+fn compute(
+    m: &ContactModel,
+    inp: &BatchIn<'_>,
+    dt: f64,
+    out: &mut BatchOut<'_>,
+) -> Result<(), Error> {
     let pair = &m.normal;
     dispatch(
         pair.kernel,
@@ -404,4 +488,167 @@ pub fn contact_force_batch(
     }
     frame_pass(m, inp, out);
     Ok(())
+}
+
+/// Forces of n contacts of one model (n = `inp.overlap.len()`); every slice must have the
+/// documented length (checked). Nothing is written on error.
+pub fn contact_force_batch(
+    m: &ContactModel,
+    inp: &BatchIn<'_>,
+    dt: f64,
+    out: &mut BatchOut<'_>,
+) -> Result<(), Error> {
+    check_call(m, inp, dt, out)?;
+    check_values(m, inp, out)?;
+    compute(m, inp, dt, out)
+}
+
+/// Contacts per block of [`contact_force_batch_fused`]: the inputs and outputs of one block
+/// (≤ 330 bytes per contact for the largest model) stay in the L1/L2 cache between the check
+/// and the stage passes, so each input is read from memory once.
+pub(crate) const FUSED_BLOCK: usize = 1024;
+
+/// Contacts `a..b` of a batch (a ≤ b ≤ n, else None).
+fn sub_in<'a>(inp: &BatchIn<'a>, a: usize, b: usize) -> Option<BatchIn<'a>> {
+    Some(BatchIn {
+        normal: inp.normal.get(a..b)?,
+        overlap: inp.overlap.get(a..b)?,
+        v1: inp.v1.get(a..b)?,
+        v2: inp.v2.get(a..b)?,
+        w1: inp.w1.get(a..b)?,
+        w2: inp.w2.get(a..b)?,
+        r1: inp.r1.get(a..b)?,
+        r2: inp.r2.get(a..b)?,
+        m1: inp.m1.get(a..b)?,
+        m2: inp.m2.get(a..b)?,
+    })
+}
+
+/// Outputs of contacts `a..b` (history only when the model has one).
+fn sub_out<'s>(out: &'s mut BatchOut<'_>, len: usize, a: usize, b: usize) -> Option<BatchOut<'s>> {
+    let stride = out.stride;
+    let torque = |t: &'s mut Option<&mut [[f64; 3]]>| match t {
+        Some(t) => t.get_mut(a..b).map(Some),
+        None => Some(None),
+    };
+    Some(BatchOut {
+        f_n: out.f_n.get_mut(a..b)?,
+        force: out.force.get_mut(a..b)?,
+        torque1: torque(&mut out.torque1)?,
+        torque2: torque(&mut out.torque2)?,
+        history: if len > 0 {
+            out.history.get_mut(a * stride..b * stride)?
+        } else {
+            &mut []
+        },
+        stride,
+    })
+}
+
+/// NaN in every output of one contact (its history is left as it was).
+fn poison(o: &mut BatchOut<'_>) {
+    o.f_n.fill(f64::NAN);
+    o.force.fill([f64::NAN; 3]);
+    for t in [o.torque1.as_deref_mut(), o.torque2.as_deref_mut()]
+        .into_iter()
+        .flatten()
+    {
+        t.fill([f64::NAN; 3]);
+    }
+}
+
+/// [`contact_force_batch`] reading each input once from memory: blocks of [`FUSED_BLOCK`]
+/// contacts are checked and then computed while in cache. Call-level errors (model, lengths,
+/// dt) leave everything untouched (`Err`). A contact with a bad state or history does not stop
+/// the others: its outputs are NaN, its history is untouched, and the first such contact's
+/// index and status are returned as `Ok(Some((i, e)))`; every other contact's outputs and
+/// history are exactly those of [`contact_force_batch`] (bit for bit).
+pub fn contact_force_batch_fused(
+    m: &ContactModel,
+    inp: &BatchIn<'_>,
+    dt: f64,
+    out: &mut BatchOut<'_>,
+) -> Result<Option<(usize, Error)>, Error> {
+    check_call(m, inp, dt, out)?;
+    if !needs_torque(m) {
+        return normal_only_fused(m, inp, dt, out);
+    }
+    let n = inp.overlap.len();
+    let len = m.layout.len;
+    let mut first = None;
+    let mut a = 0;
+    while a < n {
+        let b = n.min(a + FUSED_BLOCK);
+        let (Some(bi), Some(mut bo)) = (sub_in(inp, a, b), sub_out(out, len, a, b)) else {
+            return Err(Error::BufferTooShort);
+        };
+        if check_values(m, &bi, &bo).is_ok() {
+            compute(m, &bi, dt, &mut bo)?;
+        } else {
+            // Contact by contact: the good ones exactly as in a batch, the bad ones poisoned.
+            for i in a..b {
+                let (Some(ci), Some(mut co)) = (sub_in(inp, i, i + 1), sub_out(out, len, i, i + 1))
+                else {
+                    return Err(Error::BufferTooShort);
+                };
+                match check_values(m, &ci, &co) {
+                    Ok(()) => compute(m, &ci, dt, &mut co)?,
+                    Err(e) => {
+                        poison(&mut co);
+                        first = first.or(Some((i, e)));
+                    }
+                }
+            }
+        }
+        a = b;
+    }
+    Ok(first)
+}
+
+/// The fused batch of a normal-only model: one loop that checks and computes each contact;
+/// only when a contact was bad, a second look for the statuses.
+fn normal_only_fused(
+    m: &ContactModel,
+    inp: &BatchIn<'_>,
+    dt: f64,
+    out: &mut BatchOut<'_>,
+) -> Result<Option<(usize, Error)>, Error> {
+    let pair = &m.normal;
+    let bad = dispatch(
+        pair.kernel,
+        NormalPassFused {
+            c: pair.consts,
+            inp,
+            f_n: out.f_n,
+            force: out.force,
+        },
+    )
+    .ok_or(Error::ContactModelInvalid)?;
+    for t in [out.torque1.as_deref_mut(), out.torque2.as_deref_mut()]
+        .into_iter()
+        .flatten()
+    {
+        t.fill([0.0; 3]);
+    }
+    if !bad {
+        return Ok(None);
+    }
+    let mut first = None;
+    for (i, s) in states(inp).enumerate() {
+        if state_ok(s.n, s.overlap, s.v1, s.v2, s.r1, s.r2, s.m1, s.m2) {
+            continue;
+        }
+        let (Some(ci), Some(mut co)) = (sub_in(inp, i, i + 1), sub_out(out, 0, i, i + 1)) else {
+            return Err(Error::BufferTooShort);
+        };
+        match check_values(m, &ci, &co) {
+            Err(e) => {
+                poison(&mut co);
+                first = first.or(Some((i, e)));
+            }
+            // Not reachable (the two checks test the same conditions); recompute to be safe.
+            Ok(()) => compute(m, &ci, dt, &mut co)?,
+        }
+    }
+    Ok(first)
 }

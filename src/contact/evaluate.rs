@@ -33,37 +33,57 @@ pub struct ContactForce {
 
 /// Checks a model built elsewhere (e.g. a `dc_contact_model` the caller may have edited).
 pub(crate) fn check_model(m: &ContactModel) -> Result<(), Error> {
-    needs(m.normal.kernel).ok_or(Error::ContactModelInvalid)?;
+    check_model_parts(
+        m.normal.kernel,
+        [m.tangential, m.rolling, m.twisting],
+        &[
+            m.normal.consts.k,
+            m.normal.consts.c,
+            m.normal.consts.h,
+            m.mu,
+            m.kt,
+            m.zeta_t,
+            m.kappa,
+            m.mu_r,
+            m.k_r,
+            m.eta_r,
+            m.mu_tw,
+            m.k_tw,
+            m.eta_tw,
+        ],
+        m.layout,
+    )
+}
+
+/// The checks of [`check_model`] on the model's parts, so that the C boundary can run them on
+/// the caller's struct as it reads it (without first building and re-reading a copy):
+/// `sel` = tangential, rolling, twisting; `consts` = k, c, h, μ, k_t, ζ_t, κ, μ_r, k_r, η_r,
+/// μ_tw, k_tw, η_tw.
+#[inline(always)]
+pub(crate) fn check_model_parts(
+    kernel: i32,
+    sel: [i32; 3],
+    consts: &[f64; 13],
+    layout: super::model::Layout,
+) -> Result<(), Error> {
+    let [tangential, rolling, twisting] = sel;
+    needs(kernel).ok_or(Error::ContactModelInvalid)?;
     let codes_ok = matches!(
-        m.tangential,
+        tangential,
         select::TANGENTIAL_NONE | select::TANGENTIAL_LINEAR | select::TANGENTIAL_MINDLIN
     ) && matches!(
-        m.rolling,
+        rolling,
         select::ROLLING_NONE | select::ROLLING_CONSTANT | select::ROLLING_EPSD
-    ) && matches!(m.twisting, select::TWISTING_NONE | select::TWISTING_SDS);
-    let consts = [
-        m.normal.consts.k,
-        m.normal.consts.c,
-        m.normal.consts.h,
-        m.mu,
-        m.kt,
-        m.zeta_t,
-        m.kappa,
-        m.mu_r,
-        m.k_r,
-        m.eta_r,
-        m.mu_tw,
-        m.k_tw,
-        m.eta_tw,
-    ];
+    ) && matches!(twisting, select::TWISTING_NONE | select::TWISTING_SDS);
     // Integer reductions instead of a test and a branch per value (this runs on every call).
-    let consts_ok = all_finite(&consts) & none_negative(&consts);
-    let layout_ok = m.layout == super::model::Layout::of(m.tangential, m.rolling, m.twisting)
-        && m.layout.len <= HISTORY_MAX;
-    if !(codes_ok && consts_ok && layout_ok && m.kappa > 0.0) {
+    let consts_ok = all_finite(consts) & none_negative(consts);
+    let [.., kt, _, kappa, _, _, _, _, _, _] = *consts;
+    let layout_ok = layout == super::model::Layout::of(tangential, rolling, twisting)
+        && layout.len <= HISTORY_MAX;
+    if !(codes_ok && consts_ok && layout_ok && kappa > 0.0) {
         return Err(Error::ContactModelInvalid);
     }
-    if m.tangential != select::TANGENTIAL_NONE && !(m.kt > 0.0) {
+    if tangential != select::TANGENTIAL_NONE && !(kt > 0.0) {
         return Err(Error::ContactModelInvalid);
     }
     Ok(())
@@ -223,6 +243,18 @@ pub fn contact_force(
     history: &mut [f64],
 ) -> Result<ContactForce, Error> {
     check_model(m)?;
+    contact_force_checked_model(m, s, dt, history)
+}
+
+/// [`contact_force`] for a model that has passed [`check_model`] (or, at the C boundary,
+/// [`check_model_parts`] on the fields it was built from): every other check is made.
+#[inline(always)]
+pub(crate) fn contact_force_checked_model(
+    m: &ContactModel,
+    s: &ContactState,
+    dt: f64,
+    history: &mut [f64],
+) -> Result<ContactForce, Error> {
     let len = m.layout.len;
     let hist = history.get_mut(..len).ok_or(Error::BufferTooShort)?;
     if !dt.is_finite() {

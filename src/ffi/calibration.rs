@@ -8,13 +8,14 @@ use crate::powerlaw;
 ///
 /// Exact for every p >= 1 and independent of impact speed, mass and stiffness.
 /// - `DC_END_OVERLAP`: alpha = sqrt(2(p+1)) L / sqrt(pi^2 + L^2), L = -ln e (closed form).
-/// - `DC_END_FORCE`: the root of e = exp(-2 zeta acos(zeta)/sqrt(1-zeta^2)), zeta = alpha/sqrt(2(p+1))
-///   (continued through critical damping as acosh), solved to full double precision. Use this in
-///   solvers that clamp attractive normal forces to zero; it always gives a larger alpha.
+/// - `DC_END_FORCE`: the root of e = exp(-2 zeta acos(zeta)/sqrt(1-zeta^2)),
+///   zeta = alpha/sqrt(2(p+1)) (continued through critical damping as acosh), solved to full
+///   double precision. Use this in solvers that clamp attractive normal forces to zero; it always
+///   gives a larger alpha.
 ///
 /// @param e          target restitution, 0 < e <= 1. e = 0 is rejected: under DC_END_OVERLAP every
-///                   alpha >= sqrt(2(p+1)) (critical damping) gives e = 0, so it does not fix alpha;
-///                   under DC_END_FORCE e = 0 is reached only as alpha -> infinity.
+///                   alpha >= sqrt(2(p+1)) (critical damping) gives e = 0, so it does not fix
+///                   alpha; under DC_END_FORCE e = 0 is reached only as alpha -> infinity.
 /// @param p          force-law exponent, p >= 1 (1 linear, 1.5 Hertz).
 /// @param criterion  DC_END_OVERLAP or DC_END_FORCE.
 /// @param alpha_out  receives alpha >= 0 on success; untouched on error.

@@ -2,8 +2,8 @@
 
 use super::status::*;
 use super::{dc_status, guard, write_result};
-use crate::contact::batch::{BatchIn, BatchOut, contact_force_batch};
-use crate::contact::evaluate::contact_force;
+use crate::contact::batch::{BatchIn, BatchOut, contact_force_batch, contact_force_batch_fused};
+use crate::contact::evaluate::{check_model_parts, contact_force_checked_model};
 use crate::contact::model::{HISTORY_MAX, Layout, select};
 use crate::contact::spec::{ContactSpec, contact_model, damping, normal};
 use crate::contact::{ContactForce, ContactModel, ContactState};
@@ -244,7 +244,8 @@ impl From<ContactModel> for dc_contact_model {
     }
 }
 
-/// The core model of a C model, structurally checked (the values are checked by the core).
+/// The core model of a C model, checked: structure here, values by the core's model checks
+/// ([`check_model_parts`], the checks of [`crate::contact::evaluate::check_model`]).
 fn model_of(m: &dc_contact_model) -> Result<ContactModel, Error> {
     let layout = Layout::of(m.tangential, m.rolling, m.twisting);
     let p = &m.normal;
@@ -260,6 +261,17 @@ fn model_of(m: &dc_contact_model) -> Result<ContactModel, Error> {
     {
         return Err(Error::ContactModelInvalid);
     }
+    // The core's model checks, on the caller's fields as read (the core model built below is
+    // then not checked again: see contact_force_checked_model).
+    check_model_parts(
+        p.kernel,
+        [m.tangential, m.rolling, m.twisting],
+        &[
+            p.k, p.c, p.h, m.mu, m.kt, m.zeta_t, m.kappa, m.mu_r, m.k_r, m.eta_r, m.mu_tw, m.k_tw,
+            m.eta_tw,
+        ],
+        layout,
+    )?;
     Ok(ContactModel {
         normal: PairModel {
             model: p.model,
@@ -535,7 +547,8 @@ unsafe fn force_common(
         } else {
             &mut empty
         };
-        contact_force(&cm, &state, dt, hist).map(dc_contact_result::from)
+        // cm passed the model checks in model_of.
+        contact_force_checked_model(&cm, &state, dt, hist).map(dc_contact_result::from)
     };
     // SAFETY: forwarded caller contract on out (non-null).
     unsafe { write_result(out, body) }
@@ -693,24 +706,20 @@ fn span(p: *const f64, count: usize) -> Option<(usize, usize)> {
     Some((s, s.checked_add(bytes)?))
 }
 
-/// dc_contact_force for n contacts of one model (group contacts by type pair): one pass per
-/// stage the model has (normal, tangential, rolling, twisting), each a loop with no branch on
-/// the model. Every value is checked first (as dc_contact_force; a branch-free pass that costs
-/// about 4 ns per contact); on any error nothing is written (outputs and history untouched).
-///
-/// @return DC_OK, DC_ERR_NULL_POINTER (model, batch, a required array), DC_ERR_CONTACT_MODEL_INVALID,
-///         DC_ERR_BUFFER_TOO_SHORT (n = 0, history_stride too small), DC_ERR_BUFFER_LAYOUT (a
-///         misaligned array, n too large, or an output overlapping an input or another output),
-///         DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE, DC_ERR_NOT_UNIT, DC_ERR_RESULT_RANGE.
+/// The pointer checks shared by the batch exports (NULLs, lengths, alignment, overlaps), then
+/// `run` on the slices under the panic boundary. Its error (call-level) leaves everything
+/// untouched; a per-contact report is `run`'s own business.
 ///
 /// # Safety
-/// `model`, `batch` NULL or readable; every non-NULL array valid for its documented length.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn dc_contact_force_batch(
+/// As dc_contact_force_batch.
+unsafe fn batch_common<F>(
     model: *const dc_contact_model,
     batch: *const dc_contact_batch,
-    dt: f64,
-) -> i32 {
+    run: F,
+) -> i32
+where
+    F: FnOnce(&ContactModel, &BatchIn<'_>, &mut BatchOut<'_>) -> Result<(), Error>,
+{
     // SAFETY: null checked; any bit pattern of these plain structs is a valid value.
     let (Some(m), Some(b)) = (unsafe { model.as_ref() }, unsafe { batch.as_ref() }) else {
         return DC_ERR_NULL_POINTER;
@@ -836,8 +845,78 @@ pub unsafe extern "C" fn dc_contact_force_batch(
                 },
                 stride: b.history_stride.max(1),
             };
-            contact_force_batch(&cm, &inp, dt, &mut o)
+            run(&cm, &inp, &mut o)
         }
     };
     guard(|| Ok(body()?))
+}
+
+/// dc_contact_force for n contacts of one model (group contacts by type pair): one pass per
+/// stage the model has (normal, tangential, rolling, twisting), each a loop with no branch on
+/// the model. Every value is checked first (as dc_contact_force; a branch-free pass that costs
+/// about 4 ns per contact); on any error nothing is written (outputs and history untouched).
+///
+/// @return DC_OK, DC_ERR_NULL_POINTER (model, batch, a required array),
+///         DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_BUFFER_TOO_SHORT (n = 0, history_stride too small),
+///         DC_ERR_BUFFER_LAYOUT (a misaligned array, n too large, or an output overlapping an input
+///         or another output), DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE, DC_ERR_NOT_UNIT,
+///         DC_ERR_RESULT_RANGE.
+///
+/// # Safety
+/// `model`, `batch` NULL or readable; every non-NULL array valid for its documented length.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_contact_force_batch(
+    model: *const dc_contact_model,
+    batch: *const dc_contact_batch,
+    dt: f64,
+) -> i32 {
+    // SAFETY: forwarded caller contract.
+    unsafe {
+        batch_common(model, batch, |cm, inp, o| {
+            contact_force_batch(cm, inp, dt, o)
+        })
+    }
+}
+
+/// dc_contact_force_batch reading every input from memory once (for large batches that do not
+/// fit in cache; about 1.2x faster there): blocks of contacts are checked and computed while in
+/// cache. Differs from dc_contact_force_batch only in what happens to a contact with a bad
+/// value (NaN/inf, radius or mass <= 0, non-unit n, non-finite history): the other contacts are
+/// still computed (exactly, bit for bit as dc_contact_force_batch), the bad contact's f_n,
+/// force and torques are set to NaN and its history is left untouched, and the call returns
+/// the status of the first bad contact with its index in *first_bad. Check the status: a
+/// returned error always means "some outputs are NaN". Errors of the call itself (NULL, model,
+/// buffer sizes or layout, dt) leave everything untouched, as dc_contact_force_batch.
+///
+/// @param first_bad  NULL, or receives the index of the first bad contact (written only when a
+///                   per-contact status is returned).
+/// @return DC_OK, or the statuses of dc_contact_force_batch: DC_ERR_NOT_FINITE,
+///         DC_ERR_NOT_POSITIVE, DC_ERR_NOT_UNIT for a bad contact (outputs written, see above);
+///         DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_BUFFER_TOO_SHORT,
+///         DC_ERR_BUFFER_LAYOUT, DC_ERR_NOT_FINITE / DC_ERR_NOT_POSITIVE for dt (nothing
+///         written; *first_bad untouched).
+///
+/// # Safety
+/// As dc_contact_force_batch; `first_bad` NULL or writable for a size_t.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_contact_force_batch_fused(
+    model: *const dc_contact_model,
+    batch: *const dc_contact_batch,
+    dt: f64,
+    first_bad: *mut usize,
+) -> i32 {
+    let run = |cm: &ContactModel, inp: &BatchIn<'_>, o: &mut BatchOut<'_>| {
+        match contact_force_batch_fused(cm, inp, dt, o)? {
+            None => Ok(()),
+            Some((i, e)) => {
+                if !first_bad.is_null() {
+                    // SAFETY: non-null; writable for a size_t (caller contract); unaligned ok.
+                    unsafe { first_bad.write_unaligned(i) };
+                }
+                Err(e)
+            }
+        }
+    };
+    // SAFETY: forwarded caller contract.
+    unsafe { batch_common(model, batch, run) }
 }

@@ -36,7 +36,8 @@ use crate::timestep;
 /// @param p          force-law exponent, p >= 1.
 /// @param e          target restitution, 0 < e <= 1.
 /// @param criterion  DC_END_OVERLAP (no clamp) or DC_END_FORCE (attractive forces clamped).
-/// @param v0         impact speed, > 0 [m/s] (use the largest expected; dt falls with v0 for p > 1).
+/// @param v0         impact speed, > 0 [m/s] (use the largest expected; dt falls with v0
+///                   for p > 1).
 /// @param omega0     sqrt(k/m) > 0 [s^-1 m^((1-p)/2)].
 /// @param tol        relative tolerance on e, > 0 (e.g. 0.01).
 /// @param dt_out     receives the step [s] on success; untouched on error.

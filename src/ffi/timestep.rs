@@ -55,7 +55,8 @@ pub unsafe extern "C" fn dc_dt_linearised(p: f64, v0: f64, omega0: f64, dt_out: 
 /// @param p       force-law exponent, p >= 1.
 /// @param alpha   damping coefficient, alpha >= 0.
 /// @param omega0  sqrt(k/m) > 0.
-/// @param accel   load divided by the effective mass (e.g. g for a particle resting on a wall), > 0.
+/// @param accel   load divided by the effective mass (e.g. g for a particle resting on a
+///                wall), > 0.
 /// @param dt_out  receives the step [s]; untouched on error.
 /// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
 ///         DC_ERR_NOT_POSITIVE, DC_ERR_NEGATIVE, DC_ERR_RESULT_RANGE.

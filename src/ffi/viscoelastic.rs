@@ -61,9 +61,9 @@ pub unsafe extern "C" fn dc_viscoelastic_e_series(b: f64, criterion: i32, e_out:
 ///
 /// Taylor-series integration (order 30) of the regularised system X = u^2, dT = u dsigma, in which
 /// the equation is polynomial; events located on the local polynomial. Relative accuracy about
-/// 1e-15 for b <= 1e3 (convergence in tolerance), 2e-14 up to 4e5 and 5e-12 at 1e6 (force). Cost grows with b: ~30 microseconds for b <= 10; under
-/// DC_END_OVERLAP about 0.2 s at b = 1e3 and 0.8 s at 3e3 (the contact lasts ~b (10/3) ln b);
-/// prefer dc_viscoelastic_e.
+/// 1e-15 for b <= 1e3 (convergence in tolerance), 2e-14 up to 4e5 and 5e-12 at 1e6 (force). Cost
+/// grows with b: ~30 microseconds for b <= 10; under DC_END_OVERLAP about 0.2 s at b = 1e3 and
+/// 0.8 s at 3e3 (the contact lasts ~b (10/3) ln b); prefer dc_viscoelastic_e.
 ///
 /// @param b          b >= 0, finite (practical limits: 3e3 overlap, 1e6 force).
 /// @param criterion  DC_END_OVERLAP or DC_END_FORCE.
@@ -194,7 +194,8 @@ pub unsafe extern "C" fn dc_viscoelastic_b_from_e(e: f64, criterion: i32, b_out:
 ///
 /// @param e          measured restitution, 0 < e <= 1.
 /// @param v_ref      impact speed of the measurement, > 0 [m/s].
-/// @param criterion  DC_END_OVERLAP or DC_END_FORCE (the criterion of the solver that will use beta).
+/// @param criterion  DC_END_OVERLAP or DC_END_FORCE (the criterion of the solver that will use
+///                   beta).
 /// @param beta_out   receives beta >= 0 [s^(1/5) m^(-1/5)]; untouched on error.
 /// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_RESTITUTION_RANGE,
 ///         DC_ERR_NOT_POSITIVE, DC_ERR_CRITERION, DC_ERR_RESULT_RANGE.

@@ -22,8 +22,8 @@
 //!
 //! Model choice ("model only what a scene requires"): over the measured speed range the
 //! viscoelastic fit is monotone in v, so its largest deviation from the constant-e fit is at
-//! v_min or v_max. If that deviation is ≤ tol, a constant e (the power law) represents what the data
-//! support within the user's tolerance; otherwise the speed dependence is required.
+//! v_min or v_max. If that deviation is ≤ tol, a constant e (the power law) represents what the
+//! data support within the user's tolerance; otherwise the speed dependence is required.
 
 pub mod quantile;
 pub mod robust;

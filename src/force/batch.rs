@@ -1,6 +1,8 @@
 //! Structure-of-arrays batches: one dispatch per batch, then a plain loop over slices that the
-//! compiler vectorises (square roots are IEEE instructions in Rust, never `errno` calls; the
-//! general-p power is the branch-free [`crate::numerics::pow_dd`] kernel).
+//! compiler vectorises (square roots are IEEE instructions in Rust, never `errno` calls). The
+//! general-p power is the branch-free, table-driven [`crate::numerics::pow_dd`] kernel, which
+//! the general-p batch evaluates with explicit AVX-512 / AVX2 kernels of the same operations
+//! (`run_pow`).
 //!
 //! **Runtime CPU dispatch** ([`crate::numerics::simd`]): each monomorphised loop is compiled for
 //! the baseline x86-64 (SSE2, 2 lanes), AVX2 + FMA (4 lanes) and AVX-512F (8 lanes), and the
@@ -8,9 +10,11 @@
 //! fused multiply–add is ever formed, so all flavours round exactly like the scalar call and the
 //! batch stays bit-identical to [`super::normal_force`] (tests/force_contract.rs).
 
-use super::pair::{Consts, Law, Visit, eval};
+use super::pair::{Consts, Law, Visit, eval, eval_pow};
 use super::registry::dispatch;
 use crate::Error;
+use crate::numerics::pow_dd::{pow_exp, pow_ln, pow_ln_index};
+use crate::numerics::pow_table::{exp_entries, exp_index, ln_entries};
 use crate::numerics::simd::{SimdLoop, vectorised};
 use core::marker::PhantomData;
 
@@ -33,6 +37,9 @@ struct Loop<'a, L, const CLAMP: bool> {
 impl<L: Law, const CLAMP: bool> SimdLoop for Loop<'_, L, CLAMP> {
     #[inline(always)]
     fn run(self) {
+        if L::POW {
+            return run_pow::<L, CLAMP>(self.b);
+        }
         let Batch {
             c,
             d,
@@ -43,6 +50,142 @@ impl<L: Law, const CLAMP: bool> SimdLoop for Loop<'_, L, CLAMP> {
         } = self.b;
         for ((((o, &d), &vn), &r), &m) in out.iter_mut().zip(d).zip(vn).zip(r).zip(m) {
             *o = eval::<L, CLAMP>(&c, d, vn, r, m);
+        }
+    }
+}
+
+/// Contacts per chunk of a `POW` law's batch (scratch arrays on the stack: 4 × 2 KiB).
+const CHUNK: usize = 256;
+
+/// The batch of a law with the power s = d^h ([`crate::numerics::pow_dd`], whose ln and exp
+/// read 32-entry tables), in chunks of [`CHUNK`] contacts: s by the AVX-512 or AVX2 kernel where
+/// the CPU has one ([`run_pow_avx512`], [`run_pow_avx2`]); otherwise (baseline SSE2) the table
+/// reads in their own scalar loops and the arithmetic in loops without table reads, which
+/// vectorise (a loop with a table read is left scalar: LLVM's cost model for x86-64 does not
+/// choose gathers). The same operations as the scalar `pow_dd` everywhere, so the same bits.
+#[inline(always)]
+fn run_pow<L: Law, const CLAMP: bool>(b: Batch<'_>) {
+    #[cfg(all(target_arch = "x86_64", not(miri)))]
+    if std::is_x86_feature_detected!("avx512f") {
+        // SAFETY: the CPU has AVX-512F (checked just above), the only requirement.
+        unsafe { run_pow_avx512::<L, CLAMP>(b) };
+        return;
+    }
+    #[cfg(all(target_arch = "x86_64", not(miri)))]
+    if std::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has AVX2 (checked just above), the only requirement.
+        unsafe { run_pow_avx2::<L, CLAMP>(b) };
+        return;
+    }
+    let Batch {
+        c,
+        d,
+        vn,
+        r,
+        m,
+        out,
+    } = b;
+    let (mut ta, mut tb) = ([0.0f64; CHUNK], [0.0f64; CHUNK]);
+    let (mut nn, mut tt) = ([0.0f64; CHUNK], [0.0f64; CHUNK]);
+    let chunks = out
+        .chunks_mut(CHUNK)
+        .zip(d.chunks(CHUNK))
+        .zip(vn.chunks(CHUNK))
+        .zip(r.chunks(CHUNK))
+        .zip(m.chunks(CHUNK));
+    for ((((out, d), vn), r), m) in chunks {
+        // ln table reads (scalar), then x^h = 2^n e^t up to t (vectorised).
+        for ((a, b), &x) in ta.iter_mut().zip(tb.iter_mut()).zip(d) {
+            (*a, *b) = ln_entries(pow_ln_index(x));
+        }
+        for ((((nv, tv), &x), &a), &b) in nn.iter_mut().zip(tt.iter_mut()).zip(d).zip(&ta).zip(&tb)
+        {
+            (*nv, *tv) = pow_ln(x, c.h, (a, b));
+        }
+        // exp table reads (scalar), then s and the force (vectorised).
+        for ((a, b), &t) in ta.iter_mut().zip(tb.iter_mut()).zip(&tt) {
+            (*a, *b) = exp_entries(exp_index(t));
+        }
+        let rest = d
+            .iter()
+            .zip(vn)
+            .zip(r)
+            .zip(m)
+            .zip(nn.iter().zip(&tt))
+            .zip(ta.iter().zip(&tb));
+        for (o, (((((&d, &vn), &r), &m), (&n, &t)), (&a, &b))) in out.iter_mut().zip(rest) {
+            let s = pow_exp(d, n, t, (a, b));
+            *o = eval_pow::<L, CLAMP>(&c, d, vn, r, m, s);
+        }
+    }
+}
+
+/// [`run_pow`] with AVX-512F: s = d^h by [`crate::numerics::pow_avx512`] (the tables in
+/// registers, the same bits as the scalar `pow_dd`), then the force in a loop the compiler
+/// vectorises.
+///
+/// # Safety
+/// The CPU must support AVX-512F.
+#[cfg(all(target_arch = "x86_64", not(miri)))]
+#[target_feature(enable = "avx512f,avx2,fma")]
+#[inline(never)]
+unsafe fn run_pow_avx512<L: Law, const CLAMP: bool>(b: Batch<'_>) {
+    use crate::numerics::pow_avx512::{Tables, pow_slice_x8};
+    let Batch {
+        c,
+        d,
+        vn,
+        r,
+        m,
+        out,
+    } = b;
+    let tables = Tables::load();
+    let mut s = [0.0f64; CHUNK];
+    let chunks = out
+        .chunks_mut(CHUNK)
+        .zip(d.chunks(CHUNK))
+        .zip(vn.chunks(CHUNK))
+        .zip(r.chunks(CHUNK))
+        .zip(m.chunks(CHUNK));
+    for ((((out, d), vn), r), m) in chunks {
+        pow_slice_x8(d, c.h, &mut s, &tables);
+        let rest = d.iter().zip(vn).zip(r).zip(m).zip(&s);
+        for (o, ((((&d, &vn), &r), &m), &s)) in out.iter_mut().zip(rest) {
+            *o = eval_pow::<L, CLAMP>(&c, d, vn, r, m, s);
+        }
+    }
+}
+
+/// [`run_pow`] with AVX2: s = d^h by [`crate::numerics::pow_avx2`] (table reads as gathers, the
+/// same bits as the scalar `pow_dd`), then the force in a loop the compiler vectorises.
+///
+/// # Safety
+/// The CPU must support AVX2.
+#[cfg(all(target_arch = "x86_64", not(miri)))]
+#[target_feature(enable = "avx2,fma")]
+#[inline(never)]
+unsafe fn run_pow_avx2<L: Law, const CLAMP: bool>(b: Batch<'_>) {
+    use crate::numerics::pow_avx2::pow_slice_x4;
+    let Batch {
+        c,
+        d,
+        vn,
+        r,
+        m,
+        out,
+    } = b;
+    let mut s = [0.0f64; CHUNK];
+    let chunks = out
+        .chunks_mut(CHUNK)
+        .zip(d.chunks(CHUNK))
+        .zip(vn.chunks(CHUNK))
+        .zip(r.chunks(CHUNK))
+        .zip(m.chunks(CHUNK));
+    for ((((out, d), vn), r), m) in chunks {
+        pow_slice_x4(d, c.h, &mut s);
+        let rest = d.iter().zip(vn).zip(r).zip(m).zip(&s);
+        for (o, ((((&d, &vn), &r), &m), &s)) in out.iter_mut().zip(rest) {
+            *o = eval_pow::<L, CLAMP>(&c, d, vn, r, m, s);
         }
     }
 }

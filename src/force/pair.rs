@@ -59,6 +59,14 @@ pub(crate) trait Law {
     /// repulsive law: the force is zero unless d > 0.
     const ADHESIVE: bool = false;
     fn raw(c: &Consts, d: f64, vn: f64, r: f64, m: f64) -> f64;
+    /// True for a law whose raw force needs the power s = d^h ([`crate::numerics::pow_dd`]):
+    /// a batch then computes s in separate loops ([`super::batch`]) and calls [`Law::raw_pow`].
+    const POW: bool = false;
+    /// The raw force given s = d^h (for `POW` laws; `raw` = `raw_pow` with s = `pow_dd(d, h)`).
+    #[inline(always)]
+    fn raw_pow(c: &Consts, d: f64, vn: f64, r: f64, m: f64, _s: f64) -> f64 {
+        Self::raw(c, d, vn, r, m)
+    }
 }
 
 /// The contact force of law `L`: zero unless d > 0 (also for NaN d) for non-adhesive laws; an
@@ -67,6 +75,25 @@ pub(crate) trait Law {
 #[inline(always)]
 pub(crate) fn eval<L: Law, const CLAMP: bool>(c: &Consts, d: f64, vn: f64, r: f64, m: f64) -> f64 {
     let f = L::raw(c, d, vn, r, m);
+    let f = if CLAMP {
+        if f > 0.0 { f } else { 0.0 }
+    } else {
+        f
+    };
+    if L::ADHESIVE || d > 0.0 { f } else { 0.0 }
+}
+
+/// [`eval`] for a `POW` law given s = d^h: the same force, bit for bit.
+#[inline(always)]
+pub(crate) fn eval_pow<L: Law, const CLAMP: bool>(
+    c: &Consts,
+    d: f64,
+    vn: f64,
+    r: f64,
+    m: f64,
+    s: f64,
+) -> f64 {
+    let f = L::raw_pow(c, d, vn, r, m, s);
     let f = if CLAMP {
         if f > 0.0 { f } else { 0.0 }
     } else {

@@ -93,10 +93,14 @@ impl Law for GenElastic {
     const NEEDS_VN: bool = false;
     const NEEDS_R: bool = false;
     const NEEDS_M: bool = false;
+    const POW: bool = true;
     #[inline(always)]
-    fn raw(c: &Consts, d: f64, _vn: f64, _r: f64, _m: f64) -> f64 {
+    fn raw(c: &Consts, d: f64, vn: f64, r: f64, m: f64) -> f64 {
+        Self::raw_pow(c, d, vn, r, m, pow_dd(d, c.h))
+    }
+    #[inline(always)]
+    fn raw_pow(c: &Consts, d: f64, _vn: f64, _r: f64, _m: f64, s: f64) -> f64 {
         // δ^p = δ (δ^h)², h = (p−1)/2: the same single power as the damped law.
-        let s = pow_dd(d, c.h);
         c.k * d * s * s
     }
 }
@@ -105,9 +109,13 @@ impl Law for GenDamped {
     const NEEDS_VN: bool = true;
     const NEEDS_R: bool = false;
     const NEEDS_M: bool = true;
+    const POW: bool = true;
     #[inline(always)]
-    fn raw(c: &Consts, d: f64, vn: f64, _r: f64, m: f64) -> f64 {
-        let s = pow_dd(d, c.h);
+    fn raw(c: &Consts, d: f64, vn: f64, r: f64, m: f64) -> f64 {
+        Self::raw_pow(c, d, vn, r, m, pow_dd(d, c.h))
+    }
+    #[inline(always)]
+    fn raw_pow(c: &Consts, d: f64, vn: f64, _r: f64, m: f64, s: f64) -> f64 {
         c.k * d * s * s + c.c * m.sqrt() * s * vn
     }
 }

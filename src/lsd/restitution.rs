@@ -6,10 +6,11 @@
 //!   (it decays towards 0 as s → ∞) and e_O = 0.
 //! * Force end (x + 2ζx' = 0 while unloading). Writing ζ = sin γ, the force is proportional to
 //!   `e^{-ζs}[cos 2γ sin ωs + sin 2γ cos ωs]/ω = e^{-ζs} sin(ωs + 2γ)/ω`, which vanishes at
-//!   `ωs_F = π - 2γ = 2 arccos ζ`: exactly twice the phase of maximum compression (ωs_m = arccos ζ).
-//!   There `x' = -e^{-ζ s_F}`, so `e_F = exp(-2ζ arccos(ζ)/√(1-ζ²)) = exp(-2 g(ζ))` with g from
-//!   `decay.rs`. The overdamped branch (ζ = cosh γ, sinh instead of sin) gives the same analytic
-//!   function, `exp(-2ζ arccosh(ζ)/√(ζ²-1))`: the force always returns to zero in finite time,
+//!   `ωs_F = π - 2γ = 2 arccos ζ`: exactly twice the phase of maximum compression
+//!   (ωs_m = arccos ζ). There `x' = -e^{-ζ s_F}`, so
+//!   `e_F = exp(-2ζ arccos(ζ)/√(1-ζ²)) = exp(-2 g(ζ))` with g from `decay.rs`. The overdamped
+//!   branch (ζ = cosh γ, sinh instead of sin) gives the same analytic function,
+//!   `exp(-2ζ arccosh(ζ)/√(ζ²-1))`: the force always returns to zero in finite time,
 //!   e_F > 0 for every finite ζ, e_F(1) = e⁻², and e_F ≈ 1/(4ζ²) as ζ → ∞. This is eq. 12 of
 //!   Schwager & Pöschel (2008) in one formula valid for every ζ ≥ 0.
 //!

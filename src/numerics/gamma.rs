@@ -3,7 +3,8 @@
 //!
 //! Method: shift z up by N so that |z + N| ≥ 10 (Γ(z) = Γ(z+N)/∏(z+k), the product's modulus taken
 //! in one logarithm), then Stirling's series with 8 Bernoulli terms, whose truncation error at
-//! |z| ≥ 10 is below 2e-18 (next term B₁₈/(18·17·z¹⁷)). The real part of each term is taken in polar form z = r e^{iθ}.
+//! |z| ≥ 10 is below 2e-18 (next term B₁₈/(18·17·z¹⁷)). The real part of each term is taken in
+//! polar form z = r e^{iθ}.
 
 /// Stirling coefficients B_{2k}/(2k(2k−1)), k = 1..8.
 const STIRLING: [f64; 8] = [

@@ -19,7 +19,12 @@ pub mod jacobi_cc;
 pub(crate) mod lagrange8;
 pub mod ode;
 pub(crate) mod pow;
+#[cfg(target_arch = "x86_64")]
+pub(crate) mod pow_avx2;
+#[cfg(target_arch = "x86_64")]
+pub(crate) mod pow_avx512;
 pub(crate) mod pow_dd;
+pub(crate) mod pow_table;
 pub(crate) mod reduce;
 pub mod roots;
 pub(crate) mod series;

@@ -4,9 +4,9 @@
 //! libm's `ln` and `exp` are calls with branches inside; over a slice they cost ~11 ns per
 //! element here (`cargo bench --bench powerlaw -- baseline_pow_1000`), half of a 1000-sample
 //! trajectory. The kernels below are straight-line arithmetic, so a loop over them runs in SIMD
-//! lanes (2 with SSE2, 4 with AVX2, 8 with AVX-512, chosen at run time by [`super::simd`]). No fused
-//! multiply–add is ever formed, so every path rounds identically: the result does not depend on
-//! the machine.
+//! lanes (2 with SSE2, 4 with AVX2, 8 with AVX-512, chosen at run time by [`super::simd`]). No
+//! fused multiply–add is ever formed, so every path rounds identically: the result does not depend
+//! on the machine.
 //!
 //! * ln x = e·ln2 + ln m, x = 2^e·m, ln m by the atanh series with thirteen terms (< 1e−20);
 //!   error ≤ 2 ulp of |ln x| (tests below).

@@ -127,7 +127,8 @@ pub fn contact_duration(c: &Contact, criterion: EndCriterion, level: u32) -> Res
         }
         EndCriterion::Force => {
             let u = c.u_force();
-            // Beyond π/2 the remaining phase to π/ω is 2 arcsin(ζ)/ω, computed without cancellation.
+            // Beyond π/2 the remaining phase to π/ω is 2 arcsin(ζ)/ω, computed without
+            // cancellation.
             let tail = match c.regime {
                 Regime::Under(w) => Some(2.0 * c.zeta.asin() / w),
                 _ => None,

@@ -51,7 +51,8 @@ pub fn energy_partition(c: &Contact, criterion: EndCriterion) -> EnergyPartition
                 };
                 let unloading = e_f * -(-2.0 * c.zeta * (PI - theta) / w).exp_m1();
                 // From α directly (as dc_e_from_alpha): near critical damping e_O is so steep in ζ
-                // that rounding ζ = α/√(2(p+1)) first cost 2.3e-13 at e = 1e-12 (tests/extremes.rs).
+                // that rounding ζ = α/√(2(p+1)) first cost 2.3e-13 at e = 1e-12
+                // (tests/extremes.rs).
                 let e_o = calibration::e_from_alpha(c.alpha, c.p, EndCriterion::Overlap)
                     .unwrap_or((-PI * c.zeta / w).exp());
                 EnergyPartition {

@@ -10,7 +10,8 @@
 //!
 //! The observables of one collision: [`contact`] (validated inputs, the LSD image),
 //! [`overlap`] (δ_max), [`duration`] (τ for both criteria, time of δ_max), [`energy`]
-//! (energy partition), [`plan`] (reusable per-p duration plans), [`trajectory`] (δ, v, F, t sampled over the contact), [`timestep`].
+//! (energy partition), [`plan`] (reusable per-p duration plans), [`trajectory`] (δ, v, F, t sampled
+//! over the contact), [`timestep`].
 
 pub mod calibration;
 pub mod contact;

@@ -50,8 +50,8 @@ fn max_steps(tau: f64, h: f64) -> u32 {
     if n < 4.0e9 { n as u32 } else { u32::MAX }
 }
 
-/// Worst relative restitution error over `n_phase` evenly spaced start phases from 0 to 1⁻ (both ends),
-/// for the dimensionless collision (v0 = ω0 = 1) at step h, velocity-Verlet. `f64::INFINITY`
+/// Worst relative restitution error over `n_phase` evenly spaced start phases from 0 to 1⁻ (both
+/// ends), for the dimensionless collision (v0 = ω0 = 1) at step h, velocity-Verlet. `f64::INFINITY`
 /// when a run does not separate within its step budget. `tau` is the contact duration (for the
 /// budget).
 pub fn worst_restitution_error(pair: &PairModel, e: f64, tau: f64, h: f64, n_phase: u32) -> f64 {

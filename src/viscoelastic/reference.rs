@@ -160,7 +160,9 @@ fn start<T: Scalar>() -> State<T> {
 
 /// Integrates the regularised collision with real b ≥ 0 to the first occurrence of `ev`.
 ///
-/// `tol` is the local relative tolerance (1e-18, the default, gives ~1e-15 relative in e up to b = 1e3 and 5e-14 at 1e6; 1e-16 leaves errors up to 2e-10 near b = 4e5 under the force criterion).
+/// `tol` is the local relative tolerance (1e-18, the default, gives ~1e-15 relative in e up to
+/// b = 1e3 and 5e-14 at 1e6; 1e-16 leaves errors up to 2e-10 near b = 4e5 under the force
+/// criterion).
 pub fn integrate(b: f64, ev: Event, tol: f64, max_steps: u32) -> Result<Hit<f64>, Error> {
     let mut s = start::<f64>();
     let mut sigma = 0.0;
@@ -200,7 +202,8 @@ pub fn integrate(b: f64, ev: Event, tol: f64, max_steps: u32) -> Result<Hit<f64>
     Err(Error::NoConvergence)
 }
 
-/// Root of the event polynomial in (lo, hi] with g(lo) > 0 ≥ g(hi): Newton safeguarded by bisection.
+/// Root of the event polynomial in (lo, hi] with g(lo) > 0 ≥ g(hi): Newton safeguarded by
+/// bisection.
 fn locate_real(jet: &Jet<f64>, b: f64, ev: Event, mut lo: f64, mut hi: f64) -> f64 {
     let mut x = hi;
     for _ in 0..200 {

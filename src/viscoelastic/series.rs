@@ -98,7 +98,8 @@ pub fn e_series(b: f64, criterion: EndCriterion) -> Result<f64, Error> {
         EndCriterion::Force => horner(&H, b.sqrt()),
         EndCriterion::Overlap => 1.0 + b * horner(&C, b),
     };
-    // b^10 overflows beyond b ~ 1e30: report it instead of handing out ±inf (tests/proptest_ffi.rs).
+    // b^10 overflows beyond b ~ 1e30: report it instead of handing out ±inf
+    // (tests/proptest_ffi.rs).
     if !e.is_finite() {
         return Err(Error::ResultRange);
     }

@@ -9,6 +9,17 @@ use demcontact::ffi::status::DC_OK;
 
 pub type V = [f64; 3];
 
+/// The all-zero contact result (what a separated contact gives).
+pub const ZERO_RESULT: dc_contact_result = dc_contact_result {
+    force: [0.0; 3],
+    torque1: [0.0; 3],
+    torque2: [0.0; 3],
+    f_n: 0.0,
+    ft: [0.0; 3],
+    sliding: 0,
+    rolling_sliding: 0,
+};
+
 pub fn add(a: V, b: V) -> V {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
@@ -136,16 +147,7 @@ pub fn collide(
     mut each: impl FnMut(&Sample, &Body, &Other),
 ) -> usize {
     let mut hist = [0.0f64; DC_CONTACT_HISTORY_MAX];
-    let zero = dc_contact_result {
-        force: [0.0; 3],
-        torque1: [0.0; 3],
-        torque2: [0.0; 3],
-        f_n: 0.0,
-        ft: [0.0; 3],
-        sliding: 0,
-        rolling_sliding: 0,
-    };
-    let mut res = zero;
+    let mut res = ZERO_RESULT;
     let mut touched = false;
     for step in 0..max_steps {
         // half kick with the last force, drift
