@@ -1179,13 +1179,16 @@ int32_t dc_contact_force_spheres(const struct dc_contact_model *model,
  * dc_contact_force for n contacts of one model (group contacts by type pair): one pass per
  * stage the model has (normal, tangential, rolling, twisting), each a loop with no branch on
  * the model. Every value is checked first (as dc_contact_force; a branch-free pass that costs
- * about 4 ns per contact); on any error nothing is written (outputs and history untouched).
+ * about 4 ns per contact); on any error nothing is written (outputs and history untouched),
+ * except DC_ERR_RESULT_RANGE, which only computing can find: then every contact is computed
+ * and a contact whose force, torque or history overflowed has NaN outputs and its history
+ * untouched (find it by its NaN f_n; the fused batch also returns its index).
  *
  * @return DC_OK, DC_ERR_NULL_POINTER (model, batch, a required array),
  *         DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_BUFFER_TOO_SHORT (n = 0, history_stride too small),
  *         DC_ERR_BUFFER_LAYOUT (a misaligned array, n too large, or an output overlapping an input
  *         or another output), DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE, DC_ERR_NOT_UNIT,
- *         DC_ERR_RESULT_RANGE.
+ *         DC_ERR_RESULT_RANGE (outputs written, see above).
  *
  * # Safety
  * `model`, `batch` NULL or readable; every non-NULL array valid for its documented length.
@@ -1198,7 +1201,8 @@ int32_t dc_contact_force_batch(const struct dc_contact_model *model,
  * dc_contact_force_batch reading every input from memory once (for large batches that do not
  * fit in cache; about 1.2x faster there): blocks of contacts are checked and computed while in
  * cache. Differs from dc_contact_force_batch only in what happens to a contact with a bad
- * value (NaN/inf, radius or mass <= 0, non-unit n, non-finite history): the other contacts are
+ * value (NaN/inf, radius or mass <= 0, non-unit n, non-finite history) or whose result
+ * overflows (DC_ERR_RESULT_RANGE, as dc_contact_force_batch): the other contacts are
  * still computed (exactly, bit for bit as dc_contact_force_batch), the bad contact's f_n,
  * force and torques are set to NaN and its history is left untouched, and the call returns
  * the status of the first bad contact with its index in *first_bad. Check the status: a
@@ -1208,7 +1212,8 @@ int32_t dc_contact_force_batch(const struct dc_contact_model *model,
  * @param first_bad  NULL, or receives the index of the first bad contact (written only when a
  *                   per-contact status is returned).
  * @return DC_OK, or the statuses of dc_contact_force_batch: DC_ERR_NOT_FINITE,
- *         DC_ERR_NOT_POSITIVE, DC_ERR_NOT_UNIT for a bad contact (outputs written, see above);
+ *         DC_ERR_NOT_POSITIVE, DC_ERR_NOT_UNIT, DC_ERR_RESULT_RANGE for a bad contact (outputs
+ *         written, see above);
  *         DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_BUFFER_TOO_SHORT,
  *         DC_ERR_BUFFER_LAYOUT, DC_ERR_NOT_FINITE / DC_ERR_NOT_POSITIVE for dt (nothing
  *         written; *first_bad untouched).

@@ -948,3 +948,81 @@ fn poisoned(m: &dc_contact_model) {
     );
     assert!(f_n[1024].is_nan() == hist && !f_n[1023].is_nan());
 }
+
+/// A contact whose result overflows (valid inputs, DC_ERR_RESULT_RANGE from dc_contact_force)
+/// is reported by both batches: DC_ERR_RESULT_RANGE, its outputs NaN, its history as it was;
+/// every other contact equals dc_contact_force bit for bit; the fused batch names the first
+/// bad contact of either kind. Overflows in two overflow-guard groups of 128 contacts.
+#[test]
+fn batches_report_overflow_with_nan_and_history_kept() {
+    let models = all_models();
+    let full = *models.iter().find(|m| m.history_len == 10).unwrap();
+    let rolling_only = *models
+        .iter()
+        .find(|m| m.history_len == 0 && m.rolling != DC_ROLLING_NONE)
+        .unwrap();
+    let (nc, over) = if cfg!(miri) {
+        (140, [5usize, 130])
+    } else {
+        (300, [5usize, 200])
+    };
+    let stride = 10;
+    for m in [full, models[0], rolling_only] {
+        let good = soa(&many_states(nc));
+        // A history that has something in it: two ordinary steps.
+        let mut h0 = vec![0.0f64; nc * stride];
+        for _ in 0..2 {
+            assert_eq!(call(&m, &good, &mut h0, stride, None).0, DC_OK);
+        }
+        let mut a = soa(&many_states(nc));
+        for &i in &over {
+            a.d[i] = 1e300;
+            a.v1[3 * i] = 1e300;
+        }
+        for fused in [false, true] {
+            let mut h = h0.clone();
+            let mut bad = 77usize;
+            let (s, o) = call(&m, &a, &mut h, stride, fused.then_some(&mut bad));
+            assert_eq!(s, DC_ERR_RESULT_RANGE, "fused {fused}");
+            assert_eq!(bad, if fused { over[0] } else { 77 });
+            for i in 0..nc {
+                let st = dc_contact_state {
+                    n: [a.n[3 * i], a.n[3 * i + 1], a.n[3 * i + 2]],
+                    overlap: a.d[i],
+                    v1: [a.v1[3 * i], a.v1[3 * i + 1], a.v1[3 * i + 2]],
+                    ..many_states(i + 1)[i]
+                };
+                let mut hs = h0[i * stride..(i + 1) * stride].to_vec();
+                let mut r = sentinel_res();
+                let code =
+                    unsafe { dc_contact_force(&m, &st, 1e-6, hs.as_mut_ptr(), stride, &mut r) };
+                let hb = &h[i * stride..(i + 1) * stride];
+                let t = 3 * i..3 * i + 3;
+                if over.contains(&i) {
+                    assert_eq!(code, DC_ERR_RESULT_RANGE, "{i}");
+                    assert!(o.f_n[i].is_nan(), "{i}");
+                    assert!(o.force[t.clone()].iter().all(|x| x.is_nan()));
+                    assert!(o.t1[t.clone()].iter().chain(&o.t2[t]).all(|x| x.is_nan()));
+                    assert!(same_bits(hb, &h0[i * stride..(i + 1) * stride]), "{i}");
+                } else {
+                    assert_eq!(code, DC_OK, "{i}");
+                    assert_eq!(o.f_n[i].to_bits(), r.f_n.to_bits(), "{i}");
+                    assert!(same_bits(&o.force[t.clone()], &r.force), "{i}");
+                    assert!(same_bits(&o.t1[t.clone()], &r.torque1), "{i}");
+                    assert!(same_bits(&o.t2[t], &r.torque2), "{i}");
+                    assert!(same_bits(hb, &hs), "history {i}");
+                }
+            }
+        }
+        // The fused batch names the first bad contact, whichever its kind.
+        let mut h = h0.clone();
+        let mut bad = 77usize;
+        a.r1[2] = -1.0;
+        let (s, _) = call(&m, &a, &mut h, stride, Some(&mut bad));
+        assert_eq!((s, bad), (DC_ERR_NOT_POSITIVE, 2));
+        a.r1[2] = good.r1[2];
+        a.r1[nc - 1] = -1.0;
+        let (s, _) = call(&m, &a, &mut h0.clone(), stride, Some(&mut bad));
+        assert_eq!((s, bad), (DC_ERR_RESULT_RANGE, over[0]));
+    }
+}

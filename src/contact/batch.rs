@@ -7,11 +7,15 @@
 //! A final pass stores the current normal in each history (the stages read the previous one)
 //! and resets the history of separated contacts.
 //!
-//! Every value is validated in a first pass (nothing is written on error).
+//! Every value is validated in a first pass (nothing is written on error). A contact whose
+//! result overflows (finite inputs, non-finite force, torque or history: what
+//! `dc_contact_force` refuses with `ResultRange`) is found after its stage passes: it gets NaN
+//! outputs and its old history back (saved on the stack, [`GUARD`] contacts at a time), so no
+//! overflow is ever silent and no history is left half-updated.
 
 use super::evaluate::{check_model, check_state};
 use super::kinematics::{ContactState, Kin, harmonic};
-use super::model::{ContactModel, select};
+use super::model::{ContactModel, HISTORY_MAX, select};
 use super::tangential::{TangentialLaw, step};
 use super::tangential_linear::Linear;
 use super::tangential_mindlin::Mindlin;
@@ -169,7 +173,7 @@ fn state_ok(n: V3, d: f64, v1: V3, v2: V3, r1: f64, r2: f64, m1: f64, m2: f64) -
     unit & finite & (r1 > 0.0) & (m1 > 0.0) & (r2 > 0.0) & (m2 > 0.0)
 }
 
-/// Returns true if some contact was bad (poisoned).
+/// Returns true if some contact was bad (poisoned) or its force overflowed.
 #[inline(never)]
 fn normal_pass_fused<L: Law, const CLAMP: bool>(
     c: Consts,
@@ -194,7 +198,9 @@ fn normal_pass_fused<L: Law, const CLAMP: bool>(
         *fo = f;
         // NaN f gives NaN components (f == 0 is false).
         *fv = normal_vector(f, n);
-        bad |= !ok;
+        // A valid contact whose force overflowed is bad too (0·x = 0 only for finite x).
+        let [x, y, z] = *fv;
+        bad |= !ok | (0.0 * f + 0.0 * x + 0.0 * y + 0.0 * z != 0.0);
     }
     bad
 }
@@ -490,8 +496,105 @@ fn compute(
     Ok(())
 }
 
+/// Contacts whose histories [`compute_guarded`] saves on the stack at a time: 128 × 10
+/// doubles = 10 KB, small enough for any thread's stack, and long enough that the stage
+/// passes still run as vector loops.
+const GUARD: usize = 128;
+
+/// Every output of contact `i` (and its new history) finite?
+fn contact_finite(o: &BatchOut<'_>, len: usize, i: usize) -> bool {
+    let t = |t: &Option<&mut [[f64; 3]]>| t.as_ref().and_then(|t| t.get(i)).copied();
+    let h = o
+        .history
+        .get(i * o.stride..i * o.stride + len)
+        .unwrap_or(&[]);
+    all_finite(&[o.f_n.get(i).copied().unwrap_or(0.0)])
+        && o.force.get(i).is_none_or(|v| all_finite(v))
+        && t(&o.torque1).is_none_or(|v| all_finite(&v))
+        && t(&o.torque2).is_none_or(|v| all_finite(&v))
+        && all_finite(h)
+}
+
+/// Every output of the batch (and every new history value) finite? One OR reduction per
+/// array: the common case costs a read of what was just written.
+fn outputs_finite(o: &BatchOut<'_>, len: usize) -> bool {
+    let torque =
+        |t: &Option<&mut [[f64; 3]]>| t.as_ref().is_none_or(|t| all_finite(t.as_flattened()));
+    all_finite(o.f_n)
+        && all_finite(o.force.as_flattened())
+        && torque(&o.torque1)
+        && torque(&o.torque2)
+        && (len == 0
+            || o.history
+                .chunks_exact(o.stride)
+                .all(|h| h.get(..len).is_some_and(all_finite)))
+}
+
+/// [`compute`] with the overflow guard: a contact whose outputs or new history are not finite
+/// (the inputs were checked, so its result overflowed) gets NaN outputs and its history as it
+/// was; the index of the first such contact is returned. Bit for bit [`compute`] otherwise
+/// (contacts are independent, so running them in groups changes no result).
+fn compute_guarded(
+    m: &ContactModel,
+    inp: &BatchIn<'_>,
+    dt: f64,
+    out: &mut BatchOut<'_>,
+) -> Result<Option<usize>, Error> {
+    let n = inp.overlap.len();
+    let len = m.layout.len;
+    if len == 0 {
+        compute(m, inp, dt, out)?;
+        if outputs_finite(out, 0) {
+            return Ok(None);
+        }
+        let mut first = None;
+        for i in 0..n {
+            if !contact_finite(out, 0, i) {
+                poison(&mut sub_out(out, 0, i, i + 1).ok_or(Error::BufferTooShort)?);
+                first = first.or(Some(i));
+            }
+        }
+        return Ok(first);
+    }
+    let mut saved = [[0.0; HISTORY_MAX]; GUARD];
+    let mut first = None;
+    let mut a = 0;
+    while a < n {
+        let b = n.min(a + GUARD);
+        let (Some(ci), Some(mut co)) = (sub_in(inp, a, b), sub_out(out, len, a, b)) else {
+            return Err(Error::BufferTooShort);
+        };
+        let stride = co.stride;
+        for (s, h) in saved.iter_mut().zip(co.history.chunks_exact(stride)) {
+            // `len <= HISTORY_MAX <= stride` (checked by `sub_out`): zip copies `len` values.
+            for (d, v) in s.iter_mut().zip(h).take(len) {
+                *d = *v;
+            }
+        }
+        compute(m, &ci, dt, &mut co)?;
+        if !outputs_finite(&co, len) {
+            for (i, s) in saved.iter().enumerate().take(b - a) {
+                if contact_finite(&co, len, i) {
+                    continue;
+                }
+                let h = co.history.get_mut(i * stride..i * stride + len);
+                let h = h.ok_or(Error::BufferTooShort)?;
+                for (d, v) in h.iter_mut().zip(s) {
+                    *d = *v;
+                }
+                poison(&mut sub_out(&mut co, len, i, i + 1).ok_or(Error::BufferTooShort)?);
+                first = first.or(Some(a + i));
+            }
+        }
+        a = b;
+    }
+    Ok(first)
+}
+
 /// Forces of n contacts of one model (n = `inp.overlap.len()`); every slice must have the
-/// documented length (checked). Nothing is written on error.
+/// documented length (checked). Nothing is written on error, except on `ResultRange`: then
+/// the contacts whose result overflowed have NaN outputs and their history untouched, and
+/// every other contact is computed.
 pub fn contact_force_batch(
     m: &ContactModel,
     inp: &BatchIn<'_>,
@@ -500,7 +603,10 @@ pub fn contact_force_batch(
 ) -> Result<(), Error> {
     check_call(m, inp, dt, out)?;
     check_values(m, inp, out)?;
-    compute(m, inp, dt, out)
+    match compute_guarded(m, inp, dt, out)? {
+        None => Ok(()),
+        Some(_) => Err(Error::ResultRange),
+    }
 }
 
 /// Contacts per block of [`contact_force_batch_fused`]: the inputs and outputs of one block
@@ -583,7 +689,8 @@ pub fn contact_force_batch_fused(
             return Err(Error::BufferTooShort);
         };
         if check_values(m, &bi, &bo).is_ok() {
-            compute(m, &bi, dt, &mut bo)?;
+            let over = compute_guarded(m, &bi, dt, &mut bo)?;
+            first = first.or(over.map(|i| (a + i, Error::ResultRange)));
         } else {
             // Contact by contact: the good ones exactly as in a batch, the bad ones poisoned.
             for i in a..b {
@@ -592,7 +699,10 @@ pub fn contact_force_batch_fused(
                     return Err(Error::BufferTooShort);
                 };
                 match check_values(m, &ci, &co) {
-                    Ok(()) => compute(m, &ci, dt, &mut co)?,
+                    Ok(()) => {
+                        let over = compute_guarded(m, &ci, dt, &mut co)?;
+                        first = first.or(over.map(|_| (i, Error::ResultRange)));
+                    }
                     Err(e) => {
                         poison(&mut co);
                         first = first.or(Some((i, e)));
@@ -636,6 +746,11 @@ fn normal_only_fused(
     let mut first = None;
     for (i, s) in states(inp).enumerate() {
         if state_ok(s.n, s.overlap, s.v1, s.v2, s.r1, s.r2, s.m1, s.m2) {
+            // A valid contact whose force overflowed.
+            if !contact_finite(out, 0, i) {
+                poison(&mut sub_out(out, 0, i, i + 1).ok_or(Error::BufferTooShort)?);
+                first = first.or(Some((i, Error::ResultRange)));
+            }
             continue;
         }
         let (Some(ci), Some(mut co)) = (sub_in(inp, i, i + 1), sub_out(out, 0, i, i + 1)) else {
@@ -647,7 +762,11 @@ fn normal_only_fused(
                 first = first.or(Some((i, e)));
             }
             // Not reachable (the two checks test the same conditions); recompute to be safe.
-            Ok(()) => compute(m, &ci, dt, &mut co)?,
+            Ok(()) => {
+                if compute_guarded(m, &ci, dt, &mut co)?.is_some() {
+                    first = first.or(Some((i, Error::ResultRange)));
+                }
+            }
         }
     }
     Ok(first)
