@@ -778,7 +778,31 @@ DC_INLINE_FN dci_v3 dci_cross(dci_v3 a, dci_v3 b) {
 DC_INLINE_FN double dci_norm2(dci_v3 a) { return dci_dot(a, a); }
 /* a - (a.n) n */
 DC_INLINE_FN dci_v3 dci_tangential(dci_v3 a, dci_v3 n) { return dci_sub(a, dci_scale(dci_dot(a, n), n)); }
-DC_INLINE_FN int dci_finite3(dci_v3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+/* Finiteness masks: x - x is +0 for a finite x and NaN for an infinity or a NaN, so a sum of such
+ * terms is 0 exactly when all its x are finite (a NaN term makes the sum NaN; finite terms are
+ * zeros, which cannot overflow). One comparison for many values instead of a test and a branch
+ * per value; the sums are written as trees (the adds may not be reassociated by the compiler). */
+DC_INLINE_FN double dci_nf(double x) { return x - x; }
+DC_INLINE_FN double dci_nf3(const double a[3]) {
+    return (dci_nf(a[0]) + dci_nf(a[1])) + dci_nf(a[2]);
+}
+/* the mask of n doubles (two chains, for the history) */
+DC_INLINE_FN double dci_nfn(const double *a, int n) {
+    double s0 = 0.0, s1 = 0.0;
+    int i = 0;
+    for (; i + 1 < n; i += 2) {
+        s0 += dci_nf(a[i]);
+        s1 += dci_nf(a[i + 1]);
+    }
+    if (i < n) s0 += dci_nf(a[i]);
+    return s0 + s1;
+}
+/* every value of a contact result finite */
+DC_INLINE_FN int dci_result_finite(const dc_contact_result *r) {
+    const double a = dci_nf(r->f_n) + dci_nf3(r->force);
+    const double b = dci_nf3(r->ft) + (dci_nf3(r->torque1) + dci_nf3(r->torque2));
+    return a + b == 0.0;
+}
 /* f n with +0 components when f = 0 (as every library path) */
 DC_INLINE_FN dci_v3 dci_normal_vector(double f, dci_v3 n) {
     return f == 0.0 ? dci_v(0.0, 0.0, 0.0) : dci_scale(f, n);
@@ -1081,12 +1105,12 @@ DC_INLINE_FN int32_t dci_check_contact_model(const dc_contact_model *m, dci_layo
 }
 
 DC_INLINE_FN int32_t dci_check_contact_state(const dc_contact_state *s) {
-    const int body2 = (isfinite(s->r2) || s->r2 == (double)INFINITY) &&
-                      (isfinite(s->m2) || s->m2 == (double)INFINITY);
-    if (!(dci_finite3(dci_load3(s->n)) && isfinite(s->overlap) && dci_finite3(dci_load3(s->v1)) &&
-          dci_finite3(dci_load3(s->v2)) && dci_finite3(dci_load3(s->w1)) &&
-          dci_finite3(dci_load3(s->w2)) && isfinite(s->r1) && isfinite(s->m1) && body2))
-        return DC_ERR_NOT_FINITE;
+    /* body 2's radius and mass: finite or +inf (a wall, a fixed body), i.e. > -inf (false for
+     * NaN and -inf only); every other value finite (one mask, see dci_nf) */
+    const int body2 = s->r2 > -(double)INFINITY && s->m2 > -(double)INFINITY;
+    const double a = (dci_nf3(s->n) + dci_nf(s->overlap)) + (dci_nf(s->r1) + dci_nf(s->m1));
+    const double b = (dci_nf3(s->v1) + dci_nf3(s->v2)) + (dci_nf3(s->w1) + dci_nf3(s->w2));
+    if (!(a + b == 0.0 && body2)) return DC_ERR_NOT_FINITE;
     if (!(s->r1 > 0.0 && s->r2 > 0.0 && s->m1 > 0.0 && s->m2 > 0.0)) return DC_ERR_NOT_POSITIVE;
     const double u = dci_norm2(dci_load3(s->n)) - 1.0;
     if (!(fabs(u) <= 1e-6)) return DC_ERR_NOT_UNIT;
@@ -1122,14 +1146,11 @@ DC_INLINE_FN int32_t dc_contact_force_inline(const dc_contact_model *model,
     if ((st = dci_check_contact_state(state)) != DC_OK) return st;
     double h[DC_CONTACT_HISTORY_MAX];
     for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++) h[i] = (size_t)i < need ? history[i] : 0.0;
-    for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++)
-        if (!isfinite(h[i])) return DC_ERR_NOT_FINITE;
+    if (!(dci_nfn(h, DC_CONTACT_HISTORY_MAX) == 0.0)) return DC_ERR_NOT_FINITE;
     dc_contact_result r;
     dci_contact_evaluate(model, lay, state, dt, h, &r);
-    ok = isfinite(r.f_n) && dci_finite3(dci_load3(r.force)) && dci_finite3(dci_load3(r.ft)) &&
-         dci_finite3(dci_load3(r.torque1)) && dci_finite3(dci_load3(r.torque2));
-    for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++) ok = ok && isfinite(h[i]);
-    if (!ok) return DC_ERR_RESULT_RANGE;
+    if (!(dci_result_finite(&r) && dci_nfn(h, DC_CONTACT_HISTORY_MAX) == 0.0))
+        return DC_ERR_RESULT_RANGE;
     for (size_t i = 0; i < need; i++) history[i] = h[i];
     *out = r;
     return DC_OK;
@@ -1173,19 +1194,12 @@ DC_INLINE_FN int32_t dc_contact_force_checked_inline(const dc_contact_model *mod
      * or zeros, zero out: only the first lay.len can be non-finite */
     const int need = lay.len;
     double h[DC_CONTACT_HISTORY_MAX];
-    int finite = 1;
-    for (int i = 0; i < need; i++) {
-        h[i] = history[i];
-        finite &= isfinite(h[i]) != 0;
-    }
-    if (!finite) return DC_ERR_NOT_FINITE;
+    for (int i = 0; i < need; i++) h[i] = history[i];
+    if (!(dci_nfn(h, need) == 0.0)) return DC_ERR_NOT_FINITE;
     for (int i = need; i < DC_CONTACT_HISTORY_MAX; i++) h[i] = 0.0;
     dc_contact_result r;
     dci_contact_evaluate(model, lay, state, dt, h, &r);
-    int ok = isfinite(r.f_n) && dci_finite3(dci_load3(r.force)) && dci_finite3(dci_load3(r.ft)) &&
-             dci_finite3(dci_load3(r.torque1)) && dci_finite3(dci_load3(r.torque2));
-    for (int i = 0; i < need; i++) ok &= isfinite(h[i]) != 0;
-    if (!ok) return DC_ERR_RESULT_RANGE;
+    if (!(dci_result_finite(&r) && dci_nfn(h, need) == 0.0)) return DC_ERR_RESULT_RANGE;
     for (int i = 0; i < need; i++) history[i] = h[i];
     *out = r;
     return DC_OK;
