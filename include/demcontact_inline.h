@@ -1003,13 +1003,16 @@ DC_INLINE_FN dci_layout dci_layout_of(int32_t tangential, int32_t rolling, int32
     return l;
 }
 
-/* One contact through every stage (src/contact/evaluate.rs `evaluate`); h: the history. */
+/* One contact through every stage (src/contact/evaluate.rs `evaluate`); h: the history, its
+ * first lay.len entries read and written, no others (the library's history is lay.len long; a
+ * model without history (lay.len = 0) starts from a zero normal, as from a zeroed buffer). */
 DC_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_layout lay,
-                                       const dc_contact_state *s, double dt,
-                                       double h[DC_CONTACT_HISTORY_MAX], dc_contact_result *out) {
+                                               const dc_contact_state *s, double dt, double *h,
+                                               dc_contact_result *out) {
     DCI_NO_CONTRACT
     dci_frame frame;
-    const dci_kin k = dci_kin_of(s, dci_v(h[0], h[1], h[2]), dt, &frame);
+    const dci_v3 n_old = lay.len > 0 ? dci_v(h[0], h[1], h[2]) : dci_v(0.0, 0.0, 0.0);
+    const dci_kin k = dci_kin_of(s, n_old, dt, &frame);
     const dc_pair *pair = &m->normal;
     const double f = dc_normal_force_kernel_inline(pair->kernel, pair, k.d, k.vn, k.r_eff, k.m_eff);
     dci_v3 ft = dci_v(0.0, 0.0, 0.0), t1 = dci_v(0.0, 0.0, 0.0), t2 = dci_v(0.0, 0.0, 0.0);
@@ -1018,7 +1021,7 @@ DC_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_layout lay
     out->f_n = f;
     if (!(s->overlap > 0.0)) {
         /* not touching: history reset, only an adhesive normal law acts */
-        for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++) h[i] = 0.0;
+        for (int i = 0; i < lay.len; i++) h[i] = 0.0;
         force = dci_normal_vector(f, k.n);
     } else if (lay.len == 0 && m->rolling == DC_ROLLING_NONE) {
         force = dci_normal_vector(f, k.n);
@@ -1144,13 +1147,15 @@ DC_INLINE_FN int32_t dc_contact_force_inline(const dc_contact_model *model,
     if (!isfinite(dt)) return DC_ERR_NOT_FINITE;
     if (!(dt > 0.0)) return DC_ERR_NOT_POSITIVE;
     if ((st = dci_check_contact_state(state)) != DC_OK) return st;
+    /* the model's lay.len doubles only: the evaluation reads and writes no others (the library's
+     * history is that long), so the rest of the caller's buffer is neither copied nor checked */
+    const int n = lay.len;
     double h[DC_CONTACT_HISTORY_MAX];
-    for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++) h[i] = (size_t)i < need ? history[i] : 0.0;
-    if (!(dci_nfn(h, DC_CONTACT_HISTORY_MAX) == 0.0)) return DC_ERR_NOT_FINITE;
+    for (int i = 0; i < n; i++) h[i] = history[i];
+    if (!(dci_nfn(h, n) == 0.0)) return DC_ERR_NOT_FINITE;
     dc_contact_result r;
     dci_contact_evaluate(model, lay, state, dt, h, &r);
-    if (!(dci_result_finite(&r) && dci_nfn(h, DC_CONTACT_HISTORY_MAX) == 0.0))
-        return DC_ERR_RESULT_RANGE;
+    if (!(dci_result_finite(&r) && dci_nfn(h, n) == 0.0)) return DC_ERR_RESULT_RANGE;
     for (size_t i = 0; i < need; i++) history[i] = h[i];
     *out = r;
     return DC_OK;
@@ -1190,13 +1195,11 @@ DC_INLINE_FN int32_t dc_contact_force_checked_inline(const dc_contact_model *mod
     if (!(dt > 0.0)) return DC_ERR_NOT_POSITIVE;
     int32_t st = dci_check_contact_state(state);
     if (st != DC_OK) return st;
-    /* entries from lay.len on are zero in and, as the evaluation writes only the layout's entries
-     * or zeros, zero out: only the first lay.len can be non-finite */
+    /* the model's lay.len doubles only (the evaluation reads and writes no others) */
     const int need = lay.len;
     double h[DC_CONTACT_HISTORY_MAX];
     for (int i = 0; i < need; i++) h[i] = history[i];
     if (!(dci_nfn(h, need) == 0.0)) return DC_ERR_NOT_FINITE;
-    for (int i = need; i < DC_CONTACT_HISTORY_MAX; i++) h[i] = 0.0;
     dc_contact_result r;
     dci_contact_evaluate(model, lay, state, dt, h, &r);
     if (!(dci_result_finite(&r) && dci_nfn(h, need) == 0.0)) return DC_ERR_RESULT_RANGE;
