@@ -393,6 +393,78 @@ DC_INLINE_FN double dc_normal_force_inline(const dc_pair *pair, double overlap, 
     return dc_normal_force_kernel_inline(pair->kernel, pair, overlap, vn, r_eff, m_eff);
 }
 
+/* The normal force f of one contact and, in the same pass, fe: the force the same pair gives at
+ * vn = 0, bit for bit dc_normal_force_kernel_inline(pair->kernel, pair, d, 0.0, r, m) (the EPSD
+ * rolling's Ai stiffness rule needs the elastic force p F_el/d; evaluating the kernel a second
+ * time repeated its square roots). Each damped kernel is el + c' vn (el, c' rounded as in the
+ * kernel), so fe = el + c' 0.0, rounded and finished as the kernel would (c' 0.0 is kept: it is
+ * -0 or NaN for some c'; no compiler folds it without -ffast-math); the elastic kernels and
+ * unknown codes do not read vn, so fe = f. */
+DC_INLINE_FN double dci_normal_force_fe(const dc_pair *pair, double d, double vn, double r,
+                                                double m, double *fe) {
+    DCI_NO_CONTRACT
+    const double k = pair->k, c = pair->c, h = pair->h;
+    const int32_t kernel = pair->kernel;
+    double el, cd;
+    int clamp;
+    switch (kernel) {
+    case DC_KERNEL_LIN_DAMPED:
+    case DC_KERNEL_LIN_DAMPED_CLAMPED:
+        el = DCI_M(k, d);
+        cd = c * sqrt(m);
+        break;
+    case DC_KERNEL_P15_DAMPED:
+    case DC_KERNEL_P15_DAMPED_CLAMPED: {
+        const double q = sqrt(d);
+        el = DCI_M(k * d, q);
+        cd = c * sqrt(m * q);
+        break;
+    }
+    case DC_KERNEL_P2_DAMPED:
+    case DC_KERNEL_P2_DAMPED_CLAMPED:
+        el = DCI_M(k * d, d);
+        cd = c * sqrt(m * d);
+        break;
+    case DC_KERNEL_GEN_DAMPED:
+    case DC_KERNEL_GEN_DAMPED_CLAMPED: {
+        const double s = dc_pow_inline(d, h);
+        el = DCI_M(k * d * s, s);
+        cd = c * sqrt(m) * s;
+        break;
+    }
+    case DC_KERNEL_HERTZ_DAMPED:
+    case DC_KERNEL_HERTZ_DAMPED_CLAMPED: {
+        const double q = sqrt(r * d);
+        el = DCI_M(k * q, d);
+        cd = c * sqrt(m * q);
+        break;
+    }
+    case DC_KERNEL_VISCO_DAMPED:
+    case DC_KERNEL_VISCO_DAMPED_CLAMPED: {
+        /* k sqrt(r d) (d + c vn) */
+        clamp = kernel == DC_KERNEL_VISCO_DAMPED_CLAMPED;
+        const double g = k * sqrt(r * d);
+        *fe = dci_finish(g * (d + DCI_M(c, 0.0)), d, clamp);
+        return dci_finish(g * (d + DCI_M(c, vn)), d, clamp);
+    }
+    case DC_KERNEL_DMT_DAMPED: {
+        if (!(d > 0.0)) return *fe = dci_dmt_tail(k, h, d, r);
+        const double q = sqrt(r * d);
+        const double a = DCI_M(k * q, d), b = c * sqrt(m * q), hr = DCI_M(h, r);
+        *fe = (a + DCI_M(b, 0.0)) - hr;
+        return (a + DCI_M(b, vn)) - hr;
+    }
+    default: /* elastic kernels (vn not read) and unknown codes (NaN) */
+        return *fe = dc_normal_force_kernel_inline(kernel, pair, d, vn, r, m);
+    }
+    /* the clamped codes of the damped kernels above */
+    clamp = kernel == DC_KERNEL_LIN_DAMPED_CLAMPED || kernel == DC_KERNEL_P15_DAMPED_CLAMPED ||
+            kernel == DC_KERNEL_P2_DAMPED_CLAMPED || kernel == DC_KERNEL_GEN_DAMPED_CLAMPED ||
+            kernel == DC_KERNEL_HERTZ_DAMPED_CLAMPED;
+    *fe = dci_finish(el + DCI_M(cd, 0.0), d, clamp);
+    return dci_finish(el + DCI_M(cd, vn), d, clamp);
+}
+
 /* ------------------------------------------------------------------ calibrations (set-up time)
  * src/lsd/{restitution,decay}.rs, src/powerlaw/{calibration,transform}.rs, src/numerics/roots.rs,
  * src/material.rs: the same operations in the same order. */
@@ -1014,7 +1086,9 @@ DC_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_layout lay
     const dci_v3 n_old = lay.len > 0 ? dci_v(h[0], h[1], h[2]) : dci_v(0.0, 0.0, 0.0);
     const dci_kin k = dci_kin_of(s, n_old, dt, &frame);
     const dc_pair *pair = &m->normal;
-    const double f = dc_normal_force_kernel_inline(pair->kernel, pair, k.d, k.vn, k.r_eff, k.m_eff);
+    /* fe: the force at vn = 0, for Ai's rolling stiffness rule below (same pass, same bits) */
+    double fe;
+    const double f = dci_normal_force_fe(pair, k.d, k.vn, k.r_eff, k.m_eff, &fe);
     dci_v3 ft = dci_v(0.0, 0.0, 0.0), t1 = dci_v(0.0, 0.0, 0.0), t2 = dci_v(0.0, 0.0, 0.0);
     dci_v3 force;
     int sliding = 0, rolling_sliding = 0;
@@ -1054,8 +1128,6 @@ DC_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_layout lay
             double kn = 0.0;
             if (!(m->k_r > 0.0)) {
                 /* the normal law's elastic tangent stiffness p F_el/d (vn = 0: no damping) */
-                const double fe =
-                    dc_normal_force_kernel_inline(pair->kernel, pair, k.d, 0.0, k.r_eff, k.m_eff);
                 kn = pair->p * fe / k.d;
             }
             dci_v3 mk = dci_v(h[lay.rolling], h[lay.rolling + 1], h[lay.rolling + 2]);
