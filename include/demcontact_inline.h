@@ -63,7 +63,7 @@
 /* The full contact's per-contact helpers (vector algebra, frame carry, kinematics, sub-models,
  * checks): always inlined. Inside a host's large pair loop GCC otherwise keeps some of them out of
  * line (in LIGGGHTS' loop dci_carry and the normal-kernel switch stayed calls, 3-vectors passed
- * through memory; forcing them inline cut the LIGGGHTS scene's loop time by ~15 %,
+ * through memory; forcing them inline cut the LIGGGHTS scene's loop time by 11-18 %,
  * docs/simulators.md). Inlining changes no rounding (the products stay unfused as below), so no
  * result. The attribute goes after `inline` and before __host__ __device__, where
  * GCC, clang (also in CUDA mode) and nvcc accept it; compilers without GNU attributes get
