@@ -60,6 +60,26 @@
 #define DC_INLINE_FN static inline
 #endif
 
+/* The full contact's per-contact helpers (vector algebra, frame carry, kinematics, sub-models,
+ * checks): always inlined. Inside a host's large pair loop GCC otherwise keeps some of them out of
+ * line (in LIGGGHTS' loop dci_carry and the normal-kernel switch stayed calls, 3-vectors passed
+ * through memory; forcing them inline cut the LIGGGHTS scene's loop time by 11-18 %,
+ * docs/simulators.md). Inlining changes no rounding (the products stay unfused as below), so no
+ * result. The attribute goes after `inline` and before __host__ __device__, where
+ * GCC, clang (also in CUDA mode) and nvcc accept it; compilers without GNU attributes get
+ * MSVC's __forceinline or a plain inline. */
+#if defined(__GNUC__) || defined(__clang__)
+#if defined(__CUDACC__) || defined(__HIPCC__)
+#define DCI_ALWAYS_INLINE_FN static inline __attribute__((always_inline)) __host__ __device__
+#else
+#define DCI_ALWAYS_INLINE_FN static inline __attribute__((always_inline))
+#endif
+#elif defined(_MSC_VER) && !defined(__CUDACC__)
+#define DCI_ALWAYS_INLINE_FN static __forceinline
+#else
+#define DCI_ALWAYS_INLINE_FN DC_INLINE_FN
+#endif
+
 /* A product rounded on its own, never fused with an addition (see the header comment). */
 #if defined(__CUDA_ARCH__)
 #define DCI_M(a, b) __dmul_rn((a), (b))
@@ -100,7 +120,7 @@
 
 /* ------------------------------------------------------------------ bits of a double */
 
-DC_INLINE_FN uint64_t dci_bits(double x) {
+DCI_ALWAYS_INLINE_FN uint64_t dci_bits(double x) {
 #if defined(__CUDA_ARCH__)
     return (uint64_t)__double_as_longlong(x);
 #else
@@ -110,7 +130,7 @@ DC_INLINE_FN uint64_t dci_bits(double x) {
 #endif
 }
 
-DC_INLINE_FN double dci_from_bits(uint64_t u) {
+DCI_ALWAYS_INLINE_FN double dci_from_bits(uint64_t u) {
 #if defined(__CUDA_ARCH__)
     return __longlong_as_double((long long)u);
 #else
@@ -262,36 +282,36 @@ DC_INLINE_FN double dc_pow_inline(double x, double q) {
  * Raw forces of each law (src/force/{powerlaw,hertz,viscoelastic}.rs), k, c, h = dc_pair.k, .c,
  * .h; then dci_finish: zero without overlap (also for NaN d), clamp when the pair clamps. */
 
-DC_INLINE_FN double dci_finish(double f, double d, int clamp) {
+DCI_ALWAYS_INLINE_FN double dci_finish(double f, double d, int clamp) {
     if (clamp) f = f > 0.0 ? f : 0.0;
     return d > 0.0 ? f : 0.0;
 }
 
 /* p = 1: k d [+ c sqrt(m) vn] */
-DC_INLINE_FN double dci_lin_elastic(double k, double d) {
+DCI_ALWAYS_INLINE_FN double dci_lin_elastic(double k, double d) {
     DCI_NO_CONTRACT
     return k * d;
 }
-DC_INLINE_FN double dci_lin_damped(double k, double c, double d, double vn, double m) {
+DCI_ALWAYS_INLINE_FN double dci_lin_damped(double k, double c, double d, double vn, double m) {
     DCI_NO_CONTRACT
     return DCI_M(k, d) + DCI_M(c * sqrt(m), vn);
 }
 /* p = 3/2, fixed k: q = sqrt(d); k d q [+ c sqrt(m q) vn] */
-DC_INLINE_FN double dci_p15_elastic(double k, double d) {
+DCI_ALWAYS_INLINE_FN double dci_p15_elastic(double k, double d) {
     DCI_NO_CONTRACT
     return k * d * sqrt(d);
 }
-DC_INLINE_FN double dci_p15_damped(double k, double c, double d, double vn, double m) {
+DCI_ALWAYS_INLINE_FN double dci_p15_damped(double k, double c, double d, double vn, double m) {
     DCI_NO_CONTRACT
     const double q = sqrt(d);
     return DCI_M(k * d, q) + DCI_M(c * sqrt(m * q), vn);
 }
 /* p = 2: k d^2 [+ c sqrt(m d) vn] */
-DC_INLINE_FN double dci_p2_elastic(double k, double d) {
+DCI_ALWAYS_INLINE_FN double dci_p2_elastic(double k, double d) {
     DCI_NO_CONTRACT
     return k * d * d;
 }
-DC_INLINE_FN double dci_p2_damped(double k, double c, double d, double vn, double m) {
+DCI_ALWAYS_INLINE_FN double dci_p2_damped(double k, double c, double d, double vn, double m) {
     DCI_NO_CONTRACT
     return DCI_M(k * d, d) + DCI_M(c * sqrt(m * d), vn);
 }
@@ -307,17 +327,18 @@ DC_INLINE_FN double dci_gen_damped(double k, double c, double h, double d, doubl
     return DCI_M(k * d * s, s) + DCI_M(c * sqrt(m) * s, vn);
 }
 /* Hertz, k = (4/3) E*: q = sqrt(r d); k q d [+ c sqrt(m q) vn] */
-DC_INLINE_FN double dci_hertz_elastic(double k, double d, double r) {
+DCI_ALWAYS_INLINE_FN double dci_hertz_elastic(double k, double d, double r) {
     DCI_NO_CONTRACT
     return k * sqrt(r * d) * d;
 }
-DC_INLINE_FN double dci_hertz_damped(double k, double c, double d, double vn, double r, double m) {
+DCI_ALWAYS_INLINE_FN double dci_hertz_damped(double k, double c, double d, double vn, double r,
+                                             double m) {
     DCI_NO_CONTRACT
     const double q = sqrt(r * d);
     return DCI_M(k * q, d) + DCI_M(c * sqrt(m * q), vn);
 }
 /* viscoelastic: k sqrt(r d) (d + c vn), c = (3/2) A */
-DC_INLINE_FN double dci_visco(double k, double c, double d, double vn, double r) {
+DCI_ALWAYS_INLINE_FN double dci_visco(double k, double c, double d, double vn, double r) {
     DCI_NO_CONTRACT
     return k * sqrt(r * d) * (d + DCI_M(c, vn));
 }
@@ -391,6 +412,78 @@ DC_INLINE_FN double dc_normal_force_inline(const dc_pair *pair, double overlap, 
                                            double r_eff, double m_eff) {
     if (!pair) return (double)NAN;
     return dc_normal_force_kernel_inline(pair->kernel, pair, overlap, vn, r_eff, m_eff);
+}
+
+/* The normal force f of one contact and, in the same pass, fe: the force the same pair gives at
+ * vn = 0, bit for bit dc_normal_force_kernel_inline(pair->kernel, pair, d, 0.0, r, m) (the EPSD
+ * rolling's Ai stiffness rule needs the elastic force p F_el/d; evaluating the kernel a second
+ * time repeated its square roots). Each damped kernel is el + c' vn (el, c' rounded as in the
+ * kernel), so fe = el + c' 0.0, rounded and finished as the kernel would (c' 0.0 is kept: it is
+ * -0 or NaN for some c'; no compiler folds it without -ffast-math); the elastic kernels and
+ * unknown codes do not read vn, so fe = f. */
+DCI_ALWAYS_INLINE_FN double dci_normal_force_fe(const dc_pair *pair, double d, double vn, double r,
+                                                double m, double *fe) {
+    DCI_NO_CONTRACT
+    const double k = pair->k, c = pair->c, h = pair->h;
+    const int32_t kernel = pair->kernel;
+    double el, cd;
+    int clamp;
+    switch (kernel) {
+    case DC_KERNEL_LIN_DAMPED:
+    case DC_KERNEL_LIN_DAMPED_CLAMPED:
+        el = DCI_M(k, d);
+        cd = c * sqrt(m);
+        break;
+    case DC_KERNEL_P15_DAMPED:
+    case DC_KERNEL_P15_DAMPED_CLAMPED: {
+        const double q = sqrt(d);
+        el = DCI_M(k * d, q);
+        cd = c * sqrt(m * q);
+        break;
+    }
+    case DC_KERNEL_P2_DAMPED:
+    case DC_KERNEL_P2_DAMPED_CLAMPED:
+        el = DCI_M(k * d, d);
+        cd = c * sqrt(m * d);
+        break;
+    case DC_KERNEL_GEN_DAMPED:
+    case DC_KERNEL_GEN_DAMPED_CLAMPED: {
+        const double s = dc_pow_inline(d, h);
+        el = DCI_M(k * d * s, s);
+        cd = c * sqrt(m) * s;
+        break;
+    }
+    case DC_KERNEL_HERTZ_DAMPED:
+    case DC_KERNEL_HERTZ_DAMPED_CLAMPED: {
+        const double q = sqrt(r * d);
+        el = DCI_M(k * q, d);
+        cd = c * sqrt(m * q);
+        break;
+    }
+    case DC_KERNEL_VISCO_DAMPED:
+    case DC_KERNEL_VISCO_DAMPED_CLAMPED: {
+        /* k sqrt(r d) (d + c vn) */
+        clamp = kernel == DC_KERNEL_VISCO_DAMPED_CLAMPED;
+        const double g = k * sqrt(r * d);
+        *fe = dci_finish(g * (d + DCI_M(c, 0.0)), d, clamp);
+        return dci_finish(g * (d + DCI_M(c, vn)), d, clamp);
+    }
+    case DC_KERNEL_DMT_DAMPED: {
+        if (!(d > 0.0)) return *fe = dci_dmt_tail(k, h, d, r);
+        const double q = sqrt(r * d);
+        const double a = DCI_M(k * q, d), b = c * sqrt(m * q), hr = DCI_M(h, r);
+        *fe = (a + DCI_M(b, 0.0)) - hr;
+        return (a + DCI_M(b, vn)) - hr;
+    }
+    default: /* elastic kernels (vn not read) and unknown codes (NaN) */
+        return *fe = dc_normal_force_kernel_inline(kernel, pair, d, vn, r, m);
+    }
+    /* the clamped codes of the damped kernels above */
+    clamp = kernel == DC_KERNEL_LIN_DAMPED_CLAMPED || kernel == DC_KERNEL_P15_DAMPED_CLAMPED ||
+            kernel == DC_KERNEL_P2_DAMPED_CLAMPED || kernel == DC_KERNEL_GEN_DAMPED_CLAMPED ||
+            kernel == DC_KERNEL_HERTZ_DAMPED_CLAMPED;
+    *fe = dci_finish(el + DCI_M(cd, 0.0), d, clamp);
+    return dci_finish(el + DCI_M(cd, vn), d, clamp);
 }
 
 /* ------------------------------------------------------------------ calibrations (set-up time)
@@ -748,43 +841,86 @@ typedef struct dci_v3 {
     double x, y, z;
 } dci_v3;
 
-DC_INLINE_FN dci_v3 dci_v(double x, double y, double z) {
+DCI_ALWAYS_INLINE_FN dci_v3 dci_v(double x, double y, double z) {
     dci_v3 v;
     v.x = x;
     v.y = y;
     v.z = z;
     return v;
 }
-DC_INLINE_FN dci_v3 dci_load3(const double a[3]) { return dci_v(a[0], a[1], a[2]); }
-DC_INLINE_FN void dci_store3(double a[3], dci_v3 v) {
+DCI_ALWAYS_INLINE_FN dci_v3 dci_load3(const double a[3]) { return dci_v(a[0], a[1], a[2]); }
+DCI_ALWAYS_INLINE_FN void dci_store3(double a[3], dci_v3 v) {
     a[0] = v.x;
     a[1] = v.y;
     a[2] = v.z;
 }
-DC_INLINE_FN dci_v3 dci_add(dci_v3 a, dci_v3 b) { return dci_v(a.x + b.x, a.y + b.y, a.z + b.z); }
-DC_INLINE_FN dci_v3 dci_sub(dci_v3 a, dci_v3 b) { return dci_v(a.x - b.x, a.y - b.y, a.z - b.z); }
-DC_INLINE_FN dci_v3 dci_scale(double s, dci_v3 a) {
+DCI_ALWAYS_INLINE_FN dci_v3 dci_add(dci_v3 a, dci_v3 b) {
+    return dci_v(a.x + b.x, a.y + b.y, a.z + b.z);
+}
+DCI_ALWAYS_INLINE_FN dci_v3 dci_sub(dci_v3 a, dci_v3 b) {
+    return dci_v(a.x - b.x, a.y - b.y, a.z - b.z);
+}
+DCI_ALWAYS_INLINE_FN dci_v3 dci_scale(double s, dci_v3 a) {
     return dci_v(DCI_M(s, a.x), DCI_M(s, a.y), DCI_M(s, a.z));
 }
-DC_INLINE_FN double dci_dot(dci_v3 a, dci_v3 b) {
+DCI_ALWAYS_INLINE_FN double dci_dot(dci_v3 a, dci_v3 b) {
     DCI_NO_CONTRACT
     return DCI_M(a.x, b.x) + DCI_M(a.y, b.y) + DCI_M(a.z, b.z);
 }
-DC_INLINE_FN dci_v3 dci_cross(dci_v3 a, dci_v3 b) {
+DCI_ALWAYS_INLINE_FN dci_v3 dci_cross(dci_v3 a, dci_v3 b) {
     DCI_NO_CONTRACT
     return dci_v(DCI_M(a.y, b.z) - DCI_M(a.z, b.y), DCI_M(a.z, b.x) - DCI_M(a.x, b.z),
                  DCI_M(a.x, b.y) - DCI_M(a.y, b.x));
 }
-DC_INLINE_FN double dci_norm2(dci_v3 a) { return dci_dot(a, a); }
+DCI_ALWAYS_INLINE_FN double dci_norm2(dci_v3 a) { return dci_dot(a, a); }
 /* a - (a.n) n */
-DC_INLINE_FN dci_v3 dci_tangential(dci_v3 a, dci_v3 n) { return dci_sub(a, dci_scale(dci_dot(a, n), n)); }
-DC_INLINE_FN int dci_finite3(dci_v3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential(dci_v3 a, dci_v3 n) {
+    return dci_sub(a, dci_scale(dci_dot(a, n), n));
+}
+/* Finiteness masks: x - x is +0 for a finite x and NaN for an infinity or a NaN, so a sum of such
+ * terms is 0 exactly when all its x are finite (a NaN term makes the sum NaN; finite terms are
+ * zeros, which cannot overflow). One comparison for many values instead of a test and a branch
+ * per value; the sums are written as trees (the adds may not be reassociated by the compiler). */
+DCI_ALWAYS_INLINE_FN double dci_nf(double x) { return x - x; }
+DCI_ALWAYS_INLINE_FN double dci_nf3(const double a[3]) {
+    return (dci_nf(a[0]) + dci_nf(a[1])) + dci_nf(a[2]);
+}
+/* The history: copy n doubles from src to dst (dst may be NULL: no copy) and return their mask.
+ * n is a layout length (0, 4, 6, 7, 9, 10 for a valid model): the switch gives each a constant
+ * trip count, which the compiler unrolls; loops over the run-time n (copy in, mask, mask out, copy
+ * out) took ~10 % of the LAMMPS scene's perf samples, and the unrolled copies cut its loop time
+ * by ~8 % (docs/simulators.md). Any other n takes the loop. */
+DCI_ALWAYS_INLINE_FN double dci_copy_nf_k(double *dst, const double *src, int n) {
+    double s = 0.0;
+    for (int i = 0; i < n; i++) {
+        if (dst) dst[i] = src[i];
+        s += dci_nf(src[i]);
+    }
+    return s;
+}
+DCI_ALWAYS_INLINE_FN double dci_copy_nf(double *dst, const double *src, int n) {
+    switch (n) {
+    case 0: return 0.0;
+    case 4: return dci_copy_nf_k(dst, src, 4);
+    case 6: return dci_copy_nf_k(dst, src, 6);
+    case 7: return dci_copy_nf_k(dst, src, 7);
+    case 9: return dci_copy_nf_k(dst, src, 9);
+    case 10: return dci_copy_nf_k(dst, src, 10);
+    default: return dci_copy_nf_k(dst, src, n);
+    }
+}
+/* every value of a contact result finite */
+DCI_ALWAYS_INLINE_FN int dci_result_finite(const dc_contact_result *r) {
+    const double a = dci_nf(r->f_n) + dci_nf3(r->force);
+    const double b = dci_nf3(r->ft) + (dci_nf3(r->torque1) + dci_nf3(r->torque2));
+    return a + b == 0.0;
+}
 /* f n with +0 components when f = 0 (as every library path) */
-DC_INLINE_FN dci_v3 dci_normal_vector(double f, dci_v3 n) {
+DCI_ALWAYS_INLINE_FN dci_v3 dci_normal_vector(double f, dci_v3 n) {
     return f == 0.0 ? dci_v(0.0, 0.0, 0.0) : dci_scale(f, n);
 }
 /* a b/(a + b), an infinite b (wall, fixed body) giving a */
-DC_INLINE_FN double dci_harmonic(double a, double b) {
+DCI_ALWAYS_INLINE_FN double dci_harmonic(double a, double b) {
     return b == (double)INFINITY ? a : a * (b / (a + b));
 }
 
@@ -799,12 +935,12 @@ typedef struct dci_frame {
 } dci_frame;
 
 /* v + s q x v + c q x (q x v) */
-DC_INLINE_FN dci_v3 dci_spin(dci_v3 q, double s, double c, dci_v3 v) {
+DCI_ALWAYS_INLINE_FN dci_v3 dci_spin(dci_v3 q, double s, double c, dci_v3 v) {
     const dci_v3 qv = dci_cross(q, v);
     const dci_v3 qqv = dci_cross(q, qv);
     return dci_add(v, dci_add(dci_scale(s, qv), dci_scale(c, qqv)));
 }
-DC_INLINE_FN void dci_rodrigues(double q2, double *s, double *c) {
+DCI_ALWAYS_INLINE_FN void dci_rodrigues(double q2, double *s, double *c) {
     DCI_NO_CONTRACT
     if (q2 < 1e-3) {
         *s = 1.0 - DCI_M(q2 / 6.0, 1.0 - DCI_M(q2 / 20.0, 1.0 - q2 / 42.0));
@@ -817,7 +953,7 @@ DC_INLINE_FN void dci_rodrigues(double q2, double *s, double *c) {
         *c = 2.0 * h * h / q2;
     }
 }
-DC_INLINE_FN dci_frame dci_frame_new(dci_v3 n_old, dci_v3 n, dci_v3 q) {
+DCI_ALWAYS_INLINE_FN dci_frame dci_frame_new(dci_v3 n_old, dci_v3 n, dci_v3 q) {
     dci_frame f;
     dci_rodrigues(dci_norm2(q), &f.s, &f.c);
     const dci_v3 spun = dci_spin(q, f.s, f.c, n_old);
@@ -829,11 +965,11 @@ DC_INLINE_FN dci_frame dci_frame_new(dci_v3 n_old, dci_v3 n, dci_v3 q) {
     return f;
 }
 /* Rodrigues about k = a x b: c v + k x v + (k.v)/(1 + c) k */
-DC_INLINE_FN dci_v3 dci_tilt(double c, dci_v3 k, dci_v3 v) {
+DCI_ALWAYS_INLINE_FN dci_v3 dci_tilt(double c, dci_v3 k, dci_v3 v) {
     return dci_add(dci_add(dci_scale(c, v), dci_cross(k, v)),
                    dci_scale(dci_dot(k, v) / (1.0 + c), k));
 }
-DC_INLINE_FN dci_v3 dci_carry(const dci_frame *f, dci_v3 v) {
+DCI_ALWAYS_INLINE_FN dci_v3 dci_carry(const dci_frame *f, dci_v3 v) {
     const dci_v3 w = f->carry ? dci_tilt(f->tc, f->tk, dci_spin(f->q, f->s, f->c, v)) : v;
     return dci_tangential(w, f->n);
 }
@@ -845,8 +981,8 @@ typedef struct dci_kin {
     int wall;
 } dci_kin;
 
-DC_INLINE_FN dci_kin dci_kin_of(const dc_contact_state *s, dci_v3 n_old, double dt,
-                                dci_frame *frame) {
+DCI_ALWAYS_INLINE_FN dci_kin dci_kin_of(const dc_contact_state *s, dci_v3 n_old, double dt,
+                                        dci_frame *frame) {
     DCI_NO_CONTRACT
     dci_kin k;
     const dci_v3 n = dci_load3(s->n), v1 = dci_load3(s->v1), v2 = dci_load3(s->v2);
@@ -876,9 +1012,9 @@ DC_INLINE_FN dci_kin dci_kin_of(const dc_contact_state *s, dci_v3 n_old, double 
 
 /* Tangential stage (src/contact/tangential.rs): spring carried, incremented by v_t dt, dashpot,
  * Coulomb truncation with LAMMPS's spring reset. kt: the law's stiffness of this contact. */
-DC_INLINE_FN dci_v3 dci_tangential_step(const dc_contact_model *m, const dci_kin *k, double kt,
-                                        double f_normal, double dt, const dci_frame *frame,
-                                        dci_v3 *xi, int *sliding) {
+DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_step(const dc_contact_model *m, const dci_kin *k,
+                                                double kt, double f_normal, double dt,
+                                                const dci_frame *frame, dci_v3 *xi, int *sliding) {
     DCI_NO_CONTRACT
     const double ct = m->zeta_t > 0.0
                           ? 2.0 * m->zeta_t * sqrt(m->kappa / (1.0 + m->kappa) * k->m_eff * kt)
@@ -899,8 +1035,8 @@ DC_INLINE_FN dci_v3 dci_tangential_step(const dc_contact_model *m, const dci_kin
 }
 
 /* Constant rolling torque (src/contact/rolling_constant.rs). */
-DC_INLINE_FN dci_v3 dci_rolling_constant(const dc_contact_model *m, const dci_kin *k,
-                                         double f_normal, int *on) {
+DCI_ALWAYS_INLINE_FN dci_v3 dci_rolling_constant(const dc_contact_model *m, const dci_kin *k,
+                                                 double f_normal, int *on) {
     const double w2 = dci_norm2(k->w_roll);
     if (w2 > 0.0) {
         const double mag = m->mu_r * k->r_eff * fabs(f_normal);
@@ -912,9 +1048,9 @@ DC_INLINE_FN dci_v3 dci_rolling_constant(const dc_contact_model *m, const dci_ki
 }
 
 /* EPSD rolling (src/contact/rolling_epsd.rs); kn: the normal law's elastic tangent stiffness. */
-DC_INLINE_FN dci_v3 dci_rolling_epsd(const dc_contact_model *m, const dci_kin *k, double f_normal,
-                                     double kn, double dt, const dci_frame *frame, dci_v3 *mk,
-                                     int *lim) {
+DCI_ALWAYS_INLINE_FN dci_v3 dci_rolling_epsd(const dc_contact_model *m, const dci_kin *k,
+                                             double f_normal, double kn, double dt,
+                                             const dci_frame *frame, dci_v3 *mk, int *lim) {
     DCI_NO_CONTRACT
     const dci_v3 wr = k->w_roll;
     const double kr = m->k_r > 0.0 ? m->k_r : 2.25 * kn * m->mu_r * m->mu_r * k->r_eff * k->r_eff;
@@ -937,8 +1073,8 @@ DC_INLINE_FN dci_v3 dci_rolling_epsd(const dc_contact_model *m, const dci_kin *k
 }
 
 /* Twisting spring-dashpot-slider (src/contact/twisting_sds.rs): torque about n on body 1. */
-DC_INLINE_FN double dci_twisting(const dc_contact_model *m, const dci_kin *k, double f_normal,
-                                 double dt, double *mk, int *lim) {
+DCI_ALWAYS_INLINE_FN double dci_twisting(const dc_contact_model *m, const dci_kin *k,
+                                         double f_normal, double dt, double *mk, int *lim) {
     DCI_NO_CONTRACT
     const double wt = dci_dot(k->w_rel, k->n);
     const double spring = *mk - DCI_M(m->k_tw * wt, dt);
@@ -964,7 +1100,8 @@ typedef struct dci_layout {
     int len, tangential, rolling, twisting;
 } dci_layout;
 
-DC_INLINE_FN dci_layout dci_layout_of(int32_t tangential, int32_t rolling, int32_t twisting) {
+DCI_ALWAYS_INLINE_FN dci_layout dci_layout_of(int32_t tangential, int32_t rolling,
+                                              int32_t twisting) {
     dci_layout l;
     const int has_t = tangential != DC_TANGENTIAL_NONE;
     const int has_r = rolling == DC_ROLLING_EPSD;
@@ -979,22 +1116,27 @@ DC_INLINE_FN dci_layout dci_layout_of(int32_t tangential, int32_t rolling, int32
     return l;
 }
 
-/* One contact through every stage (src/contact/evaluate.rs `evaluate`); h: the history. */
-DC_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_layout lay,
-                                       const dc_contact_state *s, double dt,
-                                       double h[DC_CONTACT_HISTORY_MAX], dc_contact_result *out) {
+/* One contact through every stage (src/contact/evaluate.rs `evaluate`); h: the history, its
+ * first lay.len entries read and written, no others (the library's history is lay.len long; a
+ * model without history (lay.len = 0) starts from a zero normal, as from a zeroed buffer). */
+DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_layout lay,
+                                               const dc_contact_state *s, double dt, double *h,
+                                               dc_contact_result *out) {
     DCI_NO_CONTRACT
     dci_frame frame;
-    const dci_kin k = dci_kin_of(s, dci_v(h[0], h[1], h[2]), dt, &frame);
+    const dci_v3 n_old = lay.len > 0 ? dci_v(h[0], h[1], h[2]) : dci_v(0.0, 0.0, 0.0);
+    const dci_kin k = dci_kin_of(s, n_old, dt, &frame);
     const dc_pair *pair = &m->normal;
-    const double f = dc_normal_force_kernel_inline(pair->kernel, pair, k.d, k.vn, k.r_eff, k.m_eff);
+    /* fe: the force at vn = 0, for Ai's rolling stiffness rule below (same pass, same bits) */
+    double fe;
+    const double f = dci_normal_force_fe(pair, k.d, k.vn, k.r_eff, k.m_eff, &fe);
     dci_v3 ft = dci_v(0.0, 0.0, 0.0), t1 = dci_v(0.0, 0.0, 0.0), t2 = dci_v(0.0, 0.0, 0.0);
     dci_v3 force;
     int sliding = 0, rolling_sliding = 0;
     out->f_n = f;
     if (!(s->overlap > 0.0)) {
         /* not touching: history reset, only an adhesive normal law acts */
-        for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++) h[i] = 0.0;
+        for (int i = 0; i < lay.len; i++) h[i] = 0.0;
         force = dci_normal_vector(f, k.n);
     } else if (lay.len == 0 && m->rolling == DC_ROLLING_NONE) {
         force = dci_normal_vector(f, k.n);
@@ -1027,8 +1169,6 @@ DC_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_layout lay
             double kn = 0.0;
             if (!(m->k_r > 0.0)) {
                 /* the normal law's elastic tangent stiffness p F_el/d (vn = 0: no damping) */
-                const double fe =
-                    dc_normal_force_kernel_inline(pair->kernel, pair, k.d, 0.0, k.r_eff, k.m_eff);
                 kn = pair->p * fe / k.d;
             }
             dci_v3 mk = dci_v(h[lay.rolling], h[lay.rolling + 1], h[lay.rolling + 2]);
@@ -1080,13 +1220,13 @@ DC_INLINE_FN int32_t dci_check_contact_model(const dc_contact_model *m, dci_layo
     return ok ? DC_OK : DC_ERR_CONTACT_MODEL_INVALID;
 }
 
-DC_INLINE_FN int32_t dci_check_contact_state(const dc_contact_state *s) {
-    const int body2 = (isfinite(s->r2) || s->r2 == (double)INFINITY) &&
-                      (isfinite(s->m2) || s->m2 == (double)INFINITY);
-    if (!(dci_finite3(dci_load3(s->n)) && isfinite(s->overlap) && dci_finite3(dci_load3(s->v1)) &&
-          dci_finite3(dci_load3(s->v2)) && dci_finite3(dci_load3(s->w1)) &&
-          dci_finite3(dci_load3(s->w2)) && isfinite(s->r1) && isfinite(s->m1) && body2))
-        return DC_ERR_NOT_FINITE;
+DCI_ALWAYS_INLINE_FN int32_t dci_check_contact_state(const dc_contact_state *s) {
+    /* body 2's radius and mass: finite or +inf (a wall, a fixed body), i.e. > -inf (false for
+     * NaN and -inf only); every other value finite (one mask, see dci_nf) */
+    const int body2 = s->r2 > -(double)INFINITY && s->m2 > -(double)INFINITY;
+    const double a = (dci_nf3(s->n) + dci_nf(s->overlap)) + (dci_nf(s->r1) + dci_nf(s->m1));
+    const double b = (dci_nf3(s->v1) + dci_nf3(s->v2)) + (dci_nf3(s->w1) + dci_nf3(s->w2));
+    if (!(a + b == 0.0 && body2)) return DC_ERR_NOT_FINITE;
     if (!(s->r1 > 0.0 && s->r2 > 0.0 && s->m1 > 0.0 && s->m2 > 0.0)) return DC_ERR_NOT_POSITIVE;
     const double u = dci_norm2(dci_load3(s->n)) - 1.0;
     if (!(fabs(u) <= 1e-6)) return DC_ERR_NOT_UNIT;
@@ -1120,17 +1260,15 @@ DC_INLINE_FN int32_t dc_contact_force_inline(const dc_contact_model *model,
     if (!isfinite(dt)) return DC_ERR_NOT_FINITE;
     if (!(dt > 0.0)) return DC_ERR_NOT_POSITIVE;
     if ((st = dci_check_contact_state(state)) != DC_OK) return st;
+    /* the model's lay.len doubles only: the evaluation reads and writes no others (the library's
+     * history is that long), so the rest of the caller's buffer is neither copied nor checked */
+    const int n = lay.len;
     double h[DC_CONTACT_HISTORY_MAX];
-    for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++) h[i] = (size_t)i < need ? history[i] : 0.0;
-    for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++)
-        if (!isfinite(h[i])) return DC_ERR_NOT_FINITE;
+    if (!(dci_copy_nf(h, history, n) == 0.0)) return DC_ERR_NOT_FINITE;
     dc_contact_result r;
     dci_contact_evaluate(model, lay, state, dt, h, &r);
-    ok = isfinite(r.f_n) && dci_finite3(dci_load3(r.force)) && dci_finite3(dci_load3(r.ft)) &&
-         dci_finite3(dci_load3(r.torque1)) && dci_finite3(dci_load3(r.torque2));
-    for (int i = 0; i < DC_CONTACT_HISTORY_MAX; i++) ok = ok && isfinite(h[i]);
-    if (!ok) return DC_ERR_RESULT_RANGE;
-    for (size_t i = 0; i < need; i++) history[i] = h[i];
+    if (!(dci_result_finite(&r) && dci_copy_nf(NULL, h, n) == 0.0)) return DC_ERR_RESULT_RANGE;
+    dci_copy_nf(history, h, n);
     *out = r;
     return DC_OK;
 }
@@ -1169,24 +1307,14 @@ DC_INLINE_FN int32_t dc_contact_force_checked_inline(const dc_contact_model *mod
     if (!(dt > 0.0)) return DC_ERR_NOT_POSITIVE;
     int32_t st = dci_check_contact_state(state);
     if (st != DC_OK) return st;
-    /* entries from lay.len on are zero in and, as the evaluation writes only the layout's entries
-     * or zeros, zero out: only the first lay.len can be non-finite */
+    /* the model's lay.len doubles only (the evaluation reads and writes no others) */
     const int need = lay.len;
     double h[DC_CONTACT_HISTORY_MAX];
-    int finite = 1;
-    for (int i = 0; i < need; i++) {
-        h[i] = history[i];
-        finite &= isfinite(h[i]) != 0;
-    }
-    if (!finite) return DC_ERR_NOT_FINITE;
-    for (int i = need; i < DC_CONTACT_HISTORY_MAX; i++) h[i] = 0.0;
+    if (!(dci_copy_nf(h, history, need) == 0.0)) return DC_ERR_NOT_FINITE;
     dc_contact_result r;
     dci_contact_evaluate(model, lay, state, dt, h, &r);
-    int ok = isfinite(r.f_n) && dci_finite3(dci_load3(r.force)) && dci_finite3(dci_load3(r.ft)) &&
-             dci_finite3(dci_load3(r.torque1)) && dci_finite3(dci_load3(r.torque2));
-    for (int i = 0; i < need; i++) ok &= isfinite(h[i]) != 0;
-    if (!ok) return DC_ERR_RESULT_RANGE;
-    for (int i = 0; i < need; i++) history[i] = h[i];
+    if (!(dci_result_finite(&r) && dci_copy_nf(NULL, h, need) == 0.0)) return DC_ERR_RESULT_RANGE;
+    dci_copy_nf(history, h, need);
     *out = r;
     return DC_OK;
 }

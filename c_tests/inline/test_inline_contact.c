@@ -207,7 +207,7 @@ static void bad_inputs(const dc_contact_model *m) {
     double hbuf[DC_CONTACT_HISTORY_MAX + 1] = {0};
     const double dt = 1e-6;
     /* each case: (model, state, dt, history, len) */
-    for (int c = 0; c < 40; c++) {
+    for (int c = 0; c < 46; c++) {
         dc_contact_model mm = *m;
         dc_contact_state ss = s;
         double hist[DC_CONTACT_HISTORY_MAX + 1];
@@ -258,6 +258,14 @@ static void bad_inputs(const dc_contact_model *m) {
         case 36: ss.n[2] = 1.0 + 5e-7; break;
         case 37: mm.normal.criterion = 2; break;
         case 38: ss.m1 = 1e-300; ss.v1[0] = 1e150; break;
+        /* the finiteness masks: each non-finite kind in body 2's +inf-allowed values, the
+         * overlap and the history's first entry; a NaN among finite values elsewhere */
+        case 40: ss.r2 = (double)NAN; break;
+        case 41: ss.m2 = -(double)INFINITY; break;
+        case 42: ss.r2 = -(double)INFINITY; ss.m2 = (double)INFINITY; break;
+        case 43: ss.overlap = (double)NAN; break;
+        case 44: hist[0] = -(double)INFINITY; break;
+        case 45: ss.v2[2] = (double)NAN; ss.w1[0] = (double)INFINITY; break;
         default: len = 0; break;
         }
         double hl[DC_CONTACT_HISTORY_MAX + 1], hi2[DC_CONTACT_HISTORY_MAX + 1];

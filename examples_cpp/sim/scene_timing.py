@@ -4,6 +4,7 @@ the same code (and optionally an older build of the plugin), without re-running 
 
   scene_timing.py --sim lammps   --plugin demcontact_lammps.so      --data settled.data [--before old.so]
   scene_timing.py --sim liggghts --plugin libdemcontact_liggghts.so --data settled.data [--before old.so]
+                  [--before LABEL=other.so ...]   (several older builds, each in the alternation)
                   [--np 2] [--reps 3] [--steps 2000] [--workdir DIR] [--lmp lmp]
 
 The decks are those of scenes.py's timing (the bed from write_data of a settling run, 2000 steps,
@@ -47,7 +48,9 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--sim", choices=["liggghts", "lammps"], required=True)
     ap.add_argument("--plugin", required=True)
-    ap.add_argument("--before", help="an older build of the plugin, timed in the same alternation")
+    ap.add_argument("--before", action="append", default=[],
+                    help="an older build of the plugin (PATH, or LABEL=PATH), timed in the same alternation; "
+                         "repeatable")
     ap.add_argument("--data", required=True, help="settled bed (write_data of a scenes.py settling run)")
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--reps", type=int, default=3)
@@ -64,8 +67,11 @@ def main():
         raise SystemExit("scene_timing: no settled bed %s" % data)
     g = S.geometry(False)
     plugins = [("demcontact", os.path.abspath(a.plugin))]
-    if a.before:
-        plugins.append(("before", os.path.abspath(a.before)))
+    for b in a.before:
+        lab, _, p = b.partition("=") if "=" in b else ("before", "", b)
+        if lab in [q[0] for q in plugins] or lab in ("granular", "hertz"):
+            raise SystemExit("scene_timing: label %s used twice" % lab)
+        plugins.append((lab, os.path.abspath(p)))
     # (label, deck(steps), env, exe)
     models = []
     if a.sim == "lammps":
