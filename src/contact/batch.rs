@@ -20,7 +20,8 @@ use super::tangential::{TangentialLaw, step};
 use super::tangential_linear::Linear;
 use super::tangential_mindlin::Mindlin;
 use super::vec3::{
-    V3, add, all_finite, all_positive, cross, dot, no_nan, normal_vector, scale, sub,
+    V3, add, all_finite, all_positive, bits_finite, cross, dot, finite_bits, no_nan, normal_vector,
+    scale, sub,
 };
 use super::{rolling_constant, rolling_epsd, twisting_sds};
 use crate::Error;
@@ -173,7 +174,11 @@ fn state_ok(n: V3, d: f64, v1: V3, v2: V3, r1: f64, r2: f64, m1: f64, m2: f64) -
     unit & finite & (r1 > 0.0) & (m1 > 0.0) & (r2 > 0.0) & (m2 > 0.0)
 }
 
-/// Returns true if some contact was bad (poisoned) or its force overflowed.
+/// Largest |f| whose vector f n is finite for every accepted normal (|n_i| <= 1 + 1e-6).
+const F_SAFE: f64 = f64::MAX / 2.0;
+
+/// Returns true if some contact was bad (poisoned) or its force may have overflowed (the
+/// caller then checks contact by contact).
 #[inline(never)]
 fn normal_pass_fused<L: Law, const CLAMP: bool>(
     c: Consts,
@@ -198,9 +203,12 @@ fn normal_pass_fused<L: Law, const CLAMP: bool>(
         *fo = f;
         // NaN f gives NaN components (f == 0 is false).
         *fv = normal_vector(f, n);
-        // A valid contact whose force overflowed is bad too (0·x = 0 only for finite x).
-        let [x, y, z] = *fv;
-        bad |= !ok | (0.0 * f + 0.0 * x + 0.0 * y + 0.0 * z != 0.0);
+        // One compare finds both kinds: a bad contact (f is NaN) and a valid one whose force
+        // may have overflowed, which goes to the exact per-contact check. |f| <= MAX/2 with
+        // |n_i| <= 1 + 1e-6 keeps every component finite, so this only ever sends more
+        // contacts there, never fewer; checking the three components here cost 1.2 ns per
+        // contact (`scripts/bench_contact.sh`).
+        bad |= !(f.abs() <= F_SAFE);
     }
     bad
 }
@@ -496,10 +504,11 @@ fn compute(
     Ok(())
 }
 
-/// Contacts whose histories [`compute_guarded`] saves on the stack at a time: 128 × 10
-/// doubles = 10 KB, small enough for any thread's stack, and long enough that the stage
-/// passes still run as vector loops.
-const GUARD: usize = 128;
+/// Contacts whose histories [`compute_guarded`] saves on the stack at a time: 512 × 10
+/// doubles = 40 KB of stack (within musl's 128 KB thread default). Blocks of 128 cost 13 %
+/// streaming with Mindlin (short runs per array starve the hardware prefetcher); 512 cost 3 %
+/// (`scripts/bench_contact_ab.sh`, docs/force.md).
+const GUARD: usize = 512;
 
 /// Every output of contact `i` (and its new history) finite?
 fn contact_finite(o: &BatchOut<'_>, len: usize, i: usize) -> bool {
@@ -515,25 +524,36 @@ fn contact_finite(o: &BatchOut<'_>, len: usize, i: usize) -> bool {
         && all_finite(h)
 }
 
-/// Every output of the batch (and every new history value) finite? One OR reduction per
-/// array: the common case costs a read of what was just written.
+/// Every output of the batch (and every new history value) finite? One OR reduction over all
+/// arrays, no early exit: the common case costs a read of what was just written (in cache: the
+/// guard runs block by block).
 fn outputs_finite(o: &BatchOut<'_>, len: usize) -> bool {
     let torque =
-        |t: &Option<&mut [[f64; 3]]>| t.as_ref().is_none_or(|t| all_finite(t.as_flattened()));
-    all_finite(o.f_n)
-        && all_finite(o.force.as_flattened())
-        && torque(&o.torque1)
-        && torque(&o.torque2)
-        && (len == 0
-            || o.history
-                .chunks_exact(o.stride)
-                .all(|h| h.get(..len).is_some_and(all_finite)))
+        |t: &Option<&mut [[f64; 3]]>| t.as_ref().map_or(0, |t| finite_bits(t.as_flattened()));
+    let history = if len == 0 {
+        0
+    } else if len == o.stride {
+        finite_bits(o.history)
+    } else {
+        // Values past `len` in each record are the host's: not judged.
+        o.history.chunks_exact(o.stride).fold(0, |acc, h| {
+            acc | finite_bits(h.get(..len).unwrap_or(&[f64::NAN]))
+        })
+    };
+    bits_finite(
+        finite_bits(o.f_n)
+            | finite_bits(o.force.as_flattened())
+            | torque(&o.torque1)
+            | torque(&o.torque2)
+            | history,
+    )
 }
 
 /// [`compute`] with the overflow guard: a contact whose outputs or new history are not finite
 /// (the inputs were checked, so its result overflowed) gets NaN outputs and its history as it
 /// was; the index of the first such contact is returned. Bit for bit [`compute`] otherwise
-/// (contacts are independent, so running them in groups changes no result).
+/// (contacts are independent, so running them in groups changes no result). Blocks of
+/// [`GUARD`] contacts, so the outputs are judged while still in cache.
 fn compute_guarded(
     m: &ContactModel,
     inp: &BatchIn<'_>,
@@ -543,20 +563,25 @@ fn compute_guarded(
     let n = inp.overlap.len();
     let len = m.layout.len;
     if len == 0 {
-        compute(m, inp, dt, out)?;
-        if outputs_finite(out, 0) {
-            return Ok(None);
-        }
+        // No history to keep: no stack buffer to fill.
         let mut first = None;
-        for i in 0..n {
-            if !contact_finite(out, 0, i) {
-                poison(&mut sub_out(out, 0, i, i + 1).ok_or(Error::BufferTooShort)?);
-                first = first.or(Some(i));
+        let mut a = 0;
+        while a < n {
+            let b = n.min(a + GUARD);
+            let (Some(ci), Some(mut co)) = (sub_in(inp, a, b), sub_out(out, 0, a, b)) else {
+                return Err(Error::BufferTooShort);
+            };
+            compute(m, &ci, dt, &mut co)?;
+            if !outputs_finite(&co, 0) {
+                first = first.or(poison_overflowed(&mut co, 0, 0, &[])?.map(|i| a + i));
             }
+            a = b;
         }
         return Ok(first);
     }
-    let mut saved = [[0.0; HISTORY_MAX]; GUARD];
+    // One flat copy of the block's history records (a memcpy; a per-contact copy of `len`
+    // values cost ~3 ns per contact with Mindlin). Records wider than HISTORY_MAX: per contact.
+    let mut saved = [0.0; GUARD * HISTORY_MAX];
     let mut first = None;
     let mut a = 0;
     while a < n {
@@ -565,28 +590,56 @@ fn compute_guarded(
             return Err(Error::BufferTooShort);
         };
         let stride = co.stride;
-        for (s, h) in saved.iter_mut().zip(co.history.chunks_exact(stride)) {
-            // `len <= HISTORY_MAX <= stride` (checked by `sub_out`): zip copies `len` values.
-            for (d, v) in s.iter_mut().zip(h).take(len) {
-                *d = *v;
+        let wide = stride > HISTORY_MAX;
+        let rec = if wide { len } else { stride };
+        if wide {
+            for (s, h) in saved
+                .chunks_exact_mut(len)
+                .zip(co.history.chunks_exact(stride))
+            {
+                s.copy_from_slice(h.get(..len).ok_or(Error::BufferTooShort)?);
             }
+        } else {
+            let h = &*co.history;
+            let s = saved.get_mut(..h.len()).ok_or(Error::BufferTooShort)?;
+            s.copy_from_slice(h);
         }
         compute(m, &ci, dt, &mut co)?;
         if !outputs_finite(&co, len) {
-            for (i, s) in saved.iter().enumerate().take(b - a) {
-                if contact_finite(&co, len, i) {
-                    continue;
-                }
-                let h = co.history.get_mut(i * stride..i * stride + len);
-                let h = h.ok_or(Error::BufferTooShort)?;
-                for (d, v) in h.iter_mut().zip(s) {
-                    *d = *v;
-                }
-                poison(&mut sub_out(&mut co, len, i, i + 1).ok_or(Error::BufferTooShort)?);
-                first = first.or(Some(a + i));
-            }
+            let kept = saved.get(..(b - a) * rec).ok_or(Error::BufferTooShort)?;
+            first = first.or(poison_overflowed(&mut co, len, rec, kept)?.map(|i| a + i));
         }
         a = b;
+    }
+    Ok(first)
+}
+
+/// The slow path of [`compute_guarded`]: each contact of the block whose outputs or first
+/// `len` history values are not finite gets NaN outputs and those values back from `kept`
+/// (records of `rec` values); returns the first such index.
+fn poison_overflowed(
+    co: &mut BatchOut<'_>,
+    len: usize,
+    rec: usize,
+    kept: &[f64],
+) -> Result<Option<usize>, Error> {
+    let n = co.f_n.len();
+    let stride = co.stride;
+    let mut first = None;
+    for i in 0..n {
+        if contact_finite(co, len, i) {
+            continue;
+        }
+        if len > 0 {
+            let h = co.history.get_mut(i * stride..i * stride + len);
+            let s = kept.get(i * rec..i * rec + len);
+            let (Some(h), Some(s)) = (h, s) else {
+                return Err(Error::BufferTooShort);
+            };
+            h.copy_from_slice(s);
+        }
+        poison(&mut sub_out(co, len, i, i + 1).ok_or(Error::BufferTooShort)?);
+        first = first.or(Some(i));
     }
     Ok(first)
 }

@@ -76,10 +76,21 @@ const SIGN: u64 = 1 << 63;
 /// field plus one unit of the exponent reaches the sign bit exactly when it is all ones (NaN, ±∞).
 #[inline(always)]
 pub fn all_finite(xs: &[f64]) -> bool {
+    bits_finite(finite_bits(xs))
+}
+
+/// The OR reduction of [`all_finite`], to be combined over several arrays with `|` and judged
+/// once by [`bits_finite`].
+#[inline(always)]
+pub fn finite_bits(xs: &[f64]) -> u64 {
     xs.iter()
         .fold(0u64, |acc, x| acc | ((x.to_bits() & EXPONENT) + (1 << 52)))
-        & SIGN
-        == 0
+}
+
+/// True when the OR of [`finite_bits`] results saw only finite values.
+#[inline(always)]
+pub fn bits_finite(acc: u64) -> bool {
+    acc & SIGN == 0
 }
 
 /// True when no value is below zero (−0.0 counts as zero; NaN must be excluded first, e.g. by
