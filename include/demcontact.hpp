@@ -147,14 +147,16 @@ inline status contact_force(const ::dc_contact_model& model, const ::dc_contact_
     return static_cast<status>(::dc_contact_force(&model, &state, dt, history.data(), history.size(), &out));
 }
 
-/// n contacts (dc_contact_force_batch). Throws demcontact::error on a non-OK status.
+/// n contacts (dc_contact_force_batch). Throws demcontact::error on a non-OK status; nothing
+/// is written then, except on result_range (a result overflowed): the overflowing contacts'
+/// outputs are NaN and their history kept, every other contact is computed.
 inline void contact_force_batch_checked(const ::dc_contact_model& model, const ::dc_contact_batch& batch,
                                         double dt) {
     detail::check(::dc_contact_force_batch(&model, &batch, dt));
 }
 
 /// n contacts, each input read from memory once (dc_contact_force_batch_fused). Returns the
-/// status: on a per-contact status (not_finite, not_positive, not_unit) every other contact is
+/// status: on a per-contact status (not_finite, not_positive, not_unit, result_range) every other contact is
 /// computed, the bad ones' outputs are NaN and `first_bad` is the first bad index; on any other
 /// error nothing is written. noexcept: a non-OK status always needs the caller's attention.
 inline status contact_force_batch_fused(const ::dc_contact_model& model, const ::dc_contact_batch& batch, double dt,

@@ -685,10 +685,16 @@ fn per_contact(s: i32) -> bool {
 
 impl Job {
     /// The first contact whose own dc_contact_force fails, with its status (history copied).
-    fn locate(&self) -> Option<(usize, i32, dc_contact_state)> {
+    /// After DC_ERR_RESULT_RANGE the batch has advanced every other contact's history, so the
+    /// overflowing contact is found by its NaN f_n instead of by rerunning the others.
+    fn locate(&self, overflow: bool) -> Option<(usize, i32, dc_contact_state)> {
         let b = &self.batch;
         let len = self.model.history_len as usize;
         for i in 0..b.n {
+            // SAFETY: f_n holds n doubles, written by the batch.
+            if overflow && !unsafe { b.f_n.add(i).read() }.is_nan() {
+                continue;
+            }
             // SAFETY: every pointer is valid for its documented length (checked by the caller
             // and by dc_contact_force_batch's layout checks before the per-value ones).
             let st = unsafe {
@@ -731,6 +737,9 @@ impl Job {
                     r.as_mut_ptr(),
                 )
             };
+            if overflow {
+                return Some((i, c::status::DC_ERR_RESULT_RANGE, st));
+            }
             if s != c::status::DC_OK {
                 return Some((i, s, st));
             }
@@ -752,7 +761,10 @@ impl Job {
 /// new contacts), updated in place; None only for a model without history. out: optionally
 /// (f_n, force, torque1, torque2) arrays of those shapes to write into. Every value is checked
 /// before anything is written: on error (NotFiniteError, NotUnitError, ... naming the first bad
-/// contact) outputs and history are untouched. An empty batch (n = 0) returns empty arrays.
+/// contact) outputs and history are untouched. One exception, ResultRangeError (valid inputs
+/// whose result overflows, e.g. an overlap of 1e300 m): every other contact is computed and its
+/// history advanced, and the overflowing contacts get NaN outputs (in `out`, if given) and keep
+/// their history; the error names the first one. An empty batch (n = 0) returns empty arrays.
 #[pyfunction]
 #[pyo3(signature = (model, normal, overlap, v1, v2, w1, w2, r1, r2, m1, m2, dt, history=None, *, out=None))]
 #[allow(clippy::too_many_arguments)]
@@ -969,7 +981,11 @@ pub fn contact_force_batch<'py>(
         if s == c::status::DC_OK {
             Ok(())
         } else if per_contact(s) {
-            Err((s, job.locate().map(Box::new)))
+            Err((
+                s,
+                job.locate(s == c::status::DC_ERR_RESULT_RANGE)
+                    .map(Box::new),
+            ))
         } else {
             Err((s, None))
         }
@@ -991,12 +1007,18 @@ pub fn contact_force_batch<'py>(
         )),
         Err((s, Some(located))) => {
             let (i, _, st) = *located;
+            let what = if s == c::status::DC_ERR_RESULT_RANGE {
+                "its result overflowed: the overflowing contacts' outputs are NaN and their \
+                 history untouched; every other contact was computed and its history advanced"
+            } else {
+                "outputs and history untouched"
+            };
             Err(status_error(
                 py,
                 s,
                 F,
                 &format!(
-                    "at contact {i} with {}, dt={dt:?} (outputs and history untouched)",
+                    "at contact {i} with {}, dt={dt:?} ({what})",
                     describe_state(&st)
                 ),
             ))

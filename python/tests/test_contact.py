@@ -500,6 +500,33 @@ def test_batch_errors_name_the_contact_and_write_nothing():
         dc.contact_force_batch(m, *a, math.nan, np.zeros((n, m.history_len)))
 
 
+def test_batch_overflow_names_the_contact_and_keeps_its_history():
+    # Valid inputs whose result overflows: ResultRangeError naming the first such contact; those
+    # contacts NaN with their history kept, every other one computed (as the C batch does).
+    m, cm = model("hertz_full"), c_model("hertz_full")
+    n = 10
+    a = batch_args(n, 4)
+    a[1] = a[1].copy()
+    a[2] = a[2].copy()
+    for k in (3, 7):
+        a[1][k] = 1e300
+        a[2][k] = [1e300, 0.0, 0.0]
+    h0 = np.random.default_rng(1).normal(0, 1e-9, (n, m.history_len))
+    h0[:, :3] = a[0]
+    h = h0.copy()
+    out = tuple(np.full(s, 7.0) for s in [(n,), (n, 3), (n, 3), (n, 3)])
+    st, cf, *_ = cc.c_batch(cm, *a, DT, hc := h0.copy())
+    with pytest.raises(dc.ResultRangeError, match="at contact 3 .*history advanced") as ei:
+        dc.contact_force_batch(m, *a, DT, h, out=out)
+    assert ei.value.code == st == 6108
+    for k in range(n):
+        over = k in (3, 7)
+        assert np.isnan(out[0][k]) == over
+        assert all(np.isnan(x[k]).all() == over for x in out[1:])
+    assert (h[[3, 7]] == h0[[3, 7]]).all()
+    assert h.tobytes() == hc.tobytes() and out[0].tobytes() == cf.tobytes()
+
+
 def test_batch_shape_and_type_errors():
     m = model("hertz_full")
     n, L = 6, m.history_len
