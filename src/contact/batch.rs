@@ -579,8 +579,8 @@ fn compute_guarded(
         }
         return Ok(first);
     }
-    // One flat copy of the block's history records (a memcpy; a per-contact copy of `len`
-    // values cost ~3 ns per contact with Mindlin). Records wider than HISTORY_MAX: per contact.
+    // The block's history records copied aside in one memcpy (the records' tails past `len`
+    // are the host's and come along unused); records wider than HISTORY_MAX, value by value.
     let mut saved = [0.0; GUARD * HISTORY_MAX];
     let mut first = None;
     let mut a = 0;
