@@ -961,19 +961,22 @@ fn batches_report_overflow_with_nan_and_history_kept() {
         .iter()
         .find(|m| m.history_len == 0 && m.rolling != DC_ROLLING_NONE)
         .unwrap();
-    // Natively the two overflows sit in two guard blocks (512 contacts); under Miri, which
-    // looks for undefined behaviour rather than at the blocking, a short batch.
-    let (nc, over) = if cfg!(miri) {
-        (140, [5usize, 130])
+    // Natively the two overflows sit in two guard blocks (512 contacts), and a short batch
+    // (<= 32 contacts: its own small block) is tried too; under Miri, which looks for undefined
+    // behaviour rather than at the blocking, a short batch and a 140-contact one.
+    let sizes: &[(usize, [usize; 2])] = if cfg!(miri) {
+        &[(20, [5, 12]), (140, [5, 130])]
     } else {
-        (600, [5usize, 530])
+        &[(20, [5, 12]), (600, [5, 530])]
     };
     // 10: the record is copied aside whole; 13 (> DC_CONTACT_HISTORY_MAX): value by value.
     let strides: &[usize] = if cfg!(miri) { &[13] } else { &[10, 13] };
-    for (&stride, m) in strides
-        .iter()
-        .flat_map(|s| [(s, full), (s, models[0]), (s, rolling_only)])
-    {
+    let normal_only = models[0];
+    for (&(nc, over), &stride, m) in sizes.iter().flat_map(|z| {
+        strides
+            .iter()
+            .flat_map(move |s| [(z, s, full), (z, s, normal_only), (z, s, rolling_only)])
+    }) {
         let good = soa(&many_states(nc));
         // A history that has something in it: two ordinary steps; the host's own values
         // past the model's record must survive too.

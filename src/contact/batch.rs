@@ -505,10 +505,14 @@ fn compute(
 }
 
 /// Contacts whose histories [`compute_guarded`] saves on the stack at a time: 512 × 10
-/// doubles = 40 KB of stack (within musl's 128 KB thread default). Blocks of 128 cost 13 %
-/// streaming with Mindlin (short runs per array starve the hardware prefetcher); 512 cost 3 %
+/// doubles = 40 KB of stack (within musl's 128 KB thread default). Blocks of 128 cost 10–12 %
+/// streaming with Mindlin (short runs per array starve the hardware prefetcher); 512 cost 3–8 %
 /// (`scripts/bench_contact_ab.sh`, docs/force.md).
 const GUARD: usize = 512;
+
+/// Block of a batch of at most this many contacts: a host calling the batch per neighbour
+/// chunk should not zero 40 KB of stack per call for a few contacts.
+const SHORT: usize = 32;
 
 /// Every output of contact `i` (and its new history) finite?
 fn contact_finite(o: &BatchOut<'_>, len: usize, i: usize) -> bool {
@@ -517,7 +521,7 @@ fn contact_finite(o: &BatchOut<'_>, len: usize, i: usize) -> bool {
         .history
         .get(i * o.stride..i * o.stride + len)
         .unwrap_or(&[]);
-    all_finite(&[o.f_n.get(i).copied().unwrap_or(0.0)])
+    o.f_n.get(i).is_none_or(|f| f.is_finite())
         && o.force.get(i).is_none_or(|v| all_finite(v))
         && t(&o.torque1).is_none_or(|v| all_finite(&v))
         && t(&o.torque2).is_none_or(|v| all_finite(&v))
@@ -579,13 +583,31 @@ fn compute_guarded(
         }
         return Ok(first);
     }
+    // The zeroed stack buffer is paid on every call: a short batch gets a short one.
+    if n <= SHORT {
+        guarded_with_history::<SHORT>(m, inp, dt, out)
+    } else {
+        guarded_with_history::<GUARD>(m, inp, dt, out)
+    }
+}
+
+/// [`compute_guarded`] for a model with history, `G` contacts per block.
+fn guarded_with_history<const G: usize>(
+    m: &ContactModel,
+    inp: &BatchIn<'_>,
+    dt: f64,
+    out: &mut BatchOut<'_>,
+) -> Result<Option<usize>, Error> {
+    let n = inp.overlap.len();
+    let len = m.layout.len;
     // The block's history records copied aside in one memcpy (the records' tails past `len`
     // are the host's and come along unused); records wider than HISTORY_MAX, value by value.
-    let mut saved = [0.0; GUARD * HISTORY_MAX];
+    let mut saved = [[0.0; HISTORY_MAX]; G];
+    let saved = saved.as_flattened_mut();
     let mut first = None;
     let mut a = 0;
     while a < n {
-        let b = n.min(a + GUARD);
+        let b = n.min(a + G);
         let (Some(ci), Some(mut co)) = (sub_in(inp, a, b), sub_out(out, len, a, b)) else {
             return Err(Error::BufferTooShort);
         };
