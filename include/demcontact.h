@@ -151,6 +151,19 @@
 #define DC_TWISTING_SDS 1
 
 /**
+ * History springs follow the contact frame by rotation (the bodies' mean spin, then the tilt
+ * of the normal): objective under any rigid rotation of the pair. Default.
+ */
+#define DC_CARRY_ROTATE 0
+
+/**
+ * History springs projected on the new tangent plane and rescaled to their old length, as
+ * LAMMPS `granular` and LIGGGHTS `tangential history` do: cheaper, but a pair turning about
+ * its normal loads its spring (see docs/force.md). Set with dc_contact_model_set_carry.
+ */
+#define DC_CARRY_PROJECT 1
+
+/**
  * dc_fit_result.model: a constant e (power-law contact) represents the data within tol.
  */
 #define DC_FIT_MODEL_CONSTANT 0
@@ -553,9 +566,10 @@ typedef struct dc_contact_model {
      */
     int32_t twisting;
     /**
-     * Reserved (0).
+     * DC_CARRY_* (DC_CARRY_ROTATE from dc_contact_model_init; change it with
+     * dc_contact_model_set_carry). This was `reserved_i` (always 0) before the projection carry.
      */
-    int32_t reserved_i;
+    int32_t carry;
     /**
      * The normal law (usable on its own with dc_normal_force*).
      */
@@ -1107,6 +1121,20 @@ int32_t dc_contact_spec_init(struct dc_contact_spec *spec);
  * NULL or writable for one dc_contact_model.
  */
 int32_t dc_contact_model_init(const struct dc_contact_spec *spec, struct dc_contact_model *out);
+
+/**
+ * Chooses how the model's history springs follow the contact frame: DC_CARRY_ROTATE (what
+ * dc_contact_model_init gives: objective) or DC_CARRY_PROJECT (LAMMPS/LIGGGHTS' projection and
+ * rescale: cheaper, not objective about the normal). The history layout and length do not
+ * change, so a run may switch between the two. Call it at set-up, like dc_contact_model_init.
+ *
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID (not a valid model),
+ *         DC_ERR_SPEC_MODEL (unknown carry). `model` is untouched on error.
+ *
+ * # Safety
+ * `model` NULL or readable and writable for one dc_contact_model.
+ */
+int32_t dc_contact_model_set_carry(struct dc_contact_model *model, int32_t carry);
 
 /**
  * The number of doubles of history one contact of this model needs (0 for a normal-only or

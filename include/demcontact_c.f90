@@ -35,6 +35,8 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_ROLLING_EPSD = 2
   integer(c_int32_t), parameter :: DC_TWISTING_NONE = 0
   integer(c_int32_t), parameter :: DC_TWISTING_SDS = 1
+  integer(c_int32_t), parameter :: DC_CARRY_ROTATE = 0
+  integer(c_int32_t), parameter :: DC_CARRY_PROJECT = 1
   integer(c_int32_t), parameter :: DC_FIT_MODEL_CONSTANT = 0
   integer(c_int32_t), parameter :: DC_FIT_MODEL_VISCOELASTIC = 1
   integer(c_int32_t), parameter :: DC_MODEL_POWERLAW = 1
@@ -123,7 +125,7 @@ module demcontact_c
     integer(c_int32_t) :: tangential
     integer(c_int32_t) :: rolling
     integer(c_int32_t) :: twisting
-    integer(c_int32_t) :: reserved_i
+    integer(c_int32_t) :: carry
     type(dc_pair) :: normal
     real(c_double) :: mu
     real(c_double) :: kt
@@ -296,6 +298,12 @@ module demcontact_c
       type(dc_contact_model), intent(out) :: out
       integer(c_int32_t) :: dc_contact_model_init
     end function dc_contact_model_init
+    function dc_contact_model_set_carry(model, carry) bind(c, name='dc_contact_model_set_carry')
+      import
+      type(dc_contact_model), intent(inout) :: model
+      integer(c_int32_t), value, intent(in) :: carry
+      integer(c_int32_t) :: dc_contact_model_set_carry
+    end function dc_contact_model_set_carry
     function dc_contact_history_len(model, len_out) bind(c, name='dc_contact_history_len')
       import
       type(dc_contact_model), intent(in) :: model

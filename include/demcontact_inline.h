@@ -927,11 +927,12 @@ DCI_ALWAYS_INLINE_FN double dci_harmonic(double a, double b) {
 /* The frame motion of one step (src/contact/frame.rs): the rotation by the mean spin
  * q = (w1 + w2)/2 dt (Rodrigues, s = sin|q|/|q|, c = (1 - cos|q|)/|q|^2, Taylor series for
  * |q|^2 < 1e-3, else libm sin as the library's f64::sin), then the minimal tilt from the spun old
- * normal to n, then the projection on the plane normal to n. */
+ * normal to n, then the projection on the plane normal to n. DC_CARRY_PROJECT (project = 1):
+ * the projection alone, rescaled to the old length. */
 typedef struct dci_frame {
     dci_v3 q, tk, n;
     double s, c, tc;
-    int carry;
+    int carry, project;
 } dci_frame;
 
 /* v + s q x v + c q x (q x v) */
@@ -962,6 +963,16 @@ DCI_ALWAYS_INLINE_FN dci_frame dci_frame_new(dci_v3 n_old, dci_v3 n, dci_v3 q) {
     f.tk = dci_cross(spun, n);
     f.carry = f.tc > -0.5 && dci_norm2(n_old) > 0.25;
     f.n = n;
+    f.project = 0;
+    return f;
+}
+DCI_ALWAYS_INLINE_FN dci_frame dci_frame_projection(dci_v3 n) {
+    dci_frame f;
+    f.q = f.tk = dci_v(0.0, 0.0, 0.0);
+    f.s = f.c = f.tc = 0.0;
+    f.carry = 0;
+    f.n = n;
+    f.project = 1;
     return f;
 }
 /* Rodrigues about k = a x b: c v + k x v + (k.v)/(1 + c) k */
@@ -970,6 +981,15 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_tilt(double c, dci_v3 k, dci_v3 v) {
                    dci_scale(dci_dot(k, v) / (1.0 + c), k));
 }
 DCI_ALWAYS_INLINE_FN dci_v3 dci_carry(const dci_frame *f, dci_v3 v) {
+    DCI_NO_CONTRACT
+    if (f->project) {
+        /* |v|^2/|w|^2 in one division and one root, rescaled only while half the length stays in
+         * the plane (src/contact/frame.rs: same rule, same order) */
+        const double l2 = dci_norm2(v);
+        const dci_v3 w = dci_tangential(v, f->n);
+        const double p2 = dci_norm2(w);
+        return p2 > 0.25 * l2 ? dci_scale(sqrt(l2 / p2), w) : w;
+    }
     const dci_v3 w = f->carry ? dci_tilt(f->tc, f->tk, dci_spin(f->q, f->s, f->c, v)) : v;
     return dci_tangential(w, f->n);
 }
@@ -982,12 +1002,13 @@ typedef struct dci_kin {
 } dci_kin;
 
 DCI_ALWAYS_INLINE_FN dci_kin dci_kin_of(const dc_contact_state *s, dci_v3 n_old, double dt,
-                                        dci_frame *frame) {
+                                        int32_t carry, dci_frame *frame) {
     DCI_NO_CONTRACT
     dci_kin k;
     const dci_v3 n = dci_load3(s->n), v1 = dci_load3(s->v1), v2 = dci_load3(s->v2);
     const dci_v3 w1 = dci_load3(s->w1), w2 = dci_load3(s->w2);
-    *frame = dci_frame_new(n_old, n, dci_scale(0.5 * dt, dci_add(w1, w2)));
+    *frame = carry == DC_CARRY_PROJECT ? dci_frame_projection(n)
+                                       : dci_frame_new(n_old, n, dci_scale(0.5 * dt, dci_add(w1, w2)));
     const double d = s->overlap;
     k.wall = s->r2 == (double)INFINITY;
     k.a1 = s->r1 - DCI_M(0.5, d);
@@ -1125,7 +1146,7 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_la
     DCI_NO_CONTRACT
     dci_frame frame;
     const dci_v3 n_old = lay.len > 0 ? dci_v(h[0], h[1], h[2]) : dci_v(0.0, 0.0, 0.0);
-    const dci_kin k = dci_kin_of(s, n_old, dt, &frame);
+    const dci_kin k = dci_kin_of(s, n_old, dt, m->carry, &frame);
     const dc_pair *pair = &m->normal;
     /* fe: the force at vn = 0, for Ai's rolling stiffness rule below (same pass, same bits) */
     double fe;
@@ -1203,7 +1224,7 @@ DC_INLINE_FN int32_t dci_check_contact_model(const dc_contact_model *m, dci_layo
     int ok = ((p->criterion == DC_END_OVERLAP && p->clamp == 0) ||
               (p->criterion == DC_END_FORCE && p->clamp == 1)) &&
              m->magic == DCI_CONTACT_MAGIC && m->history_len == (uint32_t)lay.len &&
-             m->reserved_i == 0;
+             (m->carry == DC_CARRY_ROTATE || m->carry == DC_CARRY_PROJECT);
     for (int i = 0; i < 6; i++) ok = ok && dci_bits(m->reserved[i]) == 0;
     if (!ok) return DC_ERR_CONTACT_MODEL_INVALID;
     ok = p->kernel >= DC_KERNEL_LIN_ELASTIC && p->kernel <= DC_KERNEL_DMT_DAMPED;
@@ -1248,7 +1269,7 @@ DC_INLINE_FN int32_t dc_contact_force_inline(const dc_contact_model *model,
     int ok = ((p->criterion == DC_END_OVERLAP && p->clamp == 0) ||
               (p->criterion == DC_END_FORCE && p->clamp == 1)) &&
              model->magic == DCI_CONTACT_MAGIC && model->history_len == (uint32_t)lay.len &&
-             model->reserved_i == 0;
+             (model->carry == DC_CARRY_ROTATE || model->carry == DC_CARRY_PROJECT);
     for (int i = 0; i < 6; i++) ok = ok && dci_bits(model->reserved[i]) == 0;
     if (!ok) return DC_ERR_CONTACT_MODEL_INVALID;
     const size_t need = (size_t)lay.len;
@@ -1285,7 +1306,7 @@ DC_INLINE_FN int32_t dc_contact_model_check_inline(const dc_contact_model *model
     int ok = ((p->criterion == DC_END_OVERLAP && p->clamp == 0) ||
               (p->criterion == DC_END_FORCE && p->clamp == 1)) &&
              model->magic == DCI_CONTACT_MAGIC && model->history_len == (uint32_t)lay.len &&
-             model->reserved_i == 0;
+             (model->carry == DC_CARRY_ROTATE || model->carry == DC_CARRY_PROJECT);
     for (int i = 0; i < 6; i++) ok = ok && dci_bits(model->reserved[i]) == 0;
     if (!ok) return DC_ERR_CONTACT_MODEL_INVALID;
     return dci_check_contact_model(model, lay);
@@ -1509,6 +1530,16 @@ DC_INLINE_FN int32_t dc_contact_spec_init_inline(dc_contact_spec *spec) {
     spec->k_r = 0.0;
     spec->eta_r = spec->eta_tw = 0.0;
     spec->inertia_factor = 0.4;
+    return DC_OK;
+}
+
+/* The library's dc_contact_model_set_carry: DC_CARRY_ROTATE or DC_CARRY_PROJECT on a valid
+ * model (same statuses; `model` written only on DC_OK). */
+DC_INLINE_FN int32_t dc_contact_model_set_carry_inline(dc_contact_model *model, int32_t carry) {
+    const int32_t st = dc_contact_model_check_inline(model);
+    if (st != DC_OK) return st;
+    if (carry != DC_CARRY_ROTATE && carry != DC_CARRY_PROJECT) return DC_ERR_SPEC_MODEL;
+    model->carry = carry;
     return DC_OK;
 }
 

@@ -259,6 +259,8 @@ fn history_len_per_model_and_invalid_models() {
         [normal.k = f64::INFINITY] => INVALID,
         [eta_tw = -1.0] => INVALID,
         [rolling = 9] => INVALID,
+        [carry = 2] => INVALID,
+        [carry = -1] => INVALID,
     ];
     for (i, (e, want)) in edits.iter().enumerate() {
         let mut m = good;
@@ -277,6 +279,91 @@ fn history_len_per_model_and_invalid_models() {
         unsafe { dc_contact_history_len(&good, std::ptr::null_mut()) },
     ];
     assert_eq!(null_cases, [DC_ERR_NULL_POINTER; 2]);
+}
+
+#[test]
+fn set_carry_statuses_and_effect() {
+    for m0 in all_models() {
+        assert_eq!(
+            m0.carry, DC_CARRY_ROTATE,
+            "dc_contact_model_init gives the rotation"
+        );
+        let mut m = m0;
+        assert_eq!(
+            unsafe { dc_contact_model_set_carry(&mut m, DC_CARRY_PROJECT) },
+            DC_OK
+        );
+        // Only the carry changes: same history length, every other byte equal.
+        assert_eq!(
+            dc_contact_model {
+                carry: m0.carry,
+                ..m
+            },
+            m0
+        );
+        let (mut l0, mut l1) = (0usize, 1usize);
+        assert_eq!(unsafe { dc_contact_history_len(&m0, &mut l0) }, DC_OK);
+        assert_eq!(unsafe { dc_contact_history_len(&m, &mut l1) }, DC_OK);
+        assert_eq!(l0, l1);
+        for bad in [2, -1, i32::MIN, i32::MAX] {
+            let mut mb = m;
+            let s = unsafe { dc_contact_model_set_carry(&mut mb, bad) };
+            assert_eq!(s, DC_ERR_SPEC_MODEL, "carry {bad}");
+            assert_eq!(mb, m, "untouched on error");
+        }
+        assert_eq!(
+            unsafe { dc_contact_model_set_carry(&mut m, DC_CARRY_ROTATE) },
+            DC_OK
+        );
+        assert_eq!(m, m0);
+    }
+    let mut zero: dc_contact_model = unsafe { std::mem::zeroed() };
+    let s = unsafe { dc_contact_model_set_carry(&mut zero, DC_CARRY_PROJECT) };
+    assert_eq!(s, DC_ERR_CONTACT_MODEL_INVALID);
+    assert_eq!(zero.carry, 0);
+    let s = unsafe { dc_contact_model_set_carry(std::ptr::null_mut(), DC_CARRY_PROJECT) };
+    assert_eq!(s, DC_ERR_NULL_POINTER);
+    // The projection changes a contact whose normal turns (and only the springs' carry).
+    let m0 = all_models()
+        .into_iter()
+        .find(|m| m.tangential == DC_TANGENTIAL_MINDLIN)
+        .expect("a Mindlin model");
+    let mut mp = m0;
+    assert_eq!(
+        unsafe { dc_contact_model_set_carry(&mut mp, DC_CARRY_PROJECT) },
+        DC_OK
+    );
+    let run = |m: &dc_contact_model| {
+        let mut h = [0.0; DC_CONTACT_HISTORY_MAX];
+        let mut last = sentinel_res();
+        for k in 0..50 {
+            let a = 0.02 * k as f64;
+            let st = dc_contact_state {
+                n: [a.cos(), a.sin(), 0.0],
+                overlap: 1e-6,
+                v1: [0.0, 0.0, 0.01],
+                v2: [0.0; 3],
+                w1: [0.0, 0.0, 30.0],
+                w2: [0.0, 0.0, -10.0],
+                r1: 1e-3,
+                r2: 1e-3,
+                m1: 1e-5,
+                m2: 1e-5,
+            };
+            let s = unsafe { dc_contact_force(m, &st, 1e-6, h.as_mut_ptr(), h.len(), &mut last) };
+            assert_eq!(s, DC_OK);
+        }
+        last
+    };
+    let (a, b) = (run(&m0), run(&mp));
+    assert_eq!(
+        a.f_n, b.f_n,
+        "the normal force does not depend on the carry"
+    );
+    assert_ne!(
+        a.ft, b.ft,
+        "the carry must change the spring of a turning contact"
+    );
 }
 
 #[test]

@@ -61,6 +61,12 @@ fn contact_exports_do_not_allocate() {
                             }
                             let mut len = 0usize;
                             black_box(dc_contact_history_len(&model, &mut len));
+                            // Both carries in the loop below (and set_carry counted).
+                            black_box(dc_contact_model_set_carry(
+                                &mut model,
+                                (calls / 2 % 2) as i32,
+                            ));
+                            calls += 1;
                             let mut st = dc_contact_state {
                                 n: [0.0, 1.0, 0.0],
                                 overlap: x,

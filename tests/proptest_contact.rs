@@ -111,23 +111,34 @@ struct Choice {
     tangential: i32,
     rolling: i32,
     twisting: i32,
+    carry: i32,
 }
 
 fn choice_valid() -> impl Strategy<Value = Choice> {
-    (1i32..5, 0i32..2, 0i32..2, 0i32..3, 0i32..3, 0i32..2).prop_map(
-        |(normal, damping, criterion, tangential, rolling, twisting)| Choice {
-            normal,
-            damping: if normal == DC_NORMAL_VISCOELASTIC {
-                0
-            } else {
-                damping
-            },
-            criterion,
-            tangential,
-            rolling,
-            twisting,
-        },
+    (
+        1i32..5,
+        0i32..2,
+        0i32..2,
+        0i32..3,
+        0i32..3,
+        0i32..2,
+        0i32..2,
     )
+        .prop_map(
+            |(normal, damping, criterion, tangential, rolling, twisting, carry)| Choice {
+                normal,
+                damping: if normal == DC_NORMAL_VISCOELASTIC {
+                    0
+                } else {
+                    damping
+                },
+                criterion,
+                tangential,
+                rolling,
+                twisting,
+                carry,
+            },
+        )
 }
 
 fn model_valid(c: Choice, mu: f64, e: f64) -> dc_contact_model {
@@ -157,6 +168,10 @@ fn model_valid(c: Choice, mu: f64, e: f64) -> dc_contact_model {
     s.eta_tw = 0.3;
     let mut m: dc_contact_model = unsafe { std::mem::zeroed() };
     assert_eq!(unsafe { dc_contact_model_init(&s, &mut m) }, DC_OK, "{c:?}");
+    assert_eq!(
+        unsafe { dc_contact_model_set_carry(&mut m, c.carry) },
+        DC_OK
+    );
     m
 }
 
@@ -282,9 +297,13 @@ proptest! {
         prop_assert!(known(sf), "status {}", sf);
         let mut first: Option<(usize, i32)> = None;
         let len = m.history_len as usize;
+        // A normal-only model's batch neither reads nor checks w1, w2 (header): the scalar
+        // reference gets zeros there.
+        let normal_only = len == 0 && m.rolling == DC_ROLLING_NONE;
         for (i, st) in sts.iter().enumerate() {
             let mut hs = h0[i * stride..(i + 1) * stride].to_vec();
             let mut r: dc_contact_result = unsafe { std::mem::zeroed() };
+            let st = &if normal_only { dc_contact_state { w1: [0.0; 3], w2: [0.0; 3], ..*st } } else { *st };
             let s = unsafe { dc_contact_force(&m, st, 1e-7, hs.as_mut_ptr(), stride, &mut r) };
             let hbi = &hb[i * stride..i * stride + len];
             if s == DC_OK {

@@ -32,43 +32,45 @@ contains
     v(23) = DC_ROLLING_EPSD
     v(24) = DC_TWISTING_NONE
     v(25) = DC_TWISTING_SDS
-    v(26) = DC_FIT_MODEL_CONSTANT
-    v(27) = DC_FIT_MODEL_VISCOELASTIC
-    v(28) = DC_MODEL_POWERLAW
-    v(29) = DC_MODEL_HERTZ
-    v(30) = DC_MODEL_VISCOELASTIC
-    v(31) = DC_MODEL_DMT
-    v(32) = DC_LEVEL_MIN
-    v(33) = DC_LEVEL_MAX
-    v(34) = DC_END_OVERLAP
-    v(35) = DC_END_FORCE
-    v(36) = DC_OK
-    v(37) = DC_ERR_NULL_POINTER
-    v(38) = DC_ERR_NOT_FINITE
-    v(39) = DC_ERR_RESTITUTION_RANGE
-    v(40) = DC_ERR_EXPONENT_RANGE
-    v(41) = DC_ERR_NOT_POSITIVE
-    v(42) = DC_ERR_NEGATIVE
-    v(43) = DC_ERR_CRITERION
-    v(44) = DC_ERR_RESULT_RANGE
-    v(45) = DC_ERR_NO_CONVERGENCE
-    v(46) = DC_ERR_BUFFER_TOO_SHORT
-    v(47) = DC_ERR_NO_EVENT
-    v(48) = DC_ERR_LEVEL
-    v(49) = DC_ERR_PLAN
-    v(50) = DC_ERR_PAIR_INVALID
-    v(51) = DC_ERR_BUFFER_LAYOUT
-    v(52) = DC_ERR_SPEC_VERSION
-    v(53) = DC_ERR_SPEC_MODEL
-    v(54) = DC_ERR_SPEC_UNSET
-    v(55) = DC_ERR_CONTACT_MODEL_INVALID
-    v(56) = DC_ERR_NOT_UNIT
-    v(57) = DC_ERR_BUILTIN_MODEL
-    v(58) = DC_ERR_BUILTIN_UNREACHABLE
-    v(59) = DC_ERR_FIT_TOO_FEW
-    v(60) = DC_ERR_FIT_DEGENERATE
-    v(61) = DC_ERR_INTERNAL
-    n = 61
+    v(26) = DC_CARRY_ROTATE
+    v(27) = DC_CARRY_PROJECT
+    v(28) = DC_FIT_MODEL_CONSTANT
+    v(29) = DC_FIT_MODEL_VISCOELASTIC
+    v(30) = DC_MODEL_POWERLAW
+    v(31) = DC_MODEL_HERTZ
+    v(32) = DC_MODEL_VISCOELASTIC
+    v(33) = DC_MODEL_DMT
+    v(34) = DC_LEVEL_MIN
+    v(35) = DC_LEVEL_MAX
+    v(36) = DC_END_OVERLAP
+    v(37) = DC_END_FORCE
+    v(38) = DC_OK
+    v(39) = DC_ERR_NULL_POINTER
+    v(40) = DC_ERR_NOT_FINITE
+    v(41) = DC_ERR_RESTITUTION_RANGE
+    v(42) = DC_ERR_EXPONENT_RANGE
+    v(43) = DC_ERR_NOT_POSITIVE
+    v(44) = DC_ERR_NEGATIVE
+    v(45) = DC_ERR_CRITERION
+    v(46) = DC_ERR_RESULT_RANGE
+    v(47) = DC_ERR_NO_CONVERGENCE
+    v(48) = DC_ERR_BUFFER_TOO_SHORT
+    v(49) = DC_ERR_NO_EVENT
+    v(50) = DC_ERR_LEVEL
+    v(51) = DC_ERR_PLAN
+    v(52) = DC_ERR_PAIR_INVALID
+    v(53) = DC_ERR_BUFFER_LAYOUT
+    v(54) = DC_ERR_SPEC_VERSION
+    v(55) = DC_ERR_SPEC_MODEL
+    v(56) = DC_ERR_SPEC_UNSET
+    v(57) = DC_ERR_CONTACT_MODEL_INVALID
+    v(58) = DC_ERR_NOT_UNIT
+    v(59) = DC_ERR_BUILTIN_MODEL
+    v(60) = DC_ERR_BUILTIN_UNREACHABLE
+    v(61) = DC_ERR_FIT_TOO_FEW
+    v(62) = DC_ERR_FIT_DEGENERATE
+    v(63) = DC_ERR_INTERNAL
+    n = 63
   end subroutine expected_consts
 
   subroutine expected_layout(v, n)
@@ -173,7 +175,7 @@ contains
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
       v(47) = transfer(c_loc(x_dc_contact_model%twisting), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(48) = transfer(c_loc(x_dc_contact_model%reserved_i), 0_c_intptr_t) &
+      v(48) = transfer(c_loc(x_dc_contact_model%carry), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
       v(49) = transfer(c_loc(x_dc_contact_model%normal), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)

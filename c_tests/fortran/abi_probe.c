@@ -3,7 +3,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-int32_t dc_probe_n_consts(void) { return 61; }
+int32_t dc_probe_n_consts(void) { return 63; }
 int64_t dc_probe_const(int32_t i) {
   switch (i) {
   case 1: return (int64_t)(DC_BUILTIN_LIGGGHTS_HOOKE);
@@ -31,42 +31,44 @@ int64_t dc_probe_const(int32_t i) {
   case 23: return (int64_t)(DC_ROLLING_EPSD);
   case 24: return (int64_t)(DC_TWISTING_NONE);
   case 25: return (int64_t)(DC_TWISTING_SDS);
-  case 26: return (int64_t)(DC_FIT_MODEL_CONSTANT);
-  case 27: return (int64_t)(DC_FIT_MODEL_VISCOELASTIC);
-  case 28: return (int64_t)(DC_MODEL_POWERLAW);
-  case 29: return (int64_t)(DC_MODEL_HERTZ);
-  case 30: return (int64_t)(DC_MODEL_VISCOELASTIC);
-  case 31: return (int64_t)(DC_MODEL_DMT);
-  case 32: return (int64_t)(DC_LEVEL_MIN);
-  case 33: return (int64_t)(DC_LEVEL_MAX);
-  case 34: return (int64_t)(DC_END_OVERLAP);
-  case 35: return (int64_t)(DC_END_FORCE);
-  case 36: return (int64_t)(DC_OK);
-  case 37: return (int64_t)(DC_ERR_NULL_POINTER);
-  case 38: return (int64_t)(DC_ERR_NOT_FINITE);
-  case 39: return (int64_t)(DC_ERR_RESTITUTION_RANGE);
-  case 40: return (int64_t)(DC_ERR_EXPONENT_RANGE);
-  case 41: return (int64_t)(DC_ERR_NOT_POSITIVE);
-  case 42: return (int64_t)(DC_ERR_NEGATIVE);
-  case 43: return (int64_t)(DC_ERR_CRITERION);
-  case 44: return (int64_t)(DC_ERR_RESULT_RANGE);
-  case 45: return (int64_t)(DC_ERR_NO_CONVERGENCE);
-  case 46: return (int64_t)(DC_ERR_BUFFER_TOO_SHORT);
-  case 47: return (int64_t)(DC_ERR_NO_EVENT);
-  case 48: return (int64_t)(DC_ERR_LEVEL);
-  case 49: return (int64_t)(DC_ERR_PLAN);
-  case 50: return (int64_t)(DC_ERR_PAIR_INVALID);
-  case 51: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
-  case 52: return (int64_t)(DC_ERR_SPEC_VERSION);
-  case 53: return (int64_t)(DC_ERR_SPEC_MODEL);
-  case 54: return (int64_t)(DC_ERR_SPEC_UNSET);
-  case 55: return (int64_t)(DC_ERR_CONTACT_MODEL_INVALID);
-  case 56: return (int64_t)(DC_ERR_NOT_UNIT);
-  case 57: return (int64_t)(DC_ERR_BUILTIN_MODEL);
-  case 58: return (int64_t)(DC_ERR_BUILTIN_UNREACHABLE);
-  case 59: return (int64_t)(DC_ERR_FIT_TOO_FEW);
-  case 60: return (int64_t)(DC_ERR_FIT_DEGENERATE);
-  case 61: return (int64_t)(DC_ERR_INTERNAL);
+  case 26: return (int64_t)(DC_CARRY_ROTATE);
+  case 27: return (int64_t)(DC_CARRY_PROJECT);
+  case 28: return (int64_t)(DC_FIT_MODEL_CONSTANT);
+  case 29: return (int64_t)(DC_FIT_MODEL_VISCOELASTIC);
+  case 30: return (int64_t)(DC_MODEL_POWERLAW);
+  case 31: return (int64_t)(DC_MODEL_HERTZ);
+  case 32: return (int64_t)(DC_MODEL_VISCOELASTIC);
+  case 33: return (int64_t)(DC_MODEL_DMT);
+  case 34: return (int64_t)(DC_LEVEL_MIN);
+  case 35: return (int64_t)(DC_LEVEL_MAX);
+  case 36: return (int64_t)(DC_END_OVERLAP);
+  case 37: return (int64_t)(DC_END_FORCE);
+  case 38: return (int64_t)(DC_OK);
+  case 39: return (int64_t)(DC_ERR_NULL_POINTER);
+  case 40: return (int64_t)(DC_ERR_NOT_FINITE);
+  case 41: return (int64_t)(DC_ERR_RESTITUTION_RANGE);
+  case 42: return (int64_t)(DC_ERR_EXPONENT_RANGE);
+  case 43: return (int64_t)(DC_ERR_NOT_POSITIVE);
+  case 44: return (int64_t)(DC_ERR_NEGATIVE);
+  case 45: return (int64_t)(DC_ERR_CRITERION);
+  case 46: return (int64_t)(DC_ERR_RESULT_RANGE);
+  case 47: return (int64_t)(DC_ERR_NO_CONVERGENCE);
+  case 48: return (int64_t)(DC_ERR_BUFFER_TOO_SHORT);
+  case 49: return (int64_t)(DC_ERR_NO_EVENT);
+  case 50: return (int64_t)(DC_ERR_LEVEL);
+  case 51: return (int64_t)(DC_ERR_PLAN);
+  case 52: return (int64_t)(DC_ERR_PAIR_INVALID);
+  case 53: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
+  case 54: return (int64_t)(DC_ERR_SPEC_VERSION);
+  case 55: return (int64_t)(DC_ERR_SPEC_MODEL);
+  case 56: return (int64_t)(DC_ERR_SPEC_UNSET);
+  case 57: return (int64_t)(DC_ERR_CONTACT_MODEL_INVALID);
+  case 58: return (int64_t)(DC_ERR_NOT_UNIT);
+  case 59: return (int64_t)(DC_ERR_BUILTIN_MODEL);
+  case 60: return (int64_t)(DC_ERR_BUILTIN_UNREACHABLE);
+  case 61: return (int64_t)(DC_ERR_FIT_TOO_FEW);
+  case 62: return (int64_t)(DC_ERR_FIT_DEGENERATE);
+  case 63: return (int64_t)(DC_ERR_INTERNAL);
   default: return INT64_MIN;
   }
 }
@@ -120,7 +122,7 @@ int64_t dc_probe_layout(int32_t i) {
   case 45: return (int64_t)offsetof(dc_contact_model, tangential);
   case 46: return (int64_t)offsetof(dc_contact_model, rolling);
   case 47: return (int64_t)offsetof(dc_contact_model, twisting);
-  case 48: return (int64_t)offsetof(dc_contact_model, reserved_i);
+  case 48: return (int64_t)offsetof(dc_contact_model, carry);
   case 49: return (int64_t)offsetof(dc_contact_model, normal);
   case 50: return (int64_t)offsetof(dc_contact_model, mu);
   case 51: return (int64_t)offsetof(dc_contact_model, kt);

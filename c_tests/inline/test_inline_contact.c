@@ -241,7 +241,7 @@ static void bad_inputs(const dc_contact_model *m) {
         case 19: mm.magic ^= 1u; break;
         case 20: mm.history_len += 1; break;
         case 21: mm.reserved[3] = -0.0; break;
-        case 22: mm.reserved_i = 1; break;
+        case 22: mm.carry = pick(2) ? 2 : -1; break;
         case 23: mm.normal.kernel = 99; break;
         case 24: mm.normal.clamp = !mm.normal.clamp; break;
         case 25: mm.mu = -1.0; break;
@@ -354,7 +354,7 @@ int main(int argc, char **argv) {
     const long total = argc > 1 ? atol(argv[1]) : 4000000L;
     const long per = 1000;
     long seen[8] = {0};
-    long specs_ok = 0, specs_bad = 0, models = 0;
+    long specs_ok = 0, specs_bad = 0, models = 0, projected = 0;
 
     /* spec_init */
     {
@@ -399,6 +399,32 @@ int main(int argc, char **argv) {
             dc_contact_model_init(&s, NULL) != DC_ERR_NULL_POINTER)
             fail("model_init NULL", 0);
     }
+    /* set_carry: the same statuses and bytes for valid and invalid models and carry codes */
+    for (long i = 0; i < 20000; i++) {
+        dc_contact_spec s;
+        random_spec(&s, 0);
+        dc_contact_model a;
+        if (dc_contact_model_init(&s, &a) != DC_OK) continue;
+        const int32_t carries[5] = {DC_CARRY_ROTATE, DC_CARRY_PROJECT, 2, -1, 1 << 30};
+        const int32_t c = carries[pick(5)];
+        switch (pick(4)) {
+        case 0: a.magic ^= 4u; break;
+        case 1: a.carry = 3; break;
+        case 2: a.mu = (double)NAN; break;
+        default: break;
+        }
+        dc_contact_model b = a, a0 = a;
+        const int32_t sa = dc_contact_model_set_carry(&a, c);
+        const int32_t sb = dc_contact_model_set_carry_inline(&b, c);
+        if (sa != sb || memcmp(&a, &b, sizeof a) != 0 ||
+            (sa != DC_OK && memcmp(&a, &a0, sizeof a) != 0) || (sa == DC_OK && a.carry != c))
+            fail("set_carry statuses", i);
+        else
+            n_pass++;
+    }
+    if (dc_contact_model_set_carry(NULL, DC_CARRY_PROJECT) != DC_ERR_NULL_POINTER ||
+        dc_contact_model_set_carry_inline(NULL, DC_CARRY_PROJECT) != DC_ERR_NULL_POINTER)
+        fail("set_carry NULL", 0);
     dmt_forces(total / 4);
     /* trajectories */
     while (models * per < total) {
@@ -406,6 +432,15 @@ int main(int argc, char **argv) {
         random_spec(&s, 0);
         dc_contact_model m;
         if (dc_contact_model_init(&s, &m) != DC_OK) continue;
+        if (models % 5 < 2) {
+            /* the projection carry on 2 models in 5: set by the library and by the header */
+            dc_contact_model mi = m;
+            if (dc_contact_model_set_carry(&m, DC_CARRY_PROJECT) != DC_OK ||
+                dc_contact_model_set_carry_inline(&mi, DC_CARRY_PROJECT) != DC_OK ||
+                memcmp(&m, &mi, sizeof m) != 0 || m.carry != DC_CARRY_PROJECT)
+                fail("set_carry", models);
+            projected++;
+        }
         trajectory(&m, per, seen);
         if (models % 50 == 0) bad_inputs(&m);
         models++;
@@ -416,9 +451,11 @@ int main(int argc, char **argv) {
            "steps\n",
            LANG, specs_ok, specs_bad, models, per, seen[0], seen[1], seen[2], seen[3], seen[4],
            seen[6], seen[7], seen[5]);
+    printf("test_inline_contact[%s]: %ld of the trajectories with the projection carry\n", LANG,
+           projected);
     /* the comparison must have exercised every regime */
     if (!(seen[1] > 1000 && seen[2] > 1000 && seen[3] > 1000 && seen[4] > 1000 && seen[6] > 1000 &&
-          seen[7] > 1000 && specs_bad > 1000))
+          seen[7] > 1000 && specs_bad > 1000 && projected * 4 > models))
         fail("coverage of regimes", 0);
     printf("test_inline_contact[%s]: %ld passed, %ld failed\n", LANG, n_pass, n_fail);
     return n_fail ? 1 : 0;

@@ -24,6 +24,13 @@
  *                                      k_r = NULL or 0: Ai et al.'s rule from the normal stiffness
  *   rolling constant mu_r              constant torque mu_r R* Fn against the relative rolling
  *   twisting sds k_tw eta_tw mu_tw     twisting spring-dashpot-slider, limit mu_tw Fn
+ *   carry rotate|project               how the history springs (tangential, EPSD rolling) follow the
+ *                                      contact frame (dc_contact_model_set_carry): rotate (default,
+ *                                      DC_CARRY_ROTATE: the pair's mean spin, then the tilt of the
+ *                                      normal; objective) or project (DC_CARRY_PROJECT: projected on
+ *                                      the new tangent plane and rescaled to the old length, as
+ *                                      pair_style granular's mindlin/sds; cheaper, not objective
+ *                                      about the normal). No effect without a history spring.
  *
  * With any tangential/rolling/twisting keyword the contact is demcontact's full contact
  * (dc_contact_model_init / dc_contact_force, per-contact history); without, the normal law alone
@@ -31,7 +38,7 @@
  *
  * Mixing (pair_coeff I J not given, I != J): each body keeps its own type's E and nu (combined
  * exactly into E*); e, A, e_t, mu, k_t, mu_r, k_r, eta_r, mu_tw, k_tw, eta_tw are the geometric
- * means of the two types' values; the exponent and the sub-model choices must agree.
+ * means of the two types' values; the exponent, the sub-model choices and the carry must agree.
  */
 #ifndef DEMCONTACT_LAMMPS_COEFF_H
 #define DEMCONTACT_LAMMPS_COEFF_H
@@ -64,6 +71,7 @@ struct Coeff {
     // full contact (issue 13 sub-models); NaN = unset
     int tangential = DC_TANGENTIAL_NONE, rolling = DC_ROLLING_NONE, twisting = DC_TWISTING_NONE;
     double mu = 0, k_t = NAN, e_t = 1, mu_r = 0, k_r = 0, eta_r = 0, mu_tw = 0, k_tw = NAN, eta_tw = 0;
+    int carry = DC_CARRY_ROTATE; // frame carry of the history springs (keyword carry)
     bool full() const
     {
         return tangential != DC_TANGENTIAL_NONE || rolling != DC_ROLLING_NONE || twisting != DC_TWISTING_NONE;
@@ -212,6 +220,15 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
             c.eta_tw = num(i + 3, "eta_tw");
             c.mu_tw = num(i + 4, "mu_tw");
             i += 5;
+        } else if (k == "carry") {
+            if (i + 1 >= narg) error->all(FLERR, "{}: missing value for carry (rotate or project)", what);
+            const std::string v = arg[i + 1];
+            if (v == "rotate") c.carry = DC_CARRY_ROTATE;
+            else if (v == "project") c.carry = DC_CARRY_PROJECT;
+            else // what dc_contact_model_set_carry answers for an unknown carry
+                error->all(FLERR, "{}: carry '{}' rejected by demcontact: {} (carry rotate or carry project)", what,
+                           v, dc_status_str(DC_ERR_SPEC_MODEL));
+            i += 2;
         } else {
             error->all(FLERR, "{}: unknown keyword '{}'", what, k);
         }
@@ -247,6 +264,11 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
         dc_contact_model cm;
         dc_contact_spec sp = full_spec(c, c, c);
         s = dc_contact_model_init(&sp, &cm);
+        if (s == DC_OK) {
+            s = dc_contact_model_set_carry(&cm, c.carry);
+            if (s != DC_OK)
+                error->all(FLERR, "{}: carry {} rejected by demcontact: {}", what, c.carry, dc_status_str(s));
+        }
         if (s != DC_OK) {
             Coeff ok = c;
             ok.mu = 0.5;
@@ -292,6 +314,8 @@ inline int32_t make_model(const Coeff &a, const Coeff &b, const Coeff &m, Model 
     if (out.full) {
         dc_contact_spec sp = full_spec(a, b, m);
         int32_t s = dc_contact_model_init(&sp, &out.cm);
+        if (s != DC_OK) return s;
+        s = dc_contact_model_set_carry(&out.cm, m.carry); // keyword carry (default rotate)
         if (s != DC_OK) return s;
         size_t len = 0;
         s = dc_contact_history_len(&out.cm, &len);

@@ -6,6 +6,7 @@
  *   pair_coeff I J hertz/material E e nu [damping restitution | damping viscoelastic v_ref r_ref rho_ref] [limit_damping]
  *                  [tangential mindlin NULL e_t mu | tangential linear_history k_t e_t mu]
  *                  [rolling sds k_r|NULL eta_r mu_r | rolling constant mu_r] [twisting sds k_tw eta_tw mu_tw]
+ *                  [carry rotate|project]
  *   pair_coeff I J powerlaw/material E e nu p [...]
  *   pair_coeff I J E nu e [exponent p]                       (original positional form)
  *
@@ -157,8 +158,8 @@ void PairDemcontact::build_models()
                 a = &coeffs[i * N + i];
                 b = &coeffs[j * N + j];
                 if (a->p != b->p || a->damping != b->damping || a->tangential != b->tangential ||
-                    a->rolling != b->rolling || a->twisting != b->twisting)
-                    error->all(FLERR, "pair_style demcontact: types {} and {} differ in exponent or sub-models: "
+                    a->rolling != b->rolling || a->twisting != b->twisting || a->carry != b->carry)
+                    error->all(FLERR, "pair_style demcontact: types {} and {} differ in exponent, sub-models or carry: "
                                       "give pair_coeff {} {} explicitly", i, j, i, j);
                 const Coeff A = *a, B = *b;
                 m = A;
@@ -187,9 +188,10 @@ void PairDemcontact::build_models()
         }
     if (comm->me == 0) {
         const Model &m11 = models[N + 1];
-        utils::logmesg(lmp, "pair demcontact: {} {}, limit_damping {}, alpha(1,1) = {:.15g}, A(1,1) = {:.6g} s, "
+        utils::logmesg(lmp, "pair demcontact: {}{} {}, limit_damping {}, alpha(1,1) = {:.15g}, A(1,1) = {:.6g} s, "
                             "history {} doubles per contact\n",
                        m11.full ? "full contact" : "normal only",
+                       m11.full ? (m11.cm.carry == DC_CARRY_PROJECT ? " (carry project)" : " (carry rotate)") : "",
                        m11.pair.model == DC_MODEL_VISCOELASTIC ? "viscoelastic" : "restitution",
                        m11.pair.clamp ? "on" : "off", m11.pair.alpha, m11.pair.damping_a, nh);
     }

@@ -4,6 +4,7 @@
  *
  *   pair_style gran model demcontact tangential demcontact [rolling_friction demcontact]
  *              [tangentialRestitution e_t] [rollingStiffness k_r] [rollingDamping eta_r] [rollingConstant on]
+ *              [projectionCarry on|off]
  *   fix ID all wall/gran model demcontact tangential demcontact rolling_friction demcontact primitive ...
  *   materials: coefficientFriction (mu), coefficientRollingFriction (mu_r), peratomtypepair
  *
@@ -12,6 +13,13 @@
  * Ai et al.'s rule, limit mu_r R* |Fn|; `rollingConstant on`: DC_ROLLING_CONSTANT, the constant torque
  * mu_r R* |Fn| against the relative rolling, as LIGGGHTS' cdt). Both need `model demcontact` with
  * exponent 1.5.
+ *
+ * projectionCarry (an on/off setting of both sub-models, default off): how the history springs
+ * (tangential, EPSD rolling) follow the contact frame (dc_contact_model_set_carry). off =
+ * DC_CARRY_ROTATE (the pair's mean spin, then the tilt of the normal: objective); on =
+ * DC_CARRY_PROJECT (projected on the new tangent plane and rescaled to the old length, as
+ * LIGGGHTS' own `tangential history`: cheaper, not objective about the normal). LIGGGHTS' settings
+ * parser rejects any value but on/off with its own error naming the value.
  *
  * One library call per contact: LIGGGHTS keeps the tangential and the rolling model in separate
  * classes, called one after the other for each contact. When both are demcontact's, the rolling
@@ -125,6 +133,7 @@ public:
                     s.e_t = e_t;
                 }
                 int32_t st = dc_contact_model_init(&s, &models[i * (ntypes + 1) + j]);
+                if (st == DC_OK) st = dc_contact_model_set_carry(&models[i * (ntypes + 1) + j], carry());
                 if (st == DC_OK) st = dc_contact_model_check_inline(&models[i * (ntypes + 1) + j]); // fast entry
                 if (st != DC_OK) {
                     char msg[400];
@@ -164,6 +173,7 @@ public:
                 dc_contact_model m;
                 size_t len = 0;
                 int32_t st = dc_contact_model_init(&s, &m);
+                if (st == DC_OK) st = dc_contact_model_set_carry(&m, t.carry()); // one setting for both classes
                 if (st == DC_OK) st = dc_contact_history_len(&m, &len);
                 if (st == DC_OK) st = dc_contact_model_check_inline(&m); // for the fast entry
                 if (st != DC_OK || static_cast<int>(len) > t.nh + nh || len > MAX_NH) {
@@ -265,8 +275,11 @@ public:
         std::memset(&scdata.contact_history[offset], 0, sizeof(double) * nh);
     }
 
+    int32_t carry() const { return project ? DC_CARRY_PROJECT : DC_CARRY_ROTATE; }
+
     static const size_t MAX_NH = 32;
     LAMMPS *lmp;
+    bool project = false; // setting projectionCarry (registered by both classes: one value)
     const void *owner;
     bool rolling;
     bool passive = false; // rolling: evaluated by the tangential sub-model (combined model)
@@ -286,6 +299,7 @@ public:
     void registerSettings(Settings &settings)
     {
         settings.registerDoubleSetting("tangentialRestitution", e_t, 1.0);
+        settings.registerOnOff("projectionCarry", sub.project, false);
     }
     void postSettings(IContactHistorySetup *, ContactModelBase *) {}
     void connectToProperties(PropertyRegistry &registry)
@@ -327,6 +341,7 @@ public:
         settings.registerDoubleSetting("rollingStiffness", k_r, 0.0);
         settings.registerDoubleSetting("rollingDamping", eta_r, 0.0);
         settings.registerOnOff("rollingConstant", constant, false);
+        settings.registerOnOff("projectionCarry", sub.project, false);
     }
     void postSettings(IContactHistorySetup *, ContactModelBase *) {}
     void connectToProperties(PropertyRegistry &registry)

@@ -23,7 +23,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import harness as H  # noqa: E402
 
 # status codes (include/demcontact.h)
-NOT_POSITIVE, NEGATIVE, RESTITUTION, EXPONENT = 6105, 6106, 6103, 6104
+NOT_POSITIVE, NEGATIVE, RESTITUTION, EXPONENT, SPEC_MODEL = 6105, 6106, 6103, 6104, 6123
 FULL = "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.0 0.5 rolling sds NULL 0 0.1"
 
 
@@ -67,6 +67,9 @@ LAMMPS_CASES = [
     ("wall e > 1", "", LAMMPS_GOOD, "hertz/material 5e6 1.2 0.3 zplane -0.01 NULL", "e = 1.2", RESTITUTION),
     ("wall E < 0", "", LAMMPS_GOOD, "hertz/material -1 0.5 0.3 zplane -0.01 NULL", "E = -1", NOT_POSITIVE),
     ("wall unknown keyword", "", LAMMPS_GOOD, "hertz/material 5e6 0.5 0.3 sticky zplane -0.01 NULL", "'sticky'", None),
+    ("unknown carry", "", FULL + " carry spin", None, "carry 'spin'", SPEC_MODEL),
+    ("carry without value", "", FULL + " carry", None, "missing value for carry", None),
+    ("wall unknown carry", "", FULL, FULL + " carry projected zplane -0.01 NULL", "carry 'projected'", SPEC_MODEL),
 ]
 
 
@@ -85,7 +88,7 @@ def lammps_deck(plugin, style, coeff, wall):
 
 
 # ------------------------------------------------------------------ LIGGGHTS
-LIGGGHTS_GOOD = dict(Y="5e6", nu="0.3", e="0.5", mu="0.5", mur="0.1", extra="")
+LIGGGHTS_GOOD = dict(Y="5e6", nu="0.3", e="0.5", mu="0.5", mur="0.1", extra="", wall="")
 LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
     ("youngsModulus = 0", dict(Y="0"), "youngsModulus of type 1 = 0", NOT_POSITIVE),
     ("youngsModulus < 0", dict(Y="-5e6"), "youngsModulus of type 1 = -5e+06", NOT_POSITIVE),
@@ -101,6 +104,10 @@ LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
     ("tangentialRestitution > 1", dict(extra="tangentialRestitution 1.5"), "tangentialRestitution = 1.5",
      RESTITUTION),
     ("unknown keyword", dict(extra="frobnicate on"), "'frobnicate'", None),
+    ("projectionCarry not on/off", dict(extra="projectionCarry project"), "'projectionCarry' argument: "
+     "unknown option or wrong keyword order: 'project'", None),
+    ("wall projectionCarry not on/off", dict(wall="projectionCarry yes"), "'projectionCarry' argument: "
+     "unknown option or wrong keyword order: 'yes'", None),
 ]
 
 
@@ -117,8 +124,8 @@ def liggghts_deck(v):
          "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 " + v["mur"],
          "pair_style gran " + model, "pair_coeff * *",
          # the wall takes its own model settings: the plain model here
-         "fix w all wall/gran model demcontact tangential demcontact rolling_friction demcontact "
-         "primitive type 1 zplane -0.01",
+         ("fix w all wall/gran model demcontact tangential demcontact rolling_friction demcontact "
+          "primitive type 1 zplane -0.01 " + v["wall"]).strip(),
          "create_atoms 1 single 0 0 0 units box", "create_atoms 1 single 0.00199 0 0 units box",
          "set group all diameter 0.002 density 2500", "velocity all set 0.1 0 0",
          "fix integr all nve/sphere", "timestep 1e-7", "thermo 100", "thermo_style custom step ke",
@@ -148,12 +155,13 @@ def main():
         exe = lammps_runs.find_lmp(a.lmp)
         env = H.mpi_env()
         cases = [(lab, lammps_deck(a.plugin, st, co, wa), bad, code) for lab, st, co, wa, bad, code in LAMMPS_CASES]
-        control = lammps_deck(a.plugin, "", FULL, FULL + " zplane -0.01 NULL")
+        # (both carry values accepted)
+        control = lammps_deck(a.plugin, "", FULL + " carry project", FULL + " carry rotate zplane -0.01 NULL")
         cmd = [exe, "-in", "in.deck", "-log", "none"]
     else:
         exe, env = H.liggghts_cmd(a.plugin)
         cases = [(lab, liggghts_deck(dict(LIGGGHTS_GOOD, **ov)), bad, code) for lab, ov, bad, code in LIGGGHTS_CASES]
-        control = liggghts_deck(LIGGGHTS_GOOD)
+        control = liggghts_deck(dict(LIGGGHTS_GOOD, extra="projectionCarry on", wall="projectionCarry off"))
         cmd = [exe, "-in", "in.deck", "-log", "none"]
     failures = 0
     for k, (label, deck, bad, code) in enumerate([("control (good input)", control, None, None)] + cases):

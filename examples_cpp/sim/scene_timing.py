@@ -8,7 +8,9 @@ the same code (and optionally an older build of the plugin), without re-running 
                   [--np 2] [--reps 3] [--steps 2000] [--workdir DIR] [--lmp lmp]
 
 The decks are those of scenes.py's timing (the bed from write_data of a settling run, 2000 steps,
-the same pair/wall lines); the models run alternately (builtin, ours, [before], builtin, ...), each
+the same pair/wall lines); the models run alternately (builtin, ours, ours with the projection
+carry (demcontact_project: LAMMPS `carry project`, LIGGGHTS `projectionCarry on`, same plugin),
+[before], builtin, ...), each
 `--reps` times for each rank count (1, and --np when > 1); the minimum is kept. Printed per model:
 the loop time ("Loop time"), the pair time (LAMMPS: Pair row of the task timing breakdown, average
 over ranks; LIGGGHTS: "Pair time"), and the CPU time (user + sys of all processes of the run minus
@@ -69,7 +71,7 @@ def main():
     plugins = [("demcontact", os.path.abspath(a.plugin))]
     for b in a.before:
         lab, _, p = b.partition("=") if "=" in b else ("before", "", b)
-        if lab in [q[0] for q in plugins] or lab in ("granular", "hertz"):
+        if lab in [q[0] for q in plugins] or lab in ("granular", "hertz", "demcontact_project"):
             raise SystemExit("scene_timing: label %s used twice" % lab)
         plugins.append((lab, os.path.abspath(p)))
     # (label, deck(steps), env, exe)
@@ -78,22 +80,30 @@ def main():
         import lammps_runs
         exe = lammps_runs.find_lmp(a.lmp)
         mpirun = os.path.join(os.path.dirname(exe), "mpirun")
-        (_, _, co, wa), (_, bst, bco, bwa) = S.lammps_models()
+        lm = {m[0]: m for m in S.lammps_models()}
+        (_, _, co, wa), (_, bst, bco, bwa) = lm["demcontact"], lm["granular"]
+        pco, pwa = lm["demcontact_project"][2:] if "demcontact_project" in lm else (None, None)
         env = H.mpi_env()
         ref = "granular"
         # the builtin deck loads the plugin too (unused by pair granular), as in scenes.py
         models.append((ref, lambda n: S.lammps_timing_deck(a.plugin, bst, bco, bwa, g, data, n), env))
         for lab, p in plugins:
             models.append((lab, lambda n, p=p: S.lammps_timing_deck(p, "demcontact", co, wa, g, data, n), env))
+            if lab == "demcontact" and pco:  # the same plugin with `carry project`
+                models.append(("demcontact_project",
+                               lambda n, p=p: S.lammps_timing_deck(p, "demcontact", pco, pwa, g, data, n), env))
     else:
         mpirun = "mpirun"
-        (_, mo, se), (ref, bmo, bse) = S.liggghts_models()
+        lm = {m[0]: m for m in S.liggghts_models()}
+        (_, mo, se), (ref, bmo, bse), (_, pmo, pse) = lm["demcontact"], lm["hertz"], lm["demcontact_project"]
         exe, env = H.liggghts_cmd(a.plugin)
         models.append((ref, lambda n: S.liggghts_timing_deck(bmo, bse, g, data, n), env))
         for lab, p in plugins:
             e = dict(env)
             e["LD_PRELOAD"] = p
             models.append((lab, lambda n: S.liggghts_timing_deck(mo, se, g, data, n), e))
+            if lab == "demcontact":  # the same plugin with `projectionCarry on`
+                models.append(("demcontact_project", lambda n: S.liggghts_timing_deck(pmo, pse, g, data, n), e))
     for lab, deck, _ in models:
         open(os.path.join(d, "in.%s" % lab), "w").write(deck(a.steps))
         open(os.path.join(d, "in0.%s" % lab), "w").write(deck(0))

@@ -150,6 +150,14 @@ class Twisting(_enum.IntEnum):
     SDS = _native.TWISTING_SDS
 
 
+class Carry(_enum.IntEnum):
+    """How history springs follow the contact frame (C: DC_CARRY_*): ROTATE (default, objective)
+    or PROJECT (LAMMPS/LIGGGHTS' projection and rescale: cheaper, not objective about n)."""
+
+    ROTATE = _native.CARRY_ROTATE
+    PROJECT = _native.CARRY_PROJECT
+
+
 #: Doubles of history per contact of the largest contact model; version of dc_contact_spec read.
 CONTACT_HISTORY_MAX: int = _native.CONTACT_HISTORY_MAX
 CONTACT_SPEC_VERSION: int = _native.CONTACT_SPEC_VERSION
@@ -214,6 +222,7 @@ __all__ = [
     "Tangential",
     "Rolling",
     "Twisting",
+    "Carry",
     "CONTACT_HISTORY_MAX",
     "CONTACT_SPEC_VERSION",
     "ContactSpec",

@@ -37,6 +37,7 @@ __all__ += [
     "Tangential",
     "Rolling",
     "Twisting",
+    "Carry",
     "CONTACT_HISTORY_MAX",
     "CONTACT_SPEC_VERSION",
     "ContactSpec",
@@ -143,6 +144,10 @@ class Rolling(enum.IntEnum):
 class Twisting(enum.IntEnum):
     NONE = 0
     SDS = 1
+
+class Carry(enum.IntEnum):
+    ROTATE = 0
+    PROJECT = 1
 
 CONTACT_HISTORY_MAX: int
 CONTACT_SPEC_VERSION: int
@@ -395,6 +400,7 @@ class ContactSpec:
         eta_tw: Optional[_Real] = None,
         inertia_factor: Optional[_Real] = None,
         work_of_adhesion: Optional[_Real] = None,
+        carry: Optional[_Code] = None,
     ) -> ContactSpec: ...
     @property
     def normal(self) -> int: ...
@@ -446,6 +452,8 @@ class ContactSpec:
     def inertia_factor(self) -> float: ...
     @property
     def work_of_adhesion(self) -> float: ...
+    @property
+    def carry(self) -> int: ...
     def model(self) -> ContactModel: ...
 
 @final
@@ -460,6 +468,8 @@ class ContactModel:
     def rolling(self) -> int: ...
     @property
     def twisting(self) -> int: ...
+    @property
+    def carry(self) -> int: ...
     @property
     def mu(self) -> float: ...
     @property

@@ -10,8 +10,8 @@
 use demcontact::ffi as c;
 use demcontact::ffi::contact::{
     dc_contact_batch, dc_contact_force, dc_contact_force_batch, dc_contact_force_spheres,
-    dc_contact_history_len, dc_contact_model, dc_contact_model_init, dc_contact_result,
-    dc_contact_spec, dc_contact_spec_init, dc_contact_state,
+    dc_contact_history_len, dc_contact_model, dc_contact_model_init, dc_contact_model_set_carry,
+    dc_contact_result, dc_contact_spec, dc_contact_spec_init, dc_contact_state,
 };
 use numpy::{
     PyArray1, PyArray2, PyArrayDescrMethods, PyArrayDyn, PyArrayMethods, PyReadwriteArrayDyn,
@@ -54,6 +54,8 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
         ("ROLLING_EPSD", DC_ROLLING_EPSD),
         ("TWISTING_NONE", DC_TWISTING_NONE),
         ("TWISTING_SDS", DC_TWISTING_SDS),
+        ("CARRY_ROTATE", DC_CARRY_ROTATE),
+        ("CARRY_PROJECT", DC_CARRY_PROJECT),
     ] {
         m.add(name, v)?;
     }
@@ -94,6 +96,8 @@ macro_rules! contact_spec_class {
         pub struct ContactSpec {
             $($i: i32,)*
             $($r: f64,)*
+            /// Carry.* (not a field of the C spec: applied by dc_contact_model_set_carry).
+            carry: i32,
         }
 
         impl ContactSpec {
@@ -101,6 +105,7 @@ macro_rules! contact_spec_class {
                 ContactSpec {
                     $($i: s.$i,)*
                     $($r: s.$r,)*
+                    carry: c::contact::DC_CARRY_ROTATE,
                 }
             }
 
@@ -115,6 +120,7 @@ macro_rules! contact_spec_class {
 
             fn describe(&self) -> String {
                 let mut parts: Vec<String> = vec![$(format!("{}={}", stringify!($i), self.$i)),*];
+                parts.push(format!("carry={}", self.carry));
                 // Unset (NaN) parameters are left out: they are what ContactSpec() gives anyway.
                 $(
                     if !self.$r.is_nan() {
@@ -128,14 +134,18 @@ macro_rules! contact_spec_class {
         #[pymethods]
         impl ContactSpec {
             #[new]
-            #[pyo3(signature = (*, $($i = None,)* $($r = None),*))]
+            #[pyo3(signature = (*, $($i = None,)* $($r = None,)* carry = None))]
             #[allow(non_snake_case, clippy::too_many_arguments)]
             fn new(
                 $($i: Option<&Bound<'_, PyAny>>,)*
                 $($r: Option<&Bound<'_, PyAny>>,)*
+                carry: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<Self> {
                 const F: &str = "ContactSpec";
                 let mut s = ContactSpec::from_raw(&library_defaults());
+                if let Some(o) = carry {
+                    s.carry = code(F, "carry", o)?;
+                }
                 $(
                     if let Some(o) = $i {
                         s.$i = code(F, stringify!($i), o)?;
@@ -215,6 +225,11 @@ impl ContactModel {
     #[getter]
     fn twisting(&self) -> i32 {
         self.raw.twisting
+    }
+    /// Carry.* chosen (how the history springs follow the contact frame).
+    #[getter]
+    fn carry(&self) -> i32 {
+        self.raw.carry
     }
     /// Friction coefficient mu.
     #[getter]
@@ -299,7 +314,12 @@ fn model_init(py: Python<'_>, spec: &ContactSpec) -> PyResult<ContactModel> {
         return Err(status_error(py, s, F, &format!("with {}", spec.describe())));
     }
     // SAFETY: DC_OK means the whole struct was written.
-    let raw = unsafe { raw.assume_init() };
+    let mut raw = unsafe { raw.assume_init() };
+    // SAFETY: live local, a model dc_contact_model_init accepted.
+    let s = unsafe { dc_contact_model_set_carry(&mut raw, spec.carry) };
+    if s != c::status::DC_OK {
+        return Err(status_error(py, s, F, &format!("with {}", spec.describe())));
+    }
     let mut len = 0usize;
     // SAFETY: live locals.
     let s = unsafe { dc_contact_history_len(&raw, &mut len) };

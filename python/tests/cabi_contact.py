@@ -29,7 +29,7 @@ MODEL_REALS = ["mu", "kt", "zeta_t", "kappa", "mu_r", "k_r", "eta_r", "mu_tw", "
 
 class Model(C.Structure):
     _fields_ = (
-        [("magic", U32), ("history_len", U32), ("tangential", I32), ("rolling", I32), ("twisting", I32), ("reserved_i", I32), ("normal", Pair)]
+        [("magic", U32), ("history_len", U32), ("tangential", I32), ("rolling", I32), ("twisting", I32), ("carry", I32), ("normal", Pair)]
         + [(f, D) for f in MODEL_REALS]
         + [("reserved", D * 6)]
     )
@@ -55,6 +55,7 @@ history_len = fn("contact_history_len", [C.POINTER(Model), C.POINTER(C.c_size_t)
 force = fn("contact_force", [C.POINTER(Model), C.POINTER(State), D, PD, C.c_size_t, C.POINTER(Result)])
 force_spheres = fn("contact_force_spheres", [C.POINTER(Model), PD, PD, C.POINTER(State), D, PD, C.c_size_t, C.POINTER(Result)])
 force_batch = fn("contact_force_batch", [C.POINTER(Model), C.POINTER(Batch), D])
+set_carry = fn("contact_model_set_carry", [C.POINTER(Model), I32])
 
 
 def c_spec(**fields) -> Spec:
@@ -66,10 +67,14 @@ def c_spec(**fields) -> Spec:
 
 
 def c_model(**fields):
-    """(status, Model or None) of dc_contact_model_init on a spec with these fields."""
+    """(status, Model or None) of dc_contact_model_init on a spec with these fields, then
+    dc_contact_model_set_carry with `carry` (not a C spec field) when given."""
+    carry = fields.pop("carry", None)
     s = c_spec(**fields)
     m = Model()
     st = model_init(C.byref(s), C.byref(m))
+    if st == 0 and carry is not None:
+        st = set_carry(C.byref(m), int(carry))
     return st, (m if st == 0 else None)
 
 

@@ -34,6 +34,8 @@ SPECS = {
     "powerlaw_linear_epsd": dict(normal=dc.Normal.POWERLAW, p=1.7, k_n=3e7, damping=dc.Damping.RESTITUTION, e_n=0.3, tangential=dc.Tangential.LINEAR, k_t=5e3, mu=0.2, rolling=dc.Rolling.EPSD, mu_r=0.1, k_r=1e-3),
     "viscoelastic_mindlin": dict(normal=dc.Normal.VISCOELASTIC, visco_A=2e-6, E1=1e8, nu1=0.45, E2=1e8, nu2=0.45, tangential=dc.Tangential.MINDLIN, mu=0.8, e_t=0.9, twisting=dc.Twisting.SDS, mu_tw=1e-4, k_tw=1e-3),
     "dmt_mindlin": dict(normal=dc.Normal.DMT, criterion=O, E1=1e9, nu1=0.3, E2=1e9, nu2=0.3, work_of_adhesion=0.05, tangential=dc.Tangential.MINDLIN, mu=0.4),
+    "hertz_full_project": dict(HERTZ_FULL, carry=dc.Carry.PROJECT),
+    "powerlaw_linear_epsd_project": dict(normal=dc.Normal.POWERLAW, p=1.7, k_n=3e7, damping=dc.Damping.RESTITUTION, e_n=0.3, tangential=dc.Tangential.LINEAR, k_t=5e3, mu=0.2, rolling=dc.Rolling.EPSD, mu_r=0.1, k_r=1e-3, carry=dc.Carry.PROJECT),
     "hertz_normal_only": dict(normal=dc.Normal.HERTZ, damping=dc.Damping.RESTITUTION, e_n=0.5, E1=7e10, nu1=0.3, E2=7e10, nu2=0.3),
     "linear_constant_rolling_only": dict(normal=dc.Normal.LINEAR, k_n=1e4, rolling=dc.Rolling.CONSTANT, mu_r=0.1),
 }
@@ -86,6 +88,7 @@ def test_enums_match_header_constants():
     assert [int(x) for x in dc.Tangential] == [0, 1, 2]
     assert [int(x) for x in dc.Rolling] == [0, 1, 2]
     assert [int(x) for x in dc.Twisting] == [0, 1]
+    assert [int(x) for x in dc.Carry] == [0, 1]
     assert dc.CONTACT_HISTORY_MAX == 10
 
 
@@ -96,7 +99,8 @@ def test_models_equal_c(name):
     assert m.history_len == cm.history_len == dc.contact_history_len(m)
     for f in cc.MODEL_REALS:
         assert bits(getattr(m, f)) == bits(getattr(cm, f)), f
-    assert (m.tangential, m.rolling, m.twisting) == (cm.tangential, cm.rolling, cm.twisting)
+    assert (m.tangential, m.rolling, m.twisting, m.carry) == (cm.tangential, cm.rolling, cm.twisting, cm.carry)
+    assert m.carry == SPECS[name].get("carry", dc.Carry.ROTATE)
     p = m.normal
     for f in ("p", "stiffness", "alpha", "damping_a", "e", "k", "c", "h"):
         assert bits(getattr(p, f)) == bits(getattr(cm.normal, f)), f
@@ -264,6 +268,26 @@ def test_contact_force_equals_c_over_many_steps(name):
     assert resets > 0
     if m.tangential:
         assert sliding > 0 and np.any(hp != 0)  # the Coulomb limit and the springs were exercised
+
+
+@pytest.mark.parametrize("carry", [2, -1, 7])
+def test_bad_carry_raises_spec_model_and_names_it(carry):
+    with pytest.raises(dc.SpecModelError, match="carry=%d" % carry):
+        dc.contact_model_init(dc.ContactSpec(**dict(HERTZ_FULL, carry=carry)))
+    assert cc.c_model(**dict(HERTZ_FULL, carry=carry))[0] == dc.SpecModelError.status
+
+
+def test_projection_changes_only_the_springs_of_a_turning_contact():
+    rot, proj = model("hertz_full"), model("hertz_full_project")
+    hr, hp = np.zeros(rot.history_len), np.zeros(proj.history_len)
+    for k in range(40):
+        a = 0.03 * k
+        args = ([math.cos(a), math.sin(a), 0.0], 1e-6, [0.0, 0.0, 0.01], [0.0] * 3, [0.0, 0.0, 30.0],
+                [0.0, 0.0, -10.0], 1e-3, 1e-3, 1e-5, 1e-5)
+        r = dc.contact_force(rot, *args, DT, hr)
+        p = dc.contact_force(proj, *args, DT, hp)
+        assert bits(r.f_n) == bits(p.f_n)
+    assert bits(r.ft) != bits(p.ft)
 
 
 def test_contact_force_spheres_equals_c():

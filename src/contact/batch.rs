@@ -269,7 +269,7 @@ fn tangential_pass<T: TangentialLaw>(
             continue;
         }
         let k = Kin::of(&s);
-        let frame = Kin::frame(&s, v3(h.get(0..3).unwrap_or(&[])), dt);
+        let frame = Kin::frame(&s, v3(h.get(0..3).unwrap_or(&[])), dt, m.carry);
         let Some(xs) = h.get_mut(at..at + 3) else {
             continue;
         };
@@ -311,7 +311,7 @@ fn rolling_pass<const EPSD: bool>(
         }
         let n_old = h.as_deref().and_then(|h| h.get(0..3)).map_or([0.0; 3], v3);
         let k = Kin::of(&s);
-        let frame = Kin::frame(&s, n_old, dt);
+        let frame = Kin::frame(&s, n_old, dt, m.carry);
         let mr = if EPSD {
             let Some(h) = h else { continue };
             let kn = if m.k_r > 0.0 {

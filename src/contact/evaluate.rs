@@ -35,7 +35,7 @@ pub struct ContactForce {
 pub(crate) fn check_model(m: &ContactModel) -> Result<(), Error> {
     check_model_parts(
         m.normal.kernel,
-        [m.tangential, m.rolling, m.twisting],
+        [m.tangential, m.rolling, m.twisting, m.carry],
         &[
             m.normal.consts.k,
             m.normal.consts.c,
@@ -57,16 +57,16 @@ pub(crate) fn check_model(m: &ContactModel) -> Result<(), Error> {
 
 /// The checks of [`check_model`] on the model's parts, so that the C boundary can run them on
 /// the caller's struct as it reads it (without first building and re-reading a copy):
-/// `sel` = tangential, rolling, twisting; `consts` = k, c, h, μ, k_t, ζ_t, κ, μ_r, k_r, η_r,
+/// `sel` = tangential, rolling, twisting, carry; `consts` = k, c, h, μ, k_t, ζ_t, κ, μ_r, k_r, η_r,
 /// μ_tw, k_tw, η_tw.
 #[inline(always)]
 pub(crate) fn check_model_parts(
     kernel: i32,
-    sel: [i32; 3],
+    sel: [i32; 4],
     consts: &[f64; 13],
     layout: super::model::Layout,
 ) -> Result<(), Error> {
-    let [tangential, rolling, twisting] = sel;
+    let [tangential, rolling, twisting, carry] = sel;
     needs(kernel).ok_or(Error::ContactModelInvalid)?;
     let codes_ok = matches!(
         tangential,
@@ -74,7 +74,8 @@ pub(crate) fn check_model_parts(
     ) && matches!(
         rolling,
         select::ROLLING_NONE | select::ROLLING_CONSTANT | select::ROLLING_EPSD
-    ) && matches!(twisting, select::TWISTING_NONE | select::TWISTING_SDS);
+    ) && matches!(twisting, select::TWISTING_NONE | select::TWISTING_SDS)
+        && matches!(carry, select::CARRY_ROTATE | select::CARRY_PROJECT);
     // Integer reductions instead of a test and a branch per value (this runs on every call).
     let consts_ok = all_finite(consts) & none_negative(consts);
     let [.., kt, _, kappa, _, _, _, _, _, _] = *consts;
@@ -163,7 +164,7 @@ pub(crate) fn evaluate(
     // The frame step reads the stored normal before it is replaced; only vector springs need
     // it (the tangential spring or the EPSD rolling torque).
     let frame = (m.layout.tangential.is_some() || m.layout.rolling.is_some())
-        .then(|| Kin::frame(s, get3(h, 0), dt));
+        .then(|| Kin::frame(s, get3(h, 0), dt, m.carry));
     if m.layout.len > 0 {
         put3(h, 0, k.n);
     }

@@ -29,6 +29,17 @@
 //! (Forming the increment on the mid-step plane n_old + n, a midpoint rule, was tried: it lowers
 //! the energy error of an elastic sticking collision by 3–22 % but breaks the exact cancellation
 //! above, so it was dropped.)
+//!
+//! The cheaper carry, `select::CARRY_PROJECT` (what LAMMPS's `granular` and LIGGGHTS'
+//! `tangential history` do), skips steps 1 and 2: the spring is projected on the current tangent
+//! plane and rescaled to its old length (only while at least half of it stays in the plane,
+//! i.e. the normal turned by less than 60° in the step; otherwise it is projected only, the
+//! rotation's fallback too). It needs neither the stored normal nor the spin, but it is not objective: the
+//! spring keeps its direction in space while the pair turns about n, so a stuck pair spinning
+//! rigidly about its normal loads its spring by the angle turned (measured in
+//! tests/contact_physics.rs, docs/force.md). Unlike LAMMPS, which rescales only when the normal
+//! component exceeds a threshold, it rescales every step (no branch; the factor is 1 to
+//! rounding when nothing turned).
 
 use super::vec3::{V3, add, cross, dot, norm2, scale, tangential};
 
@@ -50,6 +61,8 @@ pub(crate) struct FrameStep {
     carry: bool,
     /// Current normal.
     n: V3,
+    /// `select::CARRY_PROJECT`: project and rescale only (the other fields unused).
+    project: bool,
 }
 
 /// Rotation by the vector q: v + s q×v + c q×(q×v).
@@ -107,12 +120,43 @@ impl FrameStep {
             tk: cross(spun, n),
             carry,
             n,
+            project: false,
+        }
+    }
+
+    /// The projection carry onto the plane ⊥ `n` (`select::CARRY_PROJECT`).
+    #[inline(always)]
+    pub(crate) fn projection(n: V3) -> Self {
+        FrameStep {
+            q: [0.0; 3],
+            s: 0.0,
+            c: 0.0,
+            tc: 0.0,
+            tk: [0.0; 3],
+            carry: false,
+            n,
+            project: true,
         }
     }
 
     /// Carries a tangential vector of the last step's frame into the current tangent plane.
     #[inline(always)]
     pub(crate) fn carry(&self, v: V3) -> V3 {
+        if self.project {
+            // |v|² / |w|² in one division and one root (include/demcontact_inline.h: same order).
+            // Rescaled only while at least half the length stays in the plane (the normal turned
+            // by less than 60° since the last step): a spring that lost more is projected only,
+            // as the rotation's fallback does, instead of blowing a rounding residual up to its
+            // old length in a random direction (LAMMPS rescales any nonzero projection).
+            let l2 = norm2(v);
+            let w = tangential(v, self.n);
+            let p2 = norm2(w);
+            return if p2 > 0.25 * l2 {
+                scale((l2 / p2).sqrt(), w)
+            } else {
+                w
+            };
+        }
         let v = if self.carry {
             tilt(self.tc, self.tk, spin(self.q, self.s, self.c, v))
         } else {
@@ -167,5 +211,58 @@ mod tests {
         // A new contact (no stored normal) only projects.
         let g = FrameStep::new([0.0; 3], n, [1.0, 2.0, 3.0]);
         assert_eq!(g.carry(v), tangential(v, n));
+    }
+
+    /// The projection carry against LAMMPS's own formulation of the same rule (project, then
+    /// scale by |v|/|projection| from two roots), within 2 ulp per component; it ignores the spin,
+    /// keeps the length, and drops a spring with no tangential part.
+    #[test]
+    fn projection_carry_is_lammps_project_and_rescale() {
+        let n = {
+            let v: V3 = [0.2, -0.3, 0.9];
+            scale(1.0 / norm2(v).sqrt(), v)
+        };
+        let f = FrameStep::projection(n);
+        let mut worst = 0.0f64;
+        for (i, v) in [
+            [0.6, -0.8, 0.0],
+            [1e-9, 3e-10, -2e-9],
+            [5.0, 1.0, 0.3],
+            [-1e-3, 2e-3, 7e-4],
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let w = f.carry(v);
+            let rsht = dot(v, n);
+            let proj = [v[0] - rsht * n[0], v[1] - rsht * n[1], v[2] - rsht * n[2]];
+            let fac = norm2(v).sqrt() / norm2(proj).sqrt();
+            for (a, b) in w.iter().zip(proj.iter().map(|x| x * fac)) {
+                let ulp = (a - b).abs() / (b.abs().max(f64::MIN_POSITIVE) * f64::EPSILON);
+                worst = worst.max(ulp);
+            }
+            assert!(
+                (norm2(w) / norm2(v) - 1.0).abs() < 1e-15,
+                "case {i}: length not kept"
+            );
+            assert!(dot(w, n).abs() < 1e-15 * norm2(v).sqrt(), "case {i}: w·n");
+            // The mean spin does not enter.
+            let g = FrameStep::projection(n);
+            assert_eq!(g.carry(v), w);
+        }
+        assert!(worst <= 2.0, "{worst} ulp from LAMMPS's formulation");
+        // Parallel to n: only a rounding residual is left, and it is not blown up to length 3;
+        // a normal turned by more than 60° projects only, by less rescales.
+        assert!(norm2(f.carry(scale(3.0, n))).sqrt() < 1e-15);
+        assert_eq!(f.carry([0.0; 3]), [0.0; 3]);
+        let t = [n[1], -n[0], 0.0]; // ⊥ n
+        let t = scale(1.0 / norm2(t).sqrt(), t);
+        for (deg, rescaled) in [(59.9f64, true), (60.1, false)] {
+            let a = deg.to_radians();
+            let v = add(scale(a.cos(), t), scale(a.sin(), n)); // |v| = 1, angle a out of the plane
+            let l = norm2(f.carry(v)).sqrt();
+            let want = if rescaled { 1.0 } else { a.cos() };
+            assert!((l - want).abs() < 1e-15, "{deg}°: length {l}, want {want}");
+        }
     }
 }

@@ -78,10 +78,15 @@ pub(crate) fn harmonic(a: f64, b: f64) -> f64 {
 impl Kin {
     /// The frame step from the stored normal `n_old` (zeros: new contact or no history) to the
     /// state's normal, with the bodies' mean spin over dt. Only the stages with vector history
-    /// need it (a normal-only or twisting-only model never computes it).
+    /// need it (a normal-only or twisting-only model never computes it). `carry`:
+    /// `select::CARRY_*` (the projection reads neither the stored normal nor the spin).
     #[inline(always)]
-    pub(crate) fn frame(s: &ContactState, n_old: V3, dt: f64) -> FrameStep {
-        FrameStep::new(n_old, s.n, scale(0.5 * dt, add(s.w1, s.w2)))
+    pub(crate) fn frame(s: &ContactState, n_old: V3, dt: f64, carry: i32) -> FrameStep {
+        if carry == super::model::select::CARRY_PROJECT {
+            FrameStep::projection(s.n)
+        } else {
+            FrameStep::new(n_old, s.n, scale(0.5 * dt, add(s.w1, s.w2)))
+        }
     }
 
     /// Kinematics of a state with overlap > 0 (checked by the caller).

@@ -24,6 +24,11 @@ pub mod select {
     pub const TWISTING_NONE: i32 = 0;
     /// Spring–dashpot–slider about the normal, limit μ_tw |Fn|.
     pub const TWISTING_SDS: i32 = 1;
+    /// History springs carried by the frame's rotation (spin, then tilt): objective.
+    pub const CARRY_ROTATE: i32 = 0;
+    /// History springs projected on the new tangent plane and rescaled to their old length
+    /// (LAMMPS `granular`, LIGGGHTS `history`): cheaper, not objective about the normal.
+    pub const CARRY_PROJECT: i32 = 1;
 }
 
 /// Doubles per contact of the largest model: normal of the last step (3), tangential spring (3),
@@ -84,6 +89,8 @@ pub struct ContactModel {
     pub rolling: i32,
     /// `select::TWISTING_*`.
     pub twisting: i32,
+    /// `select::CARRY_*`: how the history springs follow the contact frame.
+    pub carry: i32,
     /// Sliding friction coefficient μ ≥ 0.
     pub mu: f64,
     /// Tangential stiffness constant: k_t [N/m] (linear) or 8 G* [Pa] (Mindlin: k_t = 8 G* a).

@@ -49,6 +49,8 @@ pub struct ContactSpec {
     pub rolling: i32,
     /// `select::TWISTING_*`.
     pub twisting: i32,
+    /// `select::CARRY_*` (default rotate).
+    pub carry: i32,
     /// Young's modulus of body 1 [Pa] (+∞: rigid).
     pub e1: f64,
     /// Poisson ratio of body 1.
@@ -91,7 +93,7 @@ pub struct ContactSpec {
 
 impl Default for ContactSpec {
     /// No normal law chosen yet (must be set), no damping, clamping criterion, no tangential,
-    /// rolling or twisting; every parameter unset (NaN) except e_t = 1 (no tangential damping),
+    /// rolling or twisting, springs carried by rotation; every parameter unset (NaN) except e_t = 1 (no tangential damping),
     /// k_r = 0 (Ai's rule), η_r = η_tw = 0 and κ = 2/5.
     fn default() -> Self {
         let u = f64::NAN;
@@ -102,6 +104,7 @@ impl Default for ContactSpec {
             tangential: select::TANGENTIAL_NONE,
             rolling: select::ROLLING_NONE,
             twisting: select::TWISTING_NONE,
+            carry: select::CARRY_ROTATE,
             e1: u,
             nu1: u,
             e2: u,
@@ -219,6 +222,7 @@ pub fn contact_model(s: &ContactSpec) -> Result<ContactModel, Error> {
         tangential: s.tangential,
         rolling: s.rolling,
         twisting: s.twisting,
+        carry: s.carry,
         mu: 0.0,
         kt: 0.0,
         zeta_t: 0.0,
@@ -231,6 +235,9 @@ pub fn contact_model(s: &ContactSpec) -> Result<ContactModel, Error> {
         eta_tw: 0.0,
         layout: Layout::of(s.tangential, s.rolling, s.twisting),
     };
+    if !matches!(s.carry, select::CARRY_ROTATE | select::CARRY_PROJECT) {
+        return Err(Error::SpecModel);
+    }
     match s.tangential {
         select::TANGENTIAL_NONE => {}
         select::TANGENTIAL_LINEAR | select::TANGENTIAL_MINDLIN => {

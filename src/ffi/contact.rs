@@ -1,7 +1,7 @@
 //! Exports: full contact (normal, tangential, rolling, twisting) with caller-owned history.
 
 use super::status::*;
-use super::{dc_status, guard, write_result};
+use super::{dc_status, guard, read_in, write_result};
 use crate::contact::batch::{BatchIn, BatchOut, contact_force_batch, contact_force_batch_fused};
 use crate::contact::evaluate::{check_model_parts, contact_force_checked_model};
 use crate::contact::model::{HISTORY_MAX, Layout, select};
@@ -50,6 +50,13 @@ pub const DC_ROLLING_EPSD: i32 = 2;
 pub const DC_TWISTING_NONE: i32 = 0;
 /// Twisting resistance: spring-dashpot-slider about n, limit mu_tw |Fn|.
 pub const DC_TWISTING_SDS: i32 = 1;
+/// History springs follow the contact frame by rotation (the bodies' mean spin, then the tilt
+/// of the normal): objective under any rigid rotation of the pair. Default.
+pub const DC_CARRY_ROTATE: i32 = 0;
+/// History springs projected on the new tangent plane and rescaled to their old length, as
+/// LAMMPS `granular` and LIGGGHTS `tangential history` do: cheaper, but a pair turning about
+/// its normal loads its spring (see docs/force.md). Set with dc_contact_model_set_carry.
+pub const DC_CARRY_PROJECT: i32 = 1;
 
 const _: () = assert!(
     DC_NORMAL_HERTZ == normal::HERTZ
@@ -67,6 +74,8 @@ const _: () = assert!(
         && DC_ROLLING_EPSD == select::ROLLING_EPSD
         && DC_TWISTING_NONE == select::TWISTING_NONE
         && DC_TWISTING_SDS == select::TWISTING_SDS
+        && DC_CARRY_ROTATE == select::CARRY_ROTATE
+        && DC_CARRY_PROJECT == select::CARRY_PROJECT
         && DC_CONTACT_HISTORY_MAX == HISTORY_MAX
 );
 
@@ -149,6 +158,8 @@ impl From<&dc_contact_spec> for ContactSpec {
             tangential: s.tangential,
             rolling: s.rolling,
             twisting: s.twisting,
+            // Not in the C spec (its layout is fixed): dc_contact_model_set_carry.
+            carry: select::CARRY_ROTATE,
             e1: s.E1,
             nu1: s.nu1,
             e2: s.E2,
@@ -189,8 +200,9 @@ pub struct dc_contact_model {
     pub rolling: i32,
     /// DC_TWISTING_* chosen.
     pub twisting: i32,
-    /// Reserved (0).
-    pub reserved_i: i32,
+    /// DC_CARRY_* (DC_CARRY_ROTATE from dc_contact_model_init; change it with
+    /// dc_contact_model_set_carry). This was `reserved_i` (always 0) before the projection carry.
+    pub carry: i32,
     /// The normal law (usable on its own with dc_normal_force*).
     pub normal: dc_pair,
     /// Friction coefficient mu.
@@ -227,7 +239,7 @@ impl From<ContactModel> for dc_contact_model {
             tangential: m.tangential,
             rolling: m.rolling,
             twisting: m.twisting,
-            reserved_i: 0,
+            carry: m.carry,
             normal: m.normal.into(),
             mu: m.mu,
             kt: m.kt,
@@ -256,7 +268,6 @@ fn model_of(m: &dc_contact_model) -> Result<ContactModel, Error> {
     };
     if m.magic != MAGIC
         || m.history_len as usize != layout.len
-        || m.reserved_i != 0
         || m.reserved.iter().any(|x| x.to_bits() != 0)
     {
         return Err(Error::ContactModelInvalid);
@@ -265,7 +276,7 @@ fn model_of(m: &dc_contact_model) -> Result<ContactModel, Error> {
     // then not checked again: see contact_force_checked_model).
     check_model_parts(
         p.kernel,
-        [m.tangential, m.rolling, m.twisting],
+        [m.tangential, m.rolling, m.twisting, m.carry],
         &[
             p.k, p.c, p.h, m.mu, m.kt, m.zeta_t, m.kappa, m.mu_r, m.k_r, m.eta_r, m.mu_tw, m.k_tw,
             m.eta_tw,
@@ -291,6 +302,7 @@ fn model_of(m: &dc_contact_model) -> Result<ContactModel, Error> {
         tangential: m.tangential,
         rolling: m.rolling,
         twisting: m.twisting,
+        carry: m.carry,
         mu: m.mu,
         kt: m.kt,
         zeta_t: m.zeta_t,
@@ -475,6 +487,38 @@ pub unsafe extern "C" fn dc_contact_model_init(
     let s = unsafe { spec.read_unaligned() };
     // SAFETY: forwarded caller contract on out.
     unsafe { write_result(out, || Ok(contact_model(&ContactSpec::from(&s))?.into())) }
+}
+
+/// Chooses how the model's history springs follow the contact frame: DC_CARRY_ROTATE (what
+/// dc_contact_model_init gives: objective) or DC_CARRY_PROJECT (LAMMPS/LIGGGHTS' projection and
+/// rescale: cheaper, not objective about the normal). The history layout and length do not
+/// change, so a run may switch between the two. Call it at set-up, like dc_contact_model_init.
+///
+/// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID (not a valid model),
+///         DC_ERR_SPEC_MODEL (unknown carry). `model` is untouched on error.
+///
+/// # Safety
+/// `model` NULL or readable and writable for one dc_contact_model.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_contact_model_set_carry(
+    model: *mut dc_contact_model,
+    carry: i32,
+) -> i32 {
+    // SAFETY: forwarded caller contract on model (read by value, NULL checked).
+    let m = match unsafe { read_in(model.cast_const()) } {
+        Ok(m) => m,
+        Err(s) => return s.code(),
+    };
+    // SAFETY: forwarded caller contract on model (written by value on success only).
+    unsafe {
+        write_result(model, || {
+            crate::contact::evaluate::check_model(&model_of(&m)?)?;
+            if !matches!(carry, DC_CARRY_ROTATE | DC_CARRY_PROJECT) {
+                return Err(Error::SpecModel);
+            }
+            Ok(dc_contact_model { carry, ..m })
+        })
+    }
 }
 
 /// The number of doubles of history one contact of this model needs (0 for a normal-only or
