@@ -370,8 +370,10 @@ DC_INLINE_FN double dci_dmt_damped(double k, double c, double h, double d, doubl
  * the hand-written formula, vectorised where the flags allow (-fno-math-errno). A host that picks
  * the pair at run time switches once outside its loop: `switch (pair.kernel) { case
  * DC_KERNEL_HERTZ_DAMPED_CLAMPED: for (...) F[i] = dc_normal_force_kernel_inline(
- * DC_KERNEL_HERTZ_DAMPED_CLAMPED, &pair, ...); break; ... }`. */
-DC_INLINE_FN double dc_normal_force_kernel_inline(int32_t kernel, const dc_pair *pair,
+ * DC_KERNEL_HERTZ_DAMPED_CLAMPED, &pair, ...); break; ... }`. Always inlined: in a large host
+ * loop (LIGGGHTS' pair loop) GCC otherwise kept it out of line even with a constant kernel, one
+ * call and the whole switch per contact. */
+DCI_ALWAYS_INLINE_FN double dc_normal_force_kernel_inline(int32_t kernel, const dc_pair *pair,
                                                   double overlap, double vn, double r_eff,
                                                   double m_eff) {
     if (!pair) return (double)NAN;

@@ -90,12 +90,21 @@ static void fuzz_contact(int which, const uint8_t *data, size_t n) {
         if (s == DC_OK) {
             size_t len = 99;
             if (dc_contact_history_len(&m, &len) != DC_OK || len > DC_CONTACT_HISTORY_MAX) abort();
+            /* the frame carry: any code; accepted (0, 1) or refused with the model untouched */
+            dc_contact_model mc = m;
+            const int32_t carry = sel[5] / 4;
+            s = dc_contact_model_set_carry(&mc, carry);
+            if (!known(s)) abort();
+            if (s == DC_OK ? (carry != DC_CARRY_ROTATE && carry != DC_CARRY_PROJECT) || mc.carry != carry
+                           : s != DC_ERR_SPEC_MODEL || memcmp(&mc, &m, sizeof m) != 0)
+                abort();
         }
         break;
     }
     case 25: /* one contact, fuzzed state, dt, history */
     case 26: /* the spheres helper, fuzzed centres */
         if (!full_model(&m, d[0] & 1)) abort();
+        if ((d[7] & 1) && dc_contact_model_set_carry(&m, DC_CARRY_PROJECT) != DC_OK) abort();
         if (which == 25)
             s = dc_contact_force(&m, &st, y[30], (d[1] & 1) ? h : NULL, (size_t)(d[2] % 12), &r);
         else
@@ -109,6 +118,7 @@ static void fuzz_contact(int which, const uint8_t *data, size_t n) {
     case 27: { /* batch of 2 contacts: fuzzed arrays (aliasing the fuzzed doubles), NULL mask;
                 * checked or fused (d[6] & 1) */
         if (!full_model(&m, d[0] & 1)) abort();
+        if ((d[7] & 1) && dc_contact_model_set_carry(&m, DC_CARRY_PROJECT) != DC_OK) abort();
         /* history: 2 contacts at a stride of up to 11 doubles */
         double out[2 + 6 + 6 + 6], out0[20], hb[22];
         for (int i = 0; i < 20; i++) out[i] = SENTINEL;

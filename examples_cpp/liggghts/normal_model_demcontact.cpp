@@ -130,7 +130,8 @@ public:
         return m;
     }
 
-    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    __attribute__((always_inline)) inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces,
+                                                                 ForceData &j_forces)
     {
         if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
         // tangential + rolling_friction demcontact: the combined evaluation of the tangential class
@@ -156,10 +157,16 @@ public:
         sidata.Fn = Fn;
         sidata.kn = 4. / 3. * Yeff[itype][jtype] * sqrtval / force->nktv2p;
         sidata.kt = St / force->nktv2p;
-        // gamman: the Tsuji damping coefficient of this contact (read only by diagnostics)
-        sidata.gamman = pair.alpha * std::sqrt(meff * demcontact_sim::contact_stiffness(pair, reff)) *
-                        (pair.model != DC_MODEL_POWERLAW ? std::sqrt(std::sqrt(deltan))
-                                                      : std::pow(deltan, 0.5 * (pair.p - 1.0)));
+        // gamman: the Tsuji damping coefficient of this contact (no LIGGGHTS 3.8 sub-model reads
+        // it; kept for diagnostics). Hertz: alpha sqrt(m k0 sqrt(R*)) d^(1/4) = c sqrt(m sqrtval)
+        // with c = alpha sqrt(k0): the root the force kernel takes too (the same operands, so the
+        // compiler computes it once; the exact value, rounded differently than three roots).
+        // Viscoelastic pairs have no Tsuji damping (alpha = 0).
+        sidata.gamman = pair.model == DC_MODEL_HERTZ ? pair.c * std::sqrt(meff * sqrtval)
+                        : pair.model == DC_MODEL_POWERLAW
+                            ? pair.alpha * std::sqrt(meff * demcontact_sim::contact_stiffness(pair, reff)) *
+                                  std::pow(deltan, 0.5 * (pair.p - 1.0))
+                            : 0.0;
         sidata.gammat = tangential_damping
                             ? -2. * sqrtFiveOverSix * beta[itype * (ntypes + 1) + jtype] * std::sqrt(St * meff) : 0.0;
 

@@ -42,12 +42,27 @@ inline double contact_stiffness(const dc_pair &c, double r_eff) {
                                         : c.stiffness * std::pow(r_eff, 2.0 - c.p);
 }
 
-/* Normal force [N] (positive = repulsive) for overlap d, normal speed vn (> 0 compressing). */
-inline double contact_force(const dc_pair &c, double d, double vn, double r_eff, double m_eff) {
+/* Normal force of the other pairs: the header's kernel switch; power-law pairs rescaled. */
+inline double contact_force_general(const dc_pair &c, double d, double vn, double r_eff, double m_eff) {
     // Hertz and viscoelastic pairs carry sqrt(r_eff) themselves
     if (c.model != DC_MODEL_POWERLAW) return dc_normal_force_inline(&c, d, vn, r_eff, m_eff);
     const double s = std::pow(r_eff, 2.0 - c.p);
     return s * dc_normal_force_inline(&c, d, vn, r_eff, m_eff / s);
+}
+
+/* Normal force [N] (positive = repulsive) for overlap d, normal speed vn (> 0 compressing). The
+ * two damped Hertz kernels (what both codes' scenes use) with a constant kernel code, so that the
+ * header's switch over 19 kernels folds away and the force is compiled into the host's pair loop
+ * (the same kernel, the same bits); every other pair through contact_force_general. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline double contact_force(const dc_pair &c, double d, double vn, double r_eff, double m_eff) {
+    if (c.kernel == DC_KERNEL_HERTZ_DAMPED)
+        return dc_normal_force_kernel_inline(DC_KERNEL_HERTZ_DAMPED, &c, d, vn, r_eff, m_eff);
+    if (c.kernel == DC_KERNEL_HERTZ_DAMPED_CLAMPED)
+        return dc_normal_force_kernel_inline(DC_KERNEL_HERTZ_DAMPED_CLAMPED, &c, d, vn, r_eff, m_eff);
+    return contact_force_general(c, d, vn, r_eff, m_eff);
 }
 
 } // namespace demcontact_sim
