@@ -158,8 +158,9 @@
 
 /**
  * History springs projected on the new tangent plane and rescaled to their old length, as
- * LAMMPS `granular` and LIGGGHTS `tangential history` do: cheaper, but a pair turning about
- * its normal loads its spring (see docs/force.md). Set with dc_contact_model_set_carry.
+ * LAMMPS `granular` does (LIGGGHTS `tangential history` projects without rescaling): cheaper,
+ * but a pair turning about its normal loads its spring (see docs/force.md). Set with
+ * dc_contact_model_set_carry.
  */
 #define DC_CARRY_PROJECT 1
 
@@ -1124,7 +1125,7 @@ int32_t dc_contact_model_init(const struct dc_contact_spec *spec, struct dc_cont
 
 /**
  * Chooses how the model's history springs follow the contact frame: DC_CARRY_ROTATE (what
- * dc_contact_model_init gives: objective) or DC_CARRY_PROJECT (LAMMPS/LIGGGHTS' projection and
+ * dc_contact_model_init gives: objective) or DC_CARRY_PROJECT (LAMMPS' projection and
  * rescale: cheaper, not objective about the normal). The history layout and length do not
  * change, so a run may switch between the two. Call it at set-up, like dc_contact_model_init.
  *

@@ -985,7 +985,7 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_tilt(double c, dci_v3 k, dci_v3 v) {
 DCI_ALWAYS_INLINE_FN dci_v3 dci_carry(const dci_frame *f, dci_v3 v) {
     DCI_NO_CONTRACT
     if (f->project) {
-        /* |v|^2/|w|^2 in one division and one root, rescaled only while half the length stays in
+        /* |v|^2/|w|^2 in one division and one root, rescaled only while more than half the length stays in
          * the plane (src/contact/frame.rs: same rule, same order) */
         const double l2 = dci_norm2(v);
         const dci_v3 w = dci_tangential(v, f->n);
@@ -1274,12 +1274,13 @@ DC_INLINE_FN int32_t dc_contact_force_inline(const dc_contact_model *model,
              (model->carry == DC_CARRY_ROTATE || model->carry == DC_CARRY_PROJECT);
     for (int i = 0; i < 6; i++) ok = ok && dci_bits(model->reserved[i]) == 0;
     if (!ok) return DC_ERR_CONTACT_MODEL_INVALID;
+    /* the model's values before the history buffer, as the library (model_of) checks them */
+    int32_t st = dci_check_contact_model(model, lay);
+    if (st != DC_OK) return st;
     const size_t need = (size_t)lay.len;
     if (need > 0 && !history) return DC_ERR_NULL_POINTER;
     if (history_len < need) return DC_ERR_BUFFER_TOO_SHORT;
     if (need > 0 && ((uintptr_t)history % sizeof(double)) != 0) return DC_ERR_BUFFER_LAYOUT;
-    int32_t st = dci_check_contact_model(model, lay);
-    if (st != DC_OK) return st;
     if (!isfinite(dt)) return DC_ERR_NOT_FINITE;
     if (!(dt > 0.0)) return DC_ERR_NOT_POSITIVE;
     if ((st = dci_check_contact_state(state)) != DC_OK) return st;

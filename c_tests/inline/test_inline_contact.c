@@ -207,7 +207,7 @@ static void bad_inputs(const dc_contact_model *m) {
     double hbuf[DC_CONTACT_HISTORY_MAX + 1] = {0};
     const double dt = 1e-6;
     /* each case: (model, state, dt, history, len) */
-    for (int c = 0; c < 46; c++) {
+    for (int c = 0; c < 49; c++) {
         dc_contact_model mm = *m;
         dc_contact_state ss = s;
         double hist[DC_CONTACT_HISTORY_MAX + 1];
@@ -266,6 +266,11 @@ static void bad_inputs(const dc_contact_model *m) {
         case 43: ss.overlap = (double)NAN; break;
         case 44: hist[0] = -(double)INFINITY; break;
         case 45: ss.v2[2] = (double)NAN; ss.w1[0] = (double)INFINITY; break;
+        /* an invalid model value together with a bad history buffer: the model's status first,
+         * as the library checks the model before the buffer */
+        case 46: mm.mu = -1.0; hp = NULL; break;
+        case 47: mm.kappa = 0.0; len = 0; break;
+        case 48: mm.normal.k = (double)NAN; hp = (double *)(void *)((char *)hbuf + 4); break;
         default: len = 0; break;
         }
         double hl[DC_CONTACT_HISTORY_MAX + 1], hi2[DC_CONTACT_HISTORY_MAX + 1];

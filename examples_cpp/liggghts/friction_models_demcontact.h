@@ -17,8 +17,9 @@
  * projectionCarry (an on/off setting of both sub-models, default off): how the history springs
  * (tangential, EPSD rolling) follow the contact frame (dc_contact_model_set_carry). off =
  * DC_CARRY_ROTATE (the pair's mean spin, then the tilt of the normal: objective); on =
- * DC_CARRY_PROJECT (projected on the new tangent plane and rescaled to the old length, as
- * LIGGGHTS' own `tangential history`: cheaper, not objective about the normal). LIGGGHTS' settings
+ * DC_CARRY_PROJECT (projected on the new tangent plane and rescaled to the old length, as LAMMPS'
+ * granular; LIGGGHTS' own `tangential history` projects without rescaling: cheaper, not
+ * objective about the normal). LIGGGHTS' settings
  * parser rejects any value but on/off with its own error naming the value.
  *
  * One library call per contact: LIGGGHTS keeps the tangential and the rolling model in separate

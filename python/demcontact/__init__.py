@@ -152,7 +152,7 @@ class Twisting(_enum.IntEnum):
 
 class Carry(_enum.IntEnum):
     """How history springs follow the contact frame (C: DC_CARRY_*): ROTATE (default, objective)
-    or PROJECT (LAMMPS/LIGGGHTS' projection and rescale: cheaper, not objective about n)."""
+    or PROJECT (LAMMPS' projection and rescale: cheaper, not objective about n)."""
 
     ROTATE = _native.CARRY_ROTATE
     PROJECT = _native.CARRY_PROJECT

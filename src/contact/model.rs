@@ -27,7 +27,8 @@ pub mod select {
     /// History springs carried by the frame's rotation (spin, then tilt): objective.
     pub const CARRY_ROTATE: i32 = 0;
     /// History springs projected on the new tangent plane and rescaled to their old length
-    /// (LAMMPS `granular`, LIGGGHTS `history`): cheaper, not objective about the normal.
+    /// (LAMMPS `granular`; LIGGGHTS `history` projects without rescaling): cheaper, not
+    /// objective about the normal.
     pub const CARRY_PROJECT: i32 = 1;
 }
 

@@ -54,8 +54,9 @@ pub const DC_TWISTING_SDS: i32 = 1;
 /// of the normal): objective under any rigid rotation of the pair. Default.
 pub const DC_CARRY_ROTATE: i32 = 0;
 /// History springs projected on the new tangent plane and rescaled to their old length, as
-/// LAMMPS `granular` and LIGGGHTS `tangential history` do: cheaper, but a pair turning about
-/// its normal loads its spring (see docs/force.md). Set with dc_contact_model_set_carry.
+/// LAMMPS `granular` does (LIGGGHTS `tangential history` projects without rescaling): cheaper,
+/// but a pair turning about its normal loads its spring (see docs/force.md). Set with
+/// dc_contact_model_set_carry.
 pub const DC_CARRY_PROJECT: i32 = 1;
 
 const _: () = assert!(
@@ -490,7 +491,7 @@ pub unsafe extern "C" fn dc_contact_model_init(
 }
 
 /// Chooses how the model's history springs follow the contact frame: DC_CARRY_ROTATE (what
-/// dc_contact_model_init gives: objective) or DC_CARRY_PROJECT (LAMMPS/LIGGGHTS' projection and
+/// dc_contact_model_init gives: objective) or DC_CARRY_PROJECT (LAMMPS' projection and
 /// rescale: cheaper, not objective about the normal). The history layout and length do not
 /// change, so a run may switch between the two. Call it at set-up, like dc_contact_model_init.
 ///
