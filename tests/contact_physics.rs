@@ -317,6 +317,42 @@ fn frame_indifference_rigid_rotation() {
     );
 }
 
+/// A stuck pair (state `at_rest`, centres `x1`, `x2`, history `h0`) turned rigidly about `axis`
+/// by `total` radians over `steps` steps of `dt` (v_i = Ω × x_i, ω_i = Ω); `each` gets every
+/// step's result and that step's rotation R_k.
+#[allow(clippy::too_many_arguments)]
+fn turn_rigidly(
+    m: &dc_contact_model,
+    at_rest: &dc_contact_state,
+    h0: &[f64; DC_CONTACT_HISTORY_MAX],
+    (x1, x2): (V, V),
+    axis: V,
+    total: f64,
+    steps: usize,
+    dt: f64,
+    mut each: impl FnMut(&dc_contact_result, &dyn Fn(V) -> V),
+) {
+    let om = sc(total / (steps as f64 * dt), axis);
+    let mut h = *h0;
+    for k in 1..=steps {
+        let r = |v: V| rot(axis, total * k as f64 / steps as f64, v);
+        let st = dc_contact_state {
+            n: r(at_rest.n),
+            v1: cross(om, r(x1)),
+            v2: cross(om, r(x2)),
+            w1: om,
+            w2: om,
+            ..*at_rest
+        };
+        let mut res = ZERO_RESULT;
+        assert_eq!(
+            unsafe { dc_contact_force(m, &st, dt, h.as_mut_ptr(), h.len(), &mut res) },
+            DC_OK
+        );
+        each(&res, &r);
+    }
+}
+
 #[test]
 fn frame_indifference_rigidly_spinning_stuck_pair() {
     // Two spheres stuck together (loaded tangential and rolling springs) spinning as one rigid
@@ -386,33 +422,27 @@ fn frame_indifference_rigidly_spinning_stuck_pair() {
         for axis in test_axes() {
             for deg in [1.0f64, 90.0] {
                 let total = deg.to_radians();
-                let om = sc(total / (steps as f64 * dt), axis);
-                let mut h = h0;
                 let mut worst = 0.0f64;
-                for k in 1..=steps {
-                    let r = |v: V| rot(axis, total * k as f64 / steps as f64, v);
-                    let st = dc_contact_state {
-                        n: r(n0),
-                        v1: cross(om, r(x1)),
-                        v2: cross(om, r(x2)),
-                        w1: om,
-                        w2: om,
-                        ..at_rest
-                    };
-                    let mut res = ZERO_RESULT;
-                    assert_eq!(
-                        unsafe { dc_contact_force(&m, &st, dt, h.as_mut_ptr(), h.len(), &mut res) },
-                        DC_OK
-                    );
-                    for (a, b) in [
-                        (res.force, rest.force),
-                        (res.ft, rest.ft),
-                        (res.torque1, rest.torque1),
-                        (res.torque2, rest.torque2),
-                    ] {
-                        worst = worst.max(norm(sub(a, r(b))) / norm(b));
-                    }
-                }
+                turn_rigidly(
+                    &m,
+                    &at_rest,
+                    &h0,
+                    (x1, x2),
+                    axis,
+                    total,
+                    steps,
+                    dt,
+                    |res, r| {
+                        for (a, b) in [
+                            (res.force, rest.force),
+                            (res.ft, rest.ft),
+                            (res.torque1, rest.torque1),
+                            (res.torque2, rest.torque2),
+                        ] {
+                            worst = worst.max(norm(sub(a, r(b))) / norm(b));
+                        }
+                    },
+                );
                 println!(
                     "tangential {t}: stuck pair spinning {deg:>2} deg in {steps} steps about \
                      ({:+.3}, {:+.3}, {:+.3}): worst deviation from R F {worst:.2e}",
@@ -614,26 +644,20 @@ fn projection_carry_trade_measured() {
         for (name, axis) in [("n", n0), ("perpendicular to n", perp)] {
             for deg in [1.0f64, 10.0, 90.0] {
                 let total = deg.to_radians();
-                let om = sc(total / (steps as f64 * dt), axis);
-                let mut h = h0;
                 let mut dev = 0.0;
-                for k in 1..=steps {
-                    let r = |v: V| rot(axis, total * k as f64 / steps as f64, v);
-                    let st = dc_contact_state {
-                        n: r(n0),
-                        v1: cross(om, r(x1)),
-                        v2: cross(om, r(x2)),
-                        w1: om,
-                        w2: om,
-                        ..at_rest
-                    };
-                    let mut res = ZERO_RESULT;
-                    assert_eq!(
-                        unsafe { dc_contact_force(&m, &st, dt, h.as_mut_ptr(), h.len(), &mut res) },
-                        DC_OK
-                    );
-                    dev = norm(sub(res.ft, r(rest.ft))) / norm(rest.ft);
-                }
+                turn_rigidly(
+                    &m,
+                    &at_rest,
+                    &h0,
+                    (x1, x2),
+                    axis,
+                    total,
+                    steps,
+                    dt,
+                    |res, r| {
+                        dev = norm(sub(res.ft, r(rest.ft))) / norm(rest.ft);
+                    },
+                );
                 println!(
                     "carry {carry}: stuck pair turned {deg:>2} deg about {name}: |F_t - R F_t| / \
                      |F_t| = {dev:.3e} at the end (2 sin(θ/2) = {:.3e})",
