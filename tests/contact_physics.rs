@@ -317,6 +317,42 @@ fn frame_indifference_rigid_rotation() {
     );
 }
 
+/// Two glass spheres at rest in contact (r2 = 1.3 r1, overlap 1e-6 m, normal not along an axis),
+/// body 2 at the origin, with loaded tangential and rolling springs below their limits in the
+/// history layout of a model with both (normal, ξ, rolling torque): (state, (x1, x2), history).
+/// The spring is large against the rounding of the rigid velocities (|Ω| |x| dt ~ |ξ|): the
+/// kernel cancels Ω × (x1 − x2) against the lever arms, and what rounding leaves of
+/// ~1e-16 |Ω| |x| enters ξ every step.
+fn stuck_pair() -> (dc_contact_state, (V, V), [f64; DC_CONTACT_HISTORY_MAX]) {
+    let (r1, r2, d) = (R, 1.3 * R, 1e-6);
+    let n0 = {
+        let v = [0.3, -0.5, 0.8];
+        sc(1.0 / norm(v), v)
+    };
+    let m1 = RHO * 4.0 / 3.0 * std::f64::consts::PI * r1 * r1 * r1;
+    let xi = {
+        let a = [1.0, 0.2, -0.4];
+        sc(1e-6 / norm(a), sub(a, sc(dot(a, n0), n0)))
+    };
+    let mut h0 = [0.0; DC_CONTACT_HISTORY_MAX];
+    h0[..3].copy_from_slice(&n0);
+    h0[3..6].copy_from_slice(&xi);
+    h0[6..9].copy_from_slice(&sc(1e-6 / norm(xi), cross(n0, xi)));
+    let at_rest = dc_contact_state {
+        n: n0,
+        overlap: d,
+        v1: [0.0; 3],
+        v2: [0.0; 3],
+        w1: [0.0; 3],
+        w2: [0.0; 3],
+        r1,
+        r2,
+        m1,
+        m2: 2.197 * m1,
+    };
+    (at_rest, (sc(r1 + r2 - d, n0), [0.0; 3]), h0)
+}
+
 /// A stuck pair (state `at_rest`, centres `x1`, `x2`, history `h0`) turned rigidly about `axis`
 /// by `total` radians over `steps` steps of `dt` (v_i = Ω × x_i, ω_i = Ω); `each` gets every
 /// step's result and that step's rotation R_k.
@@ -371,40 +407,9 @@ fn frame_indifference_rigidly_spinning_stuck_pair() {
             s.mu_tw = 1e-3;
             s.k_tw = 1e-4;
         });
-        let (r1, r2, d) = (R, 1.3 * R, 1e-6);
-        let n0 = {
-            let v = [0.3, -0.5, 0.8];
-            sc(1.0 / norm(v), v)
-        };
-        // Body 2 at the origin, and a spring large against the rounding of the rigid
-        // velocities (|Ω| |x| dt ~ |ξ|): the kernel cancels Ω × (x1 − x2) against the lever
-        // arms, and what rounding leaves of ~1e-16 |Ω| |x| enters ξ every step.
-        let (x2, x1) = ([0.0; 3], sc(r1 + r2 - d, n0));
-        let m1 = RHO * 4.0 / 3.0 * std::f64::consts::PI * r1 * r1 * r1;
-        let m2 = m1 * 2.197;
-        // Loaded springs: tangential ξ, rolling torque and twisting torque, all below their limits.
-        let xi = {
-            let a = [1.0, 0.2, -0.4];
-            sc(1e-6 / norm(a), sub(a, sc(dot(a, n0), n0)))
-        };
-        let mr = sc(1e-6 / norm(xi), cross(n0, xi));
-        let mut h0 = [0.0; DC_CONTACT_HISTORY_MAX];
-        h0[..3].copy_from_slice(&n0);
-        h0[3..6].copy_from_slice(&xi);
-        h0[6..9].copy_from_slice(&mr);
+        let (at_rest, centres, mut h0) = stuck_pair();
+        // The twisting spring too, below its limit.
         h0[9] = 2e-7;
-        let at_rest = dc_contact_state {
-            n: n0,
-            overlap: d,
-            v1: [0.0; 3],
-            v2: [0.0; 3],
-            w1: [0.0; 3],
-            w2: [0.0; 3],
-            r1,
-            r2,
-            m1,
-            m2,
-        };
         let dt = 1e-8;
         let mut rest = ZERO_RESULT;
         let mut h = h0;
@@ -427,7 +432,7 @@ fn frame_indifference_rigidly_spinning_stuck_pair() {
                     &m,
                     &at_rest,
                     &h0,
-                    (x1, x2),
+                    centres,
                     axis,
                     total,
                     steps,
@@ -601,33 +606,8 @@ fn projection_carry_trade_measured() {
         assert_eq!(unsafe { dc_contact_model_set_carry(&mut m, carry) }, DC_OK);
         m
     };
-    let (r1, r2, d) = (R, 1.3 * R, 1e-6);
-    let n0 = {
-        let v = [0.3, -0.5, 0.8];
-        sc(1.0 / norm(v), v)
-    };
-    let (x2, x1) = ([0.0; 3], sc(r1 + r2 - d, n0));
-    let m1 = RHO * 4.0 / 3.0 * std::f64::consts::PI * r1 * r1 * r1;
-    let xi = {
-        let a = [1.0, 0.2, -0.4];
-        sc(1e-6 / norm(a), sub(a, sc(dot(a, n0), n0)))
-    };
-    let mut h0 = [0.0; DC_CONTACT_HISTORY_MAX];
-    h0[..3].copy_from_slice(&n0);
-    h0[3..6].copy_from_slice(&xi);
-    h0[6..9].copy_from_slice(&sc(1e-6 / norm(xi), cross(n0, xi)));
-    let at_rest = dc_contact_state {
-        n: n0,
-        overlap: d,
-        v1: [0.0; 3],
-        v2: [0.0; 3],
-        w1: [0.0; 3],
-        w2: [0.0; 3],
-        r1,
-        r2,
-        m1,
-        m2: 2.197 * m1,
-    };
+    let (at_rest, centres, h0) = stuck_pair();
+    let n0 = at_rest.n;
     let (dt, steps) = (1e-8, 3000);
     let perp = {
         let a = cross(n0, [0.0, 0.0, 1.0]);
@@ -649,7 +629,7 @@ fn projection_carry_trade_measured() {
                     &m,
                     &at_rest,
                     &h0,
-                    (x1, x2),
+                    centres,
                     axis,
                     total,
                     steps,

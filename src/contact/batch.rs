@@ -565,22 +565,16 @@ fn compute_guarded(
     out: &mut BatchOut<'_>,
 ) -> Result<Option<usize>, Error> {
     let n = inp.overlap.len();
-    let len = m.layout.len;
-    if len == 0 {
+    if m.layout.len == 0 {
         // No history to keep: no stack buffer to fill.
         let mut first = None;
-        let mut a = 0;
-        while a < n {
-            let b = n.min(a + GUARD);
-            let (Some(ci), Some(mut co)) = (sub_in(inp, a, b), sub_out(out, 0, a, b)) else {
-                return Err(Error::BufferTooShort);
-            };
-            compute(m, &ci, dt, &mut co)?;
-            if !outputs_finite(&co, 0) {
-                first = first.or(poison_overflowed(&mut co, 0, 0, &[])?.map(|i| a + i));
+        for_blocks(inp, out, 0, GUARD, |a, ci, co| {
+            compute(m, ci, dt, co)?;
+            if !outputs_finite(co, 0) {
+                first = first.or(poison_overflowed(co, 0, 0, &[])?.map(|i| a + i));
             }
-            a = b;
-        }
+            Ok(())
+        })?;
         return Ok(first);
     }
     // The zeroed stack buffer is paid on every call: a short batch gets a short one.
@@ -598,19 +592,13 @@ fn guarded_with_history<const G: usize>(
     dt: f64,
     out: &mut BatchOut<'_>,
 ) -> Result<Option<usize>, Error> {
-    let n = inp.overlap.len();
     let len = m.layout.len;
     // The block's history records copied aside in one memcpy (the records' tails past `len`
     // are the host's and come along unused); records wider than HISTORY_MAX, value by value.
     let mut saved = [[0.0; HISTORY_MAX]; G];
     let saved = saved.as_flattened_mut();
     let mut first = None;
-    let mut a = 0;
-    while a < n {
-        let b = n.min(a + G);
-        let (Some(ci), Some(mut co)) = (sub_in(inp, a, b), sub_out(out, len, a, b)) else {
-            return Err(Error::BufferTooShort);
-        };
+    for_blocks(inp, out, len, G, |a, ci, co| {
         let stride = co.stride;
         let wide = stride > HISTORY_MAX;
         let rec = if wide { len } else { stride };
@@ -626,14 +614,38 @@ fn guarded_with_history<const G: usize>(
             let s = saved.get_mut(..h.len()).ok_or(Error::BufferTooShort)?;
             s.copy_from_slice(h);
         }
-        compute(m, &ci, dt, &mut co)?;
-        if !outputs_finite(&co, len) {
-            let kept = saved.get(..(b - a) * rec).ok_or(Error::BufferTooShort)?;
-            first = first.or(poison_overflowed(&mut co, len, rec, kept)?.map(|i| a + i));
+        compute(m, ci, dt, co)?;
+        if !outputs_finite(co, len) {
+            let kept = saved
+                .get(..co.f_n.len() * rec)
+                .ok_or(Error::BufferTooShort)?;
+            first = first.or(poison_overflowed(co, len, rec, kept)?.map(|i| a + i));
         }
+        Ok(())
+    })?;
+    Ok(first)
+}
+
+/// Runs `f(a, in, out)` on the blocks [a, a + g) of the batch in order (the last one shorter),
+/// outputs and history (records of `len` values) sliced to the block.
+fn for_blocks(
+    inp: &BatchIn<'_>,
+    out: &mut BatchOut<'_>,
+    len: usize,
+    g: usize,
+    mut f: impl FnMut(usize, &BatchIn<'_>, &mut BatchOut<'_>) -> Result<(), Error>,
+) -> Result<(), Error> {
+    let n = inp.overlap.len();
+    let mut a = 0;
+    while a < n {
+        let b = n.min(a + g);
+        let (Some(ci), Some(mut co)) = (sub_in(inp, a, b), sub_out(out, len, a, b)) else {
+            return Err(Error::BufferTooShort);
+        };
+        f(a, &ci, &mut co)?;
         a = b;
     }
-    Ok(first)
+    Ok(())
 }
 
 /// The slow path of [`compute_guarded`]: each contact of the block whose outputs or first
