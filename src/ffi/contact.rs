@@ -513,7 +513,8 @@ pub unsafe extern "C" fn dc_contact_model_set_carry(
     // SAFETY: forwarded caller contract on model (written by value on success only).
     unsafe {
         write_result(model, || {
-            crate::contact::evaluate::check_model(&model_of(&m)?)?;
+            // model_of runs every model check (those of check_model too).
+            model_of(&m)?;
             if !matches!(carry, DC_CARRY_ROTATE | DC_CARRY_PROJECT) {
                 return Err(Error::SpecModel);
             }
@@ -543,9 +544,8 @@ pub unsafe extern "C" fn dc_contact_history_len(
     // SAFETY: forwarded caller contract on len_out.
     unsafe {
         write_result(len_out, || {
-            let cm = model_of(m)?;
-            crate::contact::evaluate::check_model(&cm)?;
-            Ok(cm.layout.len)
+            // model_of runs every model check (those of check_model too).
+            Ok(model_of(m)?.layout.len)
         })
     }
 }
