@@ -423,11 +423,10 @@ DC_INLINE_FN double dc_normal_force_inline(const dc_pair *pair, double overlap, 
  * kernel), so fe = el + c' 0.0, rounded and finished as the kernel would (c' 0.0 is kept: it is
  * -0 or NaN for some c'; no compiler folds it without -ffast-math); the elastic kernels and
  * unknown codes do not read vn, so fe = f. */
-DCI_ALWAYS_INLINE_FN double dci_normal_force_fe(const dc_pair *pair, double d, double vn, double r,
-                                                double m, double *fe) {
+DCI_ALWAYS_INLINE_FN double dci_normal_force_fe(const dc_pair *pair, int32_t kernel, double d,
+                                                double vn, double r, double m, double *fe) {
     DCI_NO_CONTRACT
     const double k = pair->k, c = pair->c, h = pair->h;
-    const int32_t kernel = pair->kernel;
     double el, cd;
     int clamp;
     switch (kernel) {
@@ -1139,20 +1138,38 @@ DCI_ALWAYS_INLINE_FN dci_layout dci_layout_of(int32_t tangential, int32_t rollin
     return l;
 }
 
+/* A model's selectors: its normal kernel, sub-model codes and frame carry (the fields
+ * normal.kernel, tangential, rolling, twisting, carry). The evaluation reads them from here, not
+ * from the model, so that a host passing constants gets code for that shape alone. */
+typedef struct dci_shape {
+    int32_t kernel, tangential, rolling, twisting, carry;
+} dci_shape;
+
+DCI_ALWAYS_INLINE_FN dci_shape dci_shape_of(const dc_contact_model *m) {
+    dci_shape sh;
+    sh.kernel = m->normal.kernel;
+    sh.tangential = m->tangential;
+    sh.rolling = m->rolling;
+    sh.twisting = m->twisting;
+    sh.carry = m->carry;
+    return sh;
+}
+
 /* One contact through every stage (src/contact/evaluate.rs `evaluate`); h: the history, its
  * first lay.len entries read and written, no others (the library's history is lay.len long; a
- * model without history (lay.len = 0) starts from a zero normal, as from a zeroed buffer). */
-DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_layout lay,
-                                               const dc_contact_state *s, double dt, double *h,
-                                               dc_contact_result *out) {
+ * model without history (lay.len = 0) starts from a zero normal, as from a zeroed buffer).
+ * sh: the model's own selectors (dci_shape_of, or the same values as constants). */
+DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_shape sh,
+                                               dci_layout lay, const dc_contact_state *s,
+                                               double dt, double *h, dc_contact_result *out) {
     DCI_NO_CONTRACT
     dci_frame frame;
     const dci_v3 n_old = lay.len > 0 ? dci_v(h[0], h[1], h[2]) : dci_v(0.0, 0.0, 0.0);
-    const dci_kin k = dci_kin_of(s, n_old, dt, m->carry, &frame);
+    const dci_kin k = dci_kin_of(s, n_old, dt, sh.carry, &frame);
     const dc_pair *pair = &m->normal;
     /* fe: the force at vn = 0, for Ai's rolling stiffness rule below (same pass, same bits) */
     double fe;
-    const double f = dci_normal_force_fe(pair, k.d, k.vn, k.r_eff, k.m_eff, &fe);
+    const double f = dci_normal_force_fe(pair, sh.kernel, k.d, k.vn, k.r_eff, k.m_eff, &fe);
     dci_v3 ft = dci_v(0.0, 0.0, 0.0), t1 = dci_v(0.0, 0.0, 0.0), t2 = dci_v(0.0, 0.0, 0.0);
     dci_v3 force;
     int sliding = 0, rolling_sliding = 0;
@@ -1161,7 +1178,7 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_la
         /* not touching: history reset, only an adhesive normal law acts */
         for (int i = 0; i < lay.len; i++) h[i] = 0.0;
         force = dci_normal_vector(f, k.n);
-    } else if (lay.len == 0 && m->rolling == DC_ROLLING_NONE) {
+    } else if (lay.len == 0 && sh.rolling == DC_ROLLING_NONE) {
         force = dci_normal_vector(f, k.n);
     } else {
         if (lay.len > 0) {
@@ -1172,9 +1189,9 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_la
         force = dci_normal_vector(f, k.n);
         if (lay.tangential >= 0) {
             dci_v3 xi = dci_v(h[lay.tangential], h[lay.tangential + 1], h[lay.tangential + 2]);
-            const double kt = m->tangential == DC_TANGENTIAL_MINDLIN ? m->kt * sqrt(k.r_eff * k.d)
+            const double kt = sh.tangential == DC_TANGENTIAL_MINDLIN ? m->kt * sqrt(k.r_eff * k.d)
                                                                     : m->kt;
-            if (m->tangential == DC_TANGENTIAL_LINEAR || m->tangential == DC_TANGENTIAL_MINDLIN)
+            if (sh.tangential == DC_TANGENTIAL_LINEAR || sh.tangential == DC_TANGENTIAL_MINDLIN)
                 ft = dci_tangential_step(m, &k, kt, f, dt, &frame, &xi, &sliding);
             h[lay.tangential] = xi.x;
             h[lay.tangential + 1] = xi.y;
@@ -1184,11 +1201,11 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_la
             t1 = dci_scale(-k.a1, nft);
             if (!k.wall) t2 = dci_scale(-k.a2, nft);
         }
-        if (m->rolling == DC_ROLLING_CONSTANT) {
+        if (sh.rolling == DC_ROLLING_CONSTANT) {
             const dci_v3 mr = dci_rolling_constant(m, &k, f, &rolling_sliding);
             t1 = dci_add(t1, mr);
             if (!k.wall) t2 = dci_sub(t2, mr);
-        } else if (m->rolling == DC_ROLLING_EPSD && lay.rolling >= 0) {
+        } else if (sh.rolling == DC_ROLLING_EPSD && lay.rolling >= 0) {
             double kn = 0.0;
             if (!(m->k_r > 0.0)) {
                 /* the normal law's elastic tangent stiffness p F_el/d (vn = 0: no damping) */
@@ -1290,7 +1307,7 @@ DC_INLINE_FN int32_t dc_contact_force_inline(const dc_contact_model *model,
     double h[DC_CONTACT_HISTORY_MAX];
     if (!(dci_copy_nf(h, history, n) == 0.0)) return DC_ERR_NOT_FINITE;
     dc_contact_result r;
-    dci_contact_evaluate(model, lay, state, dt, h, &r);
+    dci_contact_evaluate(model, dci_shape_of(model), lay, state, dt, h, &r);
     if (!(dci_result_finite(&r) && dci_copy_nf(NULL, h, n) == 0.0)) return DC_ERR_RESULT_RANGE;
     dci_copy_nf(history, h, n);
     *out = r;
@@ -1322,11 +1339,11 @@ DC_INLINE_FN int32_t dc_contact_model_check_inline(const dc_contact_model *model
  * inputs (NULL state/out, dt, the state's values, the history's values, the results' range), in
  * the same order. For such a model and history: the same status, result and history bits as
  * dc_contact_force (ctest inline_contact_*); outputs untouched on error. */
-DC_INLINE_FN int32_t dc_contact_force_checked_inline(const dc_contact_model *model,
-                                                     const dc_contact_state *state, double dt,
-                                                     double *history, dc_contact_result *out) {
+DCI_ALWAYS_INLINE_FN int32_t dci_force_checked(const dc_contact_model *model, dci_shape sh,
+                                               const dc_contact_state *state, double dt,
+                                               double *history, dc_contact_result *out) {
     if (!state || !out) return DC_ERR_NULL_POINTER;
-    const dci_layout lay = dci_layout_of(model->tangential, model->rolling, model->twisting);
+    const dci_layout lay = dci_layout_of(sh.tangential, sh.rolling, sh.twisting);
     if (!isfinite(dt)) return DC_ERR_NOT_FINITE;
     if (!(dt > 0.0)) return DC_ERR_NOT_POSITIVE;
     int32_t st = dci_check_contact_state(state);
@@ -1336,11 +1353,54 @@ DC_INLINE_FN int32_t dc_contact_force_checked_inline(const dc_contact_model *mod
     double h[DC_CONTACT_HISTORY_MAX];
     if (!(dci_copy_nf(h, history, need) == 0.0)) return DC_ERR_NOT_FINITE;
     dc_contact_result r;
-    dci_contact_evaluate(model, lay, state, dt, h, &r);
+    dci_contact_evaluate(model, sh, lay, state, dt, h, &r);
     if (!(dci_result_finite(&r) && dci_copy_nf(NULL, h, need) == 0.0)) return DC_ERR_RESULT_RANGE;
     dci_copy_nf(history, h, need);
     *out = r;
     return DC_OK;
+}
+
+DC_INLINE_FN int32_t dc_contact_force_checked_inline(const dc_contact_model *model,
+                                                     const dc_contact_state *state, double dt,
+                                                     double *history, dc_contact_result *out) {
+    return dci_force_checked(model, dci_shape_of(model), state, dt, history, out);
+}
+
+/* ---- shaped fast entry (one instantiation per model shape a host runs) */
+
+/* DC_OK when dc_contact_model_check_inline accepts `model` and its normal.kernel, tangential,
+ * rolling, twisting and carry equal the five codes given (the model's shape); else
+ * DC_ERR_NULL_POINTER or DC_ERR_CONTACT_MODEL_INVALID. A host checks this once per model before
+ * it calls dc_contact_force_shaped_inline with the same codes. */
+DC_INLINE_FN int32_t dc_contact_model_shape_inline(const dc_contact_model *model, int32_t kernel,
+                                                   int32_t tangential, int32_t rolling,
+                                                   int32_t twisting, int32_t carry) {
+    const int32_t st = dc_contact_model_check_inline(model);
+    if (st != DC_OK) return st;
+    const int same = model->normal.kernel == kernel && model->tangential == tangential &&
+                     model->rolling == rolling && model->twisting == twisting &&
+                     model->carry == carry;
+    return same ? DC_OK : DC_ERR_CONTACT_MODEL_INVALID;
+}
+
+/* dc_contact_force_checked_inline with the model's shape given by the caller: kernel,
+ * tangential, rolling, twisting, carry must be the model's own (dc_contact_model_shape_inline
+ * returned DC_OK for them; the caller's contract, not checked here). Written with constants (a
+ * C++ template parameter, a switch case per shape), the compiler keeps only the kernel and the
+ * stages of that shape: no selector branches, a constant history length, a smaller function.
+ * Same statuses, results and history bits as dc_contact_force_checked_inline (ctest
+ * inline_contact_*). Always inlined. */
+DCI_ALWAYS_INLINE_FN int32_t dc_contact_force_shaped_inline(
+    const dc_contact_model *model, int32_t kernel, int32_t tangential, int32_t rolling,
+    int32_t twisting, int32_t carry, const dc_contact_state *state, double dt, double *history,
+    dc_contact_result *out) {
+    dci_shape sh;
+    sh.kernel = kernel;
+    sh.tangential = tangential;
+    sh.rolling = rolling;
+    sh.twisting = twisting;
+    sh.carry = carry;
+    return dci_force_checked(model, sh, state, dt, history, out);
 }
 
 /* ---- dc_contact_model_init_inline (src/contact/spec.rs contact_model) */

@@ -17,6 +17,10 @@
  *    the test also requires that sliding, sticking, rolling-limit and separation steps occurred;
  *  - the fast entry dc_contact_force_checked_inline (model checked once by
  *    dc_contact_model_check_inline) along the same trajectories and bad inputs: same bits;
+ *  - the shaped entry dc_contact_force_shaped_inline along the same trajectories: 108 shapes
+ *    with their codes as compile-time constants (as the plugins instantiate it), the others as
+ *    run-time codes: same statuses and bits; dc_contact_model_shape_inline accepts a model's own
+ *    shape only;
  *  - bad input: NULL pointers, short/misaligned history, dt NaN/0/<0, NaN/inf/zero/non-unit
  *    states, NaN in the history, corrupted models: the same status, outputs untouched.
  * Prints "test_inline_contact[...]: N passed, M failed". */
@@ -110,10 +114,74 @@ static int same_result(const dc_contact_result *a, const dc_contact_result *b) {
     return memcmp(a, b, sizeof *a) == 0;
 }
 
+/* dc_contact_force_shaped_inline with the model's shape as compile-time constants, as a host
+ * instantiates it (one call per shape; the compiler keeps only that shape's kernel and stages):
+ * Hertz damped, Hertz damped clamped and general p clamped, every tangential, rolling, twisting
+ * and carry code. Other kernels: the shape passed as run-time values. Counts constant calls. */
+static long n_shaped_const = 0, n_shaped_runtime = 0;
+#define SH_C(K, T, R, TW)                                                                          \
+    n_shaped_const++;                                                                              \
+    if (m->carry == DC_CARRY_ROTATE)                                                               \
+        return dc_contact_force_shaped_inline(m, K, T, R, TW, DC_CARRY_ROTATE, s, dt, h, o);       \
+    return dc_contact_force_shaped_inline(m, K, T, R, TW, DC_CARRY_PROJECT, s, dt, h, o);
+#define SH_TW(K, T, R)                                                                             \
+    if (m->twisting == DC_TWISTING_NONE) {                                                         \
+        SH_C(K, T, R, DC_TWISTING_NONE)                                                            \
+    }                                                                                              \
+    SH_C(K, T, R, DC_TWISTING_SDS)
+#define SH_R(K, T)                                                                                 \
+    switch (m->rolling) {                                                                          \
+    case DC_ROLLING_NONE: SH_TW(K, T, DC_ROLLING_NONE)                                             \
+    case DC_ROLLING_CONSTANT: SH_TW(K, T, DC_ROLLING_CONSTANT)                                     \
+    default: SH_TW(K, T, DC_ROLLING_EPSD)                                                          \
+    }
+#define SH_T(K)                                                                                    \
+    switch (m->tangential) {                                                                       \
+    case DC_TANGENTIAL_NONE: SH_R(K, DC_TANGENTIAL_NONE)                                           \
+    case DC_TANGENTIAL_LINEAR: SH_R(K, DC_TANGENTIAL_LINEAR)                                       \
+    default: SH_R(K, DC_TANGENTIAL_MINDLIN)                                                        \
+    }
+static int32_t shaped(const dc_contact_model *m, const dc_contact_state *s, double dt, double *h,
+                      dc_contact_result *o) {
+    switch (m->normal.kernel) {
+    case DC_KERNEL_HERTZ_DAMPED: SH_T(DC_KERNEL_HERTZ_DAMPED)
+    case DC_KERNEL_HERTZ_DAMPED_CLAMPED: SH_T(DC_KERNEL_HERTZ_DAMPED_CLAMPED)
+    case DC_KERNEL_GEN_DAMPED_CLAMPED: SH_T(DC_KERNEL_GEN_DAMPED_CLAMPED)
+    default:
+        n_shaped_runtime++;
+        return dc_contact_force_shaped_inline(m, m->normal.kernel, m->tangential, m->rolling,
+                                              m->twisting, m->carry, s, dt, h, o);
+    }
+}
+
+/* dc_contact_model_shape_inline: DC_OK for the model's own shape only. */
+static void shape_check(const dc_contact_model *m) {
+    const int32_t k = m->normal.kernel, t = m->tangential, r = m->rolling, tw = m->twisting,
+                  c = m->carry;
+    if (dc_contact_model_shape_inline(m, k, t, r, tw, c) != DC_OK) fail("shape of its own model", 0);
+    const int32_t other[5][5] = {{k == DC_KERNEL_HERTZ_DAMPED ? DC_KERNEL_HERTZ_DAMPED_CLAMPED
+                                                              : DC_KERNEL_HERTZ_DAMPED, t, r, tw, c},
+                                 {k, (t + 1) % 3, r, tw, c},
+                                 {k, t, (r + 1) % 3, tw, c},
+                                 {k, t, r, 1 - tw, c},
+                                 {k, t, r, tw, 1 - c}};
+    for (int i = 0; i < 5; i++)
+        if (dc_contact_model_shape_inline(m, other[i][0], other[i][1], other[i][2], other[i][3],
+                                          other[i][4]) != DC_ERR_CONTACT_MODEL_INVALID)
+            fail("shape of another model", i);
+    dc_contact_model bad = *m;
+    bad.mu = -1.0;
+    if (dc_contact_model_shape_inline(&bad, k, t, r, tw, c) != DC_ERR_CONTACT_MODEL_INVALID ||
+        dc_contact_model_shape_inline(NULL, k, t, r, tw, c) != DC_ERR_NULL_POINTER)
+        fail("shape of an invalid model / NULL", 0);
+}
+
 /* One contact evolved over `steps` steps of `m`; counts of regimes seen added to `seen`. */
 static void trajectory(const dc_contact_model *m, long steps, long *seen) {
     double hl[DC_CONTACT_HISTORY_MAX] = {0}, hi[DC_CONTACT_HISTORY_MAX] = {0};
     double hc[DC_CONTACT_HISTORY_MAX] = {0}; /* dc_contact_force_checked_inline's own history */
+    double hs[DC_CONTACT_HISTORY_MAX] = {0}; /* dc_contact_force_shaped_inline's */
+    shape_check(m);
     if (dc_contact_model_check_inline(m) != DC_OK) {
         fail("model_check of a valid model", 0);
         return;
@@ -163,8 +231,15 @@ static void trajectory(const dc_contact_model *m, long steps, long *seen) {
         dc_contact_result rc;
         memset(&rc, 0x5A, sizeof rc);
         const int32_t sc = dc_contact_force_checked_inline(m, &s, dt, hc, &rc);
-        if (sl != si || sl != sc) {
+        dc_contact_result rs;
+        memset(&rs, 0x5A, sizeof rs);
+        const int32_t ss = shaped(m, &s, dt, hs, &rs);
+        if (sl != si || sl != sc || sl != ss) {
             fail("contact status", i);
+            return;
+        }
+        if (!same_result(&rl, &rs) || memcmp(hl, hs, sizeof hl) != 0) {
+            fail("shaped entry: contact result/history bits", i);
             return;
         }
         if (!same_result(&rl, &rc) || memcmp(hl, hc, sizeof hl) != 0) {
@@ -458,9 +533,12 @@ int main(int argc, char **argv) {
            seen[6], seen[7], seen[5]);
     printf("test_inline_contact[%s]: %ld of the trajectories with the projection carry\n", LANG,
            projected);
+    printf("test_inline_contact[%s]: shaped entry: %ld steps with a constant shape, %ld with a "
+           "run-time one\n", LANG, n_shaped_const, n_shaped_runtime);
     /* the comparison must have exercised every regime */
     if (!(seen[1] > 1000 && seen[2] > 1000 && seen[3] > 1000 && seen[4] > 1000 && seen[6] > 1000 &&
-          seen[7] > 1000 && specs_bad > 1000 && projected * 4 > models))
+          seen[7] > 1000 && specs_bad > 1000 && projected * 4 > models &&
+          n_shaped_const * 10 > n_shaped_runtime && n_shaped_runtime > 1000))
         fail("coverage of regimes", 0);
     printf("test_inline_contact[%s]: %ld passed, %ld failed\n", LANG, n_pass, n_fail);
     return n_fail ? 1 : 0;

@@ -49,6 +49,7 @@
 
 #include <demcontact.h>
 #include "tsuji_force.h"
+#include "demcontact_shaped.h"
 
 #include <cmath>
 #include <cstring>
@@ -304,6 +305,9 @@ struct Model {
     int nh = 0;
     dc_pair pair{};
     dc_contact_model cm{};
+    // the full contact's evaluation: the instantiation of cm's shape (demcontact_shaped.h) or the
+    // generic entry; set by make_model
+    demcontact_shaped::Eval eval = &demcontact_shaped::eval_fn<demcontact_shaped::Generic>;
 };
 
 /* Build the model of a contact between materials a (body 1) and b (body 2), per-pair values from m. */
@@ -323,7 +327,9 @@ inline int32_t make_model(const Coeff &a, const Coeff &b, const Coeff &m, Model 
         out.pair = out.cm.normal;
         if (s != DC_OK) return s;
         // checked once here: contact_eval then takes the header's fast entry (no per-call model checks)
-        return dc_contact_model_check_inline(&out.cm);
+        s = dc_contact_model_check_inline(&out.cm);
+        out.eval = demcontact_shaped::eval_for(out.cm);
+        return s;
     }
     out.nh = 0;
     if (m.damping == DAMP_VISCOELASTIC)
@@ -345,13 +351,14 @@ struct Result {
    this contact, zero for a new contact, advanced in place. Returns the library status (the normal
    path cannot fail). The full contact is dc_contact_force_checked_inline from the header-only
    demcontact_inline.h (compiled into this loop, bit-identical to the library's dc_contact_force;
-   the model checks run once, in make_model). */
+   the model checks run once, in make_model), through m.eval: compiled for the model's shape when
+   demcontact_shaped.h has it (same bits). */
 inline int32_t contact_eval(const Model &m, const State &s, double dt, double *history, Result &out)
 {
     if (m.full) {
         dc_contact_result r;
         // m.cm passed dc_contact_model_check_inline in make_model; history: m.nh doubles
-        const int32_t st = dc_contact_force_checked_inline(&m.cm, &s, dt, history, &r);
+        const int32_t st = m.eval(&m.cm, &s, dt, history, &r);
         if (st != DC_OK) return st;
         for (int k = 0; k < 3; k++) {
             out.force[k] = r.force[k];

@@ -28,7 +28,8 @@
  * type pair (demcontact's normal law + tangential + rolling sub-models): the tangential class
  * evaluates it once (dc_contact_force_checked_inline: demcontact_inline.h's header-only copy of
  * the library's dc_contact_force, bit-identical, compiled into LIGGGHTS' pair loop, the model
- * checked once per run) and adds the whole contact force (normal + tangential) and the total
+ * checked once per run; compiled for the models' shape when they all have one of
+ * demcontact_shaped.h's: no code for the stages the run does not use) and adds the whole contact force (normal + tangential) and the total
  * torques; the normal model class then computes nothing (its normal force would be the same law
  * evaluated twice) and leaves sidata.Fn/kn/kt unset, which no class of this combination reads
  * (cohesion off, rolling passive, surface default); the rolling class adds nothing. Alone (rolling off or LIGGGHTS' cdt), the tangential class evaluates
@@ -54,6 +55,8 @@
 #include <map>
 #include <string>
 #include <vector>
+
+#include "demcontact_shaped.h"
 
 namespace LIGGGHTS {
 namespace ContactModels {
@@ -151,7 +154,31 @@ public:
                     error->all(FLERR, msg);
                 }
             }
+        choose_eval();
     }
+
+    /* The evaluation for this run (demcontact_shaped.h): the instantiation of the models' shape
+       when every type pair's model has the same one, else the generic entry (same bits). */
+    void choose_eval()
+    {
+        body = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic>;
+        for (int i = 1; i <= ntypes; i++)
+            for (int j = 1; j <= ntypes; j++) {
+                const Body b = demcontact_shaped::pick<BodyOf>(models[i * (ntypes + 1) + j]);
+                if (i == 1 && j == 1) body = b;
+                else if (b != body) body = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic>;
+            }
+    }
+
+    typedef void (DemcontactSubModel::*Body)(const SurfacesIntersectData &, ForceData &, ForceData &);
+    struct BodyOf { // demcontact_shaped::pick's visitor: intersect_with instantiated for a shape
+        typedef Body type;
+        template <class S>
+        static type get()
+        {
+            return &DemcontactSubModel::intersect_with<S>;
+        }
+    };
 
     /* Rolling sub-model only, after both build()s: hand the tangential sub-model of the same
        contact model one combined model per type pair, so each contact costs one library call;
@@ -189,6 +216,7 @@ public:
                 len_max = std::max(len_max, len);
             }
         t.eval_nh = static_cast<int>(len_max);
+        t.choose_eval();
         passive = true;
         // the combined model's normal force is the normal model's (same law and calibration,
         // full_spec), so the tangential class applies the whole contact force and the normal
@@ -203,6 +231,15 @@ public:
     void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
         if (passive) return; // evaluated with the tangential sub-model's combined model
+        (this->*body)(sidata, i_forces, j_forces);
+    }
+
+    /* intersect's body for the models' shape S (demcontact_shaped.h): S::eval inlined into it, the
+       result in registers (through a pointer to the evaluation alone, the force was read back from
+       memory right after the callee's stores: a store-to-load forwarding stall per contact). */
+    template <class S>
+    void intersect_with(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
         const double inf = std::numeric_limits<double>::infinity();
         const int i = sidata.i, j = sidata.j;
         LAMMPS_NS::Atom *atom = lmp->atom;
@@ -247,7 +284,8 @@ public:
         dc_contact_result r;
         // models[] passed dc_contact_model_check_inline in build/combine_into; h: eval_nh >= the
         // model's history length
-        const int32_t st = dc_contact_force_checked_inline(&models[t1 * (ntypes + 1) + t2], &s, lmp->update->dt, h, &r);
+        // S::eval: dc_contact_force_checked_inline, or its instantiation for the models' shape (same bits)
+        const int32_t st = S::eval(&models[t1 * (ntypes + 1) + t2], &s, lmp->update->dt, h, &r);
         if (st != DC_OK) {
             char msg[200];
             std::snprintf(msg, sizeof msg, "%s demcontact: atom %ld: %s", rolling ? "rolling_friction" : "tangential",
@@ -287,6 +325,7 @@ public:
     bool full_force = false; // tangential with the combined model: applies the normal force too
     int nh = 0, offset = 0, ntypes = 0;
     int eval_nh = 0; // history doubles of the evaluated model (nh, or tangential + rolling combined)
+    Body body = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic>; // choose_eval
     std::vector<dc_contact_spec> specs;
     std::vector<dc_contact_model> models;
 };
