@@ -20,8 +20,13 @@ target_compile_options(test_inline_contact_cpp PRIVATE -std=c++17 -Wall -Wextra 
 add_executable(test_inline_contact_fma c_tests/inline/test_inline_contact.c)
 target_compile_options(test_inline_contact_fma PRIVATE -std=gnu11 -O3 -march=native
                                                        -ffp-contract=fast -Wall -Wextra -Werror)
+# The plugins' choice of the shaped entry (examples_cpp/sim/demcontact_shaped.h): the right
+# instantiation per model shape, the library's bits along trajectories.
+add_executable(test_shaped_pick c_tests/inline/test_shaped_pick.cpp)
+target_include_directories(test_shaped_pick PRIVATE examples_cpp/sim)
+target_compile_options(test_shaped_pick PRIVATE -std=c++17 -Wall -Wextra -Werror -O2)
 foreach(t test_inline_c test_inline_cpp test_inline_fma test_inline_contact_c
-          test_inline_contact_cpp test_inline_contact_fma)
+          test_inline_contact_cpp test_inline_contact_fma test_shaped_pick)
   target_link_libraries(${t} PRIVATE demcontact::demcontact ${DC_LIBM})
 endforeach()
 add_test(NAME inline_c COMMAND test_inline_c 10000000)
@@ -30,6 +35,7 @@ add_test(NAME inline_fma COMMAND test_inline_fma 2000000)
 add_test(NAME inline_contact_c COMMAND test_inline_contact_c 10000000)
 add_test(NAME inline_contact_cpp COMMAND test_inline_contact_cpp 10000000)
 add_test(NAME inline_contact_fma COMMAND test_inline_contact_fma 2000000)
+add_test(NAME inline_shaped_pick COMMAND test_shaped_pick 20000)
 # nvcc for inline_cuda: from DEMCONTACT_CUDA_VENV (a venv holding NVIDIA's nvcc wheels, made by
 # scripts/setup_cuda.sh; scripts/test.sh passes it), else PATH. Not found: inline_cuda tries clang,
 # then says SKIPPED.

@@ -1,0 +1,159 @@
+/* examples_cpp/sim/demcontact_shaped.h, the plugins' choice of the shaped entry, against the
+ * library: for random models of every shape (Hertz damped or clamped, power law, viscoelastic,
+ * linear; every tangential, rolling, twisting and carry code), the evaluation eval_for(m) picks
+ * (and pick<V> through a visitor) gives dc_contact_force's status, result and history bits at
+ * every step of a contact's trajectory; a model of an instantiated shape (Hertz kernel, tangential
+ * linear or Mindlin, twisting none) gets its instantiation, any other the generic entry.
+ * Argument 1: models (default 20000). Prints "test_shaped_pick: N passed, M failed". */
+#include "demcontact_shaped.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
+static double uni()
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return (double)(rng_state >> 11) / 9007199254740992.0;
+}
+static int pick(int n) { return (int)(uni() * n) % n; }
+static double logu(double lo, double hi) { return std::exp(2.302585092994046 * (lo + (hi - lo) * uni())); }
+
+static long n_pass = 0, n_fail = 0;
+static void fail(const char *what, long i)
+{
+    if (n_fail < 10) std::fprintf(stderr, "FAIL %s (%ld)\n", what, i);
+    n_fail++;
+}
+
+static void unit(double n[3])
+{
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int i = 0; i < 3; i++) n[i] /= l;
+}
+static void vec(double v[3], double mag)
+{
+    for (int i = 0; i < 3; i++) v[i] = mag * (2.0 * uni() - 1.0);
+}
+
+/* A visitor of demcontact_shaped::pick: the shape's name, to count what was picked. */
+struct IsGeneric {
+    typedef bool type;
+    template <class S>
+    static type get()
+    {
+        return false;
+    }
+};
+template <>
+IsGeneric::type IsGeneric::get<demcontact_shaped::Generic>()
+{
+    return true;
+}
+
+int main(int argc, char **argv)
+{
+    const long want = argc > 1 ? std::atol(argv[1]) : 20000L;
+    const demcontact_shaped::Eval generic = &demcontact_shaped::eval_fn<demcontact_shaped::Generic>;
+    long models = 0, shaped = 0, generic_models = 0, steps_ok = 0, steps_err = 0;
+    while (models < want) {
+        dc_contact_spec s;
+        dc_contact_spec_init(&s);
+        const int normals[4] = {DC_NORMAL_HERTZ, DC_NORMAL_HERTZ, DC_NORMAL_POWERLAW, DC_NORMAL_VISCOELASTIC};
+        s.normal = normals[pick(4)];
+        s.damping = s.normal == DC_NORMAL_VISCOELASTIC ? DC_DAMPING_NONE
+                    : uni() < 0.9                      ? DC_DAMPING_RESTITUTION
+                                                       : DC_DAMPING_NONE;
+        s.criterion = pick(2) ? DC_END_FORCE : DC_END_OVERLAP;
+        s.E1 = logu(6, 11);
+        s.nu1 = 0.3;
+        s.E2 = uni() < 0.2 ? (double)INFINITY : logu(6, 11);
+        s.nu2 = 0.25;
+        s.p = 1.7;
+        s.k_n = logu(3, 9);
+        s.e_n = logu(-2, 0);
+        s.visco_A = logu(-9, -5);
+        s.tangential = pick(3);
+        s.mu = 0.8 * uni();
+        s.k_t = logu(3, 8);
+        s.e_t = uni() < 0.3 ? 1.0 : logu(-2, 0);
+        s.rolling = pick(3);
+        s.mu_r = 0.3 * uni();
+        s.k_r = uni() < 0.5 ? 0.0 : logu(-6, 0);
+        s.eta_r = uni();
+        s.twisting = uni() < 0.2 ? DC_TWISTING_SDS : DC_TWISTING_NONE;
+        s.mu_tw = logu(-6, -3);
+        s.k_tw = logu(-6, 0);
+        s.eta_tw = uni();
+        dc_contact_model m;
+        if (dc_contact_model_init(&s, &m) != DC_OK) continue;
+        if (pick(2) && dc_contact_model_set_carry(&m, DC_CARRY_PROJECT) != DC_OK) fail("set_carry", models);
+        models++;
+        if (dc_contact_model_check_inline(&m) != DC_OK) {
+            fail("model check", models);
+            continue;
+        }
+        // what pick must choose
+        const int32_t k = m.normal.kernel;
+        const bool instantiated = (k == DC_KERNEL_HERTZ_DAMPED || k == DC_KERNEL_HERTZ_DAMPED_CLAMPED) &&
+                                  m.tangential != DC_TANGENTIAL_NONE && m.twisting == DC_TWISTING_NONE;
+        const demcontact_shaped::Eval e = demcontact_shaped::eval_for(m);
+        const bool is_generic = demcontact_shaped::pick<IsGeneric>(m);
+        if ((e == generic) == instantiated || is_generic == instantiated || demcontact_shaped::instantiated(m) != instantiated) {
+            fail("picked the wrong entry", models);
+            continue;
+        }
+        if (instantiated) shaped++;
+        else generic_models++;
+        // a trajectory: the library and the picked entry, each with its own history
+        double hl[DC_CONTACT_HISTORY_MAX] = {0}, hp[DC_CONTACT_HISTORY_MAX] = {0};
+        dc_contact_state st;
+        std::memset(&st, 0, sizeof st);
+        const bool wall = uni() < 0.25;
+        st.r1 = logu(-5, -1);
+        st.r2 = wall ? (double)INFINITY : logu(-5, -1);
+        st.m1 = 2500.0 * 4.18879 * st.r1 * st.r1 * st.r1;
+        st.m2 = wall ? (double)INFINITY : 2500.0 * 4.18879 * st.r2 * st.r2 * st.r2;
+        vec(st.n, 1.0);
+        unit(st.n);
+        const double dt = logu(-8, -5), amp = st.r1 * logu(-5, -2), vs = logu(-4, 1), ws = vs / st.r1;
+        vec(st.v1, vs);
+        vec(st.v2, vs);
+        vec(st.w1, ws);
+        vec(st.w2, ws);
+        for (int i = 0; i < 200; i++) {
+            st.overlap = amp * (0.3 + std::sin(0.05 * i));
+            for (int j = 0; j < 3; j++) {
+                st.n[j] += 1e-3 * (2.0 * uni() - 1.0);
+                st.v1[j] += 0.05 * vs * (2.0 * uni() - 1.0);
+                st.w2[j] += 0.05 * ws * (2.0 * uni() - 1.0);
+            }
+            unit(st.n);
+            if (i == 150) st.v1[1] = (double)NAN; // a bad input: the same status, nothing written
+            if (i == 151) st.v1[1] = 0.0;
+            dc_contact_result rl, rp;
+            std::memset(&rl, 0x5A, sizeof rl);
+            std::memset(&rp, 0x5A, sizeof rp);
+            const int32_t sl = dc_contact_force(&m, &st, dt, hl, DC_CONTACT_HISTORY_MAX, &rl);
+            const int32_t sp = e(&m, &st, dt, hp, &rp);
+            if (sl != sp || std::memcmp(&rl, &rp, sizeof rl) != 0 || std::memcmp(hl, hp, sizeof hl) != 0) {
+                fail("picked entry: status/result/history bits", models);
+                break;
+            }
+            if (sl == DC_OK) steps_ok++;
+            else steps_err++;
+            n_pass++;
+        }
+    }
+    std::printf("test_shaped_pick: %ld models (%ld with an instantiated shape, %ld generic), %ld ok "
+                "steps, %ld error steps\n",
+                models, shaped, generic_models, steps_ok, steps_err);
+    if (!(shaped * 10 > models && generic_models * 10 > models && steps_err >= models)) fail("coverage", 0);
+    std::printf("test_shaped_pick: %ld passed, %ld failed\n", n_pass, n_fail);
+    return n_fail ? 1 : 0;
+}
