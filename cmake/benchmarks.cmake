@@ -17,14 +17,19 @@ target_compile_options(force_baseline_fast PRIVATE ${DC_BENCH_COPTS} -fno-math-e
 add_library(force_baseline_native OBJECT examples_cpp/bench/force_baseline.c)
 target_compile_definitions(force_baseline_native PRIVATE BASE=native)
 target_compile_options(force_baseline_native PRIVATE -O3 -march=native -fno-math-errno)
-foreach(b plain fast native)
+# the same without FMA contraction: the rounding of the batch (whose bits equal the scalar call's),
+# to tell the contraction's share of the gap to the native loop from the rest
+add_library(force_baseline_native_nofma OBJECT examples_cpp/bench/force_baseline.c)
+target_compile_definitions(force_baseline_native_nofma PRIVATE BASE=native_nofma)
+target_compile_options(force_baseline_native_nofma PRIVATE -O3 -march=native -fno-math-errno -ffp-contract=off)
+foreach(b plain fast native native_nofma)
   target_include_directories(force_baseline_${b} PRIVATE "${CMAKE_SOURCE_DIR}/include")
 endforeach()
 foreach(kind IN ITEMS shared static)
   set(bench force_bench_${kind})
   add_executable(${bench} examples_cpp/bench/force_bench.c
     $<TARGET_OBJECTS:force_baseline_plain> $<TARGET_OBJECTS:force_baseline_fast>
-    $<TARGET_OBJECTS:force_baseline_native>)
+    $<TARGET_OBJECTS:force_baseline_native> $<TARGET_OBJECTS:force_baseline_native_nofma>)
   target_compile_options(${bench} PRIVATE ${DC_BENCH_COPTS} -Wall -Wextra -Werror)
   target_link_libraries(${bench} PRIVATE demcontact_${kind} ${DC_LIBM})
   set_target_properties(${bench} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/bench")

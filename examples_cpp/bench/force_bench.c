@@ -42,6 +42,7 @@
 DECL(plain)
 DECL(fast)
 DECL(native)
+DECL(native_nofma)
 
 typedef struct {
     size_t n;
@@ -50,13 +51,14 @@ typedef struct {
     const dc_pair *pair;
 } job;
 
-enum { H_PLAIN, H_FAST, H_NATIVE, H_BATCH, H_SCALAR, H_INL_PLAIN, H_INL_FAST, H_KER_FAST,
+enum { H_PLAIN, H_FAST, H_NATIVE, H_NATIVE_NOFMA, H_BATCH, H_SCALAR, H_INL_PLAIN, H_INL_FAST, H_KER_FAST,
        P_PLAIN, P_FAST, P_NATIVE, P_BATCH, P_SCALAR, P_INL_PLAIN, P_INL_FAST, P_KER_NATIVE,
        M_COPY, M_SUM, NVAR };
 static const char *NAMES[NVAR] = {
     "Hertz: C loop, -O3",
     "Hertz: C loop, -O3 -fno-math-errno",
     "Hertz: C loop, -O3 -march=native -fno-math-errno",
+    "Hertz: C loop, -O3 -march=native -fno-math-errno -ffp-contract=off (no FMA: the batch's rounding)",
     "Hertz: `dc_normal_force_batch` (runtime dispatch)",
     "Hertz: `dc_normal_force` in a C loop",
     "Hertz: `dc_normal_force_inline` in the C loop, -O3",
@@ -81,6 +83,9 @@ static void run(int var, const job *j) {
     case H_PLAIN: hertz_loop_plain(j->n, p->k, p->c, j->d, j->vn, j->r, j->m, j->out); break;
     case H_FAST: hertz_loop_fast(j->n, p->k, p->c, j->d, j->vn, j->r, j->m, j->out); break;
     case H_NATIVE: hertz_loop_native(j->n, p->k, p->c, j->d, j->vn, j->r, j->m, j->out); break;
+    case H_NATIVE_NOFMA:
+        hertz_loop_native_nofma(j->n, p->k, p->c, j->d, j->vn, j->r, j->m, j->out);
+        break;
     case H_INL_PLAIN: hertz_inline_loop_plain(j->n, p, j->d, j->vn, j->r, j->m, j->out); break;
     case H_INL_FAST: hertz_inline_loop_fast(j->n, p, j->d, j->vn, j->r, j->m, j->out); break;
     case H_KER_FAST: hertz_kernel_loop_fast(j->n, p, j->d, j->vn, j->r, j->m, j->out); break;
@@ -155,7 +160,8 @@ int main(int argc, char **argv) {
         }
         run(v, &j);
         const dc_pair *p = j.pair;
-        const int exact = v == H_INL_PLAIN || v == H_INL_FAST || v == H_KER_FAST ||
+        /* (the no-FMA native loop: the library's bits too, the same operations rounded alike) */
+        const int exact = v == H_NATIVE_NOFMA || v == H_INL_PLAIN || v == H_INL_FAST || v == H_KER_FAST ||
                           v == P_INL_PLAIN || v == P_INL_FAST || v == P_KER_NATIVE;
         for (size_t i = 0; i < sizes[0]; i++) {
             double s = d[i] <= 0.0 ? 0.0
@@ -221,6 +227,8 @@ int main(int argc, char **argv) {
            best[0][H_BATCH] / best[0][H_FAST], best[1][H_BATCH] / best[1][H_FAST]);
     printf("| Hertz batch / C loop -O3 -march=native -fno-math-errno | %.2f | %.2f | <= 1.0 |\n",
            best[0][H_BATCH] / best[0][H_NATIVE], best[1][H_BATCH] / best[1][H_NATIVE]);
+    printf("| Hertz batch / the same -march=native loop without FMA contraction | %.2f | %.2f | |\n",
+           best[0][H_BATCH] / best[0][H_NATIVE_NOFMA], best[1][H_BATCH] / best[1][H_NATIVE_NOFMA]);
     printf("| p = 1.7 batch / Hertz batch | %.2f | %.2f | <= 1.5 |\n",
            best[0][P_BATCH] / best[0][H_BATCH], best[1][P_BATCH] / best[1][H_BATCH]);
     printf("| p = 1.7 batch / C loop with pow -O3 | %.2f | %.2f | <= 0.5 |\n",
