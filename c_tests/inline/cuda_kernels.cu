@@ -44,6 +44,22 @@ __global__ void dc_contacts(const dc_contact_model *model, int n, const dc_conta
                                             DC_CONTACT_HISTORY_MAX, &out[i]);
 }
 
+/* The shaped fast entry on the device (Hertz, force-clamped, Mindlin, EPSD rolling, projection
+ * carry as constants), after the shape check of the model. */
+__global__ void dc_contacts_shaped(const dc_contact_model *model, int n, const dc_contact_state *state,
+                                   double dt, double *history, dc_contact_result *out, int *status) {
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n) return;
+    if (dc_contact_model_shape_inline(model, DC_KERNEL_HERTZ_DAMPED_CLAMPED, DC_TANGENTIAL_MINDLIN,
+                                      DC_ROLLING_EPSD, DC_TWISTING_NONE, DC_CARRY_PROJECT) != DC_OK) {
+        status[i] = DC_ERR_CONTACT_MODEL_INVALID;
+        return;
+    }
+    status[i] = dc_contact_force_shaped_inline(model, DC_KERNEL_HERTZ_DAMPED_CLAMPED, DC_TANGENTIAL_MINDLIN,
+                                               DC_ROLLING_EPSD, DC_TWISTING_NONE, DC_CARRY_PROJECT, &state[i],
+                                               dt, history + (long)i * DC_CONTACT_HISTORY_MAX, &out[i]);
+}
+
 __global__ void dc_contact_setup(const dc_contact_spec *spec, dc_contact_model *model, int *status) {
     *status = dc_contact_model_init_inline(spec, model);
 }

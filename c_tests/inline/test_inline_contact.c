@@ -119,8 +119,18 @@ static int same_result(const dc_contact_result *a, const dc_contact_result *b) {
  * Hertz damped, Hertz damped clamped and general p clamped, every tangential, rolling, twisting
  * and carry code. Other kernels: the shape passed as run-time values. Counts constant calls. */
 static long n_shaped_const = 0, n_shaped_runtime = 0;
+/* steps per constant shape: index kernel (0-2) * 36 + tangential * 12 + rolling * 4 +
+ * twisting * 2 + carry (the model's own codes, all in range for a valid model) */
+static long shape_hits[108];
+static int shape_index(const dc_contact_model *m) {
+    const int k = m->normal.kernel == DC_KERNEL_HERTZ_DAMPED           ? 0
+                  : m->normal.kernel == DC_KERNEL_HERTZ_DAMPED_CLAMPED ? 1
+                                                                       : 2;
+    return k * 36 + m->tangential * 12 + m->rolling * 4 + m->twisting * 2 + m->carry;
+}
 #define SH_C(K, T, R, TW)                                                                          \
     n_shaped_const++;                                                                              \
+    shape_hits[shape_index(m)]++;                                                                  \
     if (m->carry == DC_CARRY_ROTATE)                                                               \
         return dc_contact_force_shaped_inline(m, K, T, R, TW, DC_CARRY_ROTATE, s, dt, h, o);       \
     return dc_contact_force_shaped_inline(m, K, T, R, TW, DC_CARRY_PROJECT, s, dt, h, o);
@@ -381,6 +391,20 @@ static void bad_inputs(const dc_contact_model *m) {
                 fail("checked entry: bad-input status/outputs", c);
                 continue;
             }
+            /* the shaped entry (constant shapes where the test instantiates them): the same */
+            double hs[DC_CONTACT_HISTORY_MAX + 1];
+            memcpy(hs, hist, sizeof hs);
+            dc_contact_result rs;
+            memset(&rs, 0x5A, sizeof rs);
+            const int32_t ss = sp ? shaped(mp, sp, d, hs, null_out ? NULL : &rs)
+                                  : dc_contact_force_shaped_inline(mp, mp->normal.kernel, mp->tangential,
+                                                                   mp->rolling, mp->twisting, mp->carry,
+                                                                   NULL, d, hs, &rs);
+            if (ss != sl || !same_result(&rl, &rs) || memcmp(hl, hs, sizeof hs) != 0) {
+                fprintf(stderr, "  bad case %d: library %d, shaped entry %d\n", c, (int)sl, (int)ss);
+                fail("shaped entry: bad-input status/outputs", c);
+                continue;
+            }
         }
         if (sl != si) {
             fprintf(stderr, "  bad case %d: library %d, inline %d\n", c, (int)sl, (int)si);
@@ -533,12 +557,16 @@ int main(int argc, char **argv) {
            seen[6], seen[7], seen[5]);
     printf("test_inline_contact[%s]: %ld of the trajectories with the projection carry\n", LANG,
            projected);
-    printf("test_inline_contact[%s]: shaped entry: %ld steps with a constant shape, %ld with a "
-           "run-time one\n", LANG, n_shaped_const, n_shaped_runtime);
+    int shapes_hit = 0;
+    for (int i = 0; i < 108; i++) shapes_hit += shape_hits[i] > 0;
+    printf("test_inline_contact[%s]: shaped entry: %ld steps with a constant shape (%d of the 108 "
+           "shapes), %ld with a run-time one\n", LANG, n_shaped_const, shapes_hit, n_shaped_runtime);
     /* the comparison must have exercised every regime */
     if (!(seen[1] > 1000 && seen[2] > 1000 && seen[3] > 1000 && seen[4] > 1000 && seen[6] > 1000 &&
           seen[7] > 1000 && specs_bad > 1000 && projected * 4 > models &&
-          n_shaped_const * 10 > n_shaped_runtime && n_shaped_runtime > 1000))
+          n_shaped_const * 10 > n_shaped_runtime && n_shaped_runtime > 1000 &&
+          /* every constant shape in the long runs (10^7 steps; shorter runs reach fewer) */
+          shapes_hit >= (total >= 10000000L ? 108 : total >= 2000000L ? 60 : 20)))
         fail("coverage of regimes", 0);
     printf("test_inline_contact[%s]: %ld passed, %ld failed\n", LANG, n_pass, n_fail);
     return n_fail ? 1 : 0;

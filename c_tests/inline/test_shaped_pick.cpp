@@ -1,9 +1,12 @@
 /* examples_cpp/sim/demcontact_shaped.h, the plugins' choice of the shaped entry, against the
- * library: for random models of every shape (Hertz damped or clamped, power law, viscoelastic,
- * linear; every tangential, rolling, twisting and carry code), the evaluation eval_for(m) picks
- * (and pick<V> through a visitor) gives dc_contact_force's status, result and history bits at
- * every step of a contact's trajectory; a model of an instantiated shape (Hertz kernel, tangential
- * linear or Mindlin, twisting none) gets its instantiation, any other the generic entry.
+ * library: for random models of every shape (Hertz damped or clamped, power law p = 1.7,
+ * viscoelastic; every tangential, rolling, twisting and carry code), the evaluation eval_for(m)
+ * picks (and pick<V> through a visitor) gives dc_contact_force's status, result and history bits
+ * at every step of a contact's trajectory; a model of an instantiated shape (Hertz kernel,
+ * tangential linear or Mindlin, twisting none) gets its instantiation, any other the generic
+ * entry. pick_common (the LIGGGHTS plugin's choice for all its type pairs): a set of models of
+ * one instantiated shape gets it, whatever their parameters; a set with two shapes, or with one
+ * model of no instantiated shape, gets the generic entry.
  * Argument 1: models (default 20000). Prints "test_shaped_pick: N passed, M failed". */
 #include "demcontact_shaped.h"
 
@@ -110,6 +113,39 @@ int main(int argc, char **argv)
         }
         if (instantiated) shaped++;
         else generic_models++;
+        // pick_common over a set of type-pair models: this one, the same shape with other
+        // parameters, and (every third model) one of another shape
+        {
+            dc_contact_spec s2 = s;
+            s2.mu = 0.8 * uni();
+            s2.e_n = logu(-2, 0);
+            s2.E1 = logu(6, 11);
+            dc_contact_model set[3];
+            set[0] = m;
+            if (dc_contact_model_init(&s2, &set[1]) != DC_OK ||
+                dc_contact_model_set_carry(&set[1], m.carry) != DC_OK) {
+                fail("second model", models);
+                continue;
+            }
+            dc_contact_spec s3 = s;
+            s3.tangential = s.tangential == DC_TANGENTIAL_MINDLIN ? DC_TANGENTIAL_LINEAR : DC_TANGENTIAL_MINDLIN;
+            const bool mixed = models % 3 == 0;
+            if (mixed && (dc_contact_model_init(&s3, &set[2]) != DC_OK ||
+                          dc_contact_model_set_carry(&set[2], m.carry) != DC_OK)) {
+                fail("third model", models);
+                continue;
+            }
+            const int count = mixed ? 3 : 2;
+            const demcontact_shaped::Eval c = demcontact_shaped::pick_common<demcontact_shaped::EvalOf>(
+                count, [&set](int i) -> const dc_contact_model & { return set[i]; });
+            const demcontact_shaped::Eval expect = mixed ? generic : e;
+            if (c != expect || demcontact_shaped::pick_common<demcontact_shaped::EvalOf>(
+                                   0, [&set](int i) -> const dc_contact_model & { return set[i]; }) != generic) {
+                fail("pick_common", models);
+                continue;
+            }
+            n_pass++;
+        }
         // a trajectory: the library and the picked entry, each with its own history
         double hl[DC_CONTACT_HISTORY_MAX] = {0}, hp[DC_CONTACT_HISTORY_MAX] = {0};
         dc_contact_state st;

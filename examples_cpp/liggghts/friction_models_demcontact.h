@@ -161,13 +161,11 @@ public:
        when every type pair's model has the same one, else the generic entry (same bits). */
     void choose_eval()
     {
-        body = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic>;
-        for (int i = 1; i <= ntypes; i++)
-            for (int j = 1; j <= ntypes; j++) {
-                const Body b = demcontact_shaped::pick<BodyOf>(models[i * (ntypes + 1) + j]);
-                if (i == 1 && j == 1) body = b;
-                else if (b != body) body = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic>;
-            }
+        // the type pairs (i, j), 1 <= i, j <= ntypes, of models[(ntypes + 1)^2]
+        const int n = ntypes;
+        const std::vector<dc_contact_model> &m = models;
+        body = demcontact_shaped::pick_common<BodyOf>(
+            n * n, [&m, n](int k) -> const dc_contact_model & { return m[(k / n + 1) * (n + 1) + k % n + 1]; });
     }
 
     typedef void (DemcontactSubModel::*Body)(const SurfacesIntersectData &, ForceData &, ForceData &);

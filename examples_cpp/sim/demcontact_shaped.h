@@ -93,6 +93,21 @@ typename V::type pick(const dc_contact_model &m)
     return for_tangential<V, DC_KERNEL_HERTZ_DAMPED_CLAMPED>(m.tangential, m.rolling, m.carry);
 }
 
+/* pick<V> for a set of models one call site evaluates (a host that chooses once per run): their
+ * common instantiation when every model has the same one, else V::get<Generic>(). at(i) gives
+ * the i-th model, 0 <= i < count (count 0: Generic). */
+template <class V, class At>
+typename V::type pick_common(int count, At at)
+{
+    typename V::type common = V::template get<Generic>();
+    for (int i = 0; i < count; i++) {
+        const typename V::type t = pick<V>(at(i));
+        if (i == 0) common = t;
+        else if (t != common) return V::template get<Generic>();
+    }
+    return common;
+}
+
 /* A plain function per shape (hosts that want a pointer to the evaluation alone). */
 typedef int32_t (*Eval)(const dc_contact_model *, const dc_contact_state *, double, double *,
                         dc_contact_result *);
