@@ -138,7 +138,17 @@ public:
         // applies the normal force too (nothing between reads sidata.Fn, kn, kt; see
         // friction_models_demcontact.h), so it is computed once per contact, not twice
         if (deferred) return;
+        intersect_body(sidata, i_forces, j_forces);
+    }
 
+    /* The normal force itself, out of line: inlined, its kernels (the general-p power among them)
+       made LIGGGHTS' contact-model glue too large for GCC to inline into the pair loop in runs
+       where it is deferred, which cost those runs 3 % of their loop time (LIGGGHTS scene,
+       docs/simulators.md); runs of the normal model alone measured the same pair time either way
+       (its builtin counterpart, NormalModel<3>, is out of line too). */
+    __attribute__((noinline)) void intersect_body(SurfacesIntersectData &sidata, ForceData &i_forces,
+                                                  ForceData &j_forces)
+    {
         const int itype = sidata.itype, jtype = sidata.jtype;
         const double reff = sidata.is_wall ? sidata.radi
                                            : sidata.radi * sidata.radj / (sidata.radi + sidata.radj);
