@@ -29,14 +29,8 @@
 #define LANG "C"
 #endif
 
-static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
-static double uni(void) {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) / 9007199254740992.0;
-}
-static double logu(double lo, double hi) { return exp(2.302585092994046 * (lo + (hi - lo) * uni())); }
+#define TEST_RANDOM_SEED 0x9E3779B97F4A7C15ull
+#include "test_random.h"
 
 static uint64_t bits_of(double x) {
     uint64_t u;

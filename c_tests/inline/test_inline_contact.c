@@ -38,15 +38,8 @@
 #define LANG "C"
 #endif
 
-static uint64_t rng_state = 0xD1B54A32D192ED03ull;
-static double uni(void) {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) / 9007199254740992.0;
-}
-static int pick(int n) { return (int)(uni() * n) % n; }
-static double logu(double lo, double hi) { return exp(2.302585092994046 * (lo + (hi - lo) * uni())); }
+#define TEST_RANDOM_SEED 0xD1B54A32D192ED03ull
+#include "test_random.h"
 
 static long n_pass = 0, n_fail = 0;
 static void fail(const char *what, long i) {
@@ -100,14 +93,6 @@ static void random_spec(dc_contact_spec *s, int bad) {
     else if (which == 22) s->twisting = 2;
     else if (which == 23) s->criterion = 2;
     else s->damping = 2;
-}
-
-static void unit(double n[3]) {
-    const double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    for (int i = 0; i < 3; i++) n[i] /= l;
-}
-static void vec(double v[3], double mag) {
-    for (int i = 0; i < 3; i++) v[i] = mag * (2.0 * uni() - 1.0);
 }
 
 static int same_result(const dc_contact_result *a, const dc_contact_result *b) {

@@ -16,32 +16,14 @@
 #include <cstdlib>
 #include <cstring>
 
-static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
-static double uni()
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) / 9007199254740992.0;
-}
-static int pick(int n) { return (int)(uni() * n) % n; }
-static double logu(double lo, double hi) { return std::exp(2.302585092994046 * (lo + (hi - lo) * uni())); }
+#define TEST_RANDOM_SEED 0x9E3779B97F4A7C15ull
+#include "test_random.h"
 
 static long n_pass = 0, n_fail = 0;
 static void fail(const char *what, long i)
 {
     if (n_fail < 10) std::fprintf(stderr, "FAIL %s (%ld)\n", what, i);
     n_fail++;
-}
-
-static void unit(double n[3])
-{
-    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    for (int i = 0; i < 3; i++) n[i] /= l;
-}
-static void vec(double v[3], double mag)
-{
-    for (int i = 0; i < 3; i++) v[i] = mag * (2.0 * uni() - 1.0);
 }
 
 /* A visitor of demcontact_shaped::pick: the shape's name, to count what was picked. */

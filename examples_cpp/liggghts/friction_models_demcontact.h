@@ -29,8 +29,8 @@
  * evaluates it once (dc_contact_force_checked_inline: demcontact_inline.h's header-only copy of
  * the library's dc_contact_force, bit-identical, compiled into LIGGGHTS' pair loop, the model
  * checked once per run; compiled for the models' shape when they all have one of
- * demcontact_shaped.h's: no code for the stages the run does not use) and adds the whole contact force (normal + tangential) and the total
- * torques; the normal model class then computes nothing (its normal force would be the same law
+ * demcontact_shaped.h's: no code for the stages the run does not use) and adds the whole contact
+ * force (normal + tangential) and the total torques; the normal model class then computes nothing (its normal force would be the same law
  * evaluated twice) and leaves sidata.Fn/kn/kt unset, which no class of this combination reads
  * (cohesion off, rolling passive, surface default); the rolling class adds nothing. Alone (rolling off or LIGGGHTS' cdt), the tangential class evaluates
  * a model with its own sub-model only. Each class still validates its own parameters on its own

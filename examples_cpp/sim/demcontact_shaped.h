@@ -9,8 +9,10 @@
  * branches, a few KB instead of 15 KB of code). A plugin picks the instantiation once per model:
  * pick<V> returns V's code instantiated for the shape (the LIGGGHTS plugin: its whole per-contact
  * body, so that the result stays in registers), eval_for a pointer to the evaluation alone (the
- * LAMMPS styles); a shape with no instantiation gets the generic entry. Every instantiation gives the bits of dc_contact_force_checked_inline (ctest
- * inline_contact_* checks the header's shaped entry with constant shapes against the library).
+ * LAMMPS styles); a shape with no instantiation gets the generic entry. Every instantiation gives
+ * the bits of dc_contact_force_checked_inline (ctest inline_contact_* checks the header's shaped
+ * entry with constant shapes against the library; ctest inline_shaped_pick checks this file's
+ * choice).
  *
  * Instantiated: the Hertz kernel damped, or damped and force-clamped (hertz/material with
  * coeff_restitution, LIGGGHTS' model demcontact with exponent 1.5), tangential Mindlin or
