@@ -277,7 +277,7 @@ static void bad_inputs(const dc_contact_model *m) {
     double hbuf[DC_CONTACT_HISTORY_MAX + 1] = {0};
     const double dt = 1e-6;
     /* each case: (model, state, dt, history, len) */
-    for (int c = 0; c < 49; c++) {
+    for (int c = 0; c < 52; c++) {
         dc_contact_model mm = *m;
         dc_contact_state ss = s;
         double hist[DC_CONTACT_HISTORY_MAX + 1];
@@ -341,6 +341,16 @@ static void bad_inputs(const dc_contact_model *m) {
         case 46: mm.mu = -1.0; hp = NULL; break;
         case 47: mm.kappa = 0.0; len = 0; break;
         case 48: mm.normal.k = (double)NAN; hp = (double *)(void *)((char *)hbuf + 4); break;
+        /* finite values whose sum overflows (the checks' fast sums are not finite there; the
+         * masks must decide, as the library's per-value checks): a separated contact (valid,
+         * history reset) with huge velocities, with a huge history; a touching one with huge
+         * spins */
+        case 49: ss.overlap = -1e-3; ss.v1[0] = ss.v1[1] = 1.5e308; break;
+        case 50:
+            ss.overlap = -1e-3;
+            for (int i = 0; i < (int)m->history_len; i++) hist[i] = 1.5e308;
+            break;
+        case 51: ss.w1[0] = ss.w1[2] = 1.5e308; break;
         default: len = 0; break;
         }
         double hl[DC_CONTACT_HISTORY_MAX + 1], hi2[DC_CONTACT_HISTORY_MAX + 1];
@@ -412,6 +422,38 @@ static void bad_inputs(const dc_contact_model *m) {
     }
 }
 
+/* The checks' fast sums (demcontact_inline.h, dci_fin): a finite sum proves every value finite;
+ * finite values whose sum overflows, and non-finite ones, go to the exact masks, which decide. */
+static void sum_checks(void) {
+    dc_contact_result r;
+    memset(&r, 0, sizeof r);
+    r.f_n = 1e308;
+    r.force[2] = 1e308; /* finite; f_n + force overflows */
+    double h[7] = {1.5e308, 1.5e308, 0, 0, 0, 0, 0}, d[7];
+    int ok = dci_result_finite(&r, NULL, 0) && dci_result_finite(&r, h, 7);
+    ok = ok && dci_copy_finite(d, h, 7) && memcmp(d, h, sizeof h) == 0;
+    r.torque2[1] = (double)NAN;
+    ok = ok && !dci_result_finite(&r, h, 7);
+    r.torque2[1] = 0.0;
+    r.force[0] = (double)INFINITY;
+    r.force[1] = -(double)INFINITY; /* the sum NaN */
+    ok = ok && !dci_result_finite(&r, NULL, 0);
+    r.force[0] = r.force[1] = 0.0;
+    h[6] = (double)INFINITY;
+    ok = ok && !dci_result_finite(&r, h, 7) && !dci_copy_finite(d, h, 7);
+    dc_contact_state s;
+    memset(&s, 0, sizeof s);
+    s.n[2] = 1.0;
+    s.r1 = s.r2 = 1e-3;
+    s.m1 = s.m2 = 1e-5;
+    s.v1[0] = s.v2[0] = s.w1[2] = 1e308; /* finite; the sum overflows */
+    ok = ok && dci_check_contact_state(&s) == DC_OK;
+    s.w2[1] = (double)NAN;
+    ok = ok && dci_check_contact_state(&s) == DC_ERR_NOT_FINITE;
+    if (ok) n_pass++;
+    else fail("fast finiteness sums", 0);
+}
+
 /* The DMT kernels (codes 18, 19) of dc_normal_force_inline against dc_normal_force, bit for bit:
  * overlaps from deep contact through the attractive tail (-2 d_c .. 0) and beyond, NaN. */
 static void dmt_forces(long n) {
@@ -445,6 +487,7 @@ int main(int argc, char **argv) {
     long seen[8] = {0};
     long specs_ok = 0, specs_bad = 0, models = 0, projected = 0;
 
+    sum_checks();
     /* spec_init */
     {
         dc_contact_spec a, b;

@@ -2,9 +2,11 @@
  * demcontact's tangential and rolling sub-models as LIGGGHTS models, registered next to the normal
  * model "demcontact" in LIGGGHTS' own factories (included by normal_model_demcontact.cpp):
  *
- *   pair_style gran model demcontact tangential demcontact [rolling_friction demcontact]
+ *   pair_style gran model demcontact tangential demcontact [rolling_friction demcontact [surface demcontact]]
  *              [tangentialRestitution e_t] [rollingStiffness k_r] [rollingDamping eta_r] [rollingConstant on]
  *              [projectionCarry on|off]
+ *   (surface demcontact: LIGGGHTS' relative velocities, unread by the combined evaluation, not
+ *   computed; surface_model_demcontact.h)
  *   fix ID all wall/gran model demcontact tangential demcontact rolling_friction demcontact primitive ...
  *   materials: coefficientFriction (mu), coefficientRollingFriction (mu_r), peratomtypepair
  *
@@ -32,7 +34,7 @@
  * demcontact_shaped.h's: no code for the stages the run does not use) and adds the whole contact
  * force (normal + tangential) and the total torques; the normal model class then computes nothing (its normal force would be the same law
  * evaluated twice) and leaves sidata.Fn/kn/kt unset, which no class of this combination reads
- * (cohesion off, rolling passive, surface default); the rolling class adds nothing. Alone (rolling off or LIGGGHTS' cdt), the tangential class evaluates
+ * (cohesion off, rolling passive, surface default or demcontact); the rolling class adds nothing. Alone (rolling off or LIGGGHTS' cdt), the tangential class evaluates
  * a model with its own sub-model only. Each class still validates its own parameters on its own
  * (so a rejected value is named).
  *
@@ -292,17 +294,19 @@ public:
         }
         // the tangential force and the torques of the evaluated sub-models (tangential class: its
         // torques, or with the combined model those of both; rolling class alone: rolling torques)
-        const double *ti = swap ? r.torque2 : r.torque1, *tj = swap ? r.torque1 : r.torque2;
+        // (full_force: the normal force too, the normal model having deferred it). Values selected,
+        // not pointers into r: r's address never escapes, so the compiler keeps it in registers (a
+        // pointer select made it a stack copy of the whole result per contact)
         const double scale = sidata.is_wall ? sidata.area_ratio : 1.0;
-        // (full_force: the normal force too, the normal model having deferred it)
-        const double *fr = full_force ? r.force : r.ft;
         for (int k = 0; k < 3; k++) {
+            const double fr = full_force ? r.force[k] : r.ft[k];
+            const double ti = swap ? r.torque2[k] : r.torque1[k], tj = swap ? r.torque1[k] : r.torque2[k];
             if (!rolling) {
-                i_forces.delta_F[k] += sg * scale * fr[k];
-                if (!sidata.is_wall) j_forces.delta_F[k] -= sg * fr[k];
+                i_forces.delta_F[k] += sg * scale * fr;
+                if (!sidata.is_wall) j_forces.delta_F[k] -= sg * fr;
             }
-            i_forces.delta_torque[k] += scale * ti[k];
-            if (!sidata.is_wall) j_forces.delta_torque[k] += tj[k];
+            i_forces.delta_torque[k] += scale * ti;
+            if (!sidata.is_wall) j_forces.delta_torque[k] += tj;
         }
     }
 

@@ -308,6 +308,7 @@ public:
 } // namespace LIGGGHTS
 
 #include "friction_models_demcontact.h"
+#include "surface_model_demcontact.h"
 
 namespace {
 
@@ -326,10 +327,10 @@ Walls::IGranularWall *create_wall(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::FixWallGran
     return new T(lmp, parent, hash);
 }
 
-template<int TANGENTIAL, int ROLLING>
+template<int TANGENTIAL, int ROLLING, int SURFACE = SURFACE_DEFAULT>
 void register_combination()
 {
-    typedef GranStyle<DEMCONTACT, TANGENTIAL, COHESION_OFF, ROLLING, SURFACE_DEFAULT> Style;
+    typedef GranStyle<DEMCONTACT, TANGENTIAL, COHESION_OFF, ROLLING, SURFACE> Style;
     typedef ContactModel<Style> CModel;
     PairStyles::Factory::instance().addStyle("gran", Style::HASHCODE,
                                              &create_pair<PairStyles::Granular<CModel> >);
@@ -352,6 +353,9 @@ struct RegisterDemcontact {
         register_combination<DEMCONTACT_TANGENTIAL, ROLLING_OFF>();
         register_combination<DEMCONTACT_TANGENTIAL, DEMCONTACT_ROLLING>();
         register_combination<DEMCONTACT_TANGENTIAL, ROLLING_CDT>();
+        // the whole contact demcontact's: LIGGGHTS' relative velocities not computed (surface_model_demcontact.h)
+        f.addSurfaceModel("demcontact", DEMCONTACT_SURFACE);
+        register_combination<DEMCONTACT_TANGENTIAL, DEMCONTACT_ROLLING, DEMCONTACT_SURFACE>();
     }
 };
 

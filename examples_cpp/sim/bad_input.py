@@ -88,7 +88,8 @@ def lammps_deck(plugin, style, coeff, wall):
 
 
 # ------------------------------------------------------------------ LIGGGHTS
-LIGGGHTS_GOOD = dict(Y="5e6", nu="0.3", e="0.5", mu="0.5", mur="0.1", extra="", wall="")
+LIGGGHTS_GOOD = dict(Y="5e6", nu="0.3", e="0.5", mu="0.5", mur="0.1", extra="", wall="",
+                     model="model demcontact tangential demcontact rolling_friction demcontact")
 LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
     ("youngsModulus = 0", dict(Y="0"), "youngsModulus of type 1 = 0", NOT_POSITIVE),
     ("youngsModulus < 0", dict(Y="-5e6"), "youngsModulus of type 1 = -5e+06", NOT_POSITIVE),
@@ -108,11 +109,16 @@ LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
      "unknown option or wrong keyword order: 'project'", None),
     ("wall projectionCarry not on/off", dict(wall="projectionCarry yes"), "'projectionCarry' argument: "
      "unknown option or wrong keyword order: 'yes'", None),
+    # `surface demcontact` exists only with the whole contact demcontact's (LIGGGHTS' own error otherwise)
+    ("surface demcontact, rolling off", dict(model="model demcontact tangential demcontact surface demcontact"),
+     "Unknown surface model", None),
+    ("surface demcontact, builtin tangential",
+     dict(model="model demcontact tangential history surface demcontact"), "Unknown surface model", None),
 ]
 
 
 def liggghts_deck(v):
-    model = ("model demcontact tangential demcontact rolling_friction demcontact " + v["extra"]).strip()
+    model = (v["model"] + " " + v["extra"]).strip()
     L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
          "communicate single vel yes", "units si",
          "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box", "create_box 1 box",
@@ -161,7 +167,8 @@ def main():
     else:
         exe, env = H.liggghts_cmd(a.plugin)
         cases = [(lab, liggghts_deck(dict(LIGGGHTS_GOOD, **ov)), bad, code) for lab, ov, bad, code in LIGGGHTS_CASES]
-        control = liggghts_deck(dict(LIGGGHTS_GOOD, extra="projectionCarry on", wall="projectionCarry off"))
+        control = liggghts_deck(dict(LIGGGHTS_GOOD, extra="projectionCarry on", wall="projectionCarry off",
+                                     model=LIGGGHTS_GOOD["model"] + " surface demcontact"))
         cmd = [exe, "-in", "in.deck", "-log", "none"]
     failures = 0
     for k, (label, deck, bad, code) in enumerate([("control (good input)", control, None, None)] + cases):

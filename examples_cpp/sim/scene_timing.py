@@ -6,6 +6,9 @@ the same code (and optionally an older build of the plugin), without re-running 
   scene_timing.py --sim liggghts --plugin libdemcontact_liggghts.so --data settled.data [--before old.so]
                   [--before LABEL=other.so ...]   (several older builds, each in the alternation)
                   [--np 2] [--reps 3] [--steps 2000] [--workdir DIR] [--lmp lmp]
+                  [--surface-default]   (LIGGGHTS: ours also with `surface default`, the
+                                         relative velocities computed for nothing; older builds
+                                         given by --before always run with it)
 
 The decks are those of scenes.py's timing (the bed from write_data of a settling run, 2000 steps,
 the same pair/wall lines); the models run alternately (builtin, ours, ours with the projection
@@ -59,6 +62,8 @@ def main():
     ap.add_argument("--steps", type=int, default=2000)
     ap.add_argument("--workdir")
     ap.add_argument("--lmp")
+    ap.add_argument("--surface-default", action="store_true",
+                    help="LIGGGHTS: also time ours with `surface default` instead of `surface demcontact`")
     a = ap.parse_args()
     if a.reps < 1 or a.steps < 1:
         raise SystemExit("scene_timing: --reps and --steps must be >= 1")
@@ -97,13 +102,22 @@ def main():
         lm = {m[0]: m for m in S.liggghts_models()}
         (_, mo, se), (ref, bmo, bse), (_, pmo, pse) = lm["demcontact"], lm["hertz"], lm["demcontact_project"]
         exe, env = H.liggghts_cmd(a.plugin)
+        sd = S.liggghts_surface_default
         models.append((ref, lambda n: S.liggghts_timing_deck(bmo, bse, g, data, n), env))
         for lab, p in plugins:
             e = dict(env)
             e["LD_PRELOAD"] = p
+            if lab != "demcontact":  # an older build: `surface default` (it may predate surface demcontact)
+                models.append((lab, lambda n, e=e: S.liggghts_timing_deck(sd(mo), se, g, data, n), e))
+                continue
             models.append((lab, lambda n: S.liggghts_timing_deck(mo, se, g, data, n), e))
-            if lab == "demcontact":  # the same plugin with `projectionCarry on`
-                models.append(("demcontact_project", lambda n: S.liggghts_timing_deck(pmo, pse, g, data, n), e))
+            # the same plugin with `projectionCarry on`
+            models.append(("demcontact_project", lambda n: S.liggghts_timing_deck(pmo, pse, g, data, n), e))
+            if a.surface_default:  # and both again with LIGGGHTS' `surface default`
+                models.append(("demcontact_surfdefault",
+                               lambda n: S.liggghts_timing_deck(sd(mo), se, g, data, n), e))
+                models.append(("demcontact_project_surfdefault",
+                               lambda n: S.liggghts_timing_deck(sd(pmo), pse, g, data, n), e))
     for lab, deck, _ in models:
         open(os.path.join(d, "in.%s" % lab), "w").write(deck(a.steps))
         open(os.path.join(d, "in0.%s" % lab), "w").write(deck(0))
