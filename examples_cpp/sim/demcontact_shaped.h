@@ -25,6 +25,10 @@
 #include <demcontact_inline.h>
 
 namespace demcontact_shaped {
+/* Internal linkage for everything here: the instantiations call the header's static (internal)
+ * functions, so a definition with external linkage, included by two translation units (the LAMMPS
+ * plugin's pair and wall styles), would refer to a different function in each: an ODR violation. */
+namespace {
 
 /* The generic entry: any model dc_contact_model_check_inline accepts. */
 struct Generic {
@@ -128,6 +132,7 @@ struct EvalOf {
 };
 inline Eval eval_for(const dc_contact_model &m) { return pick<EvalOf>(m); }
 
+} // namespace
 } // namespace demcontact_shaped
 
 #endif
