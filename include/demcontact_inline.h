@@ -84,8 +84,10 @@
  * less loop time in the LIGGGHTS scene, docs/simulators.md); a hint only, no other effect. */
 #if defined(__GNUC__) || defined(__clang__)
 #define DCI_UNLIKELY(x) __builtin_expect(!!(x), 0)
+#define DCI_LIKELY(x) __builtin_expect(!!(x), 1)
 #else
 #define DCI_UNLIKELY(x) (x)
+#define DCI_LIKELY(x) (x)
 #endif
 
 /* A product rounded on its own, never fused with an addition (see the header comment). */
@@ -904,28 +906,28 @@ DCI_ALWAYS_INLINE_FN double dci_nf3(const double a[3]) {
 DCI_ALWAYS_INLINE_FN int dci_fin(double s) { return s - s == 0.0; }
 DCI_ALWAYS_INLINE_FN double dci_sum3(const double a[3]) { return (a[0] + a[1]) + a[2]; }
 /* The history: copy n doubles from src to dst (dst may be NULL: no copy) and return their mask
- * (exact = 1) or their sum (exact = 0). n is a layout length (0, 4, 6, 7, 9, 10 for a valid
+ * (mask = 1) or their sum (mask = 0). n is a layout length (0, 4, 6, 7, 9, 10 for a valid
  * model): the switch gives each a constant trip count, which the compiler unrolls; loops over the
  * run-time n (copy in, mask, mask out, copy out) took ~10 % of the LAMMPS scene's perf samples,
  * and the unrolled copies cut its loop time by ~8 % (docs/simulators.md). Any other n takes the
  * loop. */
-DCI_ALWAYS_INLINE_FN double dci_copy_nf_k(double *dst, const double *src, int n, int exact) {
+DCI_ALWAYS_INLINE_FN double dci_copy_sum_k(double *dst, const double *src, int n, int mask) {
     double s = 0.0;
     for (int i = 0; i < n; i++) {
         if (dst) dst[i] = src[i];
-        s += exact ? dci_nf(src[i]) : src[i];
+        s += mask ? dci_nf(src[i]) : src[i];
     }
     return s;
 }
-DCI_ALWAYS_INLINE_FN double dci_copy_sum(double *dst, const double *src, int n, int exact) {
+DCI_ALWAYS_INLINE_FN double dci_copy_sum(double *dst, const double *src, int n, int mask) {
     switch (n) {
     case 0: return 0.0;
-    case 4: return dci_copy_nf_k(dst, src, 4, exact);
-    case 6: return dci_copy_nf_k(dst, src, 6, exact);
-    case 7: return dci_copy_nf_k(dst, src, 7, exact);
-    case 9: return dci_copy_nf_k(dst, src, 9, exact);
-    case 10: return dci_copy_nf_k(dst, src, 10, exact);
-    default: return dci_copy_nf_k(dst, src, n, exact);
+    case 4: return dci_copy_sum_k(dst, src, 4, mask);
+    case 6: return dci_copy_sum_k(dst, src, 6, mask);
+    case 7: return dci_copy_sum_k(dst, src, 7, mask);
+    case 9: return dci_copy_sum_k(dst, src, 9, mask);
+    case 10: return dci_copy_sum_k(dst, src, 10, mask);
+    default: return dci_copy_sum_k(dst, src, n, mask);
     }
 }
 /* the mask of n history doubles (0: all finite), copied to dst unless NULL */
@@ -934,14 +936,14 @@ DCI_ALWAYS_INLINE_FN double dci_copy_nf(double *dst, const double *src, int n) {
 }
 /* n history doubles all finite, copied to dst unless NULL: the sum, the mask when it is not finite */
 DCI_ALWAYS_INLINE_FN int dci_copy_finite(double *dst, const double *src, int n) {
-    if (!DCI_UNLIKELY(!dci_fin(dci_copy_sum(dst, src, n, 0)))) return 1;
+    if (DCI_LIKELY(dci_fin(dci_copy_sum(dst, src, n, 0)))) return 1;
     return dci_copy_sum(NULL, src, n, 1) == 0.0;
 }
 /* every value of a contact result, and the n history doubles h, finite (the sum, then the masks) */
 DCI_ALWAYS_INLINE_FN int dci_result_finite(const dc_contact_result *r, const double *h, int n) {
     const double a = r->f_n + dci_sum3(r->force);
     const double b = dci_sum3(r->ft) + (dci_sum3(r->torque1) + dci_sum3(r->torque2));
-    if (!DCI_UNLIKELY(!dci_fin((a + b) + dci_copy_sum(NULL, h, n, 0)))) return 1;
+    if (DCI_LIKELY(dci_fin((a + b) + dci_copy_sum(NULL, h, n, 0)))) return 1;
     const double ma = dci_nf(r->f_n) + dci_nf3(r->force);
     const double mb = dci_nf3(r->ft) + (dci_nf3(r->torque1) + dci_nf3(r->torque2));
     return ma + mb == 0.0 && dci_copy_nf(NULL, h, n) == 0.0;
