@@ -295,8 +295,7 @@ public:
         // the tangential force and the torques of the evaluated sub-models (tangential class: its
         // torques, or with the combined model those of both; rolling class alone: rolling torques)
         // (full_force: the normal force too, the normal model having deferred it). Values selected,
-        // not pointers into r: r's address never escapes, so the compiler keeps it in registers (a
-        // pointer select made it a stack copy of the whole result per contact)
+        // not pointers into r: 1 % fewer instructions in this body (callgrind, docs/simulators.md)
         const double scale = sidata.is_wall ? sidata.area_ratio : 1.0;
         for (int k = 0; k < 3; k++) {
             const double fr = full_force ? r.force[k] : r.ft[k];

@@ -76,7 +76,9 @@ def main():
     plugins = [("demcontact", os.path.abspath(a.plugin))]
     for b in a.before:
         lab, _, p = b.partition("=") if "=" in b else ("before", "", b)
-        if lab in [q[0] for q in plugins] or lab in ("granular", "hertz", "demcontact_project"):
+        reserved = ("granular", "hertz", "demcontact_project", "demcontact_surfdefault",
+                    "demcontact_project_surfdefault")
+        if lab in [q[0] for q in plugins] or lab in reserved:
             raise SystemExit("scene_timing: label %s used twice" % lab)
         plugins.append((lab, os.path.abspath(p)))
     # (label, deck(steps), env, exe)
