@@ -4,6 +4,7 @@ in LIGGGHTS and LAMMPS, demcontact against each code's builtin Hertz-Mindlin, se
 
   scenes.py --sim lammps   --plugin demcontact_lammps.so      [--lmp lmp] [--np 2] [--check] [--smoke]
   scenes.py --sim liggghts --plugin libdemcontact_liggghts.so [--np 2] [--check] [--smoke]
+            [--reps 3] [--pour-reps 3] [--resume] [--workdir DIR]
 
 Scene (both codes, both models): N spheres (2000; --smoke 300), radius 1.0-1.5 mm (ratio 1.5; LAMMPS
 fix pour: uniform in diameter; LIGGGHTS insert/pack: five discrete radii, equal mass fractions),
@@ -21,7 +22,8 @@ r < R - 4 mm, 4 mm < z < 0.7 x the bed height estimated at phi = 0.6), mean coor
 energy; wall time from the code's "Loop time". Timing: the settled bed of the builtin run
 (write_data) run on for 2000 steps with each model, alternately, three times; minimum kept; also the
 CPU time of the run minus that of the same deck with `run 0` (less sensitive to other jobs on a
-shared machine than the wall time).
+shared machine than the wall time). --pour-reps N: the whole pour/settle timed too, each model's
+settling deck run again N times per rank count, the models alternating; minimum loop time.
 
 Models:
   LIGGGHTS builtin   pair_style gran model hertz tangential history rolling_friction cdt
@@ -259,6 +261,34 @@ def loop_time(log):
     return float(m.group(1))
 
 
+def pour_timing(models, nps, reps, mpirun, exe, env, workdir, ref_label):
+    """Wall time of the whole pour/settle (the settling decks as run above), the models alternating
+    (builtin, ours, ours with the projection, builtin, ...) `reps` times per rank count; minimum of
+    the loop times, and its ratio to the builtin's."""
+    best = {}
+    for np_ in nps:
+        for r in range(reps):
+            for label, deck, _ in models:
+                d = os.path.join(workdir, "pour_timing", "%s_np%d_%d" % (label, np_, r))
+                os.makedirs(d, exist_ok=True)
+                open(os.path.join(d, "in.scene"), "w").write(deck)
+                H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.scene", "-log", "log.scene"], d, env)
+                t = loop_time(os.path.join(d, "log.scene"))
+                best[(label, np_)] = min(best.get((label, np_), float("inf")), t)
+    load = open("/proc/loadavg").read().split()[:3] if os.path.exists("/proc/loadavg") else ["?"] * 3
+    print()
+    print("Wall time of the whole pour/settle, minimum of %d alternating runs (load average at the end: %s):"
+          % (reps, " ".join(load)))
+    print()
+    print("| model | ranks | loop [s] | %s loop [s] | ratio |" % ref_label)
+    print("|---|---|---|---|---|")
+    for np_ in nps:
+        for label, _, _ in models:
+            if label != ref_label:
+                o, h = best[(label, np_)], best[(ref_label, np_)]
+                print("| %s | %d | %.2f | %.2f | %.3f |" % (label, np_, o, h, o / h))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--sim", choices=["liggghts", "lammps"], required=True)
@@ -271,6 +301,9 @@ def main():
     ap.add_argument("--workdir")
     ap.add_argument("--resume", action="store_true",
                     help="keep the settling runs already complete in --workdir (rerun only the rest)")
+    ap.add_argument("--pour-reps", type=int, default=0,
+                    help="time the whole pour/settle: the settling decks again, the models alternating, "
+                         "this many times for each rank count; minimum loop time (0: none)")
     a = ap.parse_args()
     workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_scene_"))
     g = geometry(a.smoke)
@@ -381,6 +414,8 @@ def main():
                 co, ch = cpu[(label, np_)], cpu[(ref_label, np_)]
                 print("| %s | %d | %.3f | %.3f | %.3f | %.2f | %.2f | %.3f |"
                       % (label, np_, o, h, o / h, co, ch, co / ch))
+    if a.pour_reps > 0:
+        pour_timing(models, nps, a.pour_reps, mpirun, exe, env, workdir, ref_label)
     if a.check and not ok:
         raise SystemExit("FAIL: packing statistics differ beyond tolerance")
 
