@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Real scenes in LIGGGHTS and LAMMPS with demcontact: the full pour/settle tables (2000 polydisperse
 # spheres into a cylinder, ours vs each code's builtin Hertz-Mindlin, serial and 2 ranks, wall time
-# as the minimum of three alternating runs), LAMMPS's own pour example with our styles, and the
+# as the minimum of three alternating runs, of the settled bed and of the whole pour), LAMMPS's own pour example with our styles, and the
 # viscoelastic collisions, oblique impacts, the migration test and the LAMMPS restart test. Long (tens of minutes on a shared 2-core machine); the ctest *_smoke cases
 # are the short versions.  Usage: scripts/scenes.sh [workdir]
 set -euo pipefail
@@ -15,9 +15,9 @@ mkdir -p "$out"
 s=examples_cpp/sim
 lg=build/simulators/libdemcontact_liggghts.so
 lm=build/simulators/demcontact_lammps.so
-python3 $s/scenes.py --sim liggghts --np 2 --check --plugin $lg --workdir "$out/liggghts_scene"
+python3 $s/scenes.py --sim liggghts --np 2 --check --pour-reps 3 --plugin $lg --workdir "$out/liggghts_scene"
 echo
-python3 $s/scenes.py --sim lammps --np 2 --check --plugin $lm --workdir "$out/lammps_scene"
+python3 $s/scenes.py --sim lammps --np 2 --check --pour-reps 3 --plugin $lm --workdir "$out/lammps_scene"
 echo
 python3 $s/lammps_example.py --np 2 --plugin $lm --workdir "$out/lammps_example"
 echo
