@@ -930,10 +930,6 @@ DCI_ALWAYS_INLINE_FN double dci_copy_sum(double *dst, const double *src, int n, 
     default: return dci_copy_sum_k(dst, src, n, mask);
     }
 }
-/* the mask of n history doubles (0: all finite), copied to dst unless NULL */
-DCI_ALWAYS_INLINE_FN double dci_copy_nf(double *dst, const double *src, int n) {
-    return dci_copy_sum(dst, src, n, 1);
-}
 /* n history doubles all finite, copied to dst unless NULL: the sum, the mask when it is not finite */
 DCI_ALWAYS_INLINE_FN int dci_copy_finite(double *dst, const double *src, int n) {
     if (DCI_LIKELY(dci_fin(dci_copy_sum(dst, src, n, 0)))) return 1;
@@ -946,7 +942,7 @@ DCI_ALWAYS_INLINE_FN int dci_result_finite(const dc_contact_result *r, const dou
     if (DCI_LIKELY(dci_fin((a + b) + dci_copy_sum(NULL, h, n, 0)))) return 1;
     const double ma = dci_nf(r->f_n) + dci_nf3(r->force);
     const double mb = dci_nf3(r->ft) + (dci_nf3(r->torque1) + dci_nf3(r->torque2));
-    return ma + mb == 0.0 && dci_copy_nf(NULL, h, n) == 0.0;
+    return ma + mb == 0.0 && dci_copy_sum(NULL, h, n, 1) == 0.0;
 }
 /* f n with +0 components when f = 0 (as every library path) */
 DCI_ALWAYS_INLINE_FN dci_v3 dci_normal_vector(double f, dci_v3 n) {

@@ -110,7 +110,7 @@ def main():
             e = dict(env)
             e["LD_PRELOAD"] = p
             if lab != "demcontact":  # an older build: `surface default` (it may predate surface demcontact)
-                models.append((lab, lambda n, e=e: S.liggghts_timing_deck(sd(mo), se, g, data, n), e))
+                models.append((lab, lambda n: S.liggghts_timing_deck(sd(mo), se, g, data, n), e))
                 continue
             models.append((lab, lambda n: S.liggghts_timing_deck(mo, se, g, data, n), e))
             # the same plugin with `projectionCarry on`

@@ -166,12 +166,12 @@ def liggghts_surface_identity(exe, env, mpirun, nps, g, data, workdir, steps=100
             dumps = []
             for surf, mo in (("demcontact", model), ("default", liggghts_surface_default(model))):
                 name = "%s_%s_np%d" % (label, surf, np_)
-                L = liggghts_head(mo, settings, g, ["read_data %s" % data])
-                # LIGGGHTS' dump_modify takes a whole line's format (no `format float`)
-                L += ["thermo %d" % steps, "run %d" % steps,
-                      "dump fin all custom 1 %s.dump id x y z vx vy vz omegax omegay omegaz fx fy fz tqx tqy tqz"
-                      % name, "dump_modify fin sort id format \"%d" + " %.17g" * 15 + "\"", "run 0"]
-                open(os.path.join(d, "in.%s" % name), "w").write("\n".join(L) + "\n")
+                # the timing deck, then the final state dumped (LIGGGHTS' dump_modify takes a whole
+                # line's format, no `format float`)
+                L = ["dump fin all custom 1 %s.dump id x y z vx vy vz omegax omegay omegaz fx fy fz tqx tqy tqz"
+                     % name, "dump_modify fin sort id format \"%d" + " %.17g" * 15 + "\"", "run 0"]
+                open(os.path.join(d, "in.%s" % name), "w").write(
+                    liggghts_timing_deck(mo, settings, g, data, steps) + "\n".join(L) + "\n")
                 H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.%s" % name, "-log", "log.%s" % name], d, env)
                 dumps.append(open(os.path.join(d, "%s.dump" % name), "rb").read())
             n = dumps[0].count(b"\n") - 9  # the dump's 9 header lines
