@@ -18,6 +18,7 @@ target_compile_options(test_inline_contact_c PRIVATE -std=c99 -pedantic -Wall -W
 add_executable(test_inline_contact_cpp c_tests/inline/test_inline_contact.cpp)
 target_compile_options(test_inline_contact_cpp PRIVATE -std=c++17 -Wall -Wextra -Werror -O2)
 add_executable(test_inline_contact_fma c_tests/inline/test_inline_contact.c)
+target_compile_definitions(test_inline_contact_fma PRIVATE DC_TEST_CONTRACTED)
 target_compile_options(test_inline_contact_fma PRIVATE -std=gnu11 -O3 -march=native
                                                        -ffp-contract=fast -Wall -Wextra -Werror)
 # The plugins' choice of the shaped entry (examples_cpp/sim/demcontact_shaped.h): the right

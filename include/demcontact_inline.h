@@ -18,6 +18,11 @@
  *   // a host loop over many contacts: check the model once, then the fast entry per contact
  *   if (dc_contact_model_check_inline(&model) == DC_OK)
  *       st = dc_contact_force_checked_inline(&model, &state, dt, history, &result);
+ *   // a host that ends its run on any bad value: the checks collected, tested once per pass
+ *   dc_contact_checks checks;  dc_contact_checks_init_inline(&checks);
+ *   // (per contact, or once on the arrays the states come from: dc_contact_state_check_inline)
+ *   dc_contact_force_deferred_inline(&model, &state, dt, history, &result, &checks);
+ *   // after the loop, before integrating: st = dc_contact_checks_status_inline(&checks);
  *
  * Contract: the same meaning, statuses and results as the library's functions of the same name
  * without `_inline` (dc_normal_force, dc_alpha_from_e, dc_e_from_alpha, dc_effective_modulus,
@@ -40,6 +45,10 @@
  * clang through `#pragma clang fp contract(off)` in each function, and in CUDA device code
  * through __dmul_rn. nvcc's host side cannot use the barrier (its front end lacks it): with host
  * flags that enable FMA (-Xcompiler -march=...) add -Xcompiler -ffp-contract=off there.
+ * One exception: in the deferred entries (dc_contact_force_deferred_inline), whose evaluation
+ * has no branch, GCC's SLP vectoriser fuses products across that barrier under
+ * -ffp-contract=fast with FMA hardware (-march=native in GNU C modes): results then within 24
+ * ulp of the largest value of a result (ctest inline_contact_fma); add -ffp-contract=off there.
  * Other compilers: build with contraction off (-ffp-contract=off, /fp:precise
  * without /fp:contract); otherwise results may differ from the library by a few ulp of the
  * larger force term. Value-changing options (-ffast-math, -Ofast) void the bit-identity.
@@ -1173,14 +1182,18 @@ typedef struct dci_shape {
     int32_t kernel, tangential, rolling, twisting, carry;
 } dci_shape;
 
-DCI_ALWAYS_INLINE_FN dci_shape dci_shape_of(const dc_contact_model *m) {
+DCI_ALWAYS_INLINE_FN dci_shape dci_shape_from(int32_t kernel, int32_t tangential, int32_t rolling,
+                                              int32_t twisting, int32_t carry) {
     dci_shape sh;
-    sh.kernel = m->normal.kernel;
-    sh.tangential = m->tangential;
-    sh.rolling = m->rolling;
-    sh.twisting = m->twisting;
-    sh.carry = m->carry;
+    sh.kernel = kernel;
+    sh.tangential = tangential;
+    sh.rolling = rolling;
+    sh.twisting = twisting;
+    sh.carry = carry;
     return sh;
+}
+DCI_ALWAYS_INLINE_FN dci_shape dci_shape_of(const dc_contact_model *m) {
+    return dci_shape_from(m->normal.kernel, m->tangential, m->rolling, m->twisting, m->carry);
 }
 
 /* One contact through every stage (src/contact/evaluate.rs `evaluate`); h: the history, its
@@ -1428,13 +1441,119 @@ DCI_ALWAYS_INLINE_FN int32_t dc_contact_force_shaped_inline(
     const dc_contact_model *model, int32_t kernel, int32_t tangential, int32_t rolling,
     int32_t twisting, int32_t carry, const dc_contact_state *state, double dt, double *history,
     dc_contact_result *out) {
-    dci_shape sh;
-    sh.kernel = kernel;
-    sh.tangential = tangential;
-    sh.rolling = rolling;
-    sh.twisting = twisting;
-    sh.carry = carry;
-    return dci_force_checked(model, sh, state, dt, history, out);
+    return dci_force_checked(model, dci_shape_from(kernel, tangential, rolling, twisting, carry), state,
+                             dt, history, out);
+}
+
+/* ---- deferred checks (a host loop that ends its run on any error: one test per pass) */
+
+/* The checked entries test every contact's results with a branch on the last values computed;
+ * in the LIGGGHTS scene that test and the per-contact state check cost 15-18 % of the loop
+ * time, well predicted or not (docs/simulators.md). A host that stops its run on any bad value
+ * (a simulation: the error ends the run, so a failed step's outputs are never used) can check
+ * the states where they come from (its atom arrays, once per pass), evaluate each contact
+ * without a branch, collect the history and result checks in a dc_contact_checks, and test that
+ * once per pass, after its pair loop and before it integrates. */
+
+/* What the deferred entry collects: zero it with dc_contact_checks_init_inline, test it with
+ * dc_contact_checks_status_inline, combine two (threads, GPU blocks, MPI ranks) with
+ * dc_contact_checks_merge_inline. Each field is a sum of s - s over contacts, s the sum of the
+ * contact's values: 0 while every s was finite, else NaN (so the total cannot overflow). */
+typedef struct dc_contact_checks {
+    double history; /* the history as read */
+    double result;  /* the results and the history as written */
+} dc_contact_checks;
+
+DC_INLINE_FN void dc_contact_checks_init_inline(dc_contact_checks *c) {
+    if (!c) return;
+    c->history = 0.0;
+    c->result = 0.0;
+}
+
+/* `into` += `from`: the checks of both sets of contacts (NULL: nothing). */
+DC_INLINE_FN void dc_contact_checks_merge_inline(dc_contact_checks *into,
+                                                 const dc_contact_checks *from) {
+    if (!into || !from) return;
+    into->history += from->history;
+    into->result += from->result;
+}
+
+/* DC_OK when every contact collected passed the history and result checks of
+ * dc_contact_force_checked_inline; else the status that entry returns first for one of them:
+ * DC_ERR_NOT_FINITE (a history value), DC_ERR_RESULT_RANGE (a result or history value written).
+ * One difference, on the cautious side: the checked entry proves finiteness by a sum and, when
+ * that sum is not finite, by per-value masks; the checks here have the sums only, so finite
+ * values whose sum overflows (magnitudes near 1e308) count as not finite. NULL c:
+ * DC_ERR_NULL_POINTER. */
+DC_INLINE_FN int32_t dc_contact_checks_status_inline(const dc_contact_checks *c) {
+    if (!c) return DC_ERR_NULL_POINTER;
+    if (!(c->history == 0.0)) return DC_ERR_NOT_FINITE;
+    if (!(c->result == 0.0)) return DC_ERR_RESULT_RANGE;
+    return DC_OK;
+}
+
+/* The checks dc_contact_force_checked_inline makes of its dt and state, in its order:
+ * DC_ERR_NULL_POINTER (state NULL), DC_ERR_NOT_FINITE / DC_ERR_NOT_POSITIVE (dt),
+ * DC_ERR_NOT_FINITE (a state value; r2 and m2 may be +inf), DC_ERR_NOT_POSITIVE (a radius or
+ * mass), DC_ERR_NOT_UNIT (|n|^2 off 1 by more than 1e-6), else DC_OK. */
+DC_INLINE_FN int32_t dc_contact_state_check_inline(const dc_contact_state *state, double dt) {
+    if (!state) return DC_ERR_NULL_POINTER;
+    if (!isfinite(dt)) return DC_ERR_NOT_FINITE;
+    if (!(dt > 0.0)) return DC_ERR_NOT_POSITIVE;
+    return dci_check_contact_state(state);
+}
+
+/* s - s of a sum s: +0 when s is finite, NaN when not */
+DCI_ALWAYS_INLINE_FN double dci_nz(double s) { return s - s; }
+
+DCI_ALWAYS_INLINE_FN int32_t dci_force_deferred(const dc_contact_model *model, dci_shape sh,
+                                                const dc_contact_state *state, double dt,
+                                                double *history, dc_contact_result *out,
+                                                dc_contact_checks *c) {
+    if (DCI_UNLIKELY(!state || !out || !c)) return DC_ERR_NULL_POINTER;
+    const dci_layout lay = dci_layout_of(sh.tangential, sh.rolling, sh.twisting);
+    /* straight through: the evaluation is + - * / sqrt and selects on any doubles (no trap,
+     * no index from a value), so a bad value gives bad values, caught below or by the caller */
+    double h[DC_CONTACT_HISTORY_MAX];
+    c->history += dci_nz(dci_copy_sum(h, history, lay.len, 0));
+    dc_contact_result r;
+    dci_contact_evaluate(model, sh, lay, state, dt, h, &r);
+    const double a = r.f_n + dci_sum3(r.force);
+    const double b = dci_sum3(r.ft) + (dci_sum3(r.torque1) + dci_sum3(r.torque2));
+    c->result += dci_nz((a + b) + dci_copy_sum(history, h, lay.len, 0));
+    *out = r;
+    return DC_OK;
+}
+
+/* One contact as dc_contact_force_checked_inline, its history and result checks collected in
+ * `checks` instead of returned. The caller's contract: `model` accepted by
+ * dc_contact_model_check_inline; `state` and `dt` accepted by dc_contact_state_check_inline
+ * (per contact, or once per pass on the arrays the states are built from); `history`:
+ * model->history_len doubles, 8-byte aligned (NULL when that is 0), overlapping neither *state
+ * nor *out nor *checks. The history is advanced in place and `out` written whatever the
+ * values: when dc_contact_checks_status_inline then reports an error, that pass's outputs and
+ * histories are not to be used (the host ends its run). When it reports DC_OK for the contact,
+ * the result and history bits are those of dc_contact_force_checked_inline (ctest
+ * inline_contact_*). A state outside the contract is no undefined behaviour (the evaluation is
+ * arithmetic only); its outputs are meaningless, and usually not finite. Returns
+ * DC_ERR_NULL_POINTER when state, out or checks is NULL (nothing evaluated), else DC_OK. */
+DC_INLINE_FN int32_t dc_contact_force_deferred_inline(const dc_contact_model *model,
+                                                      const dc_contact_state *state, double dt,
+                                                      double *history, dc_contact_result *out,
+                                                      dc_contact_checks *checks) {
+    if (!model) return DC_ERR_NULL_POINTER;
+    return dci_force_deferred(model, dci_shape_of(model), state, dt, history, out, checks);
+}
+
+/* dc_contact_force_deferred_inline with the model's shape given as to
+ * dc_contact_force_shaped_inline (the caller's contract: dc_contact_model_shape_inline accepted
+ * these codes for this model). Always inlined. */
+DCI_ALWAYS_INLINE_FN int32_t dc_contact_force_shaped_deferred_inline(
+    const dc_contact_model *model, int32_t kernel, int32_t tangential, int32_t rolling,
+    int32_t twisting, int32_t carry, const dc_contact_state *state, double dt, double *history,
+    dc_contact_result *out, dc_contact_checks *checks) {
+    return dci_force_deferred(model, dci_shape_from(kernel, tangential, rolling, twisting, carry), state,
+                              dt, history, out, checks);
 }
 
 /* ---- dc_contact_model_init_inline (src/contact/spec.rs contact_model) */

@@ -60,6 +60,23 @@ __global__ void dc_contacts_shaped(const dc_contact_model *model, int n, const d
                                                dt, history + (long)i * DC_CONTACT_HISTORY_MAX, &out[i]);
 }
 
+/* The deferred entry on the device: each thread's checks in its slot (a host merges the slots
+ * with dc_contact_checks_merge_inline and tests them with dc_contact_checks_status_inline after
+ * the pass); the state check once per contact here, a host would check its arrays instead. */
+__global__ void dc_contacts_deferred(const dc_contact_model *model, int n, const dc_contact_state *state,
+                                     double dt, double *history, dc_contact_result *out, int *status,
+                                     dc_contact_checks *checks) {
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n) return;
+    dc_contact_checks c;
+    dc_contact_checks_init_inline(&c);
+    status[i] = dc_contact_state_check_inline(&state[i], dt);
+    dc_contact_force_shaped_deferred_inline(model, DC_KERNEL_HERTZ_DAMPED_CLAMPED, DC_TANGENTIAL_MINDLIN,
+                                            DC_ROLLING_EPSD, DC_TWISTING_NONE, DC_CARRY_PROJECT, &state[i], dt,
+                                            history + (long)i * DC_CONTACT_HISTORY_MAX, &out[i], &c);
+    checks[i] = c;
+}
+
 __global__ void dc_contact_setup(const dc_contact_spec *spec, dc_contact_model *model, int *status) {
     *status = dc_contact_model_init_inline(spec, model);
 }

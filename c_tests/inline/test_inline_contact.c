@@ -21,6 +21,13 @@
  *    with their codes as compile-time constants (as the plugins instantiate it), the others as
  *    run-time codes: same statuses and bits; dc_contact_model_shape_inline accepts a model's own
  *    shape only;
+ *  - the deferred entries dc_contact_force_deferred_inline and (constant shapes as above)
+ *    dc_contact_force_shaped_deferred_inline along the same trajectories, each with its own
+ *    history, a dc_contact_checks per step: the status of the checks equals the library's, and
+ *    on DC_OK the same bits; dc_contact_state_check_inline gives the library's status for every
+ *    bad dt or state, and the deferred entries the library's history/result statuses for the
+ *    bad-input cases whose state it accepts (finite values whose sum overflows: the documented
+ *    cautious difference only);
  *  - bad input: NULL pointers, short/misaligned history, dt NaN/0/<0, NaN/inf/zero/non-unit
  *    states, NaN in the history, corrupted models: the same status, outputs untouched.
  * Prints "test_inline_contact[...]: N passed, M failed". */
@@ -116,9 +123,12 @@ static int shape_index(const dc_contact_model *m) {
 #define SH_C(K, T, R, TW)                                                                          \
     n_shaped_const++;                                                                              \
     shape_hits[shape_index(m)]++;                                                                  \
-    if (m->carry == DC_CARRY_ROTATE)                                                               \
-        return dc_contact_force_shaped_inline(m, K, T, R, TW, DC_CARRY_ROTATE, s, dt, h, o);       \
-    return dc_contact_force_shaped_inline(m, K, T, R, TW, DC_CARRY_PROJECT, s, dt, h, o);
+    if (m->carry == DC_CARRY_ROTATE) return SH_CALL(K, T, R, TW, DC_CARRY_ROTATE);                  \
+    return SH_CALL(K, T, R, TW, DC_CARRY_PROJECT);
+/* ck NULL: the shaped entry; else the shaped deferred entry collecting into ck */
+#define SH_CALL(K, T, R, TW, C)                                                                    \
+    (ck ? dc_contact_force_shaped_deferred_inline(m, K, T, R, TW, C, s, dt, h, o, ck)               \
+        : dc_contact_force_shaped_inline(m, K, T, R, TW, C, s, dt, h, o))
 #define SH_TW(K, T, R)                                                                             \
     if (m->twisting == DC_TWISTING_NONE) {                                                         \
         SH_C(K, T, R, DC_TWISTING_NONE)                                                            \
@@ -137,15 +147,14 @@ static int shape_index(const dc_contact_model *m) {
     default: SH_R(K, DC_TANGENTIAL_MINDLIN)                                                        \
     }
 static int32_t shaped(const dc_contact_model *m, const dc_contact_state *s, double dt, double *h,
-                      dc_contact_result *o) {
+                      dc_contact_result *o, dc_contact_checks *ck) {
     switch (m->normal.kernel) {
     case DC_KERNEL_HERTZ_DAMPED: SH_T(DC_KERNEL_HERTZ_DAMPED)
     case DC_KERNEL_HERTZ_DAMPED_CLAMPED: SH_T(DC_KERNEL_HERTZ_DAMPED_CLAMPED)
     case DC_KERNEL_GEN_DAMPED_CLAMPED: SH_T(DC_KERNEL_GEN_DAMPED_CLAMPED)
     default:
         n_shaped_runtime++;
-        return dc_contact_force_shaped_inline(m, m->normal.kernel, m->tangential, m->rolling,
-                                              m->twisting, m->carry, s, dt, h, o);
+        return SH_CALL(m->normal.kernel, m->tangential, m->rolling, m->twisting, m->carry);
     }
 }
 
@@ -171,11 +180,102 @@ static void shape_check(const dc_contact_model *m) {
         fail("shape of an invalid model / NULL", 0);
 }
 
+/* The deferred entries for one step: the generic one with history hd, the shaped one (constant
+ * shapes) with hsd, each with fresh checks; their checks' status must be the library's (sl, with
+ * result rl and history hl after the step; h0 the history before it) and on DC_OK the bits the
+ * same. `overflow_ok`: a status of not finite / result range where the library says DC_OK is
+ * allowed when every value is finite but their sum is not (the documented difference). On an
+ * error the failed step's outputs are the caller's to drop: both histories restart from hl. */
+static long n_deferred = 0, n_deferred_err = 0, n_deferred_bad[2], n_deferred_contracted = 0;
+#if defined(DC_TEST_CONTRACTED)
+/* a[i] and b[i] within DC_TEST_CONTRACTED_ULPS ulp of the largest |a[i]| (the doubles of a
+ * result or of a history); the largest difference seen, in those units, in worst_ulps */
+#define DC_TEST_CONTRACTED_ULPS 64.0
+static double worst_ulps = 0.0;
+static int close_values(const double *a, const double *b, int n) {
+    double scale = 0.0;
+    for (int i = 0; i < n; i++) scale = fabs(a[i]) > scale ? fabs(a[i]) : scale;
+    for (int i = 0; i < n; i++) {
+        if (memcmp(a + i, b + i, sizeof *a) == 0) continue;
+        const double u = fabs(a[i] - b[i]) / (2.220446049250313e-16 * scale);
+        if (!(u <= DC_TEST_CONTRACTED_ULPS)) return 0;
+        worst_ulps = u > worst_ulps ? u : worst_ulps;
+    }
+    return 1;
+}
+#endif
+static int deferred_step(const dc_contact_model *m, const dc_contact_state *s, double dt,
+                         const double *h0, int32_t sl, const dc_contact_result *rl,
+                         const double *hl, double *hd, double *hsd, int overflow_ok) {
+    dc_contact_checks c1, c2;
+    dc_contact_checks_init_inline(&c1);
+    dc_contact_checks_init_inline(&c2);
+    dc_contact_result r1, r2;
+    memset(&r1, 0x5A, sizeof r1);
+    memset(&r2, 0x5A, sizeof r2);
+    const int32_t e1 = dc_contact_force_deferred_inline(m, s, dt, hd, &r1, &c1);
+    const int32_t e2 = shaped(m, s, dt, hsd, &r2, &c2);
+    const int32_t s1 = dc_contact_checks_status_inline(&c1), s2 = dc_contact_checks_status_inline(&c2);
+    int ok = e1 == DC_OK && e2 == DC_OK;
+    if (s1 != sl || s2 != sl) {
+        /* the sums alone: finite values whose sum overflows */
+        const int n = (int)m->history_len;
+        double sin_ = 0.0, sout = rl->f_n, mask = 0.0;
+        for (int k = 0; k < n; k++) sin_ += h0[k], mask += (h0[k] - h0[k]) + (hl[k] - hl[k]);
+        for (int k = 0; k < 3; k++) {
+            sout += rl->force[k] + rl->ft[k] + rl->torque1[k] + rl->torque2[k];
+            mask += (rl->force[k] - rl->force[k]) + (rl->ft[k] - rl->ft[k]) +
+                    (rl->torque1[k] - rl->torque1[k]) + (rl->torque2[k] - rl->torque2[k]);
+        }
+        for (int k = 0; k < n; k++) sout += hl[k];
+        const int over = sl == DC_OK && mask == 0.0 && !(isfinite(sin_) && isfinite(sout));
+        ok = ok && overflow_ok && over && s1 == s2 && s1 != DC_OK;
+    }
+    if (sl == DC_OK && s1 == DC_OK) {
+#if defined(DC_TEST_CONTRACTED)
+        /* built with -ffp-contract=fast -march=native: GCC's SLP vectoriser fuses products of
+         * the deferred entries across __builtin_assoc_barrier (the header's documented limit):
+         * within DC_TEST_CONTRACTED_ULPS ulp of the largest value of the result / of the history, each step from the
+         * library's history (no drift) */
+        ok = ok && close_values((const double *)rl, (const double *)&r1, 13) &&
+             close_values((const double *)rl, (const double *)&r2, 13) &&
+             close_values(hl, hd, DC_CONTACT_HISTORY_MAX) && close_values(hl, hsd, DC_CONTACT_HISTORY_MAX);
+        memcpy(hd, hl, sizeof(double) * DC_CONTACT_HISTORY_MAX);
+        memcpy(hsd, hl, sizeof(double) * DC_CONTACT_HISTORY_MAX);
+        n_deferred_contracted += !(same_result(rl, &r1) && same_result(rl, &r2));
+#else
+        ok = ok && same_result(rl, &r1) && same_result(rl, &r2) &&
+             memcmp(hl, hd, sizeof(double) * DC_CONTACT_HISTORY_MAX) == 0 &&
+             memcmp(hl, hsd, sizeof(double) * DC_CONTACT_HISTORY_MAX) == 0;
+#endif
+    } else {
+        n_deferred_err++;
+        if (sl == DC_ERR_NOT_FINITE || sl == DC_ERR_RESULT_RANGE) n_deferred_bad[sl == DC_ERR_RESULT_RANGE]++;
+        memcpy(hd, hl, sizeof(double) * DC_CONTACT_HISTORY_MAX);
+        memcpy(hsd, hl, sizeof(double) * DC_CONTACT_HISTORY_MAX);
+    }
+    n_deferred++;
+    if (!ok && n_fail < 3)
+        fprintf(stderr, "  deferred: library %d, checks %d / %d (entries %d %d), f_n %.17g / %.17g / %.17g\n",
+                (int)sl, (int)s1, (int)s2, (int)e1, (int)e2, rl->f_n, r1.f_n, r2.f_n);
+    if (!ok && n_fail < 3) {
+        const double *a = (const double *)rl, *b = (const double *)&r1, *c = (const double *)&r2;
+        for (int k = 0; k < (int)(sizeof *rl / sizeof(double)); k++)
+            if (memcmp(a + k, b + k, 8) || memcmp(a + k, c + k, 8))
+                fprintf(stderr, "    result double %d: %.17g %.17g %.17g\n", k, a[k], b[k], c[k]);
+        for (int k = 0; k < DC_CONTACT_HISTORY_MAX; k++)
+            if (memcmp(hl + k, hd + k, 8) || memcmp(hl + k, hsd + k, 8))
+                fprintf(stderr, "    history %d: %.17g %.17g %.17g\n", k, hl[k], hd[k], hsd[k]);
+    }
+    return ok;
+}
+
 /* One contact evolved over `steps` steps of `m`; counts of regimes seen added to `seen`. */
 static void trajectory(const dc_contact_model *m, long steps, long *seen) {
     double hl[DC_CONTACT_HISTORY_MAX] = {0}, hi[DC_CONTACT_HISTORY_MAX] = {0};
     double hc[DC_CONTACT_HISTORY_MAX] = {0}; /* dc_contact_force_checked_inline's own history */
     double hs[DC_CONTACT_HISTORY_MAX] = {0}; /* dc_contact_force_shaped_inline's */
+    double hd[DC_CONTACT_HISTORY_MAX] = {0}, hsd[DC_CONTACT_HISTORY_MAX] = {0}; /* the deferred entries' */
     shape_check(m);
     if (dc_contact_model_check_inline(m) != DC_OK) {
         fail("model_check of a valid model", 0);
@@ -221,6 +321,8 @@ static void trajectory(const dc_contact_model *m, long steps, long *seen) {
         dc_contact_result rl, ri;
         memset(&rl, 0x5A, sizeof rl);
         memset(&ri, 0x5A, sizeof ri);
+        double h0[DC_CONTACT_HISTORY_MAX];
+        memcpy(h0, hl, sizeof h0);
         const int32_t sl = dc_contact_force(m, &s, dt, hl, DC_CONTACT_HISTORY_MAX, &rl);
         const int32_t si = dc_contact_force_inline(m, &s, dt, hi, DC_CONTACT_HISTORY_MAX, &ri);
         dc_contact_result rc;
@@ -228,7 +330,17 @@ static void trajectory(const dc_contact_model *m, long steps, long *seen) {
         const int32_t sc = dc_contact_force_checked_inline(m, &s, dt, hc, &rc);
         dc_contact_result rs;
         memset(&rs, 0x5A, sizeof rs);
-        const int32_t ss = shaped(m, &s, dt, hs, &rs);
+        const int32_t ss = shaped(m, &s, dt, hs, &rs, NULL);
+        /* the deferred entries, for states the state check accepts (their contract) */
+        const int32_t sst = dc_contact_state_check_inline(&s, dt);
+        if (sst != DC_OK && sst != sl) {
+            fail("state check status", i);
+            return;
+        }
+        if (sst == DC_OK && !deferred_step(m, &s, dt, h0, sl, &rl, hl, hd, hsd, 0)) {
+            fail("deferred entries: checks status/result/history bits", i);
+            return;
+        }
         if (sl != si || sl != sc || sl != ss) {
             fail("contact status", i);
             return;
@@ -277,7 +389,7 @@ static void bad_inputs(const dc_contact_model *m) {
     double hbuf[DC_CONTACT_HISTORY_MAX + 1] = {0};
     const double dt = 1e-6;
     /* each case: (model, state, dt, history, len) */
-    for (int c = 0; c < 52; c++) {
+    for (int c = 0; c < 53; c++) {
         dc_contact_model mm = *m;
         dc_contact_state ss = s;
         double hist[DC_CONTACT_HISTORY_MAX + 1];
@@ -351,6 +463,10 @@ static void bad_inputs(const dc_contact_model *m) {
             for (int i = 0; i < (int)m->history_len; i++) hist[i] = 1.5e308;
             break;
         case 51: ss.w1[0] = ss.w1[2] = 1.5e308; break;
+        /* the history written overflows while every result is finite: heavy bodies sliding
+         * fast with a tiny overlap (|trial force|^2 = inf, so F_t = 0; the spring kept with the
+         * damping, -(F_t + c_t v_t)/k_t, beyond 1e308): DC_ERR_RESULT_RANGE from the history */
+        case 52: ss.m1 = ss.m2 = 1e10; ss.overlap = 1e-18; ss.v1[0] = 1e303; break;
         default: len = 0; break;
         }
         double hl[DC_CONTACT_HISTORY_MAX + 1], hi2[DC_CONTACT_HISTORY_MAX + 1];
@@ -391,7 +507,7 @@ static void bad_inputs(const dc_contact_model *m) {
             memcpy(hs, hist, sizeof hs);
             dc_contact_result rs;
             memset(&rs, 0x5A, sizeof rs);
-            const int32_t ss = sp ? shaped(mp, sp, d, hs, null_out ? NULL : &rs)
+            const int32_t ss = sp ? shaped(mp, sp, d, hs, null_out ? NULL : &rs, NULL)
                                   : dc_contact_force_shaped_inline(mp, mp->normal.kernel, mp->tangential,
                                                                    mp->rolling, mp->twisting, mp->carry,
                                                                    NULL, d, hs, &rs);
@@ -399,6 +515,33 @@ static void bad_inputs(const dc_contact_model *m) {
                 fprintf(stderr, "  bad case %d: library %d, shaped entry %d\n", c, (int)sl, (int)ss);
                 fail("shaped entry: bad-input status/outputs", c);
                 continue;
+            }
+            /* the state check: the library's status for a bad dt or state; else the deferred
+             * entries (NULL out: DC_ERR_NULL_POINTER, nothing evaluated) */
+            const int32_t sst = dc_contact_state_check_inline(sp, d);
+            if (sst != DC_OK && sst != sl) {
+                fprintf(stderr, "  bad case %d: library %d, state check %d\n", c, (int)sl, (int)sst);
+                fail("state check: bad-input status", c);
+                continue;
+            }
+            if (sst == DC_OK && null_out) {
+                dc_contact_checks ck;
+                dc_contact_checks_init_inline(&ck);
+                double hd[DC_CONTACT_HISTORY_MAX + 1];
+                memcpy(hd, hist, sizeof hd);
+                if (dc_contact_force_deferred_inline(mp, sp, d, hd, NULL, &ck) != sl ||
+                    dc_contact_force_deferred_inline(mp, sp, d, hd, &rs, NULL) != sl ||
+                    memcmp(hd, hist, sizeof hd) != 0 || dc_contact_checks_status_inline(&ck) != DC_OK)
+                    fail("deferred entry: NULL out/checks", c);
+            } else if (sst == DC_OK) {
+                double hd[DC_CONTACT_HISTORY_MAX + 1], hsd[DC_CONTACT_HISTORY_MAX + 1];
+                memcpy(hd, hist, sizeof hd);
+                memcpy(hsd, hist, sizeof hsd);
+                if (!deferred_step(mp, sp, d, hist, sl, &rl, hl, hd, hsd, c >= 49)) {
+                    fprintf(stderr, "  bad case %d: library %d: deferred entries differ\n", c, (int)sl);
+                    fail("deferred entries: bad-input checks", c);
+                    continue;
+                }
             }
         }
         if (sl != si) {
@@ -454,6 +597,29 @@ static void sum_checks(void) {
     else fail("fast finiteness sums", 0);
 }
 
+/* dc_contact_checks: init, merge (threads, ranks) and the status order (history first). */
+static void checks_unit(void) {
+    dc_contact_checks a, b;
+    memset(&a, 0x5A, sizeof a);
+    dc_contact_checks_init_inline(&a);
+    dc_contact_checks_init_inline(&b);
+    dc_contact_checks_init_inline(NULL);
+    int ok = dc_contact_checks_status_inline(&a) == DC_OK &&
+             dc_contact_checks_status_inline(NULL) == DC_ERR_NULL_POINTER;
+    b.result = (double)NAN;
+    dc_contact_checks_merge_inline(&a, &b);
+    dc_contact_checks_merge_inline(&a, NULL);
+    dc_contact_checks_merge_inline(NULL, &b);
+    ok = ok && dc_contact_checks_status_inline(&a) == DC_ERR_RESULT_RANGE &&
+         dc_contact_checks_status_inline(&b) == DC_ERR_RESULT_RANGE;
+    b.result = 0.0;
+    b.history = (double)NAN;
+    dc_contact_checks_merge_inline(&a, &b);
+    ok = ok && dc_contact_checks_status_inline(&a) == DC_ERR_NOT_FINITE;
+    if (ok) n_pass++;
+    else fail("dc_contact_checks init/merge/status", 0);
+}
+
 /* The DMT kernels (codes 18, 19) of dc_normal_force_inline against dc_normal_force, bit for bit:
  * overlaps from deep contact through the attractive tail (-2 d_c .. 0) and beyond, NaN. */
 static void dmt_forces(long n) {
@@ -488,6 +654,7 @@ int main(int argc, char **argv) {
     long specs_ok = 0, specs_bad = 0, models = 0, projected = 0;
 
     sum_checks();
+    checks_unit();
     /* spec_init */
     {
         dc_contact_spec a, b;
@@ -589,10 +756,19 @@ int main(int argc, char **argv) {
     for (int i = 0; i < 108; i++) shapes_hit += shape_hits[i] > 0;
     printf("test_inline_contact[%s]: shaped entry: %ld steps with a constant shape (%d of the 108 "
            "shapes), %ld with a run-time one\n", LANG, n_shaped_const, shapes_hit, n_shaped_runtime);
+    printf("test_inline_contact[%s]: deferred entries: %ld steps (%ld with an error status), the "
+           "history not finite %ld, results out of range %ld; %ld steps not bit-identical (only "
+           "in the contracted build)\n",
+           LANG, n_deferred, n_deferred_err, n_deferred_bad[0], n_deferred_bad[1], n_deferred_contracted);
+#if defined(DC_TEST_CONTRACTED)
+    printf("test_inline_contact[%s]: deferred entries, contracted: largest difference %.1f ulp of the "
+           "largest value of a result or history (bound %.0f)\n", LANG, worst_ulps, DC_TEST_CONTRACTED_ULPS);
+#endif
     /* the comparison must have exercised every regime */
     if (!(seen[1] > 1000 && seen[2] > 1000 && seen[3] > 1000 && seen[4] > 1000 && seen[6] > 1000 &&
           seen[7] > 1000 && specs_bad > 1000 && projected * 4 > models &&
           n_shaped_const * 10 > n_shaped_runtime && n_shaped_runtime > 1000 &&
+          n_deferred * 2 > seen[0] && n_deferred_bad[0] > 0 && n_deferred_bad[1] > 0 &&
           /* every constant shape in the long runs (10^7 steps; shorter runs reach fewer) */
           shapes_hit >= (total >= 10000000L ? 108 : total >= 2000000L ? 60 : 20)))
         fail("coverage of regimes", 0);

@@ -6,7 +6,9 @@
  * tangential linear or Mindlin, twisting none) gets its instantiation, any other the generic
  * entry. pick_common (the LIGGGHTS plugin's choice for all its type pairs): a set of models of
  * one instantiated shape gets it, whatever their parameters; a set with two shapes, or with one
- * model of no instantiated shape, gets the generic entry.
+ * model of no instantiated shape, gets the generic entry. The deferred evaluation picked the
+ * same way (S::eval_deferred, the LIGGGHTS plugin's pair loop) along the same trajectories: its
+ * checks give the library's status and, on DC_OK, the same bits.
  * Argument 1: models (default 20000). Prints "test_shaped_pick: N passed, M failed". */
 #include "demcontact_shaped.h"
 
@@ -41,11 +43,29 @@ IsGeneric::type IsGeneric::get<demcontact_shaped::Generic>()
     return true;
 }
 
+/* The deferred evaluation per shape (what the LIGGGHTS plugin's pair loop picks): S::eval_deferred. */
+typedef int32_t (*EvalDeferred)(const dc_contact_model *, const dc_contact_state *, double, double *,
+                                dc_contact_result *, dc_contact_checks *);
+template <class S>
+int32_t deferred_fn(const dc_contact_model *m, const dc_contact_state *s, double dt, double *h, dc_contact_result *r,
+                    dc_contact_checks *c)
+{
+    return S::eval_deferred(m, s, dt, h, r, c);
+}
+struct EvalDeferredOf {
+    typedef EvalDeferred type;
+    template <class S>
+    static type get()
+    {
+        return &deferred_fn<S>;
+    }
+};
+
 int main(int argc, char **argv)
 {
     const long want = argc > 1 ? std::atol(argv[1]) : 20000L;
     const demcontact_shaped::Eval generic = &demcontact_shaped::eval_fn<demcontact_shaped::Generic>;
-    long models = 0, shaped = 0, generic_models = 0, steps_ok = 0, steps_err = 0;
+    long models = 0, shaped = 0, generic_models = 0, steps_ok = 0, steps_err = 0, steps_deferred = 0;
     while (models < want) {
         dc_contact_spec s;
         dc_contact_spec_init(&s);
@@ -88,6 +108,11 @@ int main(int argc, char **argv)
         const bool instantiated = (k == DC_KERNEL_HERTZ_DAMPED || k == DC_KERNEL_HERTZ_DAMPED_CLAMPED) &&
                                   m.tangential != DC_TANGENTIAL_NONE && m.twisting == DC_TWISTING_NONE;
         const demcontact_shaped::Eval e = demcontact_shaped::eval_for(m);
+        const EvalDeferred ed = demcontact_shaped::pick<EvalDeferredOf>(m);
+        if ((ed == &deferred_fn<demcontact_shaped::Generic>) != !instantiated) {
+            fail("picked the wrong deferred entry", models);
+            continue;
+        }
         const bool is_generic = demcontact_shaped::pick<IsGeneric>(m);
         if ((e == generic) == instantiated || is_generic == instantiated || demcontact_shaped::instantiated(m) != instantiated) {
             fail("picked the wrong entry", models);
@@ -129,7 +154,7 @@ int main(int argc, char **argv)
             n_pass++;
         }
         // a trajectory: the library and the picked entry, each with its own history
-        double hl[DC_CONTACT_HISTORY_MAX] = {0}, hp[DC_CONTACT_HISTORY_MAX] = {0};
+        double hl[DC_CONTACT_HISTORY_MAX] = {0}, hp[DC_CONTACT_HISTORY_MAX] = {0}, hd[DC_CONTACT_HISTORY_MAX] = {0};
         dc_contact_state st;
         std::memset(&st, 0, sizeof st);
         const bool wall = uni() < 0.25;
@@ -163,15 +188,34 @@ int main(int argc, char **argv)
                 fail("picked entry: status/result/history bits", models);
                 break;
             }
+            // the picked deferred entry, for states the state check accepts (its contract): the
+            // library's status from its checks, on DC_OK the same bits; else it restarts from hl
+            if (dc_contact_state_check_inline(&st, dt) == DC_OK) {
+                dc_contact_checks ck;
+                dc_contact_checks_init_inline(&ck);
+                dc_contact_result rd;
+                std::memset(&rd, 0x5A, sizeof rd);
+                const int32_t sd = ed(&m, &st, dt, hd, &rd, &ck);
+                const int32_t sc = dc_contact_checks_status_inline(&ck);
+                if (sd != DC_OK || sc != sl ||
+                    (sl == DC_OK && (std::memcmp(&rl, &rd, sizeof rl) != 0 || std::memcmp(hl, hd, sizeof hl) != 0))) {
+                    fail("picked deferred entry: checks/result/history bits", models);
+                    break;
+                }
+                steps_deferred++;
+            }
+            if (sl != DC_OK) std::memcpy(hd, hl, sizeof hd);
             if (sl == DC_OK) steps_ok++;
             else steps_err++;
             n_pass++;
         }
     }
     std::printf("test_shaped_pick: %ld models (%ld with an instantiated shape, %ld generic), %ld ok "
-                "steps, %ld error steps\n",
-                models, shaped, generic_models, steps_ok, steps_err);
-    if (!(shaped * 10 > models && generic_models * 10 > models && steps_err >= models)) fail("coverage", 0);
+                "steps, %ld error steps; the deferred entry in %ld steps\n",
+                models, shaped, generic_models, steps_ok, steps_err, steps_deferred);
+    if (!(shaped * 10 > models && generic_models * 10 > models && steps_err >= models &&
+          steps_deferred * 10 > steps_ok * 9))
+        fail("coverage", 0);
     std::printf("test_shaped_pick: %ld passed, %ld failed\n", n_pass, n_fail);
     return n_fail ? 1 : 0;
 }

@@ -51,6 +51,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <limits>
@@ -166,17 +167,19 @@ public:
         // the type pairs (i, j), 1 <= i, j <= ntypes, of models[(ntypes + 1)^2]
         const int n = ntypes;
         const std::vector<dc_contact_model> &m = models;
-        body = demcontact_shaped::pick_common<BodyOf>(
-            n * n, [&m, n](int k) -> const dc_contact_model & { return m[(k / n + 1) * (n + 1) + k % n + 1]; });
+        auto at = [&m, n](int k) -> const dc_contact_model & { return m[(k / n + 1) * (n + 1) + k % n + 1]; };
+        body = demcontact_shaped::pick_common<BodyOf<false> >(n * n, at);
+        body_deferred = demcontact_shaped::pick_common<BodyOf<true> >(n * n, at);
     }
 
     typedef void (DemcontactSubModel::*Body)(const SurfacesIntersectData &, ForceData &, ForceData &);
+    template <bool DEFERRED>
     struct BodyOf { // demcontact_shaped::pick's visitor: intersect_with instantiated for a shape
         typedef Body type;
         template <class S>
         static type get()
         {
-            return &DemcontactSubModel::intersect_with<S>;
+            return &DemcontactSubModel::intersect_with<S, DEFERRED>;
         }
     };
 
@@ -231,13 +234,13 @@ public:
     void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
         if (passive) return; // evaluated with the tangential sub-model's combined model
-        (this->*body)(sidata, i_forces, j_forces);
+        (this->*(in_pass ? body_deferred : body))(sidata, i_forces, j_forces);
     }
 
     /* intersect's body for the models' shape S (demcontact_shaped.h): S::eval inlined into it, the
        result in registers (through a pointer to the evaluation alone, the force was read back from
        memory right after the callee's stores: a store-to-load forwarding stall per contact). */
-    template <class S>
+    template <class S, bool DEFERRED>
     void intersect_with(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
         const double inf = std::numeric_limits<double>::infinity();
@@ -284,8 +287,14 @@ public:
         dc_contact_result r;
         // models[] passed dc_contact_model_check_inline in build/combine_into; h: eval_nh >= the
         // model's history length
-        // S::eval: dc_contact_force_checked_inline, or its instantiation for the models' shape (same bits)
-        const int32_t st = S::eval(&models[t1 * (ntypes + 1) + t2], &s, lmp->update->dt, h, &r);
+        // S::eval: dc_contact_force_checked_inline, or its instantiation for the models' shape (same bits).
+        // Inside the pair loop (in_pass: between begin_pass and end_pass) the deferred entry: the
+        // states' values checked once per pass in begin_pass (the atoms' arrays they come from),
+        // the history and result checks collected and tested in end_pass, before LIGGGHTS
+        // integrates (same bits; 15-18 % of this body's time was the per-contact checks)
+        const dc_contact_model *model = &models[t1 * (ntypes + 1) + t2];
+        const int32_t st = DEFERRED ? S::eval_deferred(model, &s, lmp->update->dt, h, &r, &checks)
+                                    : S::eval(model, &s, lmp->update->dt, h, &r);
         if (st != DC_OK) {
             char msg[200];
             std::snprintf(msg, sizeof msg, "%s demcontact: atom %ld: %s", rolling ? "rolling_friction" : "tangential",
@@ -309,6 +318,107 @@ public:
         }
     }
 
+    /* The pair loop's pass (LIGGGHTS' beginPass/endPass around it; fix wall/gran has none, so
+       wall contacts keep the per-contact checks). begin_pass: the checks the deferred entry
+       leaves to its caller (dc_contact_state_check_inline's), made on what the pass's states are
+       built from: dt, and every local and ghost atom's radius and mass (finite, > 0), velocity
+       and angular velocity (finite). Not checked here: the contact normal and overlap, which
+       LIGGGHTS computes from positions (unit and finite unless two atoms coincide or a position
+       is not finite; then the results are not finite and end_pass ends the run). */
+    void begin_pass()
+    {
+        if (passive || eval_nh == 0) return; // evaluated by the tangential class / not built
+        dc_contact_checks_init_inline(&checks);
+        const double dt = lmp->update->dt;
+        if (!(std::isfinite(dt) && dt > 0.0)) {
+            char msg[200];
+            std::snprintf(msg, sizeof msg, "pair gran demcontact: timestep = %g: %s", dt,
+                          dc_status_str(std::isfinite(dt) ? DC_ERR_NOT_POSITIVE : DC_ERR_NOT_FINITE));
+            lmp->error->one(FLERR, msg);
+        }
+        LAMMPS_NS::Atom *atom = lmp->atom;
+        // only where every state value comes from these arrays (per-atom masses, no rigid-body
+        // masses, no multicontact radii, spheres); else the per-contact checks, as on walls
+        LAMMPS_NS::PairGran *pg = dynamic_cast<LAMMPS_NS::PairGran *>(lmp->force->pair);
+        if (!pg || !atom->rmass || !atom->radius || !atom->v || !atom->omega || pg->fr_pair() ||
+            pg->storeSumDelta() || atom->superquadric_flag)
+            return;
+        const int n = atom->nlocal + atom->nghost;
+        // one flag over the arrays: integer tests of the exponent field (all ones: inf or NaN)
+        // and comparisons, OR-reduced (vectorised, where a floating-point sum is not); the atom
+        // found only when the flag is set
+        if (n == 0 || !(bad_values(atom->v[0], 3 * n, false) | bad_values(atom->omega[0], 3 * n, false) |
+                        bad_values(atom->radius, n, true) | bad_values(atom->rmass, n, true))) {
+            in_pass = true;
+            return;
+        }
+        for (int i = 0; i < n; i++) {
+            const double vals[8] = {atom->radius[i], atom->rmass[i], atom->v[i][0], atom->v[i][1], atom->v[i][2],
+                                    atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]};
+            static const char *names[8] = {"radius", "mass", "vx", "vy", "vz", "omegax", "omegay", "omegaz"};
+            for (int k = 0; k < 8; k++) {
+                const int32_t st = !std::isfinite(vals[k]) ? DC_ERR_NOT_FINITE
+                                   : k < 2 && !(vals[k] > 0.0) ? DC_ERR_NOT_POSITIVE : DC_OK;
+                if (st == DC_OK) continue;
+                char msg[300];
+                std::snprintf(msg, sizeof msg, "pair gran demcontact: atom %ld: %s = %g: %s", (long)atom->tag[i],
+                              names[k], vals[k], dc_status_str(st));
+                lmp->error->one(FLERR, msg);
+            }
+        }
+        lmp->error->one(FLERR, "pair gran demcontact: internal error: atom check failed without a bad value");
+    }
+
+    /* 1 when one of x[0..n) is not finite or (positive) not > 0. On the bits u, in the sign bit
+       of an OR over the values: (u & exponent field) + its lowest bit carries into the sign bit
+       exactly when the field is all ones (inf, NaN); for positive also u itself (the sign: a
+       negative value or -0) and u - 1 (+0 wraps to all ones). Integer operations only, so GCC
+       vectorises the loops (a floating-point sum or a comparison flag it did not). */
+    static int bad_values(const double *x, int n, bool positive)
+    {
+        const uint64_t exp = 0x7ff0000000000000ull, low = 0x0010000000000000ull;
+        uint64_t bad = 0;
+        if (positive)
+            for (int k = 0; k < n; k++) {
+                uint64_t u;
+                std::memcpy(&u, &x[k], sizeof u);
+                bad |= u | (u - 1) | ((u & exp) + low);
+            }
+        else
+            for (int k = 0; k < n; k++) {
+                uint64_t u;
+                std::memcpy(&u, &x[k], sizeof u);
+                bad |= (u & exp) + low;
+            }
+        return (bad >> 63) != 0;
+    }
+
+    /* After the pair loop: the collected history and result checks (dc_contact_checks_status_inline);
+       on an error the run ends here, before LIGGGHTS integrates the pass's forces. The atom named
+       is one whose force or torque is not finite, when there is one. */
+    void end_pass()
+    {
+        if (!in_pass) return;
+        in_pass = false;
+        const int32_t st = dc_contact_checks_status_inline(&checks);
+        if (st == DC_OK) return;
+        LAMMPS_NS::Atom *atom = lmp->atom;
+        long who = -1;
+        for (int i = 0; i < atom->nlocal && who < 0; i++)
+            for (int k = 0; k < 3; k++)
+                if (!std::isfinite(atom->f[i][k]) || !std::isfinite(atom->torque[i][k])) who = (long)atom->tag[i];
+        char msg[300];
+        if (who >= 0)
+            std::snprintf(msg, sizeof msg, "%s demcontact: step %ld: %s (atom %ld: force or torque not finite)",
+                          rolling ? "rolling_friction" : "tangential", (long)lmp->update->ntimestep,
+                          dc_status_str(st), who);
+        else
+            std::snprintf(msg, sizeof msg, "%s demcontact: step %ld: %s (a contact's history)",
+                          rolling ? "rolling_friction" : "tangential", (long)lmp->update->ntimestep,
+                          dc_status_str(st));
+        lmp->error->one(FLERR, msg);
+    }
+
     void close(SurfacesCloseData &scdata)
     {
         if (!scdata.contact_history) return;
@@ -323,10 +433,13 @@ public:
     const void *owner;
     bool rolling;
     bool passive = false; // rolling: evaluated by the tangential sub-model (combined model)
+    bool in_pass = false; // inside the pair loop's pass: the deferred entry (begin_pass/end_pass)
+    dc_contact_checks checks; // the pass's collected checks
     bool full_force = false; // tangential with the combined model: applies the normal force too
     int nh = 0, offset = 0, ntypes = 0;
     int eval_nh = 0; // history doubles of the evaluated model (nh, or tangential + rolling combined)
-    Body body = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic>; // choose_eval
+    Body body = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic, false>; // choose_eval
+    Body body_deferred = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic, true>; // in a pass
     std::vector<dc_contact_spec> specs;
     std::vector<dc_contact_model> models;
 };
@@ -362,8 +475,8 @@ public:
         if (scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_TANGENTIAL_MODEL;
         sub.close(scdata);
     }
-    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
-    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) { sub.begin_pass(); }
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) { sub.end_pass(); }
 
 private:
     DemcontactSubModel sub;
@@ -404,8 +517,8 @@ public:
         sub.intersect(sidata, i_forces, j_forces);
     }
     void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &) { sub.close(scdata); }
-    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
-    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) { sub.begin_pass(); }
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) { sub.end_pass(); }
 
 private:
     DemcontactSubModel sub;

@@ -24,6 +24,7 @@ import harness as H  # noqa: E402
 
 # status codes (include/demcontact.h)
 NOT_POSITIVE, NEGATIVE, RESTITUTION, EXPONENT, SPEC_MODEL = 6105, 6106, 6103, 6104, 6123
+NOT_FINITE, RESULT_RANGE = 6102, 6108
 FULL = "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.0 0.5 rolling sds NULL 0 0.1"
 
 
@@ -89,7 +90,10 @@ def lammps_deck(plugin, style, coeff, wall):
 
 # ------------------------------------------------------------------ LIGGGHTS
 LIGGGHTS_GOOD = dict(Y="5e6", nu="0.3", e="0.5", mu="0.5", mur="0.1", extra="", wall="",
-                     model="model demcontact tangential demcontact rolling_friction demcontact")
+                     model="model demcontact tangential demcontact rolling_friction demcontact",
+                     density="2500", velocity=["velocity all set 0.1 0 0"])
+FULL_SURFACE = LIGGGHTS_GOOD["model"] + " surface demcontact"
+
 LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
     ("youngsModulus = 0", dict(Y="0"), "youngsModulus of type 1 = 0", NOT_POSITIVE),
     ("youngsModulus < 0", dict(Y="-5e6"), "youngsModulus of type 1 = -5e+06", NOT_POSITIVE),
@@ -114,6 +118,15 @@ LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
      "Unknown surface model", None),
     ("surface demcontact, builtin tangential",
      dict(model="model demcontact tangential history surface demcontact"), "Unknown surface model", None),
+    # bad values met during the run, in the pair loop's deferred checks (friction_models_demcontact.h):
+    # an atom's velocity not finite (the per-pass check of the atoms' arrays, naming the atom and
+    # value); finite values whose contact results are not (heavy atoms sliding fast: the damped
+    # trial force overflows), found after the loop, before LIGGGHTS integrates
+    ("velocity not finite (run time)", dict(model=FULL_SURFACE, velocity=[
+        "variable big equal 1e308*10", "velocity all set v_big 0 0"]), "atom 1: vx = inf", NOT_FINITE),
+    ("results not finite (run time)", dict(model=FULL_SURFACE, extra="tangentialRestitution 0.5", density="1e30",
+                                           velocity=[
+        "group one id 1", "velocity one set 0 1e300 0"]), "step 0", RESULT_RANGE),
 ]
 
 
@@ -133,7 +146,7 @@ def liggghts_deck(v):
          ("fix w all wall/gran model demcontact tangential demcontact rolling_friction demcontact "
           "primitive type 1 zplane -0.01 " + v["wall"]).strip(),
          "create_atoms 1 single 0 0 0 units box", "create_atoms 1 single 0.00199 0 0 units box",
-         "set group all diameter 0.002 density 2500", "velocity all set 0.1 0 0",
+         "set group all diameter 0.002 density " + v["density"]] + v["velocity"] + [
          "fix integr all nve/sphere", "timestep 1e-7", "thermo 100", "thermo_style custom step ke",
          "run 100"]
     return "\n".join(L) + "\n"

@@ -12,7 +12,8 @@
  * LAMMPS styles); a shape with no instantiation gets the generic entry. Every instantiation gives
  * the bits of dc_contact_force_checked_inline (ctest inline_contact_* checks the header's shaped
  * entry with constant shapes against the library; ctest inline_shaped_pick checks this file's
- * choice).
+ * choice). eval_deferred: the same with the header's deferred entry (a host that tests the
+ * checks once per pass, as the LIGGGHTS plugin's pair loop).
  *
  * Instantiated: the Hertz kernel damped, or damped and force-clamped (hertz/material with
  * coeff_restitution, LIGGGHTS' model demcontact with exponent 1.5), tangential Mindlin or
@@ -37,6 +38,12 @@ struct Generic {
     {
         return dc_contact_force_checked_inline(m, s, dt, h, r);
     }
+    /* the deferred entry (checks collected in c, tested once per pass by the host) */
+    DCI_ALWAYS_INLINE_FN int32_t eval_deferred(const dc_contact_model *m, const dc_contact_state *s, double dt,
+                                               double *h, dc_contact_result *r, dc_contact_checks *c)
+    {
+        return dc_contact_force_deferred_inline(m, s, dt, h, r, c);
+    }
 };
 
 /* One shape: the header's shaped entry with the codes as constants (twisting none). */
@@ -46,6 +53,12 @@ struct Shape {
                                       dc_contact_result *r)
     {
         return dc_contact_force_shaped_inline(m, KERNEL, TANGENTIAL, ROLLING, DC_TWISTING_NONE, CARRY, s, dt, h, r);
+    }
+    DCI_ALWAYS_INLINE_FN int32_t eval_deferred(const dc_contact_model *m, const dc_contact_state *s, double dt,
+                                               double *h, dc_contact_result *r, dc_contact_checks *c)
+    {
+        return dc_contact_force_shaped_deferred_inline(m, KERNEL, TANGENTIAL, ROLLING, DC_TWISTING_NONE, CARRY, s,
+                                                       dt, h, r, c);
     }
 };
 

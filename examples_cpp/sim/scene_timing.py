@@ -8,7 +8,8 @@ the same code (and optionally an older build of the plugin), without re-running 
                   [--np 2] [--reps 3] [--steps 2000] [--workdir DIR] [--lmp lmp]
                   [--surface-default]   (LIGGGHTS: ours also with `surface default`, the
                                          relative velocities computed for nothing; older builds
-                                         given by --before always run with it)
+                                         given by --before run with it, unless
+                  [--before-same-decks]  (older builds run ours' decks, both carries)
 
 The decks are those of scenes.py's timing (the bed from write_data of a settling run, 2000 steps,
 the same pair/wall lines); the models run alternately (builtin, ours, ours with the projection
@@ -64,6 +65,10 @@ def main():
     ap.add_argument("--lmp")
     ap.add_argument("--surface-default", action="store_true",
                     help="LIGGGHTS: also time ours with `surface default` instead of `surface demcontact`")
+    ap.add_argument("--before-same-decks", action="store_true",
+                    help="LIGGGHTS: older builds (which have `surface demcontact`, 7b20b6b or later) run ours' "
+                         "decks, both carries (LABEL, LABEL_project), instead of the rotate deck with `surface "
+                         "default`")
     a = ap.parse_args()
     if a.reps < 1 or a.steps < 1:
         raise SystemExit("scene_timing: --reps and --steps must be >= 1")
@@ -78,7 +83,7 @@ def main():
         lab, _, p = b.partition("=") if "=" in b else ("before", "", b)
         reserved = ("granular", "hertz", "demcontact_project", "demcontact_surfdefault",
                     "demcontact_project_surfdefault")
-        if lab in [q[0] for q in plugins] or lab in reserved:
+        if lab in [q[0] for q in plugins] or lab in reserved or lab.endswith("_project"):
             raise SystemExit("scene_timing: label %s used twice" % lab)
         plugins.append((lab, os.path.abspath(p)))
     # (label, deck(steps), env, exe)
@@ -109,6 +114,10 @@ def main():
         for lab, p in plugins:
             e = dict(env)
             e["LD_PRELOAD"] = p
+            if lab != "demcontact" and a.before_same_decks:  # an older build, ours' decks
+                models.append((lab, lambda n: S.liggghts_timing_deck(mo, se, g, data, n), e))
+                models.append((lab + "_project", lambda n: S.liggghts_timing_deck(pmo, pse, g, data, n), e))
+                continue
             if lab != "demcontact":  # an older build: `surface default` (it may predate surface demcontact)
                 models.append((lab, lambda n: S.liggghts_timing_deck(sd(mo), se, g, data, n), e))
                 continue
