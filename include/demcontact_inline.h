@@ -47,8 +47,10 @@
  * flags that enable FMA (-Xcompiler -march=...) add -Xcompiler -ffp-contract=off there.
  * One exception: in the deferred entries (dc_contact_force_deferred_inline), whose evaluation
  * has no branch, GCC's SLP vectoriser fuses products across that barrier under
- * -ffp-contract=fast with FMA hardware (-march=native in GNU C modes): results then within 24
- * ulp of the largest value of a result (ctest inline_contact_fma); add -ffp-contract=off there.
+ * -ffp-contract=fast (GCC's default in GNU C and C++ modes) when the target has FMA (x86 with
+ * -march=haswell/native, aarch64 always): results then differ from the library's by up to 24
+ * ulp of the largest value of a result (measured; ctest inline_contact_fma allows 64); build
+ * such hosts with -ffp-contract=off (the LIGGGHTS plugin does).
  * Other compilers: build with contraction off (-ffp-contract=off, /fp:precise
  * without /fp:contract); otherwise results may differ from the library by a few ulp of the
  * larger force term. Value-changing options (-ffast-math, -Ofast) void the bit-identity.
@@ -1503,9 +1505,6 @@ DC_INLINE_FN int32_t dc_contact_state_check_inline(const dc_contact_state *state
     return dci_check_contact_state(state);
 }
 
-/* s - s of a sum s: +0 when s is finite, NaN when not */
-DCI_ALWAYS_INLINE_FN double dci_nz(double s) { return s - s; }
-
 DCI_ALWAYS_INLINE_FN int32_t dci_force_deferred(const dc_contact_model *model, dci_shape sh,
                                                 const dc_contact_state *state, double dt,
                                                 double *history, dc_contact_result *out,
@@ -1515,12 +1514,12 @@ DCI_ALWAYS_INLINE_FN int32_t dci_force_deferred(const dc_contact_model *model, d
     /* straight through: the evaluation is + - * / sqrt and selects on any doubles (no trap,
      * no index from a value), so a bad value gives bad values, caught below or by the caller */
     double h[DC_CONTACT_HISTORY_MAX];
-    c->history += dci_nz(dci_copy_sum(h, history, lay.len, 0));
+    c->history += dci_nf(dci_copy_sum(h, history, lay.len, 0));
     dc_contact_result r;
     dci_contact_evaluate(model, sh, lay, state, dt, h, &r);
     const double a = r.f_n + dci_sum3(r.force);
     const double b = dci_sum3(r.ft) + (dci_sum3(r.torque1) + dci_sum3(r.torque2));
-    c->result += dci_nz((a + b) + dci_copy_sum(history, h, lay.len, 0));
+    c->result += dci_nf((a + b) + dci_copy_sum(history, h, lay.len, 0));
     *out = r;
     return DC_OK;
 }
@@ -1534,9 +1533,9 @@ DCI_ALWAYS_INLINE_FN int32_t dci_force_deferred(const dc_contact_model *model, d
  * values: when dc_contact_checks_status_inline then reports an error, that pass's outputs and
  * histories are not to be used (the host ends its run). When it reports DC_OK for the contact,
  * the result and history bits are those of dc_contact_force_checked_inline (ctest
- * inline_contact_*). A state outside the contract is no undefined behaviour (the evaluation is
+ * inline_contact_*; without FMA contraction, see the top of this file). A state outside the contract is no undefined behaviour (the evaluation is
  * arithmetic only); its outputs are meaningless, and usually not finite. Returns
- * DC_ERR_NULL_POINTER when state, out or checks is NULL (nothing evaluated), else DC_OK. */
+ * DC_ERR_NULL_POINTER when model, state, out or checks is NULL (nothing evaluated), else DC_OK. */
 DC_INLINE_FN int32_t dc_contact_force_deferred_inline(const dc_contact_model *model,
                                                       const dc_contact_state *state, double dt,
                                                       double *history, dc_contact_result *out,

@@ -239,6 +239,11 @@ static int deferred_step(const dc_contact_model *m, const dc_contact_state *s, d
          * library's history (no drift) */
         ok = ok && close_values((const double *)rl, (const double *)&r1, 13) &&
              close_values((const double *)rl, (const double *)&r2, 13) &&
+             /* the sliding flags: the same where the 13 doubles are */
+             (memcmp(rl, &r1, 13 * sizeof(double)) != 0 ||
+              (rl->sliding == r1.sliding && rl->rolling_sliding == r1.rolling_sliding)) &&
+             (memcmp(rl, &r2, 13 * sizeof(double)) != 0 ||
+              (rl->sliding == r2.sliding && rl->rolling_sliding == r2.rolling_sliding)) &&
              close_values(hl, hd, DC_CONTACT_HISTORY_MAX) && close_values(hl, hsd, DC_CONTACT_HISTORY_MAX);
         memcpy(hd, hl, sizeof(double) * DC_CONTACT_HISTORY_MAX);
         memcpy(hsd, hl, sizeof(double) * DC_CONTACT_HISTORY_MAX);
@@ -260,7 +265,7 @@ static int deferred_step(const dc_contact_model *m, const dc_contact_state *s, d
                 (int)sl, (int)s1, (int)s2, (int)e1, (int)e2, rl->f_n, r1.f_n, r2.f_n);
     if (!ok && n_fail < 3) {
         const double *a = (const double *)rl, *b = (const double *)&r1, *c = (const double *)&r2;
-        for (int k = 0; k < (int)(sizeof *rl / sizeof(double)); k++)
+        for (int k = 0; k < 13; k++)
             if (memcmp(a + k, b + k, 8) || memcmp(a + k, c + k, 8))
                 fprintf(stderr, "    result double %d: %.17g %.17g %.17g\n", k, a[k], b[k], c[k]);
         for (int k = 0; k < DC_CONTACT_HISTORY_MAX; k++)

@@ -31,7 +31,8 @@
  * evaluates it once (dc_contact_force_checked_inline: demcontact_inline.h's header-only copy of
  * the library's dc_contact_force, bit-identical, compiled into LIGGGHTS' pair loop, the model
  * checked once per run; compiled for the models' shape when they all have one of
- * demcontact_shaped.h's: no code for the stages the run does not use) and adds the whole contact
+ * demcontact_shaped.h's: no code for the stages the run does not use; in the pair loop the
+ * header's deferred entry, its checks made once per pass: begin_pass, end_pass below) and adds the whole contact
  * force (normal + tangential) and the total torques; the normal model class then computes nothing (its normal force would be the same law
  * evaluated twice) and leaves sidata.Fn/kn/kt unset, which no class of this combination reads
  * (cohesion off, rolling passive, surface default or demcontact); the rolling class adds nothing. Alone (rolling off or LIGGGHTS' cdt), the tangential class evaluates
@@ -169,17 +170,17 @@ public:
         const std::vector<dc_contact_model> &m = models;
         auto at = [&m, n](int k) -> const dc_contact_model & { return m[(k / n + 1) * (n + 1) + k % n + 1]; };
         body = demcontact_shaped::pick_common<BodyOf<false> >(n * n, at);
-        body_deferred = demcontact_shaped::pick_common<BodyOf<true> >(n * n, at);
+        body_per_pass = demcontact_shaped::pick_common<BodyOf<true> >(n * n, at);
     }
 
     typedef void (DemcontactSubModel::*Body)(const SurfacesIntersectData &, ForceData &, ForceData &);
-    template <bool DEFERRED>
+    template <bool PER_PASS>
     struct BodyOf { // demcontact_shaped::pick's visitor: intersect_with instantiated for a shape
         typedef Body type;
         template <class S>
         static type get()
         {
-            return &DemcontactSubModel::intersect_with<S, DEFERRED>;
+            return &DemcontactSubModel::intersect_with<S, PER_PASS>;
         }
     };
 
@@ -234,13 +235,13 @@ public:
     void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
         if (passive) return; // evaluated with the tangential sub-model's combined model
-        (this->*(in_pass ? body_deferred : body))(sidata, i_forces, j_forces);
+        (this->*(in_pass ? body_per_pass : body))(sidata, i_forces, j_forces);
     }
 
     /* intersect's body for the models' shape S (demcontact_shaped.h): S::eval inlined into it, the
        result in registers (through a pointer to the evaluation alone, the force was read back from
        memory right after the callee's stores: a store-to-load forwarding stall per contact). */
-    template <class S, bool DEFERRED>
+    template <class S, bool PER_PASS>
     void intersect_with(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
         const double inf = std::numeric_limits<double>::infinity();
@@ -288,12 +289,13 @@ public:
         // models[] passed dc_contact_model_check_inline in build/combine_into; h: eval_nh >= the
         // model's history length
         // S::eval: dc_contact_force_checked_inline, or its instantiation for the models' shape (same bits).
-        // Inside the pair loop (in_pass: between begin_pass and end_pass) the deferred entry: the
+        // Inside the pair loop (PER_PASS: between begin_pass and end_pass) the deferred entry: the
         // states' values checked once per pass in begin_pass (the atoms' arrays they come from),
         // the history and result checks collected and tested in end_pass, before LIGGGHTS
-        // integrates (same bits; 15-18 % of this body's time was the per-contact checks)
+        // integrates (the checked entry's bits, built without FMA contraction as CMakeLists.txt
+        // does; 15-18 % of this body's time was the per-contact checks)
         const dc_contact_model *model = &models[t1 * (ntypes + 1) + t2];
-        const int32_t st = DEFERRED ? S::eval_deferred(model, &s, lmp->update->dt, h, &r, &checks)
+        const int32_t st = PER_PASS ? S::eval_deferred(model, &s, lmp->update->dt, h, &r, &checks)
                                     : S::eval(model, &s, lmp->update->dt, h, &r);
         if (st != DC_OK) {
             char msg[200];
@@ -323,10 +325,13 @@ public:
        leaves to its caller (dc_contact_state_check_inline's), made on what the pass's states are
        built from: dt, and every local and ghost atom's radius and mass (finite, > 0), velocity
        and angular velocity (finite). Not checked here: the contact normal and overlap, which
-       LIGGGHTS computes from positions (unit and finite unless two atoms coincide or a position
-       is not finite; then the results are not finite and end_pass ends the run). */
+       LIGGGHTS computes from positions (unit and finite unless two atoms (nearly) coincide or a
+       position is not finite: coinciding atoms or a position not finite give results not finite,
+       and end_pass ends the run; atoms closer than ~1e-154 m give a finite normal that is not unit,
+       which the per-contact check would reject). */
     void begin_pass()
     {
+        in_pass = false; // set again below only when this pass's checks are made
         if (passive || eval_nh == 0) return; // evaluated by the tangential class / not built
         dc_contact_checks_init_inline(&checks);
         const double dt = lmp->update->dt;
@@ -338,10 +343,11 @@ public:
         }
         LAMMPS_NS::Atom *atom = lmp->atom;
         // only where every state value comes from these arrays (per-atom masses, no rigid-body
-        // masses, no multicontact radii, spheres); else the per-contact checks, as on walls
+        // masses, no multicontact radii) and the normal is LIGGGHTS' sphere normal (set only for
+        // sphere atoms); else the per-contact checks, as on walls
         LAMMPS_NS::PairGran *pg = dynamic_cast<LAMMPS_NS::PairGran *>(lmp->force->pair);
         if (!pg || !atom->rmass || !atom->radius || !atom->v || !atom->omega || pg->fr_pair() ||
-            pg->storeSumDelta() || atom->superquadric_flag)
+            pg->storeSumDelta() || atom->superquadric_flag || !atom->sphere_flag || atom->shapetype_flag)
             return;
         const int n = atom->nlocal + atom->nghost;
         // one flag over the arrays: integer tests of the exponent field (all ones: inf or NaN)
@@ -356,13 +362,15 @@ public:
             const double vals[8] = {atom->radius[i], atom->rmass[i], atom->v[i][0], atom->v[i][1], atom->v[i][2],
                                     atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]};
             static const char *names[8] = {"radius", "mass", "vx", "vy", "vz", "omegax", "omegay", "omegaz"};
-            for (int k = 0; k < 8; k++) {
-                const int32_t st = !std::isfinite(vals[k]) ? DC_ERR_NOT_FINITE
-                                   : k < 2 && !(vals[k] > 0.0) ? DC_ERR_NOT_POSITIVE : DC_OK;
+            // the state check's order: any value not finite first, then a radius or mass not > 0
+            for (int k = 0; k < 16; k++) {
+                const double x = vals[k % 8];
+                const int32_t st = k < 8 ? (std::isfinite(x) ? DC_OK : DC_ERR_NOT_FINITE)
+                                   : k % 8 < 2 && !(x > 0.0) ? DC_ERR_NOT_POSITIVE : DC_OK;
                 if (st == DC_OK) continue;
                 char msg[300];
                 std::snprintf(msg, sizeof msg, "pair gran demcontact: atom %ld: %s = %g: %s", (long)atom->tag[i],
-                              names[k], vals[k], dc_status_str(st));
+                              names[k % 8], x, dc_status_str(st));
                 lmp->error->one(FLERR, msg);
             }
         }
@@ -404,7 +412,7 @@ public:
         if (st == DC_OK) return;
         LAMMPS_NS::Atom *atom = lmp->atom;
         long who = -1;
-        for (int i = 0; i < atom->nlocal && who < 0; i++)
+        for (int i = 0; i < atom->nlocal + atom->nghost && who < 0; i++) // ghosts: newton on
             for (int k = 0; k < 3; k++)
                 if (!std::isfinite(atom->f[i][k]) || !std::isfinite(atom->torque[i][k])) who = (long)atom->tag[i];
         char msg[300];
@@ -413,7 +421,7 @@ public:
                           rolling ? "rolling_friction" : "tangential", (long)lmp->update->ntimestep,
                           dc_status_str(st), who);
         else
-            std::snprintf(msg, sizeof msg, "%s demcontact: step %ld: %s (a contact's history)",
+            std::snprintf(msg, sizeof msg, "%s demcontact: step %ld: %s (in a contact's results or history)",
                           rolling ? "rolling_friction" : "tangential", (long)lmp->update->ntimestep,
                           dc_status_str(st));
         lmp->error->one(FLERR, msg);
@@ -439,7 +447,7 @@ public:
     int nh = 0, offset = 0, ntypes = 0;
     int eval_nh = 0; // history doubles of the evaluated model (nh, or tangential + rolling combined)
     Body body = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic, false>; // choose_eval
-    Body body_deferred = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic, true>; // in a pass
+    Body body_per_pass = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic, true>; // in a pass
     std::vector<dc_contact_spec> specs;
     std::vector<dc_contact_model> models;
 };

@@ -84,7 +84,7 @@ def main():
         reserved = ("granular", "hertz", "demcontact_project", "demcontact_surfdefault",
                     "demcontact_project_surfdefault")
         if lab in [q[0] for q in plugins] or lab in reserved or lab.endswith("_project"):
-            raise SystemExit("scene_timing: label %s used twice" % lab)
+            raise SystemExit("scene_timing: label %s used twice, reserved, or ending in _project" % lab)
         plugins.append((lab, os.path.abspath(p)))
     # (label, deck(steps), env, exe)
     models = []
