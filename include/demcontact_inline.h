@@ -1381,6 +1381,17 @@ DC_INLINE_FN int32_t dc_contact_model_check_inline(const dc_contact_model *model
     return dci_check_contact_model(model, lay);
 }
 
+/* The checks dc_contact_force_checked_inline makes of its dt and state (it calls this), in its
+ * order: DC_ERR_NULL_POINTER (state NULL), DC_ERR_NOT_FINITE / DC_ERR_NOT_POSITIVE (dt),
+ * DC_ERR_NOT_FINITE (a state value; r2 and m2 may be +inf), DC_ERR_NOT_POSITIVE (a radius or
+ * mass), DC_ERR_NOT_UNIT (|n|^2 off 1 by more than 1e-6), else DC_OK. Always inlined. */
+DCI_ALWAYS_INLINE_FN int32_t dc_contact_state_check_inline(const dc_contact_state *state, double dt) {
+    if (DCI_UNLIKELY(!state)) return DC_ERR_NULL_POINTER;
+    if (DCI_UNLIKELY(!isfinite(dt))) return DC_ERR_NOT_FINITE;
+    if (DCI_UNLIKELY(!(dt > 0.0))) return DC_ERR_NOT_POSITIVE;
+    return dci_check_contact_state(state);
+}
+
 /* dc_contact_force_inline for a model that dc_contact_model_check_inline accepted (and that has
  * not changed since), with `history` holding model->history_len doubles, 8-byte aligned (NULL
  * allowed when history_len is 0). It skips the model checks and the history pointer, length and
@@ -1391,11 +1402,9 @@ DC_INLINE_FN int32_t dc_contact_model_check_inline(const dc_contact_model *model
 DCI_ALWAYS_INLINE_FN int32_t dci_force_checked(const dc_contact_model *model, dci_shape sh,
                                                const dc_contact_state *state, double dt,
                                                double *history, dc_contact_result *out) {
-    if (DCI_UNLIKELY(!state || !out)) return DC_ERR_NULL_POINTER;
+    if (DCI_UNLIKELY(!out)) return DC_ERR_NULL_POINTER;
     const dci_layout lay = dci_layout_of(sh.tangential, sh.rolling, sh.twisting);
-    if (DCI_UNLIKELY(!isfinite(dt))) return DC_ERR_NOT_FINITE;
-    if (DCI_UNLIKELY(!(dt > 0.0))) return DC_ERR_NOT_POSITIVE;
-    int32_t st = dci_check_contact_state(state);
+    const int32_t st = dc_contact_state_check_inline(state, dt); /* NULL state included */
     if (DCI_UNLIKELY(st != DC_OK)) return st;
     /* the model's lay.len doubles only (the evaluation reads and writes no others) */
     const int need = lay.len;
@@ -1492,17 +1501,6 @@ DC_INLINE_FN int32_t dc_contact_checks_status_inline(const dc_contact_checks *c)
     if (!(c->history == 0.0)) return DC_ERR_NOT_FINITE;
     if (!(c->result == 0.0)) return DC_ERR_RESULT_RANGE;
     return DC_OK;
-}
-
-/* The checks dc_contact_force_checked_inline makes of its dt and state, in its order:
- * DC_ERR_NULL_POINTER (state NULL), DC_ERR_NOT_FINITE / DC_ERR_NOT_POSITIVE (dt),
- * DC_ERR_NOT_FINITE (a state value; r2 and m2 may be +inf), DC_ERR_NOT_POSITIVE (a radius or
- * mass), DC_ERR_NOT_UNIT (|n|^2 off 1 by more than 1e-6), else DC_OK. */
-DC_INLINE_FN int32_t dc_contact_state_check_inline(const dc_contact_state *state, double dt) {
-    if (!state) return DC_ERR_NULL_POINTER;
-    if (!isfinite(dt)) return DC_ERR_NOT_FINITE;
-    if (!(dt > 0.0)) return DC_ERR_NOT_POSITIVE;
-    return dci_check_contact_state(state);
 }
 
 DCI_ALWAYS_INLINE_FN int32_t dci_force_deferred(const dc_contact_model *model, dci_shape sh,
