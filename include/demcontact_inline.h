@@ -1531,8 +1531,9 @@ DCI_ALWAYS_INLINE_FN int32_t dci_force_deferred(const dc_contact_model *model, d
  * values: when dc_contact_checks_status_inline then reports an error, that pass's outputs and
  * histories are not to be used (the host ends its run). When it reports DC_OK for the contact,
  * the result and history bits are those of dc_contact_force_checked_inline (ctest
- * inline_contact_*; without FMA contraction, see the top of this file). A state outside the contract is no undefined behaviour (the evaluation is
- * arithmetic only); its outputs are meaningless, and usually not finite. Returns
+ * inline_contact_*; without FMA contraction, see the top of this file). A state outside the
+ * contract is no undefined behaviour (the evaluation is arithmetic only); its outputs are
+ * meaningless, and usually not finite. Returns
  * DC_ERR_NULL_POINTER when model, state, out or checks is NULL (nothing evaluated), else DC_OK. */
 DC_INLINE_FN int32_t dc_contact_force_deferred_inline(const dc_contact_model *model,
                                                       const dc_contact_state *state, double dt,
