@@ -37,6 +37,12 @@ add_test(NAME inline_contact_c COMMAND test_inline_contact_c 10000000)
 add_test(NAME inline_contact_cpp COMMAND test_inline_contact_cpp 10000000)
 add_test(NAME inline_contact_fma COMMAND test_inline_contact_fma 2000000)
 add_test(NAME inline_shaped_pick COMMAND test_shaped_pick 20000)
+# The LIGGGHTS plugin's per-pass scan of atom arrays (examples_cpp/sim/scan_bad_values.h): each
+# variant this CPU runs (baseline, AVX2) against std::isfinite and > 0.
+add_executable(test_scan_bad_values c_tests/inline/test_scan_bad_values.cpp)
+target_include_directories(test_scan_bad_values PRIVATE examples_cpp/sim)
+target_compile_options(test_scan_bad_values PRIVATE -std=c++17 -Wall -Wextra -Werror -O2)
+add_test(NAME sim_scan_bad_values COMMAND test_scan_bad_values 2000)
 # nvcc for inline_cuda: from DEMCONTACT_CUDA_VENV (a venv holding NVIDIA's nvcc wheels, made by
 # scripts/setup_cuda.sh; scripts/test.sh passes it), else PATH. Not found: inline_cuda tries clang,
 # then says SKIPPED.

@@ -61,6 +61,7 @@
 #include <vector>
 
 #include "demcontact_shaped.h"
+#include "scan_bad_values.h"
 
 namespace LIGGGHTS {
 namespace ContactModels {
@@ -350,9 +351,9 @@ public:
             pg->storeSumDelta() || atom->superquadric_flag || !atom->sphere_flag || atom->shapetype_flag)
             return;
         const int n = atom->nlocal + atom->nghost;
-        // one flag over the arrays: integer tests of the exponent field (all ones: inf or NaN)
-        // and comparisons, OR-reduced (vectorised, where a floating-point sum is not); the atom
-        // found only when the flag is set
+        // one flag over the arrays (scan_bad_values.h: integer bit tests, OR-reduced, vectorised);
+        // the atom found only when the flag is set
+        using demcontact_scan::bad_values;
         if (n == 0 || !(bad_values(atom->v[0], 3 * n, false) | bad_values(atom->omega[0], 3 * n, false) |
                         bad_values(atom->radius, n, true) | bad_values(atom->rmass, n, true))) {
             in_pass = true;
@@ -375,30 +376,6 @@ public:
             }
         }
         lmp->error->one(FLERR, "pair gran demcontact: internal error: atom check failed without a bad value");
-    }
-
-    /* 1 when one of x[0..n) is not finite or (positive) not > 0. On the bits u, in the sign bit
-       of an OR over the values: (u & exponent field) + its lowest bit carries into the sign bit
-       exactly when the field is all ones (inf, NaN); for positive also u itself (the sign: a
-       negative value or -0) and u - 1 (+0 wraps to all ones). Integer operations only, so GCC
-       vectorises the loops (a floating-point sum or a comparison flag it did not). */
-    static int bad_values(const double *x, int n, bool positive)
-    {
-        const uint64_t exp = 0x7ff0000000000000ull, low = 0x0010000000000000ull;
-        uint64_t bad = 0;
-        if (positive)
-            for (int k = 0; k < n; k++) {
-                uint64_t u;
-                std::memcpy(&u, &x[k], sizeof u);
-                bad |= u | (u - 1) | ((u & exp) + low);
-            }
-        else
-            for (int k = 0; k < n; k++) {
-                uint64_t u;
-                std::memcpy(&u, &x[k], sizeof u);
-                bad |= (u & exp) + low;
-            }
-        return (bad >> 63) != 0;
     }
 
     /* After the pair loop: the collected history and result checks (dc_contact_checks_status_inline);
