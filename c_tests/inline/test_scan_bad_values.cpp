@@ -81,8 +81,8 @@ int main(int argc, char **argv)
     const int random_arrays = argc > 1 ? std::atoi(argv[1]) : 2000;
     using namespace demcontact_scan;
     run("baseline", bad_values_baseline, random_arrays);
-#if DC_SCAN_AVX2
-    if (have_avx2())
+#if DC_DISPATCH_AVX2
+    if (demcontact_dispatch::have_avx2())
         run("avx2", bad_values_avx2, random_arrays);
     else
         std::printf("avx2 variant: not run (this CPU has no AVX2); the plugin uses the baseline one here\n");

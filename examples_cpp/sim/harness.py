@@ -154,13 +154,16 @@ def liggghts_cmd(plugin):
     return exe, env
 
 
-def mpi_prefix(np_, mpirun="mpirun"):
-    """mpirun prefix for np_ > 1 ranks (never more ranks than the 2 cores of the CI machine)."""
+def mpi_prefix(np_, mpirun="mpirun", forward=()):
+    """mpirun prefix for np_ > 1 ranks (never more ranks than the 2 cores of the CI machine).
+    Open MPI passes the ranks only the environment variables named with -x: LD_PRELOAD and those
+    in forward (MPICH passes the whole environment)."""
     if np_ <= 1:
         return []
     exe = which(mpirun) or mpirun
-    return [exe, "-np", str(np_)] + (["-x", "LD_PRELOAD"] if "openmpi" in os.path.realpath(exe) or
-                                     os.path.realpath(exe).endswith("orterun") else [])
+    openmpi = "openmpi" in os.path.realpath(exe) or os.path.realpath(exe).endswith("orterun")
+    return [exe, "-np", str(np_)] + (sum((["-x", v] for v in ("LD_PRELOAD",) + tuple(forward)), [])
+                                     if openmpi else [])
 
 
 def collision_liggghts(plugin, workdir, np_=1, spc=STEPS_PER_CONTACT, exponent=None, visco=False):

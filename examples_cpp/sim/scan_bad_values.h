@@ -9,20 +9,16 @@
  * comparison flag it did not), and every variant gives the same answer.
  *
  * Two variants of the same loop on x86-64: baseline (SSE2, 2 values per operation) and AVX2 (4),
- * the AVX2 one used when the CPU has it (asked once). The scan was 1.6 % of the plugin's settled-bed
- * time with SSE2 and 0.7 % with AVX2 (perf, docs/simulators.md). ctest sim_scan_bad_values checks
- * both variants against std::isfinite and > 0. */
+ * the AVX2 one used when the CPU has it (cpu_dispatch.h: asked once). The scan was 1.6 % of the
+ * plugin's settled-bed time with SSE2 and 0.7 % with AVX2 (perf, docs/simulators.md). ctest
+ * sim_scan_bad_values checks both variants against std::isfinite and > 0. */
 #ifndef DEMCONTACT_SIM_SCAN_BAD_VALUES_H
 #define DEMCONTACT_SIM_SCAN_BAD_VALUES_H
 
 #include <cstdint>
 #include <cstring>
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__AVX2__)
-#define DC_SCAN_AVX2 1 /* a second, AVX2 variant, chosen at run time */
-#else
-#define DC_SCAN_AVX2 0 /* one variant: the build's own target */
-#endif
+#include "cpu_dispatch.h"
 
 namespace demcontact_scan {
 namespace {
@@ -50,24 +46,18 @@ __attribute__((always_inline)) inline int bad_values_body(const double *x, int n
 /* The build's own target (baseline x86-64: SSE2). */
 inline int bad_values_baseline(const double *x, int n, bool positive) { return bad_values_body(x, n, positive); }
 
-#if DC_SCAN_AVX2
+#if DC_DISPATCH_AVX2
 __attribute__((target("avx2"))) inline int bad_values_avx2(const double *x, int n, bool positive)
 {
     return bad_values_body(x, n, positive);
-}
-/* Whether the CPU runs the AVX2 variant (asked once). */
-inline bool have_avx2()
-{
-    static const bool h = __builtin_cpu_supports("avx2");
-    return h;
 }
 #endif
 
 /* 1 when one of x[0..n) is not finite or (positive) not > 0; 0 otherwise (and for n <= 0). */
 inline int bad_values(const double *x, int n, bool positive)
 {
-#if DC_SCAN_AVX2
-    if (have_avx2()) return bad_values_avx2(x, n, positive);
+#if DC_DISPATCH_AVX2
+    if (demcontact_dispatch::use_avx2()) return bad_values_avx2(x, n, positive);
 #endif
     return bad_values_baseline(x, n, positive);
 }

@@ -153,34 +153,49 @@ def liggghts_models():
 
 
 def liggghts_surface_identity(exe, env, mpirun, nps, g, data, workdir, steps=100):
-    """Our models with `surface demcontact` and with `surface default` from the same settled bed:
-    the final dumps (positions, velocities, forces, torques, %.17g) must be the same bytes. Returns
-    the list of mismatches (empty: identical)."""
+    """Our models with `surface demcontact` and with `surface default` from the same settled bed,
+    and with the plugin's run-time dispatch forced to its baseline variants
+    (DEMCONTACT_DISPATCH=baseline, examples_cpp/sim/cpu_dispatch.h): the final dumps (positions,
+    velocities, forces, torques, %.17g) must be the same bytes. Returns the list of mismatches
+    (empty: identical)."""
     bad = []
     d = os.path.join(workdir, "surface_identity")
     os.makedirs(d, exist_ok=True)
+    base_env = dict(env, DEMCONTACT_DISPATCH="baseline")
     for label, model, settings in liggghts_models():
         if "surface demcontact" not in model:
             continue
         for np_ in nps:
-            dumps = []
-            for surf, mo in (("demcontact", model), ("default", liggghts_surface_default(model))):
-                name = "%s_%s_np%d" % (label, surf, np_)
+            dumps, bodies = [], []
+            for run, mo, e in (("demcontact", model, env), ("default", liggghts_surface_default(model), env),
+                               ("baseline", model, base_env)):
+                name = "%s_%s_np%d" % (label, run, np_)
                 # the timing deck, then the final state dumped (LIGGGHTS' dump_modify takes a whole
                 # line's format, no `format float`)
                 L = ["dump fin all custom 1 %s.dump id x y z vx vy vz omegax omegay omegaz fx fy fz tqx tqy tqz"
                      % name, "dump_modify fin sort id format \"%d" + " %.17g" * 15 + "\"", "run 0"]
                 open(os.path.join(d, "in.%s" % name), "w").write(
                     liggghts_timing_deck(mo, settings, g, data, steps) + "\n".join(L) + "\n")
-                H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.%s" % name, "-log", "log.%s" % name], d, env)
+                H.run(H.mpi_prefix(np_, mpirun, ("DEMCONTACT_DISPATCH",) if "DEMCONTACT_DISPATCH" in e else ())
+                      + [exe, "-in", "in.%s" % name, "-log", "log.%s" % name], d, e)
                 dumps.append(open(os.path.join(d, "%s.dump" % name), "rb").read())
+                said = re.findall(r"demcontact: contact body compiled for ([^\n]*)",
+                                  open(os.path.join(d, "log.%s" % name)).read())
+                bodies.append(said[0] if said else "?")
             n = dumps[0].count(b"\n") - 9  # the dump's 9 header lines
             if n != g["n"]:
                 bad.append("%s np=%d: %d atoms in the dump, not %d" % (label, np_, n, g["n"]))
             elif dumps[0] != dumps[1]:
                 bad.append("%s np=%d: surface demcontact and surface default differ" % (label, np_))
+            elif dumps[0] != dumps[2]:
+                bad.append("%s np=%d: the contact body of %s and the baseline one differ" % (label, np_, bodies[0]))
+            elif bodies[2].startswith("x86-64-v4"):
+                bad.append("%s np=%d: DEMCONTACT_DISPATCH=baseline ran the body of %s" % (label, np_, bodies[2]))
             else:
                 print("surface identity %s np=%d: %d atoms, %d steps: same dump bytes" % (label, np_, n, steps))
+                print("dispatch identity %s np=%d: contact body for %s vs the baseline: same dump bytes%s"
+                      % (label, np_, bodies[0], "" if bodies[0] != bodies[2] else
+                         " (this CPU or build runs the baseline only: nothing else to compare)"))
     return bad
 
 
