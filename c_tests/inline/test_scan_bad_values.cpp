@@ -5,6 +5,7 @@
 #include "scan_bad_values.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
@@ -34,7 +35,7 @@ void check(const char *name, Scan scan, const std::vector<double> &v, int n, boo
     }
 }
 
-uint64_t rng = 0x9e3779b97f4a7c15ull;
+std::uint64_t rng = 0x9e3779b97f4a7c15ull;
 double uniform()
 {
     rng ^= rng << 13;

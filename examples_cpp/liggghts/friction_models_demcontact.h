@@ -172,18 +172,26 @@ public:
         const int n = ntypes;
         const std::vector<dc_contact_model> &m = models;
         auto at = [&m, n](int k) -> const dc_contact_model & { return m[(k / n + 1) * (n + 1) + k % n + 1]; };
-        // the x86-64-v4 variant where the CPU has it (cpu_dispatch.h): same bits, 7-8 % less loop
-        // time; said once in the run's output (tests compare the variants' dumps)
+        // the x86-64-v4 variant where the CPU has it (cpu_dispatch.h): same bits, 11-13 % less loop
+        // time on the settled bed; said once per process in the run's output (the tests compare the
+        // variants' dumps and read which ran)
         const bool v4 = demcontact_dispatch::use_v4();
-        static bool said = false;
-        if (!said && lmp->comm->me == 0) {
+        static const bool said = [this, v4] {
+            if (lmp->comm->me != 0) return true;
             const char *what = v4 ? "x86-64-v4 (AVX-512), chosen at run time"
                                : DC_DISPATCH_V4 ? "the baseline x86-64 (no x86-64-v4 here, or DEMCONTACT_DISPATCH=baseline)"
                                                 : "the build's target (no run-time dispatch in this build)";
-            for (FILE *f : {lmp->screen, lmp->logfile})
-                if (f) std::fprintf(f, "demcontact: contact body compiled for %s\n", what);
-            said = true;
-        }
+            const char *unknown = demcontact_dispatch::unknown_setting();
+            for (FILE *f : {lmp->screen, lmp->logfile}) {
+                if (!f) continue;
+                if (unknown)
+                    std::fprintf(f, "demcontact: WARNING: DEMCONTACT_DISPATCH = '%s' not understood (only 'baseline'): "
+                                    "ignored\n", unknown);
+                std::fprintf(f, "demcontact: contact body compiled for %s\n", what);
+            }
+            return true;
+        }();
+        (void)said;
         if (v4) {
             body = demcontact_shaped::pick_common<BodyOf<false, true> >(n * n, at);
             body_per_pass = demcontact_shaped::pick_common<BodyOf<true, true> >(n * n, at);
@@ -274,10 +282,14 @@ public:
        spills the contact's vectors to the stack), chosen at run time where the CPU has it
        (cpu_dispatch.h). Without GCC's SLP vectoriser: with it, the x86-64-v4 body packs the
        contact's 3-vectors into pairs and shuffles them, 15 % slower with the rotate carry than the
-       baseline (docs/simulators.md). Same bits: no contraction (the plugin's -ffp-contract=off holds
-       in this function too), no reassociation. */
+       baseline (docs/simulators.md). No 512-bit instructions (prefer-vector-width=256 here, and
+       CMakeLists.txt's -mmove-max/-mstore-max=256 for block copies): on some Intel cores those
+       lower the clock; ctest liggghts_plugin_code checks the plugin has none, and no FMA. Same bits:
+       no contraction (the plugin's -ffp-contract=off holds in this function too), no reassociation.
+       An attribute, not a second source file built with -march=x86-64-v4: there, the inline
+       functions both files use could be linked in their AVX-512 copies for every caller. */
     template <class S, bool PER_PASS>
-    __attribute__((target("arch=x86-64-v4"), optimize("no-tree-slp-vectorize"))) void
+    __attribute__((target("arch=x86-64-v4,prefer-vector-width=256"), optimize("no-tree-slp-vectorize"))) void
     intersect_with_v4(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
         contact_body<S, PER_PASS>(sidata, i_forces, j_forces);

@@ -22,7 +22,8 @@
 #define DC_DISPATCH_AVX2 0
 #endif
 
-/* GCC only: clang has neither target("arch=x86-64-v4") nor __builtin_cpu_supports("x86-64-v4"). */
+/* GCC 12 or later only: clang 14 has no __builtin_cpu_supports("x86-64-v4") and ignores the
+ * optimize attribute the x86-64-v4 body needs (friction_models_demcontact.h). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12 && !defined(__AVX512F__)
 #define DC_DISPATCH_V4 1
 #else
@@ -40,6 +41,14 @@ inline bool forced_baseline()
         return v && std::strcmp(v, "baseline") == 0;
     }();
     return f;
+}
+
+/* The value of DEMCONTACT_DISPATCH when it is set to something other than "baseline" (ignored,
+ * and said so by the plugin), else NULL. */
+inline const char *unknown_setting()
+{
+    const char *v = std::getenv("DEMCONTACT_DISPATCH");
+    return v && std::strcmp(v, "baseline") != 0 ? v : nullptr;
 }
 
 #if DC_DISPATCH_AVX2

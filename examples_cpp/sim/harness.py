@@ -156,8 +156,9 @@ def liggghts_cmd(plugin):
 
 def mpi_prefix(np_, mpirun="mpirun", forward=()):
     """mpirun prefix for np_ > 1 ranks (never more ranks than the 2 cores of the CI machine).
-    Open MPI passes the ranks only the environment variables named with -x: LD_PRELOAD and those
-    in forward (MPICH passes the whole environment)."""
+    Open MPI: LD_PRELOAD and the variables in forward named with -x, so that they reach the ranks
+    wherever they start (on this one node Open MPI passes its environment anyway; MPICH passes it
+    everywhere)."""
     if np_ <= 1:
         return []
     exe = which(mpirun) or mpirun
