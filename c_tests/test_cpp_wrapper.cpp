@@ -91,6 +91,24 @@ int main(int argc, char** argv) {
         short_threw = err.code() == dc::status::buffer_too_short;
     }
     CHECK(short_threw);
+    {
+        // The fast batch through the wrapper: the C function's bits; for a p = 1.7 pair within
+        // its 8-ulp bound of the exact force (here the exact batch), for Hertz the FMA form.
+        ::dc_pair gen = dc::pair_powerlaw(1.7, 1e8, 0.4, dc::criterion::force);
+        std::vector<double> g(3), want(3), exact(3);
+        for (const ::dc_pair* p : {&pair, &gen}) {
+            dc::normal_force_batch_fast(*p, dc::span<const double>(d.data(), 3), dc::span<const double>(vn.data(), 3),
+                                        dc::span<const double>(r.data(), 3), dc::span<const double>(m.data(), 3),
+                                        dc::span<double>(g));
+            CHECK(::dc_normal_force_batch_fast(p, 3, d.data(), vn.data(), r.data(), m.data(), want.data()) == DC_OK);
+            CHECK(std::memcmp(g.data(), want.data(), 3 * sizeof(double)) == 0);
+            dc::normal_force_batch(*p, dc::span<const double>(d.data(), 3), dc::span<const double>(vn.data(), 3),
+                                   dc::span<const double>(r.data(), 3), dc::span<const double>(m.data(), 3),
+                                   dc::span<double>(exact));
+            for (int i = 0; i < 3; i++) CHECK(std::fabs(g[i] - exact[i]) <= 1e-14 * std::fabs(exact[i]) + 1e-300);
+            CHECK(g[2] == 0.0);
+        }
+    }
     dc::vec3 F = dc::normal_force_3d(pair, {0, 0, 0}, {0, 0, 0}, 1e-3, 1e-5, {1.999e-3, 0, 0}, {-0.1, 0, 0}, 1e-3, 1e-5);
     CHECK(F.x < 0.0 && F.y == 0.0 && F.z == 0.0);  // sphere 1 pushed away from sphere 2 (at +x)
 

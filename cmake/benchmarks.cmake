@@ -22,14 +22,27 @@ target_compile_options(force_baseline_native PRIVATE -O3 -march=native -fno-math
 add_library(force_baseline_native_nofma OBJECT examples_cpp/bench/force_baseline.c)
 target_compile_definitions(force_baseline_native_nofma PRIVATE BASE=native_nofma)
 target_compile_options(force_baseline_native_nofma PRIVATE -O3 -march=native -fno-math-errno -ffp-contract=off)
-foreach(b plain fast native native_nofma)
+# an AVX2 machine's -march=native (x86-64-v3: AVX2, FMA), to compare with the batches capped at
+# AVX2 (DEMCONTACT_DISPATCH=avx2) on a wider CPU; -march=native where the compiler lacks the name
+include(CheckCCompilerFlag)
+check_c_compiler_flag(-march=x86-64-v3 DC_CC_HAS_X86_64_V3)
+if(DC_CC_HAS_X86_64_V3)
+  set(DC_V3_ARCH -march=x86-64-v3)
+else()
+  set(DC_V3_ARCH -march=native)
+endif()
+add_library(force_baseline_v3 OBJECT examples_cpp/bench/force_baseline.c)
+target_compile_definitions(force_baseline_v3 PRIVATE BASE=v3)
+target_compile_options(force_baseline_v3 PRIVATE -O3 ${DC_V3_ARCH} -fno-math-errno)
+foreach(b plain fast native native_nofma v3)
   target_include_directories(force_baseline_${b} PRIVATE "${CMAKE_SOURCE_DIR}/include")
 endforeach()
 foreach(kind IN ITEMS shared static)
   set(bench force_bench_${kind})
   add_executable(${bench} examples_cpp/bench/force_bench.c
     $<TARGET_OBJECTS:force_baseline_plain> $<TARGET_OBJECTS:force_baseline_fast>
-    $<TARGET_OBJECTS:force_baseline_native> $<TARGET_OBJECTS:force_baseline_native_nofma>)
+    $<TARGET_OBJECTS:force_baseline_native> $<TARGET_OBJECTS:force_baseline_native_nofma>
+    $<TARGET_OBJECTS:force_baseline_v3>)
   target_compile_options(${bench} PRIVATE ${DC_BENCH_COPTS} -Wall -Wextra -Werror)
   target_link_libraries(${bench} PRIVATE demcontact_${kind} ${DC_LIBM})
   set_target_properties(${bench} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/bench")

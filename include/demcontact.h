@@ -218,6 +218,21 @@
 #define DC_END_FORCE 1
 
 /**
+ * The batches' vector flavour: baseline x86-64 (SSE2; every other architecture's default).
+ */
+#define DC_DISPATCH_BASELINE 0
+
+/**
+ * The batches' vector flavour: AVX2 + FMA.
+ */
+#define DC_DISPATCH_AVX2 1
+
+/**
+ * The batches' vector flavour: AVX-512F.
+ */
+#define DC_DISPATCH_AVX512 2
+
+/**
  * Status of a demcontact call: DC_OK (0) or a DC_ERR_* code in 6101..6199.
  * Functions return it as int32_t; dc_status_str() gives its message.
  */
@@ -1490,6 +1505,33 @@ int32_t dc_normal_force_batch(const struct dc_pair *pair,
                               double *force_out);
 
 /**
+ * Fast structure-of-arrays normal forces: dc_normal_force_batch a few ulp from exact, for
+ * speed (the trade is measured in docs/force.md). Same arguments, statuses and array rules
+ * as dc_normal_force_batch.
+ *
+ * - General p (not 1, 3/2, 2) up to p = 9, overlaps in [2^-127, 2^129) m: the power from
+ *   tables of the exponent (correctly rounded, built on a thread's first call with that
+ *   exponent, about 45 us; a thread keeps its last 8 exponents), within 4 ulp of the true
+ *   power; elsewhere the exact power.
+ * - Damped Hertz and general p: elastic and damping terms summed by one fused multiply-add.
+ * - Force within 8 ulp of (|elastic| + |damping|) of dc_normal_force_batch's force (measured
+ *   5.7 at p = 1.7, 1 for Hertz); every other pair gets dc_normal_force_batch's bits.
+ *
+ * The same bits on every CPU and in every vector flavour; without hardware FMA (x86-64 before
+ * 2013) the fused multiply-adds run in software, slower than dc_normal_force_batch.
+ *
+ * # Safety
+ * As dc_normal_force_batch.
+ */
+int32_t dc_normal_force_batch_fast(const struct dc_pair *pair,
+                                   size_t n,
+                                   const double *overlap,
+                                   const double *vn,
+                                   const double *r_eff,
+                                   const double *m_eff,
+                                   double *force_out);
+
+/**
  * Normal contact force between two spheres from their centres, velocities, radii and masses,
  * for codes without their own contact geometry (computed with nalgebra).
  *
@@ -1869,6 +1911,13 @@ int32_t dc_dt_static(double p, double alpha, double omega0, double accel, double
  * The library version as a static NUL-terminated string, e.g. "0.1.0"; never NULL, never freed.
  */
 const char *dc_version(void);
+
+/**
+ * The vector flavour the batch functions run in this process (DC_DISPATCH_*): the widest the
+ * CPU has, capped by the environment variable DEMCONTACT_DISPATCH=baseline or =avx2 (read at
+ * the first call; to measure or test the narrower flavours). Every flavour gives the same bits.
+ */
+int32_t dc_dispatch_level(void);
 
 /**
  * Restitution e(b) of colliding viscoelastic spheres, full-range tier.

@@ -68,18 +68,32 @@ private:
 
 namespace demcontact {
 
+namespace detail {
+/// The C batch `f` (dc_normal_force_batch or dc_normal_force_batch_fast) over views.
+template <class F>
+inline void batch(F f, const ::dc_pair& pair, span<const double> overlap, span<const double> vn,
+                  span<const double> r_eff, span<const double> m_eff, span<double> force_out) {
+    const std::size_t n = overlap.size();
+    auto fits = [n](std::size_t m) { return m == 0 || m >= n; };
+    if (force_out.size() < n || !fits(vn.size()) || !fits(r_eff.size()) || !fits(m_eff.size()))
+        throw error(status::buffer_too_short);
+    check(f(&pair, n, overlap.data(), vn.size() ? vn.data() : nullptr, r_eff.size() ? r_eff.data() : nullptr,
+            m_eff.size() ? m_eff.data() : nullptr, force_out.data()));
+}
+}  // namespace detail
+
 /// Normal forces of n contacts of one pair (dc_normal_force_batch) from structure-of-arrays
 /// views. Arrays the pair's model does not read may be empty views (passed as NULL). Throws
 /// demcontact::error on a non-OK status (also when a non-empty view is shorter than `overlap`).
 inline void normal_force_batch(const ::dc_pair& pair, span<const double> overlap, span<const double> vn,
                                span<const double> r_eff, span<const double> m_eff, span<double> force_out) {
-    const std::size_t n = overlap.size();
-    auto fits = [n](std::size_t m) { return m == 0 || m >= n; };
-    if (force_out.size() < n || !fits(vn.size()) || !fits(r_eff.size()) || !fits(m_eff.size()))
-        throw error(status::buffer_too_short);
-    detail::check(::dc_normal_force_batch(&pair, n, overlap.data(), vn.size() ? vn.data() : nullptr,
-                                          r_eff.size() ? r_eff.data() : nullptr,
-                                          m_eff.size() ? m_eff.data() : nullptr, force_out.data()));
+    detail::batch(::dc_normal_force_batch, pair, overlap, vn, r_eff, m_eff, force_out);
+}
+
+/// The same with dc_normal_force_batch_fast: a few ulp from exact for speed (see the C docs).
+inline void normal_force_batch_fast(const ::dc_pair& pair, span<const double> overlap, span<const double> vn,
+                                    span<const double> r_eff, span<const double> m_eff, span<double> force_out) {
+    detail::batch(::dc_normal_force_batch_fast, pair, overlap, vn, r_eff, m_eff, force_out);
 }
 
 /// 3-vector for the geometry helper.

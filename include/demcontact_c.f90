@@ -47,6 +47,9 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_LEVEL_MAX = 4
   integer(c_int32_t), parameter :: DC_END_OVERLAP = 0
   integer(c_int32_t), parameter :: DC_END_FORCE = 1
+  integer(c_int32_t), parameter :: DC_DISPATCH_BASELINE = 0
+  integer(c_int32_t), parameter :: DC_DISPATCH_AVX2 = 1
+  integer(c_int32_t), parameter :: DC_DISPATCH_AVX512 = 2
   integer(c_int32_t), parameter :: DC_OK = 0
   integer(c_int32_t), parameter :: DC_ERR_NULL_POINTER = 6101
   integer(c_int32_t), parameter :: DC_ERR_NOT_FINITE = 6102
@@ -454,6 +457,18 @@ module demcontact_c
       real(c_double), intent(out) :: force_out(*)
       integer(c_int32_t) :: dc_normal_force_batch
     end function dc_normal_force_batch
+    function dc_normal_force_batch_fast(pair, n, overlap, vn, r_eff, m_eff, force_out) bind(c, &
+        name='dc_normal_force_batch_fast')
+      import
+      type(dc_pair), intent(in) :: pair
+      integer(c_size_t), value, intent(in) :: n
+      real(c_double), intent(in) :: overlap(*)
+      real(c_double), intent(in) :: vn(*)
+      real(c_double), intent(in) :: r_eff(*)
+      real(c_double), intent(in) :: m_eff(*)
+      real(c_double), intent(out) :: force_out(*)
+      integer(c_int32_t) :: dc_normal_force_batch_fast
+    end function dc_normal_force_batch_fast
     function dc_normal_force_3d(pair, x1, v1, R1, m1, x2, v2, R2, m2, force_out) bind(c, &
         name='dc_normal_force_3d')
       import
@@ -633,6 +648,10 @@ module demcontact_c
       import
       type(c_ptr) :: dc_version
     end function dc_version
+    pure function dc_dispatch_level() bind(c, name='dc_dispatch_level')
+      import
+      integer(c_int32_t) :: dc_dispatch_level
+    end function dc_dispatch_level
     function dc_viscoelastic_e(b, criterion, e_out) bind(c, name='dc_viscoelastic_e')
       import
       real(c_double), value, intent(in) :: b

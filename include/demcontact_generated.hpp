@@ -363,6 +363,11 @@ inline status dt_static(double p, double alpha, double omega0, double accel, dou
     return static_cast<status>(::dc_dt_static(p, alpha, omega0, accel, &out));
 }
 
+/// dc_dispatch_level (no status: see the C documentation).
+inline std::int32_t dispatch_level() noexcept {
+    return ::dc_dispatch_level();
+}
+
 /// dc_viscoelastic_e: throws demcontact::error on a non-OK status.
 inline double viscoelastic_e(double b, criterion criterion_) {
     double out{};

@@ -3,7 +3,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-int32_t dc_probe_n_consts(void) { return 63; }
+int32_t dc_probe_n_consts(void) { return 66; }
 int64_t dc_probe_const(int32_t i) {
   switch (i) {
   case 1: return (int64_t)(DC_BUILTIN_LIGGGHTS_HOOKE);
@@ -43,32 +43,35 @@ int64_t dc_probe_const(int32_t i) {
   case 35: return (int64_t)(DC_LEVEL_MAX);
   case 36: return (int64_t)(DC_END_OVERLAP);
   case 37: return (int64_t)(DC_END_FORCE);
-  case 38: return (int64_t)(DC_OK);
-  case 39: return (int64_t)(DC_ERR_NULL_POINTER);
-  case 40: return (int64_t)(DC_ERR_NOT_FINITE);
-  case 41: return (int64_t)(DC_ERR_RESTITUTION_RANGE);
-  case 42: return (int64_t)(DC_ERR_EXPONENT_RANGE);
-  case 43: return (int64_t)(DC_ERR_NOT_POSITIVE);
-  case 44: return (int64_t)(DC_ERR_NEGATIVE);
-  case 45: return (int64_t)(DC_ERR_CRITERION);
-  case 46: return (int64_t)(DC_ERR_RESULT_RANGE);
-  case 47: return (int64_t)(DC_ERR_NO_CONVERGENCE);
-  case 48: return (int64_t)(DC_ERR_BUFFER_TOO_SHORT);
-  case 49: return (int64_t)(DC_ERR_NO_EVENT);
-  case 50: return (int64_t)(DC_ERR_LEVEL);
-  case 51: return (int64_t)(DC_ERR_PLAN);
-  case 52: return (int64_t)(DC_ERR_PAIR_INVALID);
-  case 53: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
-  case 54: return (int64_t)(DC_ERR_SPEC_VERSION);
-  case 55: return (int64_t)(DC_ERR_SPEC_MODEL);
-  case 56: return (int64_t)(DC_ERR_SPEC_UNSET);
-  case 57: return (int64_t)(DC_ERR_CONTACT_MODEL_INVALID);
-  case 58: return (int64_t)(DC_ERR_NOT_UNIT);
-  case 59: return (int64_t)(DC_ERR_BUILTIN_MODEL);
-  case 60: return (int64_t)(DC_ERR_BUILTIN_UNREACHABLE);
-  case 61: return (int64_t)(DC_ERR_FIT_TOO_FEW);
-  case 62: return (int64_t)(DC_ERR_FIT_DEGENERATE);
-  case 63: return (int64_t)(DC_ERR_INTERNAL);
+  case 38: return (int64_t)(DC_DISPATCH_BASELINE);
+  case 39: return (int64_t)(DC_DISPATCH_AVX2);
+  case 40: return (int64_t)(DC_DISPATCH_AVX512);
+  case 41: return (int64_t)(DC_OK);
+  case 42: return (int64_t)(DC_ERR_NULL_POINTER);
+  case 43: return (int64_t)(DC_ERR_NOT_FINITE);
+  case 44: return (int64_t)(DC_ERR_RESTITUTION_RANGE);
+  case 45: return (int64_t)(DC_ERR_EXPONENT_RANGE);
+  case 46: return (int64_t)(DC_ERR_NOT_POSITIVE);
+  case 47: return (int64_t)(DC_ERR_NEGATIVE);
+  case 48: return (int64_t)(DC_ERR_CRITERION);
+  case 49: return (int64_t)(DC_ERR_RESULT_RANGE);
+  case 50: return (int64_t)(DC_ERR_NO_CONVERGENCE);
+  case 51: return (int64_t)(DC_ERR_BUFFER_TOO_SHORT);
+  case 52: return (int64_t)(DC_ERR_NO_EVENT);
+  case 53: return (int64_t)(DC_ERR_LEVEL);
+  case 54: return (int64_t)(DC_ERR_PLAN);
+  case 55: return (int64_t)(DC_ERR_PAIR_INVALID);
+  case 56: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
+  case 57: return (int64_t)(DC_ERR_SPEC_VERSION);
+  case 58: return (int64_t)(DC_ERR_SPEC_MODEL);
+  case 59: return (int64_t)(DC_ERR_SPEC_UNSET);
+  case 60: return (int64_t)(DC_ERR_CONTACT_MODEL_INVALID);
+  case 61: return (int64_t)(DC_ERR_NOT_UNIT);
+  case 62: return (int64_t)(DC_ERR_BUILTIN_MODEL);
+  case 63: return (int64_t)(DC_ERR_BUILTIN_UNREACHABLE);
+  case 64: return (int64_t)(DC_ERR_FIT_TOO_FEW);
+  case 65: return (int64_t)(DC_ERR_FIT_DEGENERATE);
+  case 66: return (int64_t)(DC_ERR_INTERNAL);
   default: return INT64_MIN;
   }
 }

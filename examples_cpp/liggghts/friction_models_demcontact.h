@@ -179,13 +179,14 @@ public:
         static const bool said = [this, v4] {
             if (lmp->comm->me != 0) return true;
             const char *what = v4 ? "x86-64-v4 (AVX-512), chosen at run time"
-                               : DC_DISPATCH_V4 ? "the baseline x86-64 (no x86-64-v4 here, or DEMCONTACT_DISPATCH=baseline)"
+                               : DC_DISPATCH_V4 ? "the baseline x86-64 (no x86-64-v4 here, or DEMCONTACT_DISPATCH=baseline or avx2)"
                                                 : "the build's target (no run-time dispatch in this build)";
             const char *unknown = demcontact_dispatch::unknown_setting();
             for (FILE *f : {lmp->screen, lmp->logfile}) {
                 if (!f) continue;
                 if (unknown)
-                    std::fprintf(f, "demcontact: WARNING: DEMCONTACT_DISPATCH = '%s' not understood (only 'baseline'): "
+                    std::fprintf(f, "demcontact: WARNING: DEMCONTACT_DISPATCH = '%s' not understood (only 'baseline', 'avx2', "
+                                    "'auto'): "
                                     "ignored\n", unknown);
                 std::fprintf(f, "demcontact: contact body compiled for %s\n", what);
             }

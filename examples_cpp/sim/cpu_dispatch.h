@@ -9,7 +9,7 @@
  * A variant never changes a result: the plugins are built without FMA contraction
  * (-ffp-contract=off, also inside target attributes) and the scan is integer bit tests.
  * DEMCONTACT_DISPATCH=baseline in the environment forces the baseline variants (the tests compare
- * both; a user can rule the dispatch out). */
+ * both; a user can rule the dispatch out); =avx2 rules out the x86-64-v4 body only. */
 #ifndef DEMCONTACT_SIM_CPU_DISPATCH_H
 #define DEMCONTACT_SIM_CPU_DISPATCH_H
 
@@ -33,22 +33,33 @@
 namespace demcontact_dispatch {
 namespace {
 
-/* DEMCONTACT_DISPATCH=baseline: the baseline variants only. */
+/* DEMCONTACT_DISPATCH, the variable the library's batches read too (dc_dispatch_level):
+ * "baseline" runs the baseline variants only, "avx2" nothing wider than AVX2 (here: the AVX2
+ * scan, the baseline contact body), "auto" or unset whatever the CPU has. */
+inline bool setting_is(const char *value)
+{
+    const char *v = std::getenv("DEMCONTACT_DISPATCH");
+    return v && std::strcmp(v, value) == 0;
+}
+
 inline bool forced_baseline()
 {
-    static const bool f = [] {
-        const char *v = std::getenv("DEMCONTACT_DISPATCH");
-        return v && std::strcmp(v, "baseline") == 0;
-    }();
+    static const bool f = setting_is("baseline");
     return f;
 }
 
-/* The value of DEMCONTACT_DISPATCH when it is set to something other than "baseline" (ignored,
- * and said so by the plugin), else NULL. */
+inline bool capped_avx2()
+{
+    static const bool f = setting_is("avx2");
+    return f;
+}
+
+/* The value of DEMCONTACT_DISPATCH when it is none of the above (ignored, and said so by the
+ * plugin), else NULL. */
 inline const char *unknown_setting()
 {
     const char *v = std::getenv("DEMCONTACT_DISPATCH");
-    return v && std::strcmp(v, "baseline") != 0 ? v : nullptr;
+    return v && !setting_is("baseline") && !setting_is("avx2") && !setting_is("auto") ? v : nullptr;
 }
 
 #if DC_DISPATCH_AVX2
@@ -79,7 +90,7 @@ inline bool use_avx2()
 inline bool use_v4()
 {
 #if DC_DISPATCH_V4
-    return have_x86_64_v4() && !forced_baseline();
+    return have_x86_64_v4() && !forced_baseline() && !capped_avx2();
 #else
     return false;
 #endif

@@ -258,6 +258,7 @@ class Pair:
         *,
         out: Optional[npt.NDArray[np.float64]] = None,
         check: bool = True,
+        fast: bool = False,
     ) -> npt.NDArray[np.float64]: ...
 
 @final
@@ -328,6 +329,7 @@ def normal_force_batch(
     *,
     out: Optional[npt.NDArray[np.float64]] = None,
     check: bool = True,
+    fast: bool = False,
 ) -> npt.NDArray[np.float64]: ...
 def normal_force_3d(
     pair: Pair, x1: Sequence[float], v1: Sequence[float], R1: _Real, m1: _Real, x2: Sequence[float], v2: Sequence[float], R2: _Real, m2: _Real

@@ -321,6 +321,41 @@ def test_forces_equal_c():
             assert got1.tobytes() == want1.tobytes()
 
 
+def test_fast_batch_equals_c_and_is_near_the_exact_one():
+    """fast=True is dc_normal_force_batch_fast bit for bit; it moves general-p and damped Hertz
+    forces by at most 8 ulp of the force's terms and leaves every other pair's bits alone."""
+    fast = fn("normal_force_batch_fast", [C.POINTER(Pair), C.c_size_t, PD, PD, PD, PD, PD])
+    rng = np.random.default_rng(11)
+    n = 3000
+    d = rng.uniform(-1e-5, 1e-4, n)
+    vn = rng.uniform(-3, 3, n)
+    r = rng.uniform(1e-4, 1e-2, n)
+    m = rng.uniform(1e-6, 1e-2, n)
+    ptr = lambda a: a.ctypes.data_as(PD)  # noqa: E731
+    moved = 0
+    for pair, cp in all_pairs():
+        want = np.empty(n)
+        assert fast(C.byref(cp), n, ptr(d), ptr(vn), ptr(r), ptr(m), ptr(want)) == 0
+        got = dc.normal_force_batch(pair, d, vn, r, m, fast=True)
+        assert got.tobytes() == want.tobytes()
+        assert dc.normal_force_batch(pair, d, vn, r, m, fast=True, check=False).tobytes() == want.tobytes()
+        assert pair.normal_force_batch(d, vn, r, m, fast=True).tobytes() == want.tobytes()
+        exact = dc.normal_force_batch(pair, d, vn, r, m)
+        touching = d > 0
+        if pair.model == dc.Model.HERTZ:
+            q = np.sqrt(r * d, where=touching, out=np.zeros(n))
+            terms = np.abs(pair.k * q * d) + np.abs(pair.c * np.sqrt(m * q) * vn)
+        else:
+            s = np.power(d, pair.h, where=touching, out=np.zeros(n))
+            terms = np.abs(pair.k * d * s * s) + np.abs(pair.c * np.sqrt(m) * s * vn)
+        assert np.all(np.abs(got - exact) <= 8 * np.finfo(float).eps * terms)
+        general_p = pair.model == dc.Model.POWERLAW and pair.p not in (1.0, 1.5, 2.0) and pair.p <= 9
+        if not (general_p or (pair.model == dc.Model.HERTZ and pair.alpha > 0)):
+            assert got.tobytes() == exact.tobytes()
+        moved += int(got.tobytes() != exact.tobytes())
+    assert moved >= 1
+
+
 def test_force_3d_equals_c():
     f = fn("normal_force_3d", [C.POINTER(Pair), PD, PD, D, D, PD, PD, D, D, PD])
     v3 = lambda *x: (D * 3)(*x)  # noqa: E731

@@ -10,12 +10,15 @@
 //! fused multiply–add is ever formed, so all flavours round exactly like the scalar call and the
 //! batch stays bit-identical to [`super::normal_force`] (tests/force_contract.rs).
 
-use super::pair::{Consts, Law, Visit, eval, eval_pow};
+use super::pair::{Consts, Law, Visit, eval, eval_fused, eval_pow};
 use super::registry::dispatch;
 use crate::Error;
 use crate::numerics::pow_dd::{pow_exp, pow_ln, pow_ln_index};
+use crate::numerics::pow_fast::{FastPow, pow_fast_slice};
 use crate::numerics::pow_table::{exp_entries, exp_index, ln_entries};
 use crate::numerics::simd::{SimdLoop, vectorised};
+#[cfg(all(target_arch = "x86_64", not(miri)))]
+use crate::numerics::simd::{has_avx2, has_avx512};
 use core::marker::PhantomData;
 
 struct Batch<'a> {
@@ -66,14 +69,14 @@ const CHUNK: usize = 256;
 #[inline(always)]
 fn run_pow<L: Law, const CLAMP: bool>(b: Batch<'_>) {
     #[cfg(all(target_arch = "x86_64", not(miri)))]
-    if std::is_x86_feature_detected!("avx512f") {
-        // SAFETY: the CPU has AVX-512F (checked just above), the only requirement.
+    if has_avx512() {
+        // SAFETY: the CPU has AVX-512F and FMA (checked just above), the only requirement.
         unsafe { run_pow_avx512::<L, CLAMP>(b) };
         return;
     }
     #[cfg(all(target_arch = "x86_64", not(miri)))]
-    if std::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2 (checked just above), the only requirement.
+    if has_avx2() {
+        // SAFETY: the CPU has AVX2 and FMA (checked just above), the only requirement.
         unsafe { run_pow_avx2::<L, CLAMP>(b) };
         return;
     }
@@ -131,29 +134,8 @@ fn run_pow<L: Law, const CLAMP: bool>(b: Batch<'_>) {
 #[inline(never)]
 unsafe fn run_pow_avx512<L: Law, const CLAMP: bool>(b: Batch<'_>) {
     use crate::numerics::pow_avx512::{Tables, pow_slice_x8};
-    let Batch {
-        c,
-        d,
-        vn,
-        r,
-        m,
-        out,
-    } = b;
-    let tables = Tables::load();
-    let mut s = [0.0f64; CHUNK];
-    let chunks = out
-        .chunks_mut(CHUNK)
-        .zip(d.chunks(CHUNK))
-        .zip(vn.chunks(CHUNK))
-        .zip(r.chunks(CHUNK))
-        .zip(m.chunks(CHUNK));
-    for ((((out, d), vn), r), m) in chunks {
-        pow_slice_x8(d, c.h, &mut s, &tables);
-        let rest = d.iter().zip(vn).zip(r).zip(m).zip(&s);
-        for (o, ((((&d, &vn), &r), &m), &s)) in out.iter_mut().zip(rest) {
-            *o = eval_pow::<L, CLAMP>(&c, d, vn, r, m, s);
-        }
-    }
+    let (q, tables) = (b.c.h, Tables::load());
+    pow_chunks::<L, CLAMP, false>(b, |d, s| pow_slice_x8(d, q, s, &tables));
 }
 
 /// [`run_pow`] with AVX2: s = d^h by [`crate::numerics::pow_avx2`] (table reads as gathers, the
@@ -166,6 +148,19 @@ unsafe fn run_pow_avx512<L: Law, const CLAMP: bool>(b: Batch<'_>) {
 #[inline(never)]
 unsafe fn run_pow_avx2<L: Law, const CLAMP: bool>(b: Batch<'_>) {
     use crate::numerics::pow_avx2::pow_slice_x4;
+    let q = b.c.h;
+    pow_chunks::<L, CLAMP, false>(b, |d, s| pow_slice_x4(d, q, s));
+}
+
+/// The force loop of a `POW` law in chunks of [`CHUNK`] contacts: s = d^h of a chunk by `power`
+/// (into a stack array), then the chunk's forces by [`eval_pow`] (or [`eval_fused`] for the fast
+/// batch) in a loop the compiler vectorises. Inlined into each flavour's `target_feature`
+/// function, whose features the closure inherits.
+#[inline(always)]
+fn pow_chunks<L: Law, const CLAMP: bool, const FUSED: bool>(
+    b: Batch<'_>,
+    mut power: impl FnMut(&[f64], &mut [f64]),
+) {
     let Batch {
         c,
         d,
@@ -182,10 +177,14 @@ unsafe fn run_pow_avx2<L: Law, const CLAMP: bool>(b: Batch<'_>) {
         .zip(r.chunks(CHUNK))
         .zip(m.chunks(CHUNK));
     for ((((out, d), vn), r), m) in chunks {
-        pow_slice_x4(d, c.h, &mut s);
+        power(d, &mut s);
         let rest = d.iter().zip(vn).zip(r).zip(m).zip(&s);
         for (o, ((((&d, &vn), &r), &m), &s)) in out.iter_mut().zip(rest) {
-            *o = eval_pow::<L, CLAMP>(&c, d, vn, r, m, s);
+            *o = if FUSED {
+                eval_fused::<L, CLAMP>(&c, d, vn, r, m, s)
+            } else {
+                eval_pow::<L, CLAMP>(&c, d, vn, r, m, s)
+            };
         }
     }
 }
@@ -214,24 +213,154 @@ pub fn normal_force_batch(
     m: &[f64],
     out: &mut [f64],
 ) -> Result<(), Error> {
+    let b = batch(c, d, vn, r, m, out)?;
+    dispatch(kernel, b).ok_or(Error::PairInvalid)
+}
+
+/// [`normal_force_batch`] with the power of general-p laws by [`FastPow`] (tables of the
+/// exponent, cached per thread; a few ulp from the exact power) where the exponent has tables;
+/// every other law, and general p outside [`FastPow`]'s range of exponents, gives
+/// [`normal_force_batch`]'s bits.
+pub fn normal_force_batch_fast(
+    kernel: i32,
+    c: Consts,
+    d: &[f64],
+    vn: &[f64],
+    r: &[f64],
+    m: &[f64],
+    out: &mut [f64],
+) -> Result<(), Error> {
+    let b = batch(c, d, vn, r, m, out)?;
+    dispatch(kernel, Fast(b)).ok_or(Error::PairInvalid)
+}
+
+/// The batch over the first `out.len()` entries of each input (checked long enough, n > 0).
+fn batch<'a>(
+    c: Consts,
+    d: &'a [f64],
+    vn: &'a [f64],
+    r: &'a [f64],
+    m: &'a [f64],
+    out: &'a mut [f64],
+) -> Result<Batch<'a>, Error> {
     let n = out.len();
-    if n == 0 || d.len() < n || vn.len() < n || r.len() < n || m.len() < n {
-        return Err(Error::BufferTooShort);
-    }
-    let (d, vn, r, m) = match (d.get(..n), vn.get(..n), r.get(..n), m.get(..n)) {
-        (Some(d), Some(vn), Some(r), Some(m)) => (d, vn, r, m),
-        _ => return Err(Error::BufferTooShort),
-    };
-    dispatch(
-        kernel,
-        Batch {
+    match (d.get(..n), vn.get(..n), r.get(..n), m.get(..n)) {
+        (Some(d), Some(vn), Some(r), Some(m)) if n > 0 => Ok(Batch {
             c,
             d,
             vn,
             r,
             m,
             out,
-        },
-    )
-    .ok_or(Error::PairInvalid)
+        }),
+        _ => Err(Error::BufferTooShort),
+    }
+}
+
+/// A batch for [`normal_force_batch_fast`].
+struct Fast<'a>(Batch<'a>);
+
+impl Visit for Fast<'_> {
+    type Out = ();
+    #[inline(always)]
+    fn visit<L: Law, const CLAMP: bool>(self) {
+        if !L::POW {
+            return vectorised(FusedLoop::<L, CLAMP> {
+                b: self.0,
+                law: PhantomData,
+            });
+        }
+        match FastPow::cached(self.0.c.h) {
+            Some(t) if !L::ADHESIVE => run_pow_fast::<L, CLAMP>(self.0, &t),
+            _ => self.0.visit::<L, CLAMP>(),
+        }
+    }
+}
+
+/// The fast batch of a law without a power: [`eval_fused`] in a loop the compiler vectorises.
+struct FusedLoop<'a, L, const CLAMP: bool> {
+    b: Batch<'a>,
+    law: PhantomData<L>,
+}
+
+impl<L: Law, const CLAMP: bool> SimdLoop for FusedLoop<'_, L, CLAMP> {
+    #[inline(always)]
+    fn run(self) {
+        let Batch {
+            c,
+            d,
+            vn,
+            r,
+            m,
+            out,
+        } = self.b;
+        for ((((o, &d), &vn), &r), &m) in out.iter_mut().zip(d).zip(vn).zip(r).zip(m) {
+            *o = eval_fused::<L, CLAMP>(&c, d, vn, r, m, 0.0);
+        }
+    }
+}
+
+/// The fast batch of a `POW` law: s = d^h by [`FastPow`] in chunks of [`CHUNK`] contacts (the
+/// AVX-512 kernel where the CPU has AVX-512F and FMA, else the scalar table path compiled for
+/// the widest flavour), then the force as in the exact batch.
+#[inline(always)]
+fn run_pow_fast<L: Law, const CLAMP: bool>(b: Batch<'_>, t: &FastPow) {
+    #[cfg(all(target_arch = "x86_64", not(miri)))]
+    if has_avx512() {
+        // SAFETY: the CPU has AVX-512F and FMA (checked just above), the only requirement.
+        unsafe { run_pow_fast_avx512::<L, CLAMP>(b, t) };
+        return;
+    }
+    #[cfg(all(target_arch = "x86_64", not(miri)))]
+    if has_avx2() {
+        // SAFETY: the CPU has AVX2 and FMA (checked just above), the only requirement.
+        unsafe { run_pow_fast_avx2::<L, CLAMP>(b, t) };
+        return;
+    }
+    vectorised(FastLoop::<L, CLAMP> {
+        b,
+        t,
+        law: PhantomData,
+    });
+}
+
+/// [`run_pow_fast`]'s loop without AVX-512 or AVX2 (the baseline flavour; software FMA).
+struct FastLoop<'a, 't, L, const CLAMP: bool> {
+    b: Batch<'a>,
+    t: &'t FastPow,
+    law: PhantomData<L>,
+}
+
+impl<L: Law, const CLAMP: bool> SimdLoop for FastLoop<'_, '_, L, CLAMP> {
+    #[inline(always)]
+    fn run(self) {
+        let t = self.t;
+        pow_chunks::<L, CLAMP, true>(self.b, |d, s| pow_fast_slice(d, t, s));
+    }
+}
+
+/// [`run_pow_fast`] with AVX2 and FMA: the power by [`crate::numerics::pow_fast_avx2`], then the
+/// force in a loop the compiler vectorises.
+///
+/// # Safety
+/// The CPU must support AVX2 and FMA.
+#[cfg(all(target_arch = "x86_64", not(miri)))]
+#[target_feature(enable = "avx2,fma")]
+#[inline(never)]
+unsafe fn run_pow_fast_avx2<L: Law, const CLAMP: bool>(b: Batch<'_>, t: &FastPow) {
+    use crate::numerics::pow_fast_avx2::pow_fast_slice_x4;
+    pow_chunks::<L, CLAMP, true>(b, |d, s| pow_fast_slice_x4(d, t, s));
+}
+
+/// [`run_pow_fast`] with AVX-512F and FMA.
+///
+/// # Safety
+/// The CPU must support AVX-512F and FMA.
+#[cfg(all(target_arch = "x86_64", not(miri)))]
+#[target_feature(enable = "avx512f,avx2,fma")]
+#[inline(never)]
+unsafe fn run_pow_fast_avx512<L: Law, const CLAMP: bool>(b: Batch<'_>, t: &FastPow) {
+    use crate::numerics::pow_fast_avx512::{Tables, pow_fast_slice_x8};
+    let tables = Tables::load(t);
+    pow_chunks::<L, CLAMP, true>(b, |d, s| pow_fast_slice_x8(d, &tables, t, s));
 }

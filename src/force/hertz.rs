@@ -35,6 +35,11 @@ impl Law for HertzDamped {
         let q = (r * d).sqrt();
         c.k * q * d + c.c * (m * q).sqrt() * vn
     }
+    #[inline(always)]
+    fn raw_fused(c: &Consts, d: f64, vn: f64, r: f64, m: f64, _s: f64) -> f64 {
+        let q = (r * d).sqrt();
+        (c.k * q).mul_add(d, c.c * (m * q).sqrt() * vn)
+    }
 }
 
 /// (4/3) E* for two materials, checked finite.

@@ -118,6 +118,10 @@ impl Law for GenDamped {
     fn raw_pow(c: &Consts, d: f64, vn: f64, _r: f64, m: f64, s: f64) -> f64 {
         c.k * d * s * s + c.c * m.sqrt() * s * vn
     }
+    #[inline(always)]
+    fn raw_fused(c: &Consts, d: f64, vn: f64, _r: f64, m: f64, s: f64) -> f64 {
+        (c.k * d * s).mul_add(s, c.c * m.sqrt() * s * vn)
+    }
 }
 
 fn check_stiffness(k: f64) -> Result<(), Error> {

@@ -17,6 +17,7 @@ pub mod gamma;
 pub mod gauss_jacobi;
 pub mod jacobi_cc;
 pub(crate) mod lagrange8;
+pub(crate) mod ln_dd;
 pub mod ode;
 pub(crate) mod pow;
 #[cfg(target_arch = "x86_64")]
@@ -24,6 +25,11 @@ pub(crate) mod pow_avx2;
 #[cfg(target_arch = "x86_64")]
 pub(crate) mod pow_avx512;
 pub(crate) mod pow_dd;
+pub(crate) mod pow_fast;
+#[cfg(target_arch = "x86_64")]
+pub(crate) mod pow_fast_avx2;
+#[cfg(target_arch = "x86_64")]
+pub(crate) mod pow_fast_avx512;
 pub(crate) mod pow_table;
 pub(crate) mod reduce;
 pub mod roots;

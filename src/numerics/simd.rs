@@ -4,10 +4,91 @@
 //! ([`flavours!`]) from one list, in the order they are tried.
 //!
 //! The detection is std's `is_x86_feature_detected!`, which queries `cpuid` once and then reads
-//! its cached answer (a load and a test per dispatched loop, not per element). Enabling these
+//! its cached answer (a load and a test per dispatched loop, not per element). The environment
+//! variable `DEMCONTACT_DISPATCH` can cap the choice ([`cap`]: `baseline` or `avx2`), to measure
+//! and test the narrower flavours on a wide CPU; every flavour gives the same bits. Enabling these
 //! features never changes a result: Rust does not contract `a * b + c` into a fused
 //! multiply–add (only an explicit `mul_add` would), so every flavour rounds exactly like the
 //! scalar code (tests/force_contract.rs checks the batch against the scalar call bit for bit).
+
+/// The flavours, narrowest first.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum Level {
+    /// Baseline x86-64 (SSE2).
+    Baseline = 0,
+    /// AVX2 + FMA.
+    Avx2 = 1,
+    /// AVX-512F.
+    Avx512 = 2,
+}
+
+/// The widest flavour `DEMCONTACT_DISPATCH` allows, read once per process: `baseline` or `avx2`
+/// cap the dispatch there; unset, `auto` or any other value, no cap (the CPU decides).
+pub(crate) fn cap() -> Level {
+    use core::sync::atomic::{AtomicU8, Ordering::Relaxed};
+    static CAP: AtomicU8 = AtomicU8::new(u8::MAX);
+    match CAP.load(Relaxed) {
+        0 => Level::Baseline,
+        1 => Level::Avx2,
+        2 => Level::Avx512,
+        _ => {
+            let level = level_from_env();
+            CAP.store(level as u8, Relaxed);
+            level
+        }
+    }
+}
+
+#[cfg(not(miri))]
+fn level_from_env() -> Level {
+    // SAFETY: the name is NUL-terminated; getenv returns NULL or a NUL-terminated string, read
+    // at once (no allocation, unlike std::env).
+    let value = unsafe { libc::getenv(c"DEMCONTACT_DISPATCH".as_ptr()) };
+    if value.is_null() {
+        return Level::Avx512;
+    }
+    // SAFETY: non-null, NUL-terminated (getenv's contract).
+    match unsafe { core::ffi::CStr::from_ptr(value) }.to_bytes() {
+        b"baseline" => Level::Baseline,
+        b"avx2" => Level::Avx2,
+        _ => Level::Avx512,
+    }
+}
+
+#[cfg(miri)]
+fn level_from_env() -> Level {
+    Level::Baseline
+}
+
+/// True where the CPU has AVX-512F and FMA and the environment allows them.
+#[cfg(all(target_arch = "x86_64", not(miri)))]
+pub(crate) fn has_avx512() -> bool {
+    cap() >= Level::Avx512
+        && std::is_x86_feature_detected!("avx512f")
+        && std::is_x86_feature_detected!("fma")
+}
+
+/// True where the CPU has AVX2 and FMA and the environment allows them.
+#[cfg(all(target_arch = "x86_64", not(miri)))]
+pub(crate) fn has_avx2() -> bool {
+    cap() >= Level::Avx2
+        && std::is_x86_feature_detected!("avx2")
+        && std::is_x86_feature_detected!("fma")
+}
+
+/// The flavour [`vectorised`] runs in this process.
+pub(crate) fn level() -> Level {
+    #[cfg(all(target_arch = "x86_64", not(miri)))]
+    {
+        if has_avx512() && std::is_x86_feature_detected!("avx2") {
+            return Level::Avx512;
+        }
+        if has_avx2() {
+            return Level::Avx2;
+        }
+    }
+    Level::Baseline
+}
 
 /// A loop to run under [`vectorised`]. Implementations mark `run` `#[inline(always)]`: only code
 /// inlined into a `target_feature` function is compiled for its features (a closure would stay
@@ -20,7 +101,7 @@ pub(crate) trait SimdLoop {
 /// Generates one `#[inline(never)]` function per CPU flavour (each monomorphised loop is
 /// compiled, and vectorised, on its own) and [`vectorised`], which tries them in list order.
 macro_rules! flavours {
-    ($($name:ident: $features:literal if [$($detect:tt),+];)*) => {
+    ($($name:ident: $features:literal if $level:ident [$($detect:tt),+];)*) => {
         $(
             /// # Safety
             /// The CPU must support the features this function is compiled for
@@ -45,7 +126,7 @@ macro_rules! flavours {
             #[cfg(all(target_arch = "x86_64", not(miri)))]
             {
                 $(
-                    if $(std::is_x86_feature_detected!($detect))&&+ {
+                    if cap() >= Level::$level && $(std::is_x86_feature_detected!($detect))&&+ {
                         // SAFETY: the CPU supports every feature the flavour is compiled for
                         // (checked just above), the only requirement of the target_feature
                         // function.
@@ -60,6 +141,6 @@ macro_rules! flavours {
 }
 
 flavours! {
-    run_avx512: "avx512f,avx2,fma" if ["avx512f", "avx2", "fma"];
-    run_avx2: "avx2,fma" if ["avx2", "fma"];
+    run_avx512: "avx512f,avx2,fma" if Avx512 ["avx512f", "avx2", "fma"];
+    run_avx2: "avx2,fma" if Avx2 ["avx2", "fma"];
 }
