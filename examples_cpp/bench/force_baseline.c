@@ -1,8 +1,9 @@
 /* Hand-written C loops of the same force expressions as demcontact's kernels: what a host code
- * writes today. Compiled four times by CMake: plain -O3 (BASE = plain: sqrt keeps its errno
+ * writes today. Compiled five times by CMake: plain -O3 (BASE = plain: sqrt keeps its errno
  * path, so gcc does not vectorise it), -O3 -fno-math-errno (BASE = fast: sqrtpd, vectorised),
- * -O3 -march=native -fno-math-errno (BASE = native: the host CPU's widest vectors) and the same
- * with -ffp-contract=off (BASE = native_nofma: no FMA, the rounding of demcontact's batch).
+ * -O3 -march=native -fno-math-errno (BASE = native: the host CPU's widest vectors), the same
+ * with -ffp-contract=off (BASE = native_nofma: no FMA, the rounding of demcontact's exact batch)
+ * and -O3 -march=x86-64-v3 -fno-math-errno (BASE = v3: an AVX2 machine's -march=native).
  * The same loops with the per-contact call replaced by dc_normal_force_inline from
  * demcontact_inline.h (inline_*): "the inline kernel in the host's own loop", same flags.
  * copy_loop / sum_loop: the memory roofline of the streaming runs (STREAM copy; the same four

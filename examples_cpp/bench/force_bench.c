@@ -61,7 +61,11 @@ static const char *NAMES[NVAR] = {
     "Hertz: C loop, -O3 -fno-math-errno",
     "Hertz: C loop, -O3 -march=native -fno-math-errno",
     "Hertz: C loop, -O3 -march=native -fno-math-errno -ffp-contract=off (no FMA: the batch's rounding)",
+#ifdef DC_V3_IS_NATIVE
+    "Hertz: C loop, -O3 -march=native -fno-math-errno (the compiler has no -march=x86-64-v3)",
+#else
     "Hertz: C loop, -O3 -march=x86-64-v3 -fno-math-errno (an AVX2 machine's native)",
+#endif
     "Hertz: `dc_normal_force_batch` (runtime dispatch)",
     "Hertz: `dc_normal_force_batch_fast` (runtime dispatch; FMA)",
     "Hertz: `dc_normal_force` in a C loop",

@@ -18,8 +18,9 @@ pub const DC_DISPATCH_AVX2: i32 = 1;
 pub const DC_DISPATCH_AVX512: i32 = 2;
 
 /// The vector flavour the batch functions run in this process (DC_DISPATCH_*): the widest the
-/// CPU has, capped by the environment variable DEMCONTACT_DISPATCH=baseline or =avx2 (read at
-/// the first call; to measure or test the narrower flavours). Every flavour gives the same bits.
+/// CPU has, capped by the environment variable DEMCONTACT_DISPATCH=baseline or =avx2 (read once,
+/// at the first call; any other value caps nothing; to measure or test the narrower flavours).
+/// Every flavour gives the same bits.
 #[unsafe(no_mangle)]
 pub extern "C" fn dc_dispatch_level() -> i32 {
     crate::numerics::simd::level() as i32

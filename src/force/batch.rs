@@ -6,9 +6,13 @@
 //!
 //! **Runtime CPU dispatch** ([`crate::numerics::simd`]): each monomorphised loop is compiled for
 //! the baseline x86-64 (SSE2, 2 lanes), AVX2 + FMA (4 lanes) and AVX-512F (8 lanes), and the
-//! widest the CPU supports runs, so one portable binary runs at `target-cpu=native` speed. No
-//! fused multiply–add is ever formed, so all flavours round exactly like the scalar call and the
-//! batch stays bit-identical to [`super::normal_force`] (tests/force_contract.rs).
+//! widest the CPU supports runs, so one portable binary runs at `target-cpu=native` speed. The
+//! exact batch forms no fused multiply–add, so all flavours round exactly like the scalar call
+//! and it stays bit-identical to [`super::normal_force`] (tests/force_contract.rs).
+//!
+//! **The fast batch** ([`normal_force_batch_fast`]) gives that up for speed: general p by
+//! [`crate::numerics::pow_fast`] (tables of the exponent) and the laws' fused forms
+//! ([`Law::raw_fused`]); its own flavours agree bit for bit (tests/force_batch_fast.rs).
 
 use super::pair::{Consts, Law, Visit, eval, eval_fused, eval_pow};
 use super::registry::dispatch;
@@ -270,9 +274,10 @@ impl Visit for Fast<'_> {
                 law: PhantomData,
             });
         }
-        match FastPow::cached(self.0.c.h) {
-            Some(t) if !L::ADHESIVE => run_pow_fast::<L, CLAMP>(self.0, &t),
-            _ => self.0.visit::<L, CLAMP>(),
+        // (An adhesive law would need x^q beyond contact: none is a POW law; exact if one were.)
+        match FastPow::cached(self.0.c.h).filter(|_| !L::ADHESIVE) {
+            Some(t) => run_pow_fast::<L, CLAMP>(self.0, &t),
+            None => self.0.visit::<L, CLAMP>(),
         }
     }
 }
@@ -301,8 +306,8 @@ impl<L: Law, const CLAMP: bool> SimdLoop for FusedLoop<'_, L, CLAMP> {
 }
 
 /// The fast batch of a `POW` law: s = d^h by [`FastPow`] in chunks of [`CHUNK`] contacts (the
-/// AVX-512 kernel where the CPU has AVX-512F and FMA, else the scalar table path compiled for
-/// the widest flavour), then the force as in the exact batch.
+/// AVX-512 or the AVX2 kernel where they run, else the scalar table path in the baseline
+/// flavour), then the forces by [`eval_fused`].
 #[inline(always)]
 fn run_pow_fast<L: Law, const CLAMP: bool>(b: Batch<'_>, t: &FastPow) {
     #[cfg(all(target_arch = "x86_64", not(miri)))]
@@ -324,7 +329,9 @@ fn run_pow_fast<L: Law, const CLAMP: bool>(b: Batch<'_>, t: &FastPow) {
     });
 }
 
-/// [`run_pow_fast`]'s loop without AVX-512 or AVX2 (the baseline flavour; software FMA).
+/// [`run_pow_fast`]'s loop in the baseline flavour: each fused multiply–add a call to the C
+/// library's `fma` (no FMA instruction in baseline x86-64), so slower than the exact batch there,
+/// also on a CPU with FMA when `DEMCONTACT_DISPATCH=baseline` caps the dispatch.
 struct FastLoop<'a, 't, L, const CLAMP: bool> {
     b: Batch<'a>,
     t: &'t FastPow,

@@ -19,10 +19,17 @@ fn two_sum(a: f64, b: f64) -> Dd {
     (s, (a - (s - bb)) + (b - bb))
 }
 
-/// a · b exactly, as a double-double.
+/// a · b exactly, as a double-double (Dekker's product with Veltkamp's split: no fused
+/// multiply–add, so the tables do not depend on how a C library implements `fma`).
 fn two_prod(a: f64, b: f64) -> Dd {
+    let split = |x: f64| {
+        let c = 134_217_729.0 * x; // 2^27 + 1
+        let hi = c - (c - x);
+        (hi, x - hi)
+    };
     let p = a * b;
-    (p, a.mul_add(b, -p))
+    let ((ah, al), (bh, bl)) = (split(a), split(b));
+    (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
 }
 
 pub(crate) fn add(a: Dd, b: Dd) -> Dd {
@@ -65,7 +72,8 @@ pub(crate) fn ln_dd(x: f64) -> Dd {
         // 1/k as a double-double: the residual 1 − k·(1/k) is exact in one fused multiply–add.
         let k = (2 * j + 1) as f64;
         let r = 1.0 / k;
-        let inv = (r, (-r).mul_add(k, 1.0) / k);
+        let (p, e) = two_prod(r, k);
+        let inv = (r, ((1.0 - p) - e) / k);
         s = add(mul(s, u2), inv);
     }
     let ln_f = mul(mul(s, u), (2.0, 0.0));

@@ -20,15 +20,16 @@ pub(crate) mod lagrange8;
 pub(crate) mod ln_dd;
 pub mod ode;
 pub(crate) mod pow;
-#[cfg(target_arch = "x86_64")]
+// The x86-64 vector kernels (not under Miri, which runs no vector flavour).
+#[cfg(all(target_arch = "x86_64", not(miri)))]
 pub(crate) mod pow_avx2;
-#[cfg(target_arch = "x86_64")]
+#[cfg(all(target_arch = "x86_64", not(miri)))]
 pub(crate) mod pow_avx512;
 pub(crate) mod pow_dd;
 pub(crate) mod pow_fast;
-#[cfg(target_arch = "x86_64")]
+#[cfg(all(target_arch = "x86_64", not(miri)))]
 pub(crate) mod pow_fast_avx2;
-#[cfg(target_arch = "x86_64")]
+#[cfg(all(target_arch = "x86_64", not(miri)))]
 pub(crate) mod pow_fast_avx512;
 pub(crate) mod pow_table;
 pub(crate) mod reduce;

@@ -1,6 +1,6 @@
 //! [`super::pow_fast`] for eight lanes with AVX-512F: the same operations lane for lane (the
 //! fused multiply–adds as `vfmadd`, each rounding once like `f64::mul_add`), so the same bits
-//! as [`FastPow::pow`]. The five 16-entry tables sit in registers and are read by one
+//! as [`FastPow::pow`]. The four 16-entry tables sit in registers and are read by one
 //! in-register permute each (`vpermt2pd`, which reads only an index's low four bits: the
 //! indices are x's bits shifted, never masked).
 

@@ -23,7 +23,9 @@ pub(crate) enum Level {
 }
 
 /// The widest flavour `DEMCONTACT_DISPATCH` allows, read once per process: `baseline` or `avx2`
-/// cap the dispatch there; unset, `auto` or any other value, no cap (the CPU decides).
+/// cap the dispatch there; unset, `auto` or any other value, no cap (the CPU decides). Read with
+/// `getenv` (no allocation), like every C library: a host that calls `setenv` on another thread
+/// at the same moment races with it, as it would with its own C library.
 pub(crate) fn cap() -> Level {
     use core::sync::atomic::{AtomicU8, Ordering::Relaxed};
     static CAP: AtomicU8 = AtomicU8::new(u8::MAX);
@@ -60,34 +62,38 @@ fn level_from_env() -> Level {
     Level::Baseline
 }
 
-/// True where the CPU has AVX-512F and FMA and the environment allows them.
-#[cfg(all(target_arch = "x86_64", not(miri)))]
-pub(crate) fn has_avx512() -> bool {
-    cap() >= Level::Avx512
-        && std::is_x86_feature_detected!("avx512f")
-        && std::is_x86_feature_detected!("fma")
-}
-
-/// True where the CPU has AVX2 and FMA and the environment allows them.
-#[cfg(all(target_arch = "x86_64", not(miri)))]
-pub(crate) fn has_avx2() -> bool {
-    cap() >= Level::Avx2
-        && std::is_x86_feature_detected!("avx2")
-        && std::is_x86_feature_detected!("fma")
-}
-
-/// The flavour [`vectorised`] runs in this process.
-pub(crate) fn level() -> Level {
+/// The widest flavour this CPU has (x86-64: AVX-512F with AVX2 and FMA, AVX2 with FMA).
+fn cpu_level() -> Level {
     #[cfg(all(target_arch = "x86_64", not(miri)))]
     {
-        if has_avx512() && std::is_x86_feature_detected!("avx2") {
+        let avx2 = std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma");
+        if avx2 && std::is_x86_feature_detected!("avx512f") {
             return Level::Avx512;
         }
-        if has_avx2() {
+        if avx2 {
             return Level::Avx2;
         }
     }
     Level::Baseline
+}
+
+/// The flavour [`vectorised`] and the batches' explicit kernels run in this process: the CPU's
+/// widest, capped by [`cap`].
+pub(crate) fn level() -> Level {
+    cap().min(cpu_level())
+}
+
+/// True where the AVX-512 kernels run (the CPU has AVX-512F, AVX2 and FMA, the environment
+/// allows them).
+#[cfg(all(target_arch = "x86_64", not(miri)))]
+pub(crate) fn has_avx512() -> bool {
+    level() == Level::Avx512
+}
+
+/// True where the AVX2 kernels run (the CPU has AVX2 and FMA, the environment allows them).
+#[cfg(all(target_arch = "x86_64", not(miri)))]
+pub(crate) fn has_avx2() -> bool {
+    level() >= Level::Avx2
 }
 
 /// A loop to run under [`vectorised`]. Implementations mark `run` `#[inline(always)]`: only code
