@@ -95,6 +95,29 @@ fn batch(b: Bencher, p: f64) {
     });
 }
 
+/// The fast batch (`dc_normal_force_batch_fast`: general p from per-exponent tables, FMA) through
+/// the C symbol; compare with `batch` of the same p in the same run.
+#[divan::bench(args = [1.0, 1.5, 2.0, 1.7])]
+fn batch_fast(b: Bencher, p: f64) {
+    let (x, pair) = (data(), pair(p));
+    let mut out = vec![0.0; N];
+    b.counter(ItemsCount::new(N)).bench_local(|| {
+        let s = unsafe {
+            dc_normal_force_batch_fast(
+                black_box(&pair),
+                N,
+                x.d.as_ptr(),
+                x.vn.as_ptr(),
+                x.r.as_ptr(),
+                x.m.as_ptr(),
+                out.as_mut_ptr(),
+            )
+        };
+        black_box(s);
+        black_box(&mut out);
+    });
+}
+
 /// One call per contact through the C symbol.
 #[divan::bench(args = [1.0, 1.5, 2.0, 1.7])]
 fn scalar(b: Bencher, p: f64) {

@@ -81,13 +81,21 @@ pub(crate) trait Law {
 /// (and NaN) raw forces become zero. Written as selects so that batch loops vectorise.
 #[inline(always)]
 pub(crate) fn eval<L: Law, const CLAMP: bool>(c: &Consts, d: f64, vn: f64, r: f64, m: f64) -> f64 {
-    let f = L::raw(c, d, vn, r, m);
-    let f = if CLAMP {
-        if f > 0.0 { f } else { 0.0 }
-    } else {
-        f
+    select::<L, CLAMP>(d, L::raw(c, d, vn, r, m))
+}
+
+/// The raw force f where the law keeps it (d > 0 unless adhesive; f > 0 with `CLAMP`), else +0,
+/// as one condition: with AVX-512, a compare masked by the other (the form a C compiler gives
+/// the hand-written loop). NaN d or (with `CLAMP`) NaN f give +0.
+#[inline(always)]
+fn select<L: Law, const CLAMP: bool>(d: f64, f: f64) -> f64 {
+    let keep = match (L::ADHESIVE, CLAMP) {
+        (true, true) => f > 0.0,
+        (true, false) => true,
+        (false, true) => d > 0.0 && f > 0.0,
+        (false, false) => d > 0.0,
     };
-    if L::ADHESIVE || d > 0.0 { f } else { 0.0 }
+    if keep { f } else { 0.0 }
 }
 
 /// [`eval`] for a `POW` law given s = d^h: the same force, bit for bit.
@@ -100,13 +108,7 @@ pub(crate) fn eval_pow<L: Law, const CLAMP: bool>(
     m: f64,
     s: f64,
 ) -> f64 {
-    let f = L::raw_pow(c, d, vn, r, m, s);
-    let f = if CLAMP {
-        if f > 0.0 { f } else { 0.0 }
-    } else {
-        f
-    };
-    if L::ADHESIVE || d > 0.0 { f } else { 0.0 }
+    select::<L, CLAMP>(d, L::raw_pow(c, d, vn, r, m, s))
 }
 
 /// [`eval_pow`] with [`Law::raw_fused`] (the fast batch; `s` unused by laws without a power).
@@ -119,16 +121,7 @@ pub(crate) fn eval_fused<L: Law, const CLAMP: bool>(
     m: f64,
     s: f64,
 ) -> f64 {
-    let f = L::raw_fused(c, d, vn, r, m, s);
-    // The same selects as eval's, written as one condition: with AVX-512, a compare masked by
-    // the other (the form a C compiler gives the hand-written loop).
-    let keep = match (L::ADHESIVE, CLAMP) {
-        (true, true) => f > 0.0,
-        (true, false) => true,
-        (false, true) => d > 0.0 && f > 0.0,
-        (false, false) => d > 0.0,
-    };
-    if keep { f } else { 0.0 }
+    select::<L, CLAMP>(d, L::raw_fused(c, d, vn, r, m, s))
 }
 
 /// Something to do with one monomorphised kernel (a scalar evaluation or a batch loop).

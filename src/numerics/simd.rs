@@ -112,7 +112,7 @@ macro_rules! flavours {
             /// # Safety
             /// The CPU must support the features this function is compiled for
             /// ([`vectorised`] checks them before the call).
-            #[cfg(target_arch = "x86_64")]
+            #[cfg(all(target_arch = "x86_64", not(miri)))]
             #[target_feature(enable = $features)]
             #[inline(never)]
             unsafe fn $name<L: SimdLoop>(l: L) {
