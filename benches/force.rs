@@ -73,14 +73,24 @@ fn baseline_hertz_loop(b: Bencher) {
     });
 }
 
-/// Batch through the C symbol, for the Hertz pair and the fixed-k exponent paths.
-#[divan::bench(args = [1.0, 1.5, 2.0, 1.7])]
-fn batch(b: Bencher, p: f64) {
+/// A batch entry point of the C ABI (`dc_normal_force_batch` or `dc_normal_force_batch_fast`).
+type BatchFn = unsafe extern "C" fn(
+    *const dc_pair,
+    usize,
+    *const f64,
+    *const f64,
+    *const f64,
+    *const f64,
+    *mut f64,
+) -> i32;
+
+/// `f` over the N contacts through the C symbol.
+fn bench_batch(b: Bencher, p: f64, f: BatchFn) {
     let (x, pair) = (data(), pair(p));
     let mut out = vec![0.0; N];
     b.counter(ItemsCount::new(N)).bench_local(|| {
         let s = unsafe {
-            dc_normal_force_batch(
+            f(
                 black_box(&pair),
                 N,
                 x.d.as_ptr(),
@@ -95,27 +105,17 @@ fn batch(b: Bencher, p: f64) {
     });
 }
 
-/// The fast batch (`dc_normal_force_batch_fast`: general p from per-exponent tables, FMA) through
-/// the C symbol; compare with `batch` of the same p in the same run.
+/// Batch through the C symbol, for the Hertz pair and the fixed-k exponent paths.
+#[divan::bench(args = [1.0, 1.5, 2.0, 1.7])]
+fn batch(b: Bencher, p: f64) {
+    bench_batch(b, p, dc_normal_force_batch);
+}
+
+/// The fast batch (`dc_normal_force_batch_fast`: general p from per-exponent tables, FMA); compare
+/// with `batch` of the same p in the same run.
 #[divan::bench(args = [1.0, 1.5, 2.0, 1.7])]
 fn batch_fast(b: Bencher, p: f64) {
-    let (x, pair) = (data(), pair(p));
-    let mut out = vec![0.0; N];
-    b.counter(ItemsCount::new(N)).bench_local(|| {
-        let s = unsafe {
-            dc_normal_force_batch_fast(
-                black_box(&pair),
-                N,
-                x.d.as_ptr(),
-                x.vn.as_ptr(),
-                x.r.as_ptr(),
-                x.m.as_ptr(),
-                out.as_mut_ptr(),
-            )
-        };
-        black_box(s);
-        black_box(&mut out);
-    });
+    bench_batch(b, p, dc_normal_force_batch_fast);
 }
 
 /// One call per contact through the C symbol.
