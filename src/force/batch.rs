@@ -35,16 +35,17 @@ struct Batch<'a> {
 }
 
 /// The loop over one batch for law `L`: one monomorphised loop per kernel and CPU flavour, with
-/// no branch on the model inside.
-struct Loop<'a, L, const CLAMP: bool> {
+/// no branch on the model inside. `FUSED`: the fast batch's forces ([`eval_fused`]; it runs
+/// `POW` laws elsewhere, [`run_pow_fast`]).
+struct Loop<'a, L, const CLAMP: bool, const FUSED: bool> {
     b: Batch<'a>,
     law: PhantomData<L>,
 }
 
-impl<L: Law, const CLAMP: bool> SimdLoop for Loop<'_, L, CLAMP> {
+impl<L: Law, const CLAMP: bool, const FUSED: bool> SimdLoop for Loop<'_, L, CLAMP, FUSED> {
     #[inline(always)]
     fn run(self) {
-        if L::POW {
+        if L::POW && !FUSED {
             return run_pow::<L, CLAMP>(self.b);
         }
         let Batch {
@@ -56,7 +57,11 @@ impl<L: Law, const CLAMP: bool> SimdLoop for Loop<'_, L, CLAMP> {
             out,
         } = self.b;
         for ((((o, &d), &vn), &r), &m) in out.iter_mut().zip(d).zip(vn).zip(r).zip(m) {
-            *o = eval::<L, CLAMP>(&c, d, vn, r, m);
+            *o = if FUSED {
+                eval_fused::<L, CLAMP>(&c, d, vn, r, m, 0.0)
+            } else {
+                eval::<L, CLAMP>(&c, d, vn, r, m)
+            };
         }
     }
 }
@@ -197,7 +202,7 @@ impl Visit for Batch<'_> {
     type Out = ();
     #[inline(always)]
     fn visit<L: Law, const CLAMP: bool>(self) {
-        vectorised(Loop::<L, CLAMP> {
+        vectorised(Loop::<L, CLAMP, false> {
             b: self,
             law: PhantomData,
         });
@@ -269,7 +274,7 @@ impl Visit for Fast<'_> {
     #[inline(always)]
     fn visit<L: Law, const CLAMP: bool>(self) {
         if !L::POW {
-            return vectorised(FusedLoop::<L, CLAMP> {
+            return vectorised(Loop::<L, CLAMP, true> {
                 b: self.0,
                 law: PhantomData,
             });
@@ -282,32 +287,10 @@ impl Visit for Fast<'_> {
     }
 }
 
-/// The fast batch of a law without a power: [`eval_fused`] in a loop the compiler vectorises.
-struct FusedLoop<'a, L, const CLAMP: bool> {
-    b: Batch<'a>,
-    law: PhantomData<L>,
-}
-
-impl<L: Law, const CLAMP: bool> SimdLoop for FusedLoop<'_, L, CLAMP> {
-    #[inline(always)]
-    fn run(self) {
-        let Batch {
-            c,
-            d,
-            vn,
-            r,
-            m,
-            out,
-        } = self.b;
-        for ((((o, &d), &vn), &r), &m) in out.iter_mut().zip(d).zip(vn).zip(r).zip(m) {
-            *o = eval_fused::<L, CLAMP>(&c, d, vn, r, m, 0.0);
-        }
-    }
-}
-
 /// The fast batch of a `POW` law: s = d^h by [`FastPow`] in chunks of [`CHUNK`] contacts (the
 /// AVX-512 or the AVX2 kernel where they run, else the scalar table path in the baseline
-/// flavour), then the forces by [`eval_fused`].
+/// flavour, where each fused multiply–add is a call to the C library's `fma`: slower than the
+/// exact batch there), then the forces by [`eval_fused`].
 #[inline(always)]
 fn run_pow_fast<L: Law, const CLAMP: bool>(b: Batch<'_>, t: &FastPow) {
     #[cfg(all(target_arch = "x86_64", not(miri)))]
@@ -322,28 +305,8 @@ fn run_pow_fast<L: Law, const CLAMP: bool>(b: Batch<'_>, t: &FastPow) {
         unsafe { run_pow_fast_avx2::<L, CLAMP>(b, t) };
         return;
     }
-    vectorised(FastLoop::<L, CLAMP> {
-        b,
-        t,
-        law: PhantomData,
-    });
-}
-
-/// [`run_pow_fast`]'s loop in the baseline flavour: each fused multiply–add a call to the C
-/// library's `fma` (no FMA instruction in baseline x86-64), so slower than the exact batch there,
-/// also on a CPU with FMA when `DEMCONTACT_DISPATCH=baseline` caps the dispatch.
-struct FastLoop<'a, 't, L, const CLAMP: bool> {
-    b: Batch<'a>,
-    t: &'t FastPow,
-    law: PhantomData<L>,
-}
-
-impl<L: Law, const CLAMP: bool> SimdLoop for FastLoop<'_, '_, L, CLAMP> {
-    #[inline(always)]
-    fn run(self) {
-        let t = self.t;
-        pow_chunks::<L, CLAMP, true>(self.b, |d, s| pow_fast_slice(d, t, s));
-    }
+    // Neither kernel runs: the baseline flavour (`vectorised` would choose it too).
+    pow_chunks::<L, CLAMP, true>(b, |d, s| pow_fast_slice(d, t, s));
 }
 
 /// [`run_pow_fast`] with AVX2 and FMA: the power by [`crate::numerics::pow_fast_avx2`], then the

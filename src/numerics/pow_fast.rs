@@ -190,12 +190,25 @@ impl FastPow {
     #[inline(always)]
     pub(crate) fn pow(&self, x: f64) -> f64 {
         let bits = x.to_bits();
-        if bits.wrapping_sub(E_MIN << 52) < E_SPAN << 52 {
+        if in_range(bits) {
             self.table_path(bits)
         } else if x > 0.0 {
             pow_dd(x, self.q)
         } else {
             0.0
+        }
+    }
+
+    /// The vector kernels' lanes of positive x outside the table range, by the exact power
+    /// (the lanes in range keep the kernel's values). Cold and out of line: inlined, its
+    /// constants would take the hot loop's registers.
+    #[cold]
+    #[inline(never)]
+    pub(crate) fn exact_lanes(&self, x: &[f64], out: &mut [f64]) {
+        for (o, &x) in out.iter_mut().zip(x) {
+            if x > 0.0 && !in_range(x.to_bits()) {
+                *o = pow_dd(x, self.q);
+            }
         }
     }
 
@@ -214,6 +227,12 @@ impl FastPow {
         let scale = entry(&self.scale_b, bits >> 52) * entry(&self.scale_a, bits >> 56);
         scale * mq
     }
+}
+
+/// True for the bits of an x of the table path's range, [2^−127, 2^129) (never for x ≤ 0 or NaN).
+#[inline(always)]
+pub(crate) fn in_range(bits: u64) -> bool {
+    bits.wrapping_sub(E_MIN << 52) < E_SPAN << 52
 }
 
 /// Exponents whose tables a thread keeps, the oldest replaced first: a thread that cycles through
@@ -272,8 +291,42 @@ pub(crate) fn pow_fast_slice(x: &[f64], t: &FastPow, out: &mut [f64]) {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
+
+    /// Random bit patterns (every special value, subnormals, both signs), log-uniform overlaps
+    /// and the table range's ends.
+    pub(crate) fn samples() -> Vec<f64> {
+        let mut s: u64 = 0x2545_f491_4f6c_dd1d;
+        let mut next = move || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            s
+        };
+        let mut x = Vec::new();
+        for k in 0..400_000 {
+            let u = next();
+            x.push(match k % 4 {
+                0 => f64::from_bits(u),
+                1 => 10f64.powf(-40.0 + 80.0 * (u >> 11) as f64 / (1u64 << 53) as f64),
+                2 => 10f64.powf(-12.0 + 10.0 * (u >> 11) as f64 / (1u64 << 53) as f64),
+                _ => f64::from_bits(((E_MIN + (u % 2) * E_SPAN) << 52) + (u >> 40) % 5 - 2),
+            });
+        }
+        x.extend([
+            0.0,
+            -0.0,
+            f64::INFINITY,
+            f64::NAN,
+            5e-324,
+            f64::MAX,
+            1.0,
+            -1.0,
+            3.0,
+        ]);
+        x
+    }
 
     /// Deterministic uniform u64 stream (splitmix64).
     fn stream(seed: u64) -> impl Iterator<Item = u64> {

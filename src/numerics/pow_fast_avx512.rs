@@ -112,7 +112,7 @@ pub(crate) fn pow_fast_slice_x8(x: &[f64], t: &Tables, fallback: &FastPow, out: 
             _mm512_storeu_pd(oc.as_mut_ptr().add(8), s1);
         }
         if slow0 | slow1 != 0 {
-            exact_lanes(xc, fallback, oc);
+            fallback.exact_lanes(xc, oc);
         }
     }
     for (o, &x) in os.into_remainder().iter_mut().zip(xs.remainder()) {
@@ -120,59 +120,10 @@ pub(crate) fn pow_fast_slice_x8(x: &[f64], t: &Tables, fallback: &FastPow, out: 
     }
 }
 
-/// The lanes of positive x outside the table range, by the exact power. Cold and out of line:
-/// inlined, its constants would take the hot loop's registers.
-#[cold]
-#[inline(never)]
-pub(crate) fn exact_lanes(x: &[f64], fallback: &FastPow, out: &mut [f64]) {
-    for (o, &x) in out.iter_mut().zip(x) {
-        if x > 0.0 && !in_range(x) {
-            *o = fallback.pow(x);
-        }
-    }
-}
-
-fn in_range(x: f64) -> bool {
-    x.to_bits().wrapping_sub(E_MIN << 52) < E_SPAN << 52
-}
-
 #[cfg(test)]
-pub(crate) mod tests {
+mod tests {
     use super::*;
-
-    /// Random bit patterns (every special value, subnormals, both signs), log-uniform overlaps
-    /// and the table range's ends.
-    pub(crate) fn samples() -> Vec<f64> {
-        let mut s: u64 = 0x2545_f491_4f6c_dd1d;
-        let mut next = move || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            s
-        };
-        let mut x = Vec::new();
-        for k in 0..400_000 {
-            let u = next();
-            x.push(match k % 4 {
-                0 => f64::from_bits(u),
-                1 => 10f64.powf(-40.0 + 80.0 * (u >> 11) as f64 / (1u64 << 53) as f64),
-                2 => 10f64.powf(-12.0 + 10.0 * (u >> 11) as f64 / (1u64 << 53) as f64),
-                _ => f64::from_bits(((E_MIN + (u % 2) * E_SPAN) << 52) + (u >> 40) % 5 - 2),
-            });
-        }
-        x.extend([
-            0.0,
-            -0.0,
-            f64::INFINITY,
-            f64::NAN,
-            5e-324,
-            f64::MAX,
-            1.0,
-            -1.0,
-            3.0,
-        ]);
-        x
-    }
+    use crate::numerics::pow_fast::tests::samples;
 
     /// The kernel against the scalar function, bit for bit, over random bit patterns (every
     /// special value, subnormals, both signs), log-uniform overlaps and the range's ends.
