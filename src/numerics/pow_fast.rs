@@ -202,6 +202,7 @@ impl FastPow {
     /// The vector kernels' lanes of positive x outside the table range, by the exact power
     /// (the lanes in range keep the kernel's values). Cold and out of line: inlined, its
     /// constants would take the hot loop's registers.
+    #[cfg(all(target_arch = "x86_64", not(miri)))]
     #[cold]
     #[inline(never)]
     pub(crate) fn exact_lanes(&self, x: &[f64], out: &mut [f64]) {
@@ -296,6 +297,7 @@ pub(crate) mod tests {
 
     /// Random bit patterns (every special value, subnormals, both signs), log-uniform overlaps
     /// and the table range's ends.
+    #[cfg(all(target_arch = "x86_64", not(miri)))]
     pub(crate) fn samples() -> Vec<f64> {
         let mut s: u64 = 0x2545_f491_4f6c_dd1d;
         let mut next = move || {
