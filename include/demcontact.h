@@ -20,6 +20,16 @@
 #include <stddef.h>
 
 /**
+ * The last release known to use Tsuji's η unscaled (YYYYMMDD): 22 Jul 2025, run by the harness.
+ */
+#define TSUJI_PLAIN_UNTIL 20250722
+
+/**
+ * The first release known to multiply η by √2 (YYYYMMDD): 2 Sep 2026.
+ */
+#define TSUJI_SQRT2_FROM 20260902
+
+/**
  * LIGGGHTS `pair_style gran model hooke`; value = `coefficientRestitution` to type.
  */
 #define DC_BUILTIN_LIGGGHTS_HOOKE 1
@@ -35,13 +45,14 @@
 #define DC_BUILTIN_LAMMPS_COEFF_RESTITUTION 3
 
 /**
- * LAMMPS `pair_style granular hertz[/material] ... damping tsuji` (22 Jul 2025 release); value =
- * e to type.
+ * LAMMPS `pair_style granular hertz[/material] ... damping tsuji`, releases up to 22 Jul 2025
+ * (damp = eta(e)); value = e to type. dc_builtin_for_lammps_release picks by release.
  */
 #define DC_BUILTIN_LAMMPS_TSUJI_HERTZ 4
 
 /**
- * LAMMPS `pair_style granular hooke ... damping tsuji`; value = e to type.
+ * LAMMPS `pair_style granular hooke ... damping tsuji`, releases up to 22 Jul 2025; value = e to
+ * type.
  */
 #define DC_BUILTIN_LAMMPS_TSUJI_HOOKE 5
 
@@ -61,6 +72,18 @@
  * clamps); value = betan.
  */
 #define DC_BUILTIN_YADE_MINDLIN_BETAN 8
+
+/**
+ * LAMMPS `pair_style granular hertz[/material] ... damping tsuji` from the 2 Sep 2026 release on,
+ * which multiplies Tsuji's eta(e) by sqrt(2); value = e to type.
+ */
+#define DC_BUILTIN_LAMMPS_TSUJI_HERTZ_SQRT2 9
+
+/**
+ * LAMMPS `pair_style granular hooke ... damping tsuji` from the 2 Sep 2026 release on (damp =
+ * sqrt(2) eta(e)); value = e to type.
+ */
+#define DC_BUILTIN_LAMMPS_TSUJI_HOOKE_SQRT2 10
 
 /**
  * Version of dc_contact_spec this library reads (dc_contact_spec_init sets it).
@@ -300,6 +323,11 @@ enum dc_status
      */
     DC_ERR_PLAN = 6113,
     /**
+     * A Poisson ratio is outside (-1, 0.5], the range of an isotropic elastic solid (a library
+     * whose header lacks this constant reports such a ratio as DC_ERR_NOT_POSITIVE).
+     */
+    DC_ERR_POISSON_RANGE = 6114,
+    /**
      * A dc_pair was not initialised by a dc_pair_* constructor (unknown kernel code), e.g. a
      * zero-filled struct.
      */
@@ -347,6 +375,11 @@ enum dc_status
      * The data cannot determine the fit (all impact speeds equal).
      */
     DC_ERR_FIT_DEGENERATE = 6133,
+    /**
+     * A LAMMPS release date that is not a date YYYYMMDD, or whose damping tsuji formula is not
+     * known: eta up to 22 Jul 2025, eta*sqrt(2) from 2 Sep 2026, unknown in between.
+     */
+    DC_ERR_BUILTIN_VERSION = 6134,
     /**
      * An internal error was caught at the boundary (not expected; please report).
      */
@@ -1059,6 +1092,26 @@ int32_t dc_builtin_realised_e_wall(int32_t model,
  * `cn_out` must be NULL or point to writable memory for one double.
  */
 int32_t dc_builtin_yade_viscel_cn(double e, double kn, double m_reduced, double *cn_out);
+
+/**
+ * The DC_BUILTIN_* code of a LAMMPS model as a given LAMMPS release runs it: `damping tsuji`
+ * multiplies Tsuji's eta(e) by sqrt(2) from the 2 Sep 2026 release on, so
+ * DC_BUILTIN_LAMMPS_TSUJI_HERTZ becomes DC_BUILTIN_LAMMPS_TSUJI_HERTZ_SQRT2 there (and back for
+ * an older release; the same for HOOKE); DC_BUILTIN_LAMMPS_COEFF_RESTITUTION is unchanged.
+ *
+ * @param model      a LAMMPS DC_BUILTIN_* code (3, 4, 5, 9 or 10).
+ * @param yyyymmdd   the release as a number, e.g. 20250722 for "22 Jul 2025" (the date `lmp -h`
+ *                   and the first line of log.lammps print).
+ * @param model_out  receives the code to pass to dc_builtin_value_for_e; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_BUILTIN_MODEL (not a LAMMPS model),
+ *         DC_ERR_BUILTIN_VERSION (not a calendar date in 2000..2099, or a date after 22 Jul 2025
+ *         and before 2 Sep 2026, where releases and development snapshots differ: read whether
+ *         that source's GranSubModDampingTsuji::init has `damp *= MY_SQRT2` and pick the code).
+ *
+ * # Safety
+ * `model_out` must be NULL or point to writable memory for one int32_t.
+ */
+int32_t dc_builtin_for_lammps_release(int32_t model, int32_t yyyymmdd, int32_t *model_out);
 
 /**
  * Damping coefficient alpha that makes a power-law Tsuji contact

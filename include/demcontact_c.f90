@@ -10,6 +10,8 @@ module demcontact_c
   implicit none
   private :: ieee_value, ieee_quiet_nan
 
+  integer(c_int32_t), parameter :: TSUJI_PLAIN_UNTIL = 20250722
+  integer(c_int32_t), parameter :: TSUJI_SQRT2_FROM = 20260902
   integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HOOKE = 1
   integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HERTZ = 2
   integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_COEFF_RESTITUTION = 3
@@ -18,6 +20,8 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_BUILTIN_YADE_VISCEL_EN = 6
   integer(c_int32_t), parameter :: DC_BUILTIN_YADE_MINDLIN_EN = 7
   integer(c_int32_t), parameter :: DC_BUILTIN_YADE_MINDLIN_BETAN = 8
+  integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_TSUJI_HERTZ_SQRT2 = 9
+  integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_TSUJI_HOOKE_SQRT2 = 10
   integer(c_int32_t), parameter :: DC_CONTACT_SPEC_VERSION = 1
   integer(c_int32_t), parameter :: DC_CONTACT_HISTORY_MAX = 10
   integer(c_int32_t), parameter :: DC_NORMAL_HERTZ = 1
@@ -64,6 +68,7 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_ERR_NO_EVENT = 6111
   integer(c_int32_t), parameter :: DC_ERR_LEVEL = 6112
   integer(c_int32_t), parameter :: DC_ERR_PLAN = 6113
+  integer(c_int32_t), parameter :: DC_ERR_POISSON_RANGE = 6114
   integer(c_int32_t), parameter :: DC_ERR_PAIR_INVALID = 6120
   integer(c_int32_t), parameter :: DC_ERR_BUFFER_LAYOUT = 6121
   integer(c_int32_t), parameter :: DC_ERR_SPEC_VERSION = 6122
@@ -75,6 +80,7 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_ERR_BUILTIN_UNREACHABLE = 6131
   integer(c_int32_t), parameter :: DC_ERR_FIT_TOO_FEW = 6132
   integer(c_int32_t), parameter :: DC_ERR_FIT_DEGENERATE = 6133
+  integer(c_int32_t), parameter :: DC_ERR_BUILTIN_VERSION = 6134
   integer(c_int32_t), parameter :: DC_ERR_INTERNAL = 6199
 
   type, bind(c) :: dc_contact_spec
@@ -274,6 +280,14 @@ module demcontact_c
       real(c_double), intent(out) :: cn_out
       integer(c_int32_t) :: dc_builtin_yade_viscel_cn
     end function dc_builtin_yade_viscel_cn
+    function dc_builtin_for_lammps_release(model, yyyymmdd, model_out) bind(c, &
+        name='dc_builtin_for_lammps_release')
+      import
+      integer(c_int32_t), value, intent(in) :: model
+      integer(c_int32_t), value, intent(in) :: yyyymmdd
+      integer(c_int32_t), intent(out) :: model_out
+      integer(c_int32_t) :: dc_builtin_for_lammps_release
+    end function dc_builtin_for_lammps_release
     function dc_alpha_from_e(e, p, criterion, alpha_out) bind(c, name='dc_alpha_from_e')
       import
       real(c_double), value, intent(in) :: e
@@ -808,6 +822,17 @@ contains
     if (present(stat)) stat = s
     if (s /= DC_OK) cn_out = ieee_value(cn_out, ieee_quiet_nan)
   end subroutine builtin_yade_viscel_cn
+
+  !> Elemental form of dc_builtin_for_lammps_release: on error `model_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine builtin_for_lammps_release(model, yyyymmdd, model_out, stat)
+    integer(c_int32_t), intent(in) :: model
+    integer(c_int32_t), intent(in) :: yyyymmdd
+    integer(c_int32_t), intent(out) :: model_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_builtin_for_lammps_release(model, yyyymmdd, model_out)
+    if (present(stat)) stat = s
+  end subroutine builtin_for_lammps_release
 
   !> Elemental form of dc_alpha_from_e: on error `alpha_out` is NaN (numeric) and `stat` the status.
   impure elemental subroutine alpha_from_e(e, p, criterion, alpha_out, stat)

@@ -20,6 +20,7 @@ enum class status : std::int32_t {
     no_event = DC_ERR_NO_EVENT,
     level = DC_ERR_LEVEL,
     plan = DC_ERR_PLAN,
+    poisson_range = DC_ERR_POISSON_RANGE,
     pair_invalid = DC_ERR_PAIR_INVALID,
     buffer_layout = DC_ERR_BUFFER_LAYOUT,
     spec_version = DC_ERR_SPEC_VERSION,
@@ -31,6 +32,7 @@ enum class status : std::int32_t {
     builtin_unreachable = DC_ERR_BUILTIN_UNREACHABLE,
     fit_too_few = DC_ERR_FIT_TOO_FEW,
     fit_degenerate = DC_ERR_FIT_DEGENERATE,
+    builtin_version = DC_ERR_BUILTIN_VERSION,
     internal = DC_ERR_INTERNAL,
 };
 
@@ -93,6 +95,17 @@ inline double builtin_yade_viscel_cn(double e, double kn, double m_reduced) {
 /// dc_builtin_yade_viscel_cn: returns the status; `out` is written only on status::ok.
 inline status builtin_yade_viscel_cn(double e, double kn, double m_reduced, double& out) noexcept {
     return static_cast<status>(::dc_builtin_yade_viscel_cn(e, kn, m_reduced, &out));
+}
+
+/// dc_builtin_for_lammps_release: throws demcontact::error on a non-OK status.
+inline std::int32_t builtin_for_lammps_release(std::int32_t model, std::int32_t yyyymmdd) {
+    std::int32_t out{};
+    detail::check(::dc_builtin_for_lammps_release(model, yyyymmdd, &out));
+    return out;
+}
+/// dc_builtin_for_lammps_release: returns the status; `out` is written only on status::ok.
+inline status builtin_for_lammps_release(std::int32_t model, std::int32_t yyyymmdd, std::int32_t& out) noexcept {
+    return static_cast<status>(::dc_builtin_for_lammps_release(model, yyyymmdd, &out));
 }
 
 /// dc_alpha_from_e: throws demcontact::error on a non-OK status.

@@ -11,6 +11,8 @@ pub enum Error {
     ExponentRange,
     /// A quantity that must be positive (speed, stiffness, mass, frequency, ...) was not.
     NotPositive,
+    /// A Poisson ratio outside (−1, 1/2], the range of an isotropic elastic solid.
+    PoissonRange,
     /// A quantity that must not be negative (damping coefficient, overlap, ...) was negative.
     Negative,
     /// The end-of-contact criterion code is unknown.
@@ -47,6 +49,9 @@ pub enum Error {
     BuiltinModel,
     /// The builtin cannot realise this restitution: its parameter saturates before it.
     BuiltinUnreachable,
+    /// A simulator release that is not a date or whose formula is not known (see
+    /// [`crate::builtin::lammps::release_scale`]).
+    BuiltinVersion,
     /// A fit got fewer than two points.
     FitTooFew,
     /// A fit's data cannot determine the model: all speeds equal, or all weights zero.

@@ -6,13 +6,19 @@
 
 use crate::Error;
 
-fn check_modulus(e: f64, nu: f64) -> Result<(), Error> {
+/// One isotropic elastic material: E finite and > 0, ν in (−1, 1/2]. A bad ν is reported first
+/// ([`Error::PoissonRange`]), then a bad E ([`Error::NotPositive`]), so every host names the same
+/// fault.
+pub fn check_material(e: f64, nu: f64) -> Result<(), Error> {
     if !e.is_finite() || !nu.is_finite() {
         return Err(Error::NotFinite);
     }
     // Thermodynamic bounds of an isotropic solid: E > 0 and -1 < ν < 1/2 (ν = 1/2 incompressible
     // is allowed: it only enters as 1 - ν²).
-    if !(e > 0.0 && nu > -1.0 && nu <= 0.5) {
+    if !(nu > -1.0 && nu <= 0.5) {
+        return Err(Error::PoissonRange);
+    }
+    if !(e > 0.0) {
         return Err(Error::NotPositive);
     }
     Ok(())
@@ -20,8 +26,8 @@ fn check_modulus(e: f64, nu: f64) -> Result<(), Error> {
 
 /// Effective modulus E* of a contact between materials (E1, ν1) and (E2, ν2).
 pub fn effective_modulus(e1: f64, nu1: f64, e2: f64, nu2: f64) -> Result<f64, Error> {
-    check_modulus(e1, nu1)?;
-    check_modulus(e2, nu2)?;
+    check_material(e1, nu1)?;
+    check_material(e2, nu2)?;
     // Written as a harmonic combination so that E up to f64::MAX cannot overflow.
     let c1 = (1.0 - nu1) * (1.0 + nu1) / e1;
     let c2 = (1.0 - nu2) * (1.0 + nu2) / e2;
@@ -90,9 +96,19 @@ mod tests {
             Err(Error::NotFinite)
         );
         assert_eq!(effective_radius(-1.0, 1.0), Err(Error::NotPositive));
+        for nu in [0.6, 0.5000000000000001, -1.0, -7.0] {
+            assert_eq!(
+                effective_modulus(1e9, 0.3, 1e9, nu),
+                Err(Error::PoissonRange),
+                "nu = {nu}"
+            );
+        }
+        // The range's ends: 1/2 (incompressible) is allowed, -1 is not.
+        assert!(effective_modulus(1e9, 0.5, 1e9, -0.999_999).is_ok());
+        // A bad ratio is named even when the modulus is bad too.
         assert_eq!(
-            effective_modulus(1e9, 0.6, 1e9, 0.3),
-            Err(Error::NotPositive)
+            effective_modulus(-1e9, 0.6, 1e9, 0.3),
+            Err(Error::PoissonRange)
         );
         assert_eq!(
             effective_modulus(0.0, 0.3, 1e9, 0.3),

@@ -76,6 +76,23 @@ fn force_law(b: Builtin, value: f64, young: f64) -> (Box<dyn Fn(f64, f64) -> f64
             };
             (Box::new(f), m)
         }
+        Builtin::LammpsTsujiHertzSqrt2 => {
+            // From 2 Sep 2026: GranSubModDampingTsuji::init multiplies η by √2.
+            let damp = 2.0f64.sqrt() * tsuji_poly(value);
+            let f = move |d: f64, v: f64| {
+                let fe = kh * d.powf(1.5);
+                fe + damp * (m * fe / d).max(0.0).sqrt() * v
+            };
+            (Box::new(f), m)
+        }
+        Builtin::LammpsTsujiHookeSqrt2 => {
+            let k = 1e4 * young / 1e8;
+            let damp = 2.0f64.sqrt() * tsuji_poly(value);
+            (
+                Box::new(move |d: f64, v: f64| k * d + damp * (m * k).sqrt() * v),
+                m,
+            )
+        }
         Builtin::LammpsTsujiHooke => {
             let k = 1e4 * young / 1e8;
             let damp = tsuji_poly(value);

@@ -165,6 +165,86 @@ fn builtin_wall() {
 }
 
 #[test]
+fn builtin_lammps_release() {
+    // The release decides damping tsuji's eta: the value realises the target in that release's
+    // formula (checked against an independent integration in tests/builtin_vs_ode.rs), and the
+    // two releases' values differ.
+    let value_of = |version: &str| {
+        let o = run(&[
+            "builtin",
+            "--code",
+            "lammps",
+            "--model",
+            "tsuji",
+            "--limit-damping",
+            "--e",
+            "0.5",
+            "--version",
+            version,
+            "--json",
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{version}");
+        let j = json_of(&o);
+        (j["model_code"].as_i64(), j["value"].as_f64().unwrap())
+    };
+    let new = value_for_e(Builtin::LammpsTsujiHertzSqrt2, true, 0.5).unwrap();
+    let old = value_for_e(Builtin::LammpsTsujiHertz, true, 0.5).unwrap();
+    for v in [
+        "2026-09-02",
+        "20260902",
+        "2Sep2026",
+        "2 Sep 2026",
+        "11Feb2027",
+    ] {
+        assert_eq!(value_of(v), (Some(9), new), "{v}");
+    }
+    for v in ["2025-07-22", "22Jul2025", "23Jun2022"] {
+        assert_eq!(value_of(v), (Some(4), old), "{v}");
+    }
+    // Without --version: the releases up to 22 Jul 2025, as before.
+    let o = run(&[
+        "builtin",
+        "--code",
+        "lammps",
+        "--model",
+        "tsuji",
+        "--limit-damping",
+        "--e",
+        "0.5",
+        "--json",
+    ]);
+    assert_eq!(json_of(&o)["model_code"].as_i64(), Some(4));
+    // Ambiguous, impossible and unparsable releases, and a release for another code: exit 1,
+    // naming the value.
+    for (v, code) in [
+        ("2026-02-11", "lammps"),
+        ("2026-02-30", "lammps"),
+        ("yesterday", "lammps"),
+        ("2026-09-02", "liggghts"),
+    ] {
+        let model = if code == "lammps" { "tsuji" } else { "hertz" };
+        let o = run(&[
+            "builtin",
+            "--code",
+            code,
+            "--model",
+            model,
+            "--e",
+            "0.5",
+            "--version",
+            v,
+            "--json",
+        ]);
+        assert_eq!(o.status.code(), Some(1), "{v} {code}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains(v), "{err}");
+        let status = json_of(&o)["error"]["status"].as_i64();
+        let want = if code == "lammps" { 6134 } else { 6130 };
+        assert_eq!(status, Some(want), "{v} {code}: {err}");
+    }
+}
+
+#[test]
 fn builtin_bad_input() {
     // unreachable target: exit 1, status 6131 in the JSON error
     let o = run(&[
@@ -294,7 +374,42 @@ fn contact_bad_input() {
         "--e", "0.5", "--json",
     ]);
     assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json_of(&o)["error"]["status"].as_i64(), Some(6114));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("--nu1 0.7") && err.contains("Poisson ratio must be in (-1, 0.5]"),
+        "{err}"
+    );
+    // Body 2's ratio is named as body 2's.
+    let o = run(&[
+        "contact", "--E1", "7e10", "--nu1", "0.2", "--nu2", "-1", "--rho1", "2500", "--R1", "1e-3",
+        "--v", "2", "--e", "0.5",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--nu2 -1:"));
+    // A negative value is a value (not a flag): the library's range check answers, naming it.
+    let o = run(&[
+        "contact", "--E1", "-7e10", "--nu1", "0.2", "--rho1", "2500", "--R1", "1e-3", "--v", "2",
+        "--e", "0.5", "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     assert_eq!(json_of(&o)["error"]["status"].as_i64(), Some(6105));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--E1 -70000000000"));
+    let o = run(&[
+        "contact", "--E1", "7e10", "--nu1", "0.2", "--rho1", "2500", "--R1", "-1e-3", "--v", "2",
+        "--e", "0.5",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let o = run(&[
+        "builtin", "--code", "liggghts", "--model", "hertz", "--e", "-0.5", "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json_of(&o)["error"]["status"].as_i64(), Some(6103));
     let o = run(&[
         "contact", "--E1", "7e10", "--nu1", "0.2", "--rho1", "2500", "--R1", "1e-3", "--v=-2",
         "--e", "0.5",

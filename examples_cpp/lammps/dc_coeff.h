@@ -141,8 +141,7 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
         return numeric(FLERR, arg[i], false, lmp);
     };
     auto reject = [&](const char *name, double value, int32_t status) {
-        error->all(FLERR, "{}: {} = {} rejected by demcontact: {}{}", what, name, value, dc_status_str(status),
-                   std::strcmp(name, "nu") == 0 ? " (Poisson ratio must be in (-1, 0.5])" : "");
+        error->all(FLERR, "{}: {} = {} rejected by demcontact: {}", what, name, value, dc_status_str(status));
     };
     int i = 0;
     if (narg < 1) error->all(FLERR, "{}: missing arguments", what);

@@ -207,9 +207,8 @@ private:
     void reject(const char *what, int t, double value, int32_t status)
     {
         char msg[320];
-        std::snprintf(msg, sizeof msg, "model demcontact: %s of type %d = %g rejected by demcontact: %s%s", what, t,
-                      value, dc_status_str(status),
-                      std::strcmp(what, "poissonsRatio") == 0 ? " (Poisson ratio must be in (-1, 0.5])" : "");
+        std::snprintf(msg, sizeof msg, "model demcontact: %s of type %d = %g rejected by demcontact: %s", what, t,
+                      value, dc_status_str(status));
         error->all(FLERR, msg);
     }
 

@@ -37,6 +37,7 @@ from ._native import (
     contact_history_len,
     contact_model_init,
     contact_spec_init,
+    builtin_for_lammps_release as _builtin_for_lammps_release,
     builtin_realised_e,
     builtin_value_for_e,
     builtin_yade_viscel_cn,
@@ -167,6 +168,16 @@ CONTACT_SPEC_VERSION: int = _native.CONTACT_SPEC_VERSION
 Builtin = _enum.IntEnum("Builtin", dict(_native.BUILTIN_CODES), module=__name__)
 
 
+def builtin_for_lammps_release(model, release):
+    """The Builtin a LAMMPS release runs for ``model``: ``damping tsuji`` multiplies Tsuji's eta
+    by sqrt(2) from the 2 Sep 2026 release on, so Builtin.LAMMPS_TSUJI_HERTZ becomes
+    Builtin.LAMMPS_TSUJI_HERTZ_SQRT2 there. ``release``: "2026-09-02", "20260902", "2Sep2026",
+    "2 Sep 2026" (as ``lmp -h`` prints it) or the int 20260902. Raises BuiltinVersionError for a
+    release whose formula is not known or that is not a date (C: dc_builtin_for_lammps_release).
+    """
+    return Builtin(_builtin_for_lammps_release(model, release))
+
+
 class FitModel(_enum.IntEnum):
     """Which model fit_restitution says the data require (C: DC_FIT_MODEL_*)."""
 
@@ -272,6 +283,7 @@ __all__ = [
     "normal_force_batch",
     "normal_force_3d",
     "builtin_value_for_e",
+    "builtin_for_lammps_release",
     "builtin_realised_e",
     "builtin_yade_viscel_cn",
     "fit_restitution",

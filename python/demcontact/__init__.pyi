@@ -87,6 +87,7 @@ __all__ += [
     "normal_force_batch",
     "normal_force_3d",
     "builtin_value_for_e",
+    "builtin_for_lammps_release",
     "builtin_realised_e",
     "builtin_yade_viscel_cn",
     "fit_restitution",
@@ -115,6 +116,8 @@ class Builtin(enum.IntEnum):
     YADE_VISCEL_EN = 6
     YADE_MINDLIN_EN = 7
     YADE_MINDLIN_BETAN = 8
+    LAMMPS_TSUJI_HERTZ_SQRT2 = 9
+    LAMMPS_TSUJI_HOOKE_SQRT2 = 10
 
 class FitModel(enum.IntEnum):
     CONSTANT = 0
@@ -188,6 +191,7 @@ class Status(enum.IntEnum):
     ERR_NO_EVENT = 6111
     ERR_LEVEL = 6112
     ERR_PLAN = 6113
+    ERR_POISSON_RANGE = 6114
     ERR_PAIR_INVALID = 6120
     ERR_BUFFER_LAYOUT = 6121
     ERR_SPEC_VERSION = 6122
@@ -199,6 +203,7 @@ class Status(enum.IntEnum):
     ERR_BUILTIN_UNREACHABLE = 6131
     ERR_FIT_TOO_FEW = 6132
     ERR_FIT_DEGENERATE = 6133
+    ERR_BUILTIN_VERSION = 6134
     ERR_INTERNAL = 6199
 
 class EnergyPartition(NamedTuple):
@@ -337,6 +342,7 @@ def normal_force_3d(
 
 # corrected builtin inputs and the data fit
 def builtin_value_for_e(model: _Code, clamp: Union[bool, int], e: _ArrayLike, wall: bool = ...) -> _FloatOrArray: ...
+def builtin_for_lammps_release(model: _Code, release: Union[str, int]) -> Builtin: ...
 def builtin_realised_e(model: _Code, clamp: Union[bool, int], value: _ArrayLike, wall: bool = ...) -> _FloatOrArray: ...
 def builtin_yade_viscel_cn(e: _ArrayLike, kn: _ArrayLike, m_reduced: _ArrayLike) -> _FloatOrArray: ...
 def fit_restitution(

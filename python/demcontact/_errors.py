@@ -87,6 +87,13 @@ class NotPositiveError(InputError):
     status = 6105
 
 
+class PoissonRangeError(NotPositiveError):
+    """A Poisson ratio outside (-1, 0.5] (6114). A subclass of NotPositiveError, the status such a
+    ratio had before it had its own, so ``except NotPositiveError`` still catches it."""
+
+    status = 6114
+
+
 class NegativeError(InputError):
     """A quantity that must be >= 0 (damping coefficient alpha, A, b, ...) was negative (6106)."""
 
@@ -127,6 +134,12 @@ class FitDegenerateError(InputError):
     """All measured speeds are equal: the speed dependence cannot be fitted (6133)."""
 
     status = 6133
+
+
+class BuiltinVersionError(InputError):
+    """A LAMMPS release that is not a date or whose damping tsuji formula is not known (6134)."""
+
+    status = 6134
 
 
 class NotUnitError(InputError):
@@ -208,6 +221,7 @@ STATUS_CLASSES: Dict[int, Type[DemcontactError]] = {
         RestitutionRangeError,
         ExponentRangeError,
         NotPositiveError,
+        PoissonRangeError,
         NegativeError,
         CriterionError,
         LevelError,
@@ -215,6 +229,7 @@ STATUS_CLASSES: Dict[int, Type[DemcontactError]] = {
         BuiltinUnreachableError,
         FitTooFewError,
         FitDegenerateError,
+        BuiltinVersionError,
         NotUnitError,
         SpecModelError,
         SpecUnsetError,
@@ -251,6 +266,7 @@ __all__ = [
     "RestitutionRangeError",
     "ExponentRangeError",
     "NotPositiveError",
+    "PoissonRangeError",
     "NegativeError",
     "CriterionError",
     "LevelError",
@@ -258,6 +274,7 @@ __all__ = [
     "BuiltinUnreachableError",
     "FitTooFewError",
     "FitDegenerateError",
+    "BuiltinVersionError",
     "NotUnitError",
     "SpecModelError",
     "SpecUnsetError",

@@ -71,6 +71,36 @@ pub fn builtin_realised_e<'py>(
     Ok(r)
 }
 
+/// The Builtin code of a LAMMPS model as LAMMPS release `release` runs it: `damping tsuji`
+/// multiplies Tsuji's eta by sqrt(2) from 2 Sep 2026 on (LAMMPS_TSUJI_HERTZ ->
+/// LAMMPS_TSUJI_HERTZ_SQRT2 there). release: "2026-09-02", "20260902", "2Sep2026", "2 Sep 2026"
+/// (as `lmp -h` prints it) or the int 20260902. Raises BuiltinVersionError for a release whose
+/// formula is not known (after 22 Jul 2025 and before 2 Sep 2026) or that is not a date,
+/// BuiltinModelError for a model of another code (C: dc_builtin_for_lammps_release).
+#[pyfunction]
+pub fn builtin_for_lammps_release(
+    py: Python<'_>,
+    model: &Bound<'_, PyAny>,
+    release: &Bound<'_, PyAny>,
+) -> PyResult<i32> {
+    const F: &str = "builtin_for_lammps_release";
+    let m = code(F, "model", model)?;
+    let detail = format!("(release={})", release.repr()?);
+    let date = if let Ok(text) = release.extract::<String>() {
+        demcontact::builtin::lammps::parse_release(&text)
+            .ok_or_else(|| status_error(py, c::status::DC_ERR_BUILTIN_VERSION, F, &detail))?
+    } else {
+        code(F, "release", release)?
+    };
+    let mut out = 0i32;
+    // SAFETY: `out` is a live local.
+    let s = unsafe { c::builtin::dc_builtin_for_lammps_release(m, date, &mut out) };
+    if s != c::status::DC_OK {
+        return Err(status_error(py, s, F, &detail));
+    }
+    Ok(out)
+}
+
 /// Contact damping cn [N s/m] for YADE `ViscElMat(kn=, cn=)` (linear law, always clamped) that
 /// realises restitution e: cn = 2 zeta_F(e) sqrt(m_reduced kn). YADE combines two materials in
 /// series: for two equal materials type 2 kn and 2 cn on each. m_reduced: m1 m2/(m1 + m2), the

@@ -119,8 +119,9 @@ macro_rules! contact_spec_class {
             }
 
             fn describe(&self) -> String {
-                let mut parts: Vec<String> = vec![$(format!("{}={}", stringify!($i), self.$i)),*];
-                parts.push(format!("carry={}", self.carry));
+                let mut parts: Vec<String> =
+                    vec![$(format!("{}={}", stringify!($i), enum_name(stringify!($i), self.$i))),*];
+                parts.push(format!("carry={}", enum_name("carry", self.carry)));
                 // Unset (NaN) parameters are left out: they are what ContactSpec() gives anyway.
                 $(
                     if !self.$r.is_nan() {
@@ -177,6 +178,25 @@ contact_spec_class! {
         E1, nu1, E2, nu2, p, k_n, e_n, visco_A, mu, k_t, e_t, mu_r, k_r, eta_r, mu_tw, k_tw,
         eta_tw, inertia_factor, work_of_adhesion,
     ],
+}
+
+/// A sub-model code as its Python enum member (`tangential`, 2 -> `Tangential.MINDLIN`), the
+/// package's enum named after the field; the plain number for a code the enum does not have.
+fn enum_name(field: &str, code: i32) -> String {
+    let mut class = String::with_capacity(field.len());
+    let mut chars = field.chars();
+    if let Some(first) = chars.next() {
+        class.extend(first.to_uppercase());
+        class.extend(chars);
+    }
+    Python::attach(|py| {
+        py.import("demcontact")
+            .and_then(|m| m.getattr(class.as_str()))
+            .and_then(|cls| cls.call1((code,)))
+            .and_then(|member| member.getattr("name"))
+            .and_then(|name| name.extract::<String>())
+            .map_or_else(|_| code.to_string(), |name| format!("{class}.{name}"))
+    })
 }
 
 /// The library's default spec (C: dc_contact_spec_init): the same as ContactSpec().
@@ -293,9 +313,9 @@ impl ContactModel {
     fn __repr__(&self) -> String {
         format!(
             "ContactModel(tangential={}, rolling={}, twisting={}, history_len={}, mu={:?}, kt={:?}, zeta_t={:?})",
-            self.raw.tangential,
-            self.raw.rolling,
-            self.raw.twisting,
+            enum_name("tangential", self.raw.tangential),
+            enum_name("rolling", self.raw.rolling),
+            enum_name("twisting", self.raw.twisting),
             self.history_len,
             self.raw.mu,
             self.raw.kt,

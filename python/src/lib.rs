@@ -66,6 +66,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(powerlaw::contact_trajectory, m)?,
         wrap_pyfunction!(builtin::builtin_value_for_e, m)?,
         wrap_pyfunction!(builtin::builtin_realised_e, m)?,
+        wrap_pyfunction!(builtin::builtin_for_lammps_release, m)?,
         wrap_pyfunction!(builtin::builtin_yade_viscel_cn, m)?,
         wrap_pyfunction!(builtin::fit_restitution, m)?,
     ] {
@@ -97,6 +98,14 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
         ("YADE_VISCEL_EN", DC_BUILTIN_YADE_VISCEL_EN),
         ("YADE_MINDLIN_EN", DC_BUILTIN_YADE_MINDLIN_EN),
         ("YADE_MINDLIN_BETAN", DC_BUILTIN_YADE_MINDLIN_BETAN),
+        (
+            "LAMMPS_TSUJI_HERTZ_SQRT2",
+            DC_BUILTIN_LAMMPS_TSUJI_HERTZ_SQRT2,
+        ),
+        (
+            "LAMMPS_TSUJI_HOOKE_SQRT2",
+            DC_BUILTIN_LAMMPS_TSUJI_HOOKE_SQRT2,
+        ),
     ] {
         builtins.set_item(name, code)?;
     }

@@ -142,7 +142,7 @@ def test_error_carries_code_message_and_location():
         (lambda: dc.contact_trajectory(1.5, 1.0, 1.0, 1.0, 1.0, F, n=1), dc.BufferTooShortError, 6110),
         (lambda: dc.contact_trajectory(1.5, 1.0, 1.0, 1.0, 1.0, F, n=-3), dc.BufferTooShortError, 6110),
         (lambda: dc.duration_plan_init(1.5, -1), dc.LevelError, 6112),
-        (lambda: dc.pair_hertz(1e7, 0.7, 1e7, 0.3, 0.5, F), dc.NotPositiveError, 6105),
+        (lambda: dc.pair_hertz(1e7, 0.7, 1e7, 0.3, 0.5, F), dc.PoissonRangeError, 6114),
         (lambda: dc.normal_force(dc.pair_hertz(1e7, 0.3, 1e7, 0.3, 0.5, F), 1e-5, 0.1, -1e-3, 1e-3), dc.NotPositiveError, 6105),
         (lambda: dc.normal_force(dc.pair_linear(1e300, 0.5, O), 1e300, 1e300, None, 1.0), dc.ResultRangeError, 6108),
         (lambda: dc.normal_force_3d(dc.pair_linear(1e4, 0.5, F), [0, 0, 0], [0, 0, 0], 1e-3, 1.0, [0, 0, 0], [0, 0, 0], 1e-3, 1.0), dc.NotPositiveError, 6105),
@@ -370,3 +370,32 @@ def test_stubs_match_the_runtime_module():
     import mypy  # noqa: F401  (installed by scripts/test_python.sh; a missing one fails)
     r = subprocess.run([sys.executable, "-m", "mypy.stubtest", "demcontact"], capture_output=True, text=True, cwd="/")
     assert r.returncode == 0, r.stdout[-4000:] + r.stderr[-2000:]
+
+
+def test_builtin_for_lammps_release():
+    # damping tsuji multiplies eta by sqrt(2) from 2 Sep 2026: the release picks the builtin, and
+    # the corrected value differs between them (each checked against an ODE in the Rust tests).
+    for release in ["2026-09-02", "20260902", "2Sep2026", "2 Sep 2026", 20260902]:
+        got = dc.builtin_for_lammps_release(dc.Builtin.LAMMPS_TSUJI_HERTZ, release)
+        assert got is dc.Builtin.LAMMPS_TSUJI_HERTZ_SQRT2, release
+    assert dc.builtin_for_lammps_release(4, "22Jul2025") is dc.Builtin.LAMMPS_TSUJI_HERTZ
+    assert dc.builtin_for_lammps_release(5, "2027-01-01") is dc.Builtin.LAMMPS_TSUJI_HOOKE_SQRT2
+    # Independently: LAMMPS' damp = scale * eta(typed e) (Marshall 2009 eq. 53), the Tsuji ratio
+    # zeta = damp / sqrt(2 (p + 1)) at p = 3/2, and the force-end restitution of that ratio
+    # (limit_damping), exp(-2 zeta arccos(zeta) / sqrt(1 - zeta^2)).
+    def realised(typed, scale):
+        c = [1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218]
+        eta = sum(ci * typed**i for i, ci in enumerate(c))
+        z = scale * eta / math.sqrt(5.0)
+        return math.exp(-2.0 * z * math.acos(z) / math.sqrt(1.0 - z * z))
+
+    old = float(dc.builtin_value_for_e(dc.Builtin.LAMMPS_TSUJI_HERTZ, True, 0.5))
+    new = float(dc.builtin_value_for_e(dc.Builtin.LAMMPS_TSUJI_HERTZ_SQRT2, True, 0.5))
+    assert abs(realised(old, 1.0) - 0.5) < 1e-12 and abs(realised(new, math.sqrt(2.0)) - 0.5) < 1e-12
+    assert abs(realised(old, math.sqrt(2.0)) - 0.5) > 0.03, "the releases' values must differ"
+    for release in ["2026-02-11", "2026-02-30", "yesterday", 2026_02_11]:
+        with pytest.raises(dc.BuiltinVersionError) as ei:
+            dc.builtin_for_lammps_release(dc.Builtin.LAMMPS_TSUJI_HERTZ, release)
+        assert repr(release) in str(ei.value) and ei.value.code == 6134
+    with pytest.raises(dc.BuiltinModelError):
+        dc.builtin_for_lammps_release(dc.Builtin.LIGGGHTS_HERTZ, "2026-09-02")

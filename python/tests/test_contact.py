@@ -163,7 +163,8 @@ def test_random_specs_equal_c():
         (dict(e_n=INF), dc.NotFiniteError),
         (dict(mu=INF), dc.NotFiniteError),
         (dict(e_t=0.0), dc.RestitutionRangeError),
-        (dict(nu1=0.7), dc.NotPositiveError),
+        (dict(nu1=0.7), dc.PoissonRangeError),
+        (dict(nu2=-1.0), dc.PoissonRangeError),
         (dict(e_n=1.5), dc.RestitutionRangeError),
         (dict(e_n=0.0), dc.RestitutionRangeError),
         (dict(normal=9), dc.SpecModelError),
@@ -642,3 +643,21 @@ def test_batch_from_a_thread_pool_is_bit_identical():
             assert h.tobytes() == want_h.tobytes()
             for x, y in zip(r, want):
                 assert x.tobytes() == y.tobytes()
+
+
+def test_reprs_name_the_sub_models():
+    # Codes print as their enum members, an undamped tangential spring as zeta_t=0.0 (not -0.0).
+    spec = dc.ContactSpec(
+        normal=dc.Normal.HERTZ, E1=7e10, nu1=0.2, E2=7e10, nu2=0.2, damping=dc.Damping.RESTITUTION, e_n=0.5,
+        tangential=dc.Tangential.MINDLIN, mu=0.5, e_t=1.0, rolling=dc.Rolling.NONE,
+    )
+    r = repr(spec)
+    assert "tangential=Tangential.MINDLIN" in r and "normal=Normal.HERTZ" in r, r
+    assert "carry=Carry.ROTATE" in r and "criterion=Criterion." in r, r
+    m = repr(dc.contact_model_init(spec))
+    assert m.startswith("ContactModel(tangential=Tangential.MINDLIN, rolling=Rolling.NONE,"), m
+    assert "zeta_t=0.0)" in m, m
+    # A code the enums do not have (the default spec's unset normal law 0, an unknown 7: accepted
+    # by the spec, refused by contact_model_init) prints as its number.
+    r = repr(dc.ContactSpec(tangential=7))
+    assert "tangential=7" in r and "normal=0" in r, r

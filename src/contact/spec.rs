@@ -167,7 +167,10 @@ fn compliance(e: f64, nu: f64) -> Result<f64, Error> {
     if !nu.is_finite() {
         return Err(Error::NotFinite);
     }
-    if !(e > 0.0 && nu > -1.0 && nu <= 0.5) {
+    if !(nu > -1.0 && nu <= 0.5) {
+        return Err(Error::PoissonRange);
+    }
+    if !(e > 0.0) {
         return Err(Error::NotPositive);
     }
     Ok((1.0 - nu) * (1.0 + nu) / e)

@@ -40,7 +40,9 @@ pub fn zeta_from_e_t(e_t: f64) -> Result<f64, Error> {
     if !(e_t > 0.0 && e_t <= 1.0) {
         return Err(Error::RestitutionRange);
     }
-    let l = -e_t.ln();
+    // 0 − ln e, not −ln e: an undamped spring (e_t = 1) gets ζ = +0, not −0, in the model a host
+    // prints.
+    let l = 0.0 - e_t.ln();
     Ok(l / (core::f64::consts::PI * core::f64::consts::PI + l * l).sqrt())
 }
 

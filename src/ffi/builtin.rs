@@ -11,10 +11,11 @@ pub const DC_BUILTIN_LIGGGHTS_HOOKE: i32 = 1;
 pub const DC_BUILTIN_LIGGGHTS_HERTZ: i32 = 2;
 /// LAMMPS `pair_style granular ... damping coeff_restitution` (hooke or hertz); value = e to type.
 pub const DC_BUILTIN_LAMMPS_COEFF_RESTITUTION: i32 = 3;
-/// LAMMPS `pair_style granular hertz[/material] ... damping tsuji` (22 Jul 2025 release); value =
-/// e to type.
+/// LAMMPS `pair_style granular hertz[/material] ... damping tsuji`, releases up to 22 Jul 2025
+/// (damp = eta(e)); value = e to type. dc_builtin_for_lammps_release picks by release.
 pub const DC_BUILTIN_LAMMPS_TSUJI_HERTZ: i32 = 4;
-/// LAMMPS `pair_style granular hooke ... damping tsuji`; value = e to type.
+/// LAMMPS `pair_style granular hooke ... damping tsuji`, releases up to 22 Jul 2025; value = e to
+/// type.
 pub const DC_BUILTIN_LAMMPS_TSUJI_HOOKE: i32 = 5;
 /// YADE `ViscElMat(tc=, en=, et=)` + `Law2_ScGeom_ViscElPhys_Basic` (always clamps); value = en.
 pub const DC_BUILTIN_YADE_VISCEL_EN: i32 = 6;
@@ -24,6 +25,12 @@ pub const DC_BUILTIN_YADE_MINDLIN_EN: i32 = 7;
 /// YADE `Ip2_FrictMat_FrictMat_MindlinPhys(betan=)` + `Law2_ScGeom_MindlinPhys_Mindlin` (always
 /// clamps); value = betan.
 pub const DC_BUILTIN_YADE_MINDLIN_BETAN: i32 = 8;
+/// LAMMPS `pair_style granular hertz[/material] ... damping tsuji` from the 2 Sep 2026 release on,
+/// which multiplies Tsuji's eta(e) by sqrt(2); value = e to type.
+pub const DC_BUILTIN_LAMMPS_TSUJI_HERTZ_SQRT2: i32 = 9;
+/// LAMMPS `pair_style granular hooke ... damping tsuji` from the 2 Sep 2026 release on (damp =
+/// sqrt(2) eta(e)); value = e to type.
+pub const DC_BUILTIN_LAMMPS_TSUJI_HOOKE_SQRT2: i32 = 10;
 
 fn parse(model: i32, clamp: i32) -> Result<(Builtin, bool), Error> {
     let b = Builtin::from_code(model).ok_or(Error::BuiltinModel)?;
@@ -190,6 +197,37 @@ pub unsafe extern "C" fn dc_builtin_yade_viscel_cn(
     unsafe { write_result(cn_out, || builtin::yade::viscel_cn(e, kn, m_reduced)) }
 }
 
+/// The DC_BUILTIN_* code of a LAMMPS model as a given LAMMPS release runs it: `damping tsuji`
+/// multiplies Tsuji's eta(e) by sqrt(2) from the 2 Sep 2026 release on, so
+/// DC_BUILTIN_LAMMPS_TSUJI_HERTZ becomes DC_BUILTIN_LAMMPS_TSUJI_HERTZ_SQRT2 there (and back for
+/// an older release; the same for HOOKE); DC_BUILTIN_LAMMPS_COEFF_RESTITUTION is unchanged.
+///
+/// @param model      a LAMMPS DC_BUILTIN_* code (3, 4, 5, 9 or 10).
+/// @param yyyymmdd   the release as a number, e.g. 20250722 for "22 Jul 2025" (the date `lmp -h`
+///                   and the first line of log.lammps print).
+/// @param model_out  receives the code to pass to dc_builtin_value_for_e; untouched on error.
+/// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_BUILTIN_MODEL (not a LAMMPS model),
+///         DC_ERR_BUILTIN_VERSION (not a calendar date in 2000..2099, or a date after 22 Jul 2025
+///         and before 2 Sep 2026, where releases and development snapshots differ: read whether
+///         that source's GranSubModDampingTsuji::init has `damp *= MY_SQRT2` and pick the code).
+///
+/// # Safety
+/// `model_out` must be NULL or point to writable memory for one int32_t.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_builtin_for_lammps_release(
+    model: i32,
+    yyyymmdd: i32,
+    model_out: *mut i32,
+) -> i32 {
+    // SAFETY: forwarded caller contract on model_out.
+    unsafe {
+        write_result(model_out, || {
+            let b = Builtin::from_code(model).ok_or(Error::BuiltinModel)?;
+            Ok(b.for_lammps_release(yyyymmdd)?.code())
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -209,6 +247,14 @@ mod tests {
             (DC_BUILTIN_YADE_VISCEL_EN, Builtin::YadeViscElEn),
             (DC_BUILTIN_YADE_MINDLIN_EN, Builtin::YadeMindlinEn),
             (DC_BUILTIN_YADE_MINDLIN_BETAN, Builtin::YadeMindlinBetan),
+            (
+                DC_BUILTIN_LAMMPS_TSUJI_HERTZ_SQRT2,
+                Builtin::LammpsTsujiHertzSqrt2,
+            ),
+            (
+                DC_BUILTIN_LAMMPS_TSUJI_HOOKE_SQRT2,
+                Builtin::LammpsTsujiHookeSqrt2,
+            ),
         ] {
             assert_eq!(b.code(), c);
         }
@@ -223,7 +269,7 @@ mod tests {
             assert!(v > 0.4 && v < 0.5, "{v}"); // below the target: the clamp adds bounce
             let keep = v;
             assert_eq!(
-                dc_builtin_value_for_e(9, 1, 0.5, &mut v),
+                dc_builtin_value_for_e(11, 1, 0.5, &mut v),
                 DC_ERR_BUILTIN_MODEL
             );
             assert_eq!(
@@ -274,6 +320,44 @@ mod tests {
                 DC_ERR_NOT_POSITIVE
             );
             assert_eq!(v, keep);
+        }
+    }
+
+    #[test]
+    fn lammps_release_codes() {
+        let mut m = -1;
+        // SAFETY: valid pointer to a local, or NULL.
+        unsafe {
+            assert_eq!(dc_builtin_for_lammps_release(4, 2026_09_02, &mut m), DC_OK);
+            assert_eq!(m, DC_BUILTIN_LAMMPS_TSUJI_HERTZ_SQRT2);
+            assert_eq!(dc_builtin_for_lammps_release(9, 2024_08_29, &mut m), DC_OK);
+            assert_eq!(m, DC_BUILTIN_LAMMPS_TSUJI_HERTZ);
+            assert_eq!(dc_builtin_for_lammps_release(5, 2027_01_01, &mut m), DC_OK);
+            assert_eq!(m, DC_BUILTIN_LAMMPS_TSUJI_HOOKE_SQRT2);
+            assert_eq!(dc_builtin_for_lammps_release(3, 2026_09_02, &mut m), DC_OK);
+            assert_eq!(m, DC_BUILTIN_LAMMPS_COEFF_RESTITUTION);
+            m = -1;
+            assert_eq!(
+                dc_builtin_for_lammps_release(4, 2026_02_11, &mut m),
+                DC_ERR_BUILTIN_VERSION
+            );
+            assert_eq!(
+                dc_builtin_for_lammps_release(4, 2026_02_30, &mut m),
+                DC_ERR_BUILTIN_VERSION
+            );
+            assert_eq!(
+                dc_builtin_for_lammps_release(2, 2026_09_02, &mut m),
+                DC_ERR_BUILTIN_MODEL
+            );
+            assert_eq!(
+                dc_builtin_for_lammps_release(0, 2026_09_02, &mut m),
+                DC_ERR_BUILTIN_MODEL
+            );
+            assert_eq!(m, -1, "untouched on error");
+            assert_eq!(
+                dc_builtin_for_lammps_release(4, 2026_09_02, core::ptr::null_mut()),
+                DC_ERR_NULL_POINTER
+            );
         }
     }
 }

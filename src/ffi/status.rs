@@ -51,6 +51,9 @@ pub enum dc_status {
     /// A dc_duration_plan was not initialised by dc_duration_plan_init (or was modified
     /// afterwards), e.g. a zero-filled struct.
     DC_ERR_PLAN = 6113,
+    /// A Poisson ratio is outside (-1, 0.5], the range of an isotropic elastic solid (a library
+    /// whose header lacks this constant reports such a ratio as DC_ERR_NOT_POSITIVE).
+    DC_ERR_POISSON_RANGE = 6114,
     /// A dc_pair was not initialised by a dc_pair_* constructor (unknown kernel code), e.g. a
     /// zero-filled struct.
     DC_ERR_PAIR_INVALID = 6120,
@@ -77,6 +80,9 @@ pub enum dc_status {
     DC_ERR_FIT_TOO_FEW = 6132,
     /// The data cannot determine the fit (all impact speeds equal).
     DC_ERR_FIT_DEGENERATE = 6133,
+    /// A LAMMPS release date that is not a date YYYYMMDD, or whose damping tsuji formula is not
+    /// known: eta up to 22 Jul 2025, eta*sqrt(2) from 2 Sep 2026, unknown in between.
+    DC_ERR_BUILTIN_VERSION = 6134,
     /// An internal error was caught at the boundary (not expected; please report).
     DC_ERR_INTERNAL = 6199,
 }
@@ -111,6 +117,7 @@ impl dc_status {
             DC_ERR_NO_EVENT => c"the requested event never happens for these inputs",
             DC_ERR_LEVEL => c"quadrature accuracy level out of range",
             DC_ERR_PLAN => c"the dc_duration_plan was not initialised by dc_duration_plan_init",
+            DC_ERR_POISSON_RANGE => c"Poisson ratio must be in (-1, 0.5]",
             DC_ERR_PAIR_INVALID => c"the dc_pair was not initialised by a dc_pair_* constructor",
             DC_ERR_BUFFER_LAYOUT => c"a buffer is misaligned or an output overlaps an input",
             DC_ERR_SPEC_VERSION => {
@@ -128,6 +135,9 @@ impl dc_status {
             DC_ERR_BUILTIN_UNREACHABLE => c"the builtin model cannot realise this restitution",
             DC_ERR_FIT_TOO_FEW => c"a fit needs at least two data points",
             DC_ERR_FIT_DEGENERATE => c"the data cannot determine the fit (all speeds equal)",
+            DC_ERR_BUILTIN_VERSION => {
+                c"unknown LAMMPS release: known are YYYYMMDD up to 20250722 (damping tsuji eta) and from 20260902 (eta*sqrt(2))"
+            }
             DC_ERR_INTERNAL => c"internal error caught at the C boundary (please report)",
         }
     }
@@ -140,6 +150,7 @@ impl dc_status {
             Error::RestitutionRange => DC_ERR_RESTITUTION_RANGE,
             Error::ExponentRange => DC_ERR_EXPONENT_RANGE,
             Error::NotPositive => DC_ERR_NOT_POSITIVE,
+            Error::PoissonRange => DC_ERR_POISSON_RANGE,
             Error::Negative => DC_ERR_NEGATIVE,
             Error::Criterion => DC_ERR_CRITERION,
             Error::ResultRange => DC_ERR_RESULT_RANGE,
@@ -159,6 +170,7 @@ impl dc_status {
             Error::BuiltinUnreachable => DC_ERR_BUILTIN_UNREACHABLE,
             Error::FitTooFew => DC_ERR_FIT_TOO_FEW,
             Error::FitDegenerate => DC_ERR_FIT_DEGENERATE,
+            Error::BuiltinVersion => DC_ERR_BUILTIN_VERSION,
         }
     }
 }
@@ -190,6 +202,7 @@ mod codes {
     pub const DC_ERR_NO_EVENT: i32 = dc_status::DC_ERR_NO_EVENT as i32;
     pub const DC_ERR_LEVEL: i32 = dc_status::DC_ERR_LEVEL as i32;
     pub const DC_ERR_PLAN: i32 = dc_status::DC_ERR_PLAN as i32;
+    pub const DC_ERR_POISSON_RANGE: i32 = dc_status::DC_ERR_POISSON_RANGE as i32;
     pub const DC_ERR_PAIR_INVALID: i32 = dc_status::DC_ERR_PAIR_INVALID as i32;
     pub const DC_ERR_BUFFER_LAYOUT: i32 = dc_status::DC_ERR_BUFFER_LAYOUT as i32;
     pub const DC_ERR_SPEC_VERSION: i32 = dc_status::DC_ERR_SPEC_VERSION as i32;
@@ -201,6 +214,7 @@ mod codes {
     pub const DC_ERR_BUILTIN_UNREACHABLE: i32 = dc_status::DC_ERR_BUILTIN_UNREACHABLE as i32;
     pub const DC_ERR_FIT_TOO_FEW: i32 = dc_status::DC_ERR_FIT_TOO_FEW as i32;
     pub const DC_ERR_FIT_DEGENERATE: i32 = dc_status::DC_ERR_FIT_DEGENERATE as i32;
+    pub const DC_ERR_BUILTIN_VERSION: i32 = dc_status::DC_ERR_BUILTIN_VERSION as i32;
     pub const DC_ERR_INTERNAL: i32 = dc_status::DC_ERR_INTERNAL as i32;
 }
 pub use codes::*;
@@ -248,7 +262,7 @@ mod tests {
                 assert_ne!(a.message(), b.message());
             }
         }
-        for code in [-1, 1, 6100, 6114, 6200, i32::MIN, i32::MAX] {
+        for code in [-1, 1, 6100, 6115, 6135, 6200, i32::MIN, i32::MAX] {
             assert_eq!(dc_status_known(code), 0, "{code}");
             // SAFETY: dc_status_str returns a static NUL-terminated string.
             let s = unsafe { CStr::from_ptr(dc_status_str(code)) };

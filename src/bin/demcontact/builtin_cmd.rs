@@ -3,7 +3,7 @@
 use crate::output::{Failure, Output, num};
 use crate::refused;
 use clap::ValueEnum;
-use demcontact::builtin::{self, Builtin};
+use demcontact::builtin::{self, Builtin, lammps};
 use serde_json::json;
 use std::fmt::Write;
 
@@ -63,6 +63,11 @@ pub struct Args {
     /// LAMMPS normal model for `tsuji`.
     #[arg(long, value_enum, default_value = "hertz")]
     normal: Normal,
+    /// LAMMPS release the deck runs on (`2026-09-02`, `20260902`, `2Sep2026` or `2 Sep 2026`, as
+    /// `lmp -h` prints it): `damping tsuji` multiplies Tsuji's η by √2 from 2 Sep 2026 on.
+    /// Without it, `tsuji` answers for releases up to 22 Jul 2025.
+    #[arg(long, visible_alias = "release", value_name = "DATE")]
+    version: Option<String>,
     /// YADE `viscel-cn`: contact normal stiffness kn [N/m].
     #[arg(long)]
     kn: Option<f64>,
@@ -82,7 +87,7 @@ fn pick(a: &Args) -> Result<Option<Builtin>, Failure> {
             demcontact::Error::BuiltinModel,
         )
     };
-    Ok(Some(match (a.code, a.model) {
+    let b = match (a.code, a.model) {
         (Code::Liggghts, Hooke) => Builtin::LiggghtsHooke,
         (Code::Liggghts, Hertz) => Builtin::LiggghtsHertz,
         (Code::Lammps, CoeffRestitution) => Builtin::LammpsCoeffRestitution,
@@ -95,7 +100,28 @@ fn pick(a: &Args) -> Result<Option<Builtin>, Failure> {
         (Code::Yade, MindlinEn) => Builtin::YadeMindlinEn,
         (Code::Yade, MindlinBetan) => Builtin::YadeMindlinBetan,
         _ => return Err(bad("this code has no such model")),
-    }))
+    };
+    let Some(version) = &a.version else {
+        return Ok(Some(b));
+    };
+    if a.code != Code::Lammps {
+        return Err(Failure::refused(
+            format!("--version {version}: selects a LAMMPS release; --code is not lammps"),
+            demcontact::Error::BuiltinModel,
+        ));
+    }
+    let date = lammps::parse_release(version).ok_or_else(|| {
+        Failure::refused(
+            format!(
+                "--version {version:?}: not a release date (write 2026-09-02, 20260902, 2Sep2026 \
+                 or \"2 Sep 2026\")"
+            ),
+            demcontact::Error::BuiltinVersion,
+        )
+    })?;
+    b.for_lammps_release(date)
+        .map(Some)
+        .map_err(|e| refused(&format!("--version {version}"), e))
 }
 
 /// What the value is called in the code, and the lines to paste.
@@ -125,13 +151,13 @@ fn lines(b: Builtin, clamp: bool, v: f64) -> (&'static str, Vec<String>) {
                 "pair_coeff * * hertz/material E {v:.10} nu tangential linear_nohistory 0 0 damping coeff_restitution{ld}"
             )],
         ),
-        Builtin::LammpsTsujiHertz => (
+        Builtin::LammpsTsujiHertz | Builtin::LammpsTsujiHertzSqrt2 => (
             "e (damping tsuji)",
             vec![format!(
                 "pair_coeff * * hertz/material E {v:.10} nu tangential linear_nohistory 0 0 damping tsuji{ld}"
             )],
         ),
-        Builtin::LammpsTsujiHooke => (
+        Builtin::LammpsTsujiHooke | Builtin::LammpsTsujiHookeSqrt2 => (
             "e (damping tsuji)",
             vec![format!(
                 "pair_coeff * * hooke kn {v:.10} tangential linear_nohistory 0 0 damping tsuji{ld}"
@@ -228,10 +254,21 @@ fn label(b: Builtin, clamp: bool) -> String {
             ("LAMMPS granular damping coeff_restitution", "limit_damping")
         }
         Builtin::LammpsTsujiHertz => (
-            "LAMMPS granular hertz/material damping tsuji",
+            "LAMMPS (up to 22 Jul 2025) granular hertz/material damping tsuji",
             "limit_damping",
         ),
-        Builtin::LammpsTsujiHooke => ("LAMMPS granular hooke damping tsuji", "limit_damping"),
+        Builtin::LammpsTsujiHooke => (
+            "LAMMPS (up to 22 Jul 2025) granular hooke damping tsuji",
+            "limit_damping",
+        ),
+        Builtin::LammpsTsujiHertzSqrt2 => (
+            "LAMMPS (2 Sep 2026 on) granular hertz/material damping tsuji",
+            "limit_damping",
+        ),
+        Builtin::LammpsTsujiHookeSqrt2 => (
+            "LAMMPS (2 Sep 2026 on) granular hooke damping tsuji",
+            "limit_damping",
+        ),
         Builtin::YadeViscElEn => ("YADE ViscElMat(tc, en, et)", "always clamped"),
         Builtin::YadeMindlinEn => ("YADE MindlinPhys(en)", "always clamped"),
         Builtin::YadeMindlinBetan => ("YADE MindlinPhys(betan)", "always clamped"),

@@ -74,13 +74,17 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
         Crit::Overlap => EndCriterion::Overlap,
     };
     let (e2, nu2) = (a.E2.unwrap_or(a.E1), a.nu2.unwrap_or(a.nu1));
+    // Each body's material on its own first, so the message names the flag and value at fault.
+    material::check_material(a.E1, a.nu1)
+        .map_err(|e| refused(&format!("--E1 {} --nu1 {}", a.E1, a.nu1), e))?;
+    material::check_material(e2, nu2).map_err(|e| refused(&format!("--E2 {e2} --nu2 {nu2}"), e))?;
     let e_star = material::effective_modulus(a.E1, a.nu1, e2, nu2)
         .map_err(|e| refused("effective modulus from --E1 --nu1 --E2 --nu2", e))?;
     let sphere_mass = |rho: f64, r: f64| rho * 4.0 / 3.0 * std::f64::consts::PI * r * r * r;
     let m1 = sphere_mass(a.rho1, a.R1);
     if !(m1.is_finite() && m1 > 0.0) {
         return Err(refused(
-            "mass from --rho1 --R1",
+            &format!("mass from --rho1 {} --R1 {}", a.rho1, a.R1),
             demcontact::Error::NotPositive,
         ));
     }
@@ -94,7 +98,7 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
         let m2 = sphere_mass(rho2, r2);
         if !(m2.is_finite() && m2 > 0.0) {
             return Err(refused(
-                "mass from --rho2 --R2",
+                &format!("mass from --rho2 {rho2} --R2 {r2}"),
                 demcontact::Error::NotPositive,
             ));
         }

@@ -27,6 +27,10 @@ use std::process::ExitCode;
 /// observables, fits to measured restitution.
 #[derive(Parser, Debug)]
 #[command(name = "demcontact", version, about, long_about = None)]
+// A value may start with '-': `--E1 -7e10` or `--R1 -1e-3` reaches the library's range check,
+// which names it, instead of clap's "unexpected argument '-7'" (clap's negative-number rule
+// rejects exponents such as 1e-3, hence hyphen values; set on every subcommand below too).
+#[command(allow_hyphen_values = true)]
 #[command(
     after_help = "Exit codes: 0 ok, 1 refused by the library (e.g. target unreachable), \
 2 bad command line, 3 bad input file (file:line:column), 4 output file not written."
@@ -39,10 +43,13 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// The value to type into a DEM code's builtin contact model for a target restitution.
+    #[command(allow_hyphen_values = true)]
     Builtin(builtin_cmd::Args),
     /// α, δ_max, peak force, durations and a time step for one Hertz collision.
+    #[command(allow_hyphen_values = true)]
     Contact(contact_cmd::Args),
     /// Fit measured restitution (CSV: v, e[, sigma]) with the viscoelastic and constant-e models.
+    #[command(allow_hyphen_values = true)]
     Fit(fit_cmd::Args),
 }
 
