@@ -76,8 +76,10 @@ else
   echo "gpu_check.sh: $nvcc ($("$nvcc" --version | tail -n 1)), -arch=$arch"
   # static cudart: next to a PyPI nvcc in ../lib, in a toolkit in lib64 (nvcc finds that itself)
   nvlib=$(dirname "$nvcc")/../lib
-  nice "$nvcc" -std=c++17 -O3 -arch="$arch" -fmad=false -Werror all-warnings \
-    -Xcompiler -Wall,-Wextra,-Werror,-ffp-contract=off -Iinclude examples_cpp/gpu/gpu_check.cu \
+  # warnings shown, not fatal: the device machine's nvcc and host compiler are not the pinned ones
+  # (ctest gpu_check_nvcc builds with -Werror against the pinned nvcc)
+  nice "$nvcc" -std=c++17 -O3 -arch="$arch" -fmad=false \
+    -Xcompiler -Wall,-Wextra,-ffp-contract=off -Iinclude examples_cpp/gpu/gpu_check.cu \
     "$lib" -L"$nvlib" "${native[@]}" -o "$out/gpu_check" || fail "the nvcc build failed"
   bin=$out/gpu_check
   if command -v nvidia-smi >/dev/null 2>&1; then

@@ -97,42 +97,27 @@ static void dev_sync() { cuda_ok(cudaDeviceSynchronize(), "kernel run"); }
 __device__ static void gc_first_bad(unsigned long long *first, size_t i) {
     atomicMin(first, (unsigned long long)i);
 }
-/* device-to-device copy of `bytes`, best of `reps`: seconds */
-static double copy_seconds(char *dst, const char *src, size_t bytes, int reps) {
+/* the best time of op() over `reps` runs after a warm-up, by CUDA events: seconds */
+template <class Op> static double best_seconds(const Op &op, int reps) {
     cudaEvent_t a, b;
     cuda_ok(cudaEventCreate(&a), "event");
     cuda_ok(cudaEventCreate(&b), "event");
     float best = 1e30f;
     for (int r = 0; r < reps + 1; r++) {
         cuda_ok(cudaEventRecord(a), "event");
-        cuda_ok(cudaMemcpy(dst, src, bytes, cudaMemcpyDeviceToDevice), "device copy");
+        op();
         cuda_ok(cudaEventRecord(b), "event");
         cuda_ok(cudaEventSynchronize(b), "event");
         float ms = 0;
         cuda_ok(cudaEventElapsedTime(&ms, a, b), "event");
-        if (r > 0 && ms < best) best = ms; /* the first is a warm-up */
+        if (r > 0 && ms < best) best = ms; /* the first is the warm-up */
     }
-    cudaEventDestroy(a);
-    cudaEventDestroy(b);
+    cudaEvent_t ev[2] = {a, b};
+    for (cudaEvent_t e : ev) cuda_ok(cudaEventDestroy(e), "event");
     return best * 1e-3;
 }
-template <class F> static double kernel_seconds(size_t n, const F &f, int reps) {
-    cudaEvent_t a, b;
-    cuda_ok(cudaEventCreate(&a), "event");
-    cuda_ok(cudaEventCreate(&b), "event");
-    float best = 1e30f;
-    for (int r = 0; r < reps + 1; r++) {
-        cuda_ok(cudaEventRecord(a), "event");
-        launch(n, f);
-        cuda_ok(cudaEventRecord(b), "event");
-        cuda_ok(cudaEventSynchronize(b), "event");
-        float ms = 0;
-        cuda_ok(cudaEventElapsedTime(&ms, a, b), "event");
-        if (r > 0 && ms < best) best = ms;
-    }
-    cudaEventDestroy(a);
-    cudaEventDestroy(b);
-    return best * 1e-3;
+static void copy_bytes(char *dst, const char *src, size_t bytes) {
+    cuda_ok(cudaMemcpy(dst, src, bytes, cudaMemcpyDeviceToDevice), "device copy");
 }
 static void device_name(char *out, size_t len) {
     cudaDeviceProp p;
@@ -159,28 +144,27 @@ static void gc_first_bad(unsigned long long *first, size_t i) {
 static double now() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
-static double copy_seconds(char *dst, const char *src, size_t bytes, int reps) {
+template <class Op> static double best_seconds(const Op &op, int reps) {
     double best = 1e30;
     for (int r = 0; r < reps; r++) {
         const double t0 = now();
-        memcpy(dst, src, bytes);
+        op();
         const double t = now() - t0;
         best = t < best ? t : best;
     }
     return best;
 }
-template <class F> static double kernel_seconds(size_t n, const F &f, int reps) {
-    double best = 1e30;
-    for (int r = 0; r < reps; r++) {
-        const double t0 = now();
-        launch(n, f);
-        const double t = now() - t0;
-        best = t < best ? t : best;
-    }
-    return best;
-}
+static void copy_bytes(char *dst, const char *src, size_t bytes) { memcpy(dst, src, bytes); }
 static void device_name(char *out, size_t len) { snprintf(out, len, "host CPU (no GPU: smoke only)"); }
 #endif
+
+/* device-to-device copy of `bytes`, and n launches of f: the best of `reps`, seconds */
+static double copy_seconds(char *dst, const char *src, size_t bytes, int reps) {
+    return best_seconds([&] { copy_bytes(dst, src, bytes); }, reps);
+}
+template <class F> static double kernel_seconds(size_t n, const F &f, int reps) {
+    return best_seconds([&] { launch(n, f); }, reps);
+}
 
 /* ---------------------------------------------------------------- contact data, structure of arrays */
 
@@ -321,8 +305,8 @@ GC_HD static inline void bench_store(const BenchArgs &a, size_t j, const dc_cont
     }
     for (int k = 0; k < HB; k++) a.hist[k * a.N + j] = h[k];
 }
-/* the generic entry: the model's selectors read at run time */
-struct BenchGeneric {
+/* One timed contact through an entry: Entry::call evaluates it (the history's 6 doubles in h) */
+template <class Entry> struct BenchEntry {
     BenchArgs a;
     GC_DEV void operator()(size_t j) const {
         dc_contact_state s;
@@ -330,34 +314,32 @@ struct BenchGeneric {
         double h[HB];
         for (int k = 0; k < HB; k++) h[k] = a.hist[k * a.N + j];
         dc_contact_result r;
-        const int32_t st = dc_contact_force_inline(a.model, &s, a.dt, h, HB, &r);
-        if (st != DC_OK) {
+        if (Entry::call(a.model, &s, a.dt, h, &r) != DC_OK) {
             gc_first_bad(a.first_bad, j);
             return;
         }
         bench_store(a, j, r, h);
+    }
+};
+/* the generic entry: the model's selectors read at run time */
+struct GenericCall {
+    GC_HD static int32_t call(const dc_contact_model *m, const dc_contact_state *s, double dt,
+                              double *h, dc_contact_result *r) {
+        return dc_contact_force_inline(m, s, dt, h, HB, r);
     }
 };
 /* the shaped entry: Hertz damped clamped, Mindlin, no rolling, no twisting, projection carry as
  * constants (the host checked the model's shape with dc_contact_model_shape_inline) */
-struct BenchShaped {
-    BenchArgs a;
-    GC_DEV void operator()(size_t j) const {
-        dc_contact_state s;
-        load_state(a.in, a.N, j, &s);
-        double h[HB];
-        for (int k = 0; k < HB; k++) h[k] = a.hist[k * a.N + j];
-        dc_contact_result r;
-        const int32_t st = dc_contact_force_shaped_inline(
-            a.model, DC_KERNEL_HERTZ_DAMPED_CLAMPED, DC_TANGENTIAL_MINDLIN, DC_ROLLING_NONE,
-            DC_TWISTING_NONE, DC_CARRY_PROJECT, &s, a.dt, h, &r);
-        if (st != DC_OK) {
-            gc_first_bad(a.first_bad, j);
-            return;
-        }
-        bench_store(a, j, r, h);
+struct ShapedCall {
+    GC_HD static int32_t call(const dc_contact_model *m, const dc_contact_state *s, double dt,
+                              double *h, dc_contact_result *r) {
+        return dc_contact_force_shaped_inline(m, DC_KERNEL_HERTZ_DAMPED_CLAMPED, DC_TANGENTIAL_MINDLIN,
+                                              DC_ROLLING_NONE, DC_TWISTING_NONE, DC_CARRY_PROJECT, s,
+                                              dt, h, r);
     }
 };
+typedef BenchEntry<GenericCall> BenchGeneric;
+typedef BenchEntry<ShapedCall> BenchShaped;
 /* Hand-written: the same formula without the header (no checks, no statuses): Hertz
  * F = k sqrt(R d) d + c sqrt(m sqrt(R d)) vn clamped at 0; Mindlin k_t = kt0 sqrt(R d), dashpot
  * c_t = 2 zeta sqrt(kappa/(1+kappa) m k_t); the spring projected on the tangent plane and
@@ -664,9 +646,15 @@ static void tally(Counts &c, const dc_contact_model *m, int shape, const dc_cont
 }
 
 /* compare contact j of the device's results/history with the reference's; report the first few */
-static void compare_contact(Counts &c, const char *stage, size_t j, int kernel, const double *dres,
-                            const int32_t *dires, const double *dhist, const double *rres,
-                            const int32_t *rires, const double *rhist, size_t N) {
+struct Side {
+    double *res;
+    int32_t *ires;
+    double *hist;
+};
+static void compare_contact(Counts &c, const char *stage, size_t j, size_t shown, int kernel,
+                            const Side &dev, const Side &ref, size_t N) {
+    const double *dres = dev.res, *dhist = dev.hist, *rres = ref.res, *rhist = ref.hist;
+    const int32_t *dires = dev.ires, *rires = ref.ires;
     int diff = -1;
     for (int f = 0; f < NR && diff < 0; f++)
         if (bits_differ(dres[f * N + j], rres[f * N + j])) diff = f;
@@ -680,12 +668,29 @@ static void compare_contact(Counts &c, const char *stage, size_t j, int kernel, 
         const double a = diff < 100 ? dres[diff * N + j] : diff >= 200 ? dhist[(diff - 200) * N + j] : 0;
         const double b = diff < 100 ? rres[diff * N + j] : diff >= 200 ? rhist[(diff - 200) * N + j] : 0;
         fprintf(stderr, "gpu_check: %s: contact %zu (kernel %d): %s %d differs: device %a, library %a "
-                        "(status %d / %d)\n", stage, j, kernel,
+                        "(status %d / %d)\n", stage, shown, kernel,
                 diff < 100 ? "result double" : diff < 200 ? "result int" : "history", diff % 100,
                 a, b, (int)dires[j], (int)rires[j]);
     }
     c.differ++;
     c.kernel_diff[kernel]++;
+}
+
+/* the library's step of contact j (its history h in and out), stored in ref, the regimes
+ * tallied, compared with the device's */
+static void reference_step(Counts &c, const char *stage, size_t shown, const dc_contact_model *m,
+                           int shape, const double *in, size_t N, size_t j, double *h,
+                           const Side &dev, const Side &ref) {
+    dc_contact_state s;
+    load_state(in, N, j, &s);
+    dc_contact_result r;
+    sentinel(&r);
+    const double dt = in[F_DT * N + j];
+    const int32_t st = dc_contact_force(m, &s, dt, h, NH, &r);
+    store_result(ref.res, ref.ires, N, j, &r, st);
+    for (int k = 0; k < NH; k++) ref.hist[k * N + j] = h[k];
+    tally(c, m, shape, &s, dt, &r, st);
+    compare_contact(c, stage, j, shown, (int)m->normal.kernel, dev, ref, N);
 }
 
 /* ---------------------------------------------------------------- the run */
@@ -851,21 +856,12 @@ int main(int argc, char **argv) {
             to_host(dres.data(), d_res, NR * n);
             to_host(dires.data(), d_ires, NI * n);
             to_host(dhist.data(), d_hist, NH * n);
+            const Side dev{dres.data(), dires.data(), dhist.data()}, ref{rres.data(), rires.data(), rhist.data()};
             for (size_t j = 0; j < n; j++) {
-                const dc_contact_model *m = &models[(size_t)mi[j]];
-                dc_contact_state s;
-                load_state(in.data(), n, j, &s);
                 double h[NH];
                 for (int k = 0; k < NH; k++) h[k] = hist0[k * n + j];
-                dc_contact_result r;
-                sentinel(&r);
-                const double dt = in[F_DT * n + j];
-                const int32_t st = dc_contact_force(m, &s, dt, h, NH, &r);
-                store_result(rres.data(), rires.data(), n, j, &r, st);
-                for (int k = 0; k < NH; k++) rhist[k * n + j] = h[k];
-                tally(cb, m, (int)(mi[j] % N_SHAPES), &s, dt, &r, st);
-                compare_contact(cb, "contact batch", done + j, (int)m->normal.kernel, dres.data(),
-                                dires.data(), dhist.data(), rres.data(), rires.data(), rhist.data(), n);
+                reference_step(cb, "contact batch", done + j, &models[(size_t)mi[j]],
+                               (int)(mi[j] % N_SHAPES), in.data(), n, j, h, dev, ref);
             }
             done += n;
         }
@@ -897,23 +893,12 @@ int main(int argc, char **argv) {
         to_host(dres.data(), d_res, NR * N);
         to_host(dires.data(), d_ires, NI * N);
         to_host(dhist.data(), d_hist, NH * N);
+        const Side dev{dres.data(), dires.data(), dhist.data()}, ref{rres.data(), rires.data(), rhist.data()};
         for (size_t c = 0; c < C; c++) {
-            const dc_contact_model *m = &models[(size_t)mi[c]];
             double h[NH] = {0};
-            for (size_t t = 0; t < T; t++) {
-                const size_t j = t * C + c;
-                dc_contact_state s;
-                load_state(in.data(), N, j, &s);
-                dc_contact_result r;
-                sentinel(&r);
-                const double dt = in[F_DT * N + j];
-                const int32_t st = dc_contact_force(m, &s, dt, h, NH, &r);
-                store_result(rres.data(), rires.data(), N, j, &r, st);
-                for (int k = 0; k < NH; k++) rhist[k * N + j] = h[k];
-                tally(ct, m, (int)(mi[c] % N_SHAPES), &s, dt, &r, st);
-                compare_contact(ct, "trajectories", j, (int)m->normal.kernel, dres.data(),
-                                dires.data(), dhist.data(), rres.data(), rires.data(), rhist.data(), N);
-            }
+            for (size_t t = 0; t < T; t++)
+                reference_step(ct, "trajectories", t * C + c, &models[(size_t)mi[c]],
+                               (int)(mi[c] % N_SHAPES), in.data(), N, t * C + c, h, dev, ref);
         }
         dev_free(d_in);
         dev_free(d_res);
