@@ -22,7 +22,11 @@
 # On the device machine (the device tool: one call, a copy of the working tree, 16 cores, nvcc
 # on PATH, no network, cargo probably absent), from a checkout where target/release/libdemcontact.a
 # was built (cargo build --release --lib; 32 MB, ignored, so it must be carried):
-#   command: set -o pipefail; scripts/gpu_check.sh 2>&1 | tee $OUT/gpu_check.log
+#   command: set -o pipefail; scripts/gpu_check.sh 2>&1 | tee $OUT/gpu_check.log; rc=$?;
+#            build-gpu/gpu_check --plant-ulp --contacts 100000 --normals 100000 --steps 20
+#            --bench 65536 >$OUT/plant.log 2>&1; echo "plant run: exit $? (must be 1)"; exit $rc
+#            (one line; the second run shows that the comparison catches a one-ulp difference
+#            planted on the GPU)
 #   carry:   ["target/release/libdemcontact.a"]
 #   timeout_s: 540
 set -uo pipefail

@@ -275,7 +275,7 @@ struct TrajectoryEach {
             dc_contact_result r;
             sentinel(&r);
             const int32_t st = dc_contact_force_inline(&models[mi[c]], &s, in[F_DT * N + j], h, NH, &r);
-            if (j == plant) h[0] = ulp_up(h[0]); /* carried on to the later steps */
+            if (j == plant) h[3] = ulp_up(h[3]); /* the tangential spring: carried on */
             store_result(res, ires, N, j, &r, st);
             for (int k = 0; k < NH; k++) hist_steps[k * N + j] = h[k];
         }
@@ -887,7 +887,10 @@ int main(int argc, char **argv) {
         int32_t *d_mi = dev_alloc<int32_t>(C), *d_ires = dev_alloc<int32_t>(NI * N);
         to_dev(d_in, in.data(), NF * N);
         to_dev(d_mi, mi.data(), C);
-        const size_t plant = o.plant ? (T / 2) * C + 1 : none;
+        /* planted: halfway along the first trajectory whose model has a tangential spring */
+        size_t pc = 0;
+        while (pc + 1 < C && models[(size_t)mi[pc]].tangential == DC_TANGENTIAL_NONE) pc++;
+        const size_t plant = o.plant ? (T / 2) * C + pc : none;
         launch(C, TrajectoryEach{d_models, d_mi, d_in, d_hist, d_res, d_ires, C, T, plant});
         dev_sync();
         to_host(dres.data(), d_res, NR * N);
