@@ -4,6 +4,7 @@
 #   -DMODE=cuda    nvcc (-DNVCC=<path>, else PATH): the checks of nvcc_checks() below; else
 #                  clang++ -x cuda with a CUDA installation: compile cuda_kernels.cu
 #   -DMODE=cuda_stub  clang++ -x cuda -nocudainc --cuda-device-only with cuda_stub.h: device PTX
+#   -DMODE=gpu_check  nvcc builds examples_cpp/gpu/gpu_check.cu (the GPU check) and runs it briefly
 # A missing compiler prints "SKIPPED: <name> (<reason>)" and stops; the test's
 # SKIP_REGULAR_EXPRESSION turns that line into ctest's "Skipped" (never a pass).
 # Inputs: SRC (source dir), LIBDIR (libdemcontact.so), OUT (scratch dir), N (inputs per kernel),
@@ -70,6 +71,15 @@ function(nvcc_checks)
           "(${len_true} characters of hex dump): no contraction in the 17 force kernels")
 endfunction()
 
+# NVCC: the build's DEMCONTACT_NVCC (scripts/setup_cuda.sh installs NVIDIA's nvcc wheels into
+# .venv-cuda; scripts/test.sh passes it to CMake), else an nvcc on PATH.
+macro(resolve_nvcc)
+  if(NOT NVCC OR NOT EXISTS "${NVCC}")
+    find_program(NVCC_ON_PATH nvcc)
+    set(NVCC "${NVCC_ON_PATH}")
+  endif()
+endmacro()
+
 set(inc "-I${SRC}/include")
 if(MODE STREQUAL "clang")
   find_program(CLANG clang)
@@ -87,12 +97,7 @@ if(MODE STREQUAL "clang")
       ${SRC}/c_tests/inline/test_inline_contact.c ${link} -o ${OUT}/test_inline_contact_clang)
   run(${OUT}/test_inline_contact_clang ${N})
 elseif(MODE STREQUAL "cuda")
-  # NVCC: the build's DEMCONTACT_NVCC (scripts/setup_cuda.sh installs NVIDIA's nvcc wheels into
-  # .venv-cuda; scripts/test.sh passes it to CMake), else an nvcc on PATH.
-  if(NOT NVCC OR NOT EXISTS "${NVCC}")
-    find_program(NVCC_ON_PATH nvcc)
-    set(NVCC "${NVCC_ON_PATH}")
-  endif()
+  resolve_nvcc()
   find_program(CLANGXX clang++)
   if(NVCC)
     nvcc_checks()
@@ -107,6 +112,29 @@ elseif(MODE STREQUAL "cuda")
     endif()
   else()
     skip(inline_cuda "neither nvcc (scripts/setup_cuda.sh installs one) nor clang++ installed")
+  endif()
+elseif(MODE STREQUAL "gpu_check")
+  # examples_cpp/gpu/gpu_check.cu built by nvcc as scripts/gpu_check.sh builds it (sm_90,
+  # -fmad=false), against the shared library. Without a GPU it must stop with its CUDA error
+  # (exit 3), never pass; with one, a short run must pass.
+  resolve_nvcc()
+  if(NOT NVCC)
+    skip(gpu_check_nvcc "no nvcc (scripts/setup_cuda.sh installs one)")
+  endif()
+  get_filename_component(bindir "${NVCC}" DIRECTORY)
+  run(${NVCC} -std=c++17 -O3 -arch=sm_90 -fmad=false -Werror all-warnings
+      -Xcompiler -Wall,-Wextra,-Werror,-ffp-contract=off ${inc} ${SRC}/examples_cpp/gpu/gpu_check.cu
+      -L${bindir}/../lib -L${LIBDIR} -ldemcontact -lm -Xlinker -rpath,${LIBDIR} -o ${OUT}/gpu_check)
+  execute_process(COMMAND ${OUT}/gpu_check --contacts 1000 --normals 1000 --trajectories 912
+                          --steps 2 --bench 4096
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc EQUAL 0)
+    message("${out}gpu_check built by nvcc and run on this machine's GPU: passed")
+  elseif(rc EQUAL 3 AND err MATCHES "gpu_check: CUDA error")
+    message("gpu_check built by nvcc (sm_90 cubin, -fmad=false); no GPU here: it stopped with "
+            "its CUDA error and exit 3, as it must (${err})")
+  else()
+    message(FATAL_ERROR "gpu_check (nvcc build): exit ${rc}\n${out}${err}")
   endif()
 elseif(MODE STREQUAL "cuda_stub")
   find_program(CLANGXX clang++)

@@ -61,6 +61,33 @@ foreach(mode clang cuda cuda_stub)
   set_tests_properties(inline_${mode} PROPERTIES SKIP_REGULAR_EXPRESSION "SKIPPED: ")
 endforeach()
 
+# The GPU check (examples_cpp/gpu/gpu_check.cu, scripts/gpu_check.sh, docs/gpu.md). Here, without
+# a GPU: its CPU smoke (the same source as host C++, each device launch a loop on the CPU: the
+# generators, the library reference, the comparisons and the table over all 912 model shapes);
+# the same run with one ulp planted on the "device" side in each checked stage, which must end
+# with exit 1 and 3 stages reported; bad arguments (exit 2); and the nvcc build (gpu_check_nvcc,
+# skipped without nvcc as inline_cuda is).
+add_executable(gpu_check_cpu examples_cpp/gpu/gpu_check_cpu.cpp)
+target_compile_options(gpu_check_cpu PRIVATE -std=c++17 -Wall -Wextra -Werror -O2 -ffp-contract=off)
+target_link_libraries(gpu_check_cpu PRIVATE demcontact::demcontact ${DC_LIBM})
+add_test(NAME gpu_check_cpu_smoke COMMAND gpu_check_cpu --cpu-smoke)
+add_test(NAME gpu_check_cpu_smoke_plant COMMAND sh -c [=[
+out=$("$0" --cpu-smoke --plant-ulp 2>&1); rc=$?; printf '%s\n' "$out"
+n=$(printf '%s\n' "$out" | grep -c '^DIFFERENCES: ')
+[ "$rc" = 1 ] && [ "$n" = 3 ] || { echo "FAIL: exit $rc with $n stages differing (want exit 1, 3 stages)"; exit 1; }
+echo "the planted one-ulp differences were caught: exit 1, 3 stages"]=] $<TARGET_FILE:gpu_check_cpu>)
+add_test(NAME gpu_check_cpu_args COMMAND sh -c [=[
+for args in "" "--cpu-smoke --steps x" "--cpu-smoke --bench" "--cpu-smoke --trajectories 10" "--cpu-smoke --what"; do
+  "$0" $args >/dev/null 2>&1; rc=$?
+  [ "$rc" = 2 ] || { echo "FAIL: '$args': exit $rc, want 2"; exit 1; }
+done
+echo "bad arguments: exit 2 each"]=] $<TARGET_FILE:gpu_check_cpu>)
+add_test(NAME gpu_check_nvcc
+  COMMAND "${CMAKE_COMMAND}" -DMODE=gpu_check -DSRC=${CMAKE_SOURCE_DIR} -DLIBDIR=${DC_LIB_DIR}
+          -DNVCC=${DEMCONTACT_NVCC} -DOUT=${CMAKE_BINARY_DIR}/gpu_check_nvcc
+          -P "${CMAKE_SOURCE_DIR}/cmake/InlineCompilers.cmake")
+set_tests_properties(gpu_check_nvcc PROPERTIES SKIP_REGULAR_EXPRESSION "SKIPPED: ")
+
 add_executable(header_only_c examples_cpp/inline/header_only.c)
 target_compile_options(header_only_c PRIVATE -std=c99 -pedantic -Wall -Wextra -Werror)
 target_link_libraries(header_only_c PRIVATE ${DC_LIBM})
