@@ -427,6 +427,20 @@ def main():
         a, b = (mean_e(p, al, crit, 20, step_aware=sa) / e - 1 for sa in ((), ("detmatch",)))
         print("   per-step decay matched (c -> (m/dt)(1 - exp(-c dt/m)), no R, B, C), %s p %g e %g, "
               "t_H/20: mean error %s %% (plain %s %%)" % (crit, p, e, fmt_pct(b), fmt_pct(a)))
+    for n in N_STUDY:
+        rs = [(r_of(tab, E_NODES, N_NODES, p, crit, e, 1 / n), crit, p, e)
+              for p in ps for crit in CRITS for e in E_GRID]
+        r = min(rs)
+        print("   t_H/%d: smallest damping factor R on the grid %.4f (%s p %g e %g)" % ((n,) + r))
+    if 1.0 in ps:
+        p, e, crit, n = 1.0, 0.1, "force", 10
+        al = alpha_plain(p, e, crit) * r_of(tab, E_NODES, N_NODES, p, crit, e, 1 / n)
+        dt = t_hertz(p, 1.0, 1.0, 1.0) / n
+        x = np.abs(collide(p, 1.0, 1.0, al, crit, 1.0, dt, "VV", True) / e - 1)
+        j = int(np.argmax(x))
+        print("   coarse limit, %s p %g e %g t_H/%d: c dt/m = %.3f, worst phase %.3f %% at a = "
+              "delta_1/(v dt) = %.4f (phase %d/64)" % (crit, p, e, n, al * dt, 100 * x[j],
+                                                      1 - j / NPHASE, j))
     for n in N_STUDY + [15]:
         sel = sorted((r for r in rows if r[3] == n), key=lambda r: -r[7])[:3]
         if sel:
