@@ -31,8 +31,8 @@ What it does
            beta = (p-1)/2 (Hurwitz zeta; the midpoint-rule defect of the onset);
        (C) end (DC_END_OVERLAP only): on the step whose predicted next overlap
            delta + dt (v - dt F/m) is <= 0, the same replacement with b = delta/(|v_pred| dt) and
-           v_pred in place of v_imp; then a flag in the history suppresses the force while the
-           pair keeps separating (v < 0) until delta <= 0 (the flag clears when v >= 0).
+           v_pred in place of v_imp; then a flag in the history withholds the force of the next
+           evaluation if the pair still separates (v < 0) and delta > 0; it holds one step only.
      None of them changes the elastic force: a resting contact (v = 0) sees no difference.
 """
 import argparse
@@ -175,9 +175,8 @@ def collide(p, m, k, alpha, crit, v0, dt, scheme, step_aware=False, maxsteps=200
             f = np.maximum(f, 0.0)
         f = np.where(pos, f, 0.0)
         if "flag" in parts and crit == "overlap":
-            ended[:] &= v < 0  # the flag clears as soon as the pair approaches again
-            f = np.where(ended, 0.0, f)
-            ended[:] |= last
+            f = np.where(ended & (v < 0), 0.0, f)  # the flag holds for one evaluation only,
+            ended[:] = last  # and only while the pair still separates
         return f
 
     if scheme == "SE":
@@ -296,10 +295,10 @@ def kernel_force(hist, p, m, k, alpha, crit, e, dt, tab, d, v):
         fd = c0 * d**beta * v
     if crit == "force":
         return max(fel + fd, 0.0)
-    if hist["ended"]:  # (C) flag: no force while still separating, cleared on approach
+    if hist["ended"]:  # (C) flag: one evaluation without force if the pair still separates
+        hist["ended"] = False
         if v < 0:
             return 0.0
-        hist["ended"] = False
         return fel + fd
     vp = v - dt * (fel + fd) / m
     if not first and d + dt * vp <= 0:  # (C) predicted last contact step
