@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Step-aware calibration of the power-law Tsuji contact (issue 35): derivation check and study.
+"""Step-aware calibration of the power-law Tsuji contact: derivation check and study.
 
 Usage:  python3 scripts/step_exact_study.py [--quick] [--check] [--perturb X]
 

@@ -71,6 +71,8 @@ step fuzz scripts/fuzz.sh 30000 120
 step fuzz_selftest scripts/fuzz_selftest.sh
 # The Python package: venv, maturin build, pytest (bit-identical to the C ABI, YADE client).
 step python scripts/test_python.sh
+# The step-aware calibration study (docs/timestep.md): its self-check on the Hertz subset.
+step step_exact_study bash -c '.venv-python/bin/python -m pip install -q scipy mpmath && .venv-python/bin/python scripts/step_exact_study.py --quick --check'
 # Clean parallel CMake builds in a row (a race between targets fails one of them).
 step parallel_builds env DC_PB_CARGO_DIR="$PWD/target" scripts/parallel_builds.sh 2
 step_table
