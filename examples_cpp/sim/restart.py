@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """LAMMPS write_restart / read_restart keep demcontact's contact histories (pair and wall).
 
-  restart.py --plugin demcontact_lammps.so [--lmp lmp] [--np 1|2] [--workdir DIR]
+  restart.py --plugin demcontact_lammps.so [--lmp lmp] [--np N] [--np-read M] [--workdir DIR]
 
 Three spheres (R = 1 mm, rho = 2500, E = 5e6, nu = 0.3, e = 0.5, mu = 0.5, e_t = 0.5; pair model
 with Mindlin tangential and EPSD rolling, so the history has all its parts), no gravity:
@@ -12,7 +12,9 @@ demcontact/wall), pressed on it by F_n and sheared along x by f_t. Rotation is n
 (fix nve). At rest the tangential springs carry exactly -f_t.
 
 Runs: (U) uninterrupted, STEPS1 + STEPS2 steps; (R1) STEPS1 steps then write_restart; (R2) a new
-process: read_restart, the same plugin/pair/wall/load lines, STEPS2 steps. Both dump the forces
+process: read_restart, the same plugin/pair/wall/load lines, STEPS2 steps. U and R1 run on N
+ranks, R2 on M (default N): users restart on another allocation, and the histories written by N
+ranks must reach the atoms' new owners among M. Both dump the forces
 every EVERY steps. Checks:
   - R2's log says both fixes (DEMCONTACT_HISTORY of the pair style, the wall fix) were reset
     from the restart file;
@@ -21,8 +23,9 @@ every EVERY steps. Checks:
   - after the restart, the tangential pair force on A (z) and wall force on C (x) of R2 equal
     U's at every dumped step within TOL x f_t.
 TOL: the restart is exact except for the `run` setup of R2, which evaluates the contacts once
-more on a copy of the history (one more spring increment v_t dt, v_t ~ 0 when sticking): measured
-differences ~1e-12 f_t; a lost history gives ~1.
+more on a copy of the history (one more spring increment v_t dt, v_t ~ 0 when sticking), and,
+with M != N, the order in which a rank sums an atom's forces (ulps): measured differences ~1e-12
+f_t; a lost history gives ~1.
 Exit 77 (ctest SKIP) when LAMMPS is missing.
 """
 import argparse
@@ -101,16 +104,27 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--plugin", required=True)
     ap.add_argument("--lmp")
-    ap.add_argument("--np", type=int, default=1)
+    ap.add_argument("--np", type=int, default=1, help="ranks of the uninterrupted run and the one that writes")
+    ap.add_argument("--np-read", type=int, help="ranks of the run that reads the restart (default: --np)")
+    ap.add_argument("--steps2", type=int, default=STEPS2,
+                    help="steps after the restart (default %d; fewer where the reading run oversubscribes the cores)" % STEPS2)
     ap.add_argument("--workdir")
     a = ap.parse_args()
     import lammps_runs
     exe = lammps_runs.find_lmp(a.lmp)
     env = H.mpi_env()
-    pre = H.mpi_prefix(a.np, os.path.join(os.path.dirname(exe), "mpirun"))
+    mpirun = os.path.join(os.path.dirname(exe), "mpirun")
+    pre = H.mpi_prefix(a.np, mpirun)
+    np_read = a.np if a.np_read is None else a.np_read
+    if a.np < 1 or np_read < 1:
+        raise SystemExit("restart.py: --np and --np-read must be >= 1 (got %d, %d)" % (a.np, np_read))
+    steps2 = a.steps2
+    if steps2 < 10 * EVERY:
+        raise SystemExit("restart.py: --steps2 must be >= %d (got %d)" % (10 * EVERY, steps2))
+    pre_read = H.mpi_prefix(np_read, mpirun)
     workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_restart_"))
     runs = {
-        "uninterrupted": common(a.plugin, True) + ["run %d" % (STEPS1 + STEPS2)],
+        "uninterrupted": common(a.plugin, True) + ["run %d" % (STEPS1 + steps2)],
         "first": common(a.plugin, True) + ["run %d" % STEPS1, "write_restart state.restart"],
     }
     for name, lines in runs.items():
@@ -121,9 +135,9 @@ def main():
     d = os.path.join(workdir, "restarted")
     os.makedirs(d, exist_ok=True)
     lines = ["processors * 1 1", "read_restart %s" % os.path.join(workdir, "first", "state.restart")] + common(a.plugin, False) + \
-        ["run %d" % STEPS2]
+        ["run %d" % steps2]
     open(os.path.join(d, "in.lmp"), "w").write("\n".join(lines) + "\n")
-    H.run(pre + [exe, "-in", "in.lmp", "-log", "log.lammps"], d, env)
+    H.run(pre_read + [exe, "-in", "in.lmp", "-log", "log.lammps"], d, env)
 
     log = open(os.path.join(d, "log.lammps")).read()
     reset = [fid for fid in ("DEMCONTACT_HISTORY", "floor")
@@ -141,12 +155,17 @@ def main():
         ra, rc = tangential(r[s])
         worst_a = max(worst_a, abs(ra - ua) / FT)
         worst_c = max(worst_c, abs(rc - uc) / FT)
-    print("LAMMPS restart, %d rank(s): fixes reset from the restart file: %s" % (a.np, ", ".join(reset) or "none"))
+    ranks = ("%d rank(s)" % a.np) if np_read == a.np else ("written on %d rank(s), read on %d" % (a.np, np_read))
+    # The read really ran on M ranks (`processors * 1 1`: LAMMPS prints "M by 1 by 1 MPI processor grid").
+    grid_ok = ("%d by 1 by 1 MPI processor grid" % np_read) in log
+    print("LAMMPS restart, %s: fixes reset from the restart file: %s" % (ranks, ", ".join(reset) or "none"))
     print("at the restart (step %d): pair F_t,z on A = %.6g, wall F_t,x on C = %.6g (f_t = %g; |F_t + f_t|/f_t = %.2g, "
           "must be <= %g)" % (STEPS1, fa, fc, FT, load, LOADED))
     print("after the restart, %d dumped steps: max |F_t(restarted) - F_t(uninterrupted)| / f_t: pair %.3g, wall %.3g "
           "(tolerance %g)" % (len(steps), worst_a, worst_c, TOL))
-    ok = len(reset) == 2 and load <= LOADED and len(steps) >= STEPS2 // EVERY and max(worst_a, worst_c) <= TOL
+    if not grid_ok:
+        print("FAIL: the restarted run's log has no %d by 1 by 1 processor grid" % np_read)
+    ok = grid_ok and len(reset) == 2 and load <= LOADED and len(steps) >= steps2 // EVERY and max(worst_a, worst_c) <= TOL
     if not ok:
         raise SystemExit("FAIL: the contact histories did not survive write_restart/read_restart")
     print("ok")
