@@ -1,7 +1,8 @@
 /* libFuzzer target: the calibration exports. Cases 0-4: damping from restitution and back, the
  * critical step, Hertz stiffness and the effective modulus; 5: the status strings, the version
  * and a NULL output; 6-9: the viscoelastic calibration (e(b) by the fast tiers, b from e, beta, a
- * and the speed from e, k and gamma, e(b) by the reference integrator). Inputs are eight raw doubles and a criterion (fuzz_scalars). */
+ * and the speed from e, k and gamma, e(b) by the reference integrator). Inputs are eight raw
+ * doubles and a criterion (fuzz_scalars). */
 #define FUZZ_CASES 10
 #include "fuzz_common.h"
 
