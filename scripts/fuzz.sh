@@ -38,9 +38,10 @@ names=()
 for src in c_tests/fuzz/fuzz_*.c; do
   t=$(basename "$src" .c)
   names+=("$t")
-  # Relinked only when the target, the shared header or the library changed.
+  # Relinked only when the target, the shared header, the library or this script (its flags)
+  # changed.
   if [ ! -x "$out/$t" ] || [ "$src" -nt "$out/$t" ] || [ c_tests/fuzz/fuzz_common.h -nt "$out/$t" ] ||
-    [ "$lib" -nt "$out/$t" ]; then
+    [ "$lib" -nt "$out/$t" ] || [ scripts/fuzz.sh -nt "$out/$t" ]; then
     clang -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -Iinclude \
       -DDC_FUZZ_NAME="\"$t\"" "$src" "$lib" -lpthread -ldl -lm -o "$out/$t"
   fi
