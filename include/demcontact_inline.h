@@ -671,7 +671,10 @@ DC_INLINE_FN int32_t dci_e_from_alpha(double alpha, double p, int32_t criterion,
     if (alpha < 0.0) return DC_ERR_NEGATIVE;
     const double s = dci_damping_scale(p);
     if (criterion == DC_END_OVERLAP) {
-        *e_out = alpha >= s ? 0.0 : exp(-DCI_PI * alpha / sqrt((s - alpha) * (s + alpha)));
+        /* The roots apart only where the product overflows (p beyond ~9e307): as the library. */
+        const double d = (s - alpha) * (s + alpha);
+        const double root = isfinite(d) ? sqrt(d) : sqrt(s - alpha) * sqrt(s + alpha);
+        *e_out = alpha >= s ? 0.0 : exp(-DCI_PI * alpha / root);
     } else {
         double g, dg;
         dci_decay(alpha / s, &g, &dg);

@@ -1,18 +1,31 @@
 #!/usr/bin/env bash
-# Proves that scripts/fuzz.sh can fail: with DC_FUZZ_PLANT_CRASH=1 the harness aborts on its first
-# input, and fuzz.sh must then exit non-zero and say FAILED. Exits 0 only if that happened.
+# Proves that scripts/fuzz.sh can fail through every one of its targets: for each target T
+# (c_tests/fuzz/fuzz_*.c) it runs fuzz.sh with DC_FUZZ_PLANT_CRASH=T, which makes T alone abort
+# on its first input. fuzz.sh must then exit non-zero, name T (and only T) as FAILED, and T's log
+# must show the abort. Exits 0 only if that happened for every target.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 log=$(mktemp)
-if DC_FUZZ_PLANT_CRASH=1 scripts/fuzz.sh 1000 60 >"$log" 2>&1; then
-  cat "$log"
-  echo "fuzz self-test: FAILED: fuzz.sh exited 0 although the harness aborted on purpose" >&2
+trap 'rm -f "$log"' EXIT
+targets=()
+for src in c_tests/fuzz/fuzz_*.c; do targets+=("$(basename "$src" .c)"); done
+if [ "${#targets[@]}" -eq 0 ]; then
+  echo "fuzz self-test: FAILED: no targets in c_tests/fuzz" >&2
   exit 1
 fi
-if ! grep -q "fuzz: FAILED" "$log" || ! grep -q "deadly signal" "$log" "build-fuzz/fuzz.log"; then
-  cat "$log"
-  echo "fuzz self-test: FAILED: fuzz.sh failed, but not because of the planted crash" >&2
-  exit 1
-fi
-rm -f build-fuzz/crash-*
-echo "fuzz self-test: ok (the planted crash made scripts/fuzz.sh fail)"
+for t in "${targets[@]}"; do
+  if DC_FUZZ_PLANT_CRASH="$t" scripts/fuzz.sh 500 60 >"$log" 2>&1; then
+    cat "$log"
+    echo "fuzz self-test: FAILED: fuzz.sh exited 0 although $t aborted on purpose" >&2
+    exit 1
+  fi
+  if ! grep -q "^fuzz: $t: FAILED" "$log" || ! grep -qx "fuzz: FAILED: $t" "$log" ||
+    ! grep -q "deadly signal" "build-fuzz/$t.log"; then
+    cat "$log"
+    echo "fuzz self-test: FAILED: fuzz.sh failed, but not (only) because of the crash planted in $t" >&2
+    exit 1
+  fi
+  rm -f "build-fuzz/$t"-crash-*
+  echo "fuzz self-test: the crash planted in $t made scripts/fuzz.sh fail"
+done
+echo "fuzz self-test: ok (a planted crash in each of the ${#targets[@]} targets made scripts/fuzz.sh fail)"

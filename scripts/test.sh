@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs every test: formatting, Rust unit/integration/property tests (cargo profile ci, the release
 # optimisation without cross-crate LTO: the ODE references are heavy), the no-panic lints on src/, a benchmark smoke run, every C/C++/Fortran program
-# through ctest (plain and under ASan+UBSan), the FFI tests under Miri, a short libFuzzer run and
+# through ctest (plain and under ASan+UBSan), the FFI tests under Miri, a short run of every fuzz target and
 # the fuzzer's self-test. Steps that cannot run on this machine (Miri without nightly, simulators
 # that cannot be installed, ...) are skipped and listed by name at the end; nothing else skips.
 set -euo pipefail
@@ -67,7 +67,8 @@ step ctest bash -c 'set -o pipefail; ctest --test-dir build --output-on-failure 
 # ctest tests that cannot run here exit 77 (SKIP_RETURN_CODE): collect their names and reasons.
 step ctest_skips bash -c 'scripts/ctest_skips.sh build build-ctest.log >>"$DC_SKIP_LOG"'
 step miri scripts/miri.sh
-step fuzz scripts/fuzz.sh 30000 120
+# Fuzz smoke: 30,000 executions per target, each target at most 20 s (the fit, the slowest).
+step fuzz scripts/fuzz.sh 30000 60
 step fuzz_selftest scripts/fuzz_selftest.sh
 # The Python package: venv, maturin build, pytest (bit-identical to the C ABI, YADE client).
 step python scripts/test_python.sh

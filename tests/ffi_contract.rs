@@ -175,3 +175,23 @@ fn trajectory_overflow_leaves_nan_not_half_results() {
         assert!(buf[n..].iter().all(|&x| x == sentinel), "{buf:?}");
     }
 }
+
+/// Found by the fuzzer: for p beyond ~9e307 the overlap-end restitution formed (s-α)(s+α) with
+/// s = √(2(p+1)) > 1.3e154, which overflowed and gave e = 1 for any α; the energy partition's
+/// fractions then summed to 1.44. e must be exp(-πζ/√(1-ζ²)) there as for any p, and the
+/// fractions must sum to 1.
+#[test]
+fn overlap_end_restitution_at_the_largest_exponents() {
+    let (p, alpha) = (1.6853375492571783e308, 1.6759775895427744e153);
+    let (s, e) = call(|o| unsafe { dc_e_from_alpha(alpha, p, DC_END_OVERLAP, o) });
+    assert_eq!(s, DC_OK);
+    let zeta = alpha / (2f64.sqrt() * (p + 1.0).sqrt());
+    let want = (-std::f64::consts::PI * zeta / (1.0 - zeta * zeta).sqrt()).exp();
+    assert!((e - want).abs() <= 1e-14 * want, "e = {e}, want {want}");
+    let mut en = dc_energy::default();
+    let s = unsafe { dc_energy_partition(p, alpha, DC_END_OVERLAP, &mut en) };
+    assert_eq!(s, DC_OK);
+    assert_eq!(en.e.to_bits(), e.to_bits());
+    let sum = en.loading + en.unloading + en.returned + en.clamped;
+    assert!((sum - 1.0).abs() <= 1e-14, "fractions sum to {sum}: {en:?}");
+}

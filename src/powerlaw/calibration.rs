@@ -51,7 +51,16 @@ pub fn e_from_alpha(alpha: f64, p: f64, criterion: EndCriterion) -> Result<f64, 
             if alpha >= s {
                 0.0
             } else {
-                (-core::f64::consts::PI * alpha / ((s - alpha) * (s + alpha)).sqrt()).exp()
+                // For p beyond ~9e307 (s > ~1.3e154) the product overflows, which gave e = 1 for
+                // any α (found by the fuzzer through the energy partition, whose fractions then
+                // summed to 1.44): there the two roots are taken apart. Below, the bits are kept.
+                let d = (s - alpha) * (s + alpha);
+                let root = if d.is_finite() {
+                    d.sqrt()
+                } else {
+                    (s - alpha).sqrt() * (s + alpha).sqrt()
+                };
+                (-core::f64::consts::PI * alpha / root).exp()
             }
         }
         EndCriterion::Force => lsd::e_force(zeta_from_alpha(alpha, p)),

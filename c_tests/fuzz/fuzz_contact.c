@@ -1,0 +1,146 @@
+/* libFuzzer target: the full-contact exports. Case 0: a spec from fuzzed fields and selectors
+ * (and the frame carry of the model it gives); 1: one contact with a fuzzed state, dt and
+ * history; 2: the spheres helper with fuzzed centres; 3: the batch of 2 contacts (checked or
+ * fused) with fuzzed arrays, history stride and NULL masks; 4: arbitrary bytes as a
+ * dc_contact_model. Inputs are 40 raw doubles (zero-padded), their first bytes also read as
+ * selectors. */
+#define FUZZ_CASES 5
+#include "fuzz_common.h"
+
+/* A model with every stage switched on (history length 10), from valid parameters. */
+static int full_model(dc_contact_model *m, int32_t crit) {
+    dc_contact_spec s;
+    if (dc_contact_spec_init(&s) != DC_OK) abort();
+    s.normal = DC_NORMAL_HERTZ;
+    s.damping = DC_DAMPING_RESTITUTION;
+    s.criterion = crit;
+    s.E1 = 7e10, s.nu1 = 0.3, s.E2 = INFINITY, s.nu2 = 0.25, s.e_n = 0.6;
+    s.tangential = DC_TANGENTIAL_MINDLIN, s.mu = 0.4, s.e_t = 0.5;
+    s.rolling = DC_ROLLING_EPSD, s.mu_r = 0.1, s.eta_r = 0.3;
+    s.twisting = DC_TWISTING_SDS, s.mu_tw = 1e-5, s.k_tw = 1e-4;
+    return dc_contact_model_init(&s, m) == DC_OK;
+}
+
+static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t n) {
+    (void)byte0;
+    uint8_t d[sizeof(double) * 40];
+    fuzz_take(d, sizeof d, data, n);
+    double y[40];
+    memcpy(y, d, sizeof y);
+    int32_t sel[6];
+    memcpy(sel, d, sizeof sel);
+    dc_contact_model m, m0;
+    memset(&m, 0x5a, sizeof m);
+    m0 = m;
+    dc_contact_result r, r0;
+    memset(&r, 0x33, sizeof r);
+    r0 = r;
+    double h[DC_CONTACT_HISTORY_MAX], h0[DC_CONTACT_HISTORY_MAX];
+    memcpy(h, y + 20, sizeof h);
+    memcpy(h0, h, sizeof h);
+    dc_contact_state st;
+    memcpy(&st, y, sizeof st); /* 20 doubles */
+    int32_t s;
+    switch (which) {
+    case 0: { /* spec: fuzzed selectors and parameters */
+        dc_contact_spec sp;
+        if (dc_contact_spec_init(&sp) != DC_OK) abort();
+        sp.normal = sel[0] % 7 - 1, sp.damping = sel[1] % 4 - 1, sp.criterion = sel[2] % 4 - 1;
+        sp.tangential = sel[3] % 5 - 1, sp.rolling = sel[4] % 5 - 1, sp.twisting = sel[5] % 4 - 1;
+        double *f = &sp.E1; /* the 18 consecutive doubles E1 .. inertia_factor */
+        for (int i = 0; i < 18; i++)
+            if (d[i] & 1) f[i] = y[3 + i];
+        if (d[0] & 2) sp.version ^= (uint32_t)(y[1] != 0);
+        s = dc_contact_model_init(&sp, &m);
+        if (!known(s)) abort();
+        if (s != DC_OK && memcmp(&m, &m0, sizeof m) != 0) abort();
+        if (s == DC_OK) {
+            size_t len = 99;
+            if (dc_contact_history_len(&m, &len) != DC_OK || len > DC_CONTACT_HISTORY_MAX) abort();
+            /* the frame carry: any code; accepted (0, 1) or refused with the model untouched */
+            dc_contact_model mc = m;
+            const int32_t carry = sel[5] / 4;
+            s = dc_contact_model_set_carry(&mc, carry);
+            if (!known(s)) abort();
+            if (s == DC_OK ? (carry != DC_CARRY_ROTATE && carry != DC_CARRY_PROJECT) || mc.carry != carry
+                           : s != DC_ERR_SPEC_MODEL || memcmp(&mc, &m, sizeof m) != 0)
+                abort();
+        }
+        break;
+    }
+    case 1: /* one contact, fuzzed state, dt, history */
+    case 2: /* the spheres helper, fuzzed centres */
+        if (!full_model(&m, d[0] & 1)) abort();
+        if ((d[7] & 1) && dc_contact_model_set_carry(&m, DC_CARRY_PROJECT) != DC_OK) abort();
+        if (which == 1)
+            s = dc_contact_force(&m, &st, y[30], (d[1] & 1) ? h : NULL, (size_t)(d[2] % 12), &r);
+        else
+            s = dc_contact_force_spheres(&m, y + 30, y + 33, &st, y[36], h, DC_CONTACT_HISTORY_MAX, &r);
+        if (!known(s)) abort();
+        if (s != DC_OK && (memcmp(&r, &r0, sizeof r) != 0 || memcmp(h, h0, sizeof h) != 0)) abort();
+        if (s == DC_OK && !(all_finite(r.force, 3) && all_finite(r.torque1, 3) && all_finite(r.torque2, 3) &&
+                            all_finite(&r.f_n, 1) && all_finite(h, DC_CONTACT_HISTORY_MAX)))
+            abort();
+        break;
+    case 3: { /* batch of 2 contacts: fuzzed arrays (aliasing the fuzzed doubles), NULL mask;
+                * checked or fused (d[6] & 1) */
+        if (!full_model(&m, d[0] & 1)) abort();
+        if ((d[7] & 1) && dc_contact_model_set_carry(&m, DC_CARRY_PROJECT) != DC_OK) abort();
+        /* history: 2 contacts at a stride of up to 11 doubles */
+        double out[2 + 6 + 6 + 6], out0[20], hb[22];
+        for (int i = 0; i < 20; i++) out[i] = SENTINEL;
+        for (int i = 0; i < 22; i++) hb[i] = y[i];
+        memcpy(out0, out, sizeof out);
+        double hb0[22];
+        memcpy(hb0, hb, sizeof hb);
+        uint32_t mask = (uint32_t)d[3] | ((uint32_t)d[4] << 8);
+        const double *in[10] = {y, y + 6, y + 8, y + 14, y + 20, y + 26, y + 32, y + 34, y + 36, y + 38};
+        for (int i = 0; i < 10; i++)
+            if (mask & (1u << i)) in[i] = NULL;
+        dc_contact_batch b = {.n = 2, .history_stride = (size_t)(d[5] % 12), .normal = in[0], .overlap = in[1],
+                              .v1 = in[2], .v2 = in[3], .w1 = in[4], .w2 = in[5], .r1 = in[6], .r2 = in[7],
+                              .m1 = in[8], .m2 = in[9], .history = (mask & 1024) ? NULL : hb, .f_n = out,
+                              .force = out + 2, .torque1 = out + 8, .torque2 = out + 14};
+        size_t bad = 7;
+        int fused = d[6] & 1;
+        s = fused ? dc_contact_force_batch_fused(&m, &b, y[39], &bad) : dc_contact_force_batch(&m, &b, y[39]);
+        if (!known(s)) abort();
+        if (fused && bad != 7) {
+            /* a bad contact: its outputs NaN, its history (10 doubles) untouched */
+            if (s == DC_OK || bad > 1 || !isnan(out[bad])) abort();
+            for (int k = 0; k < 3; k++)
+                if (!isnan(out[2 + 3 * bad + k]) || !isnan(out[8 + 3 * bad + k]) || !isnan(out[14 + 3 * bad + k]))
+                    abort();
+            if (memcmp(hb + bad * b.history_stride, hb0 + bad * b.history_stride, 10 * sizeof(double)) != 0) abort();
+        } else if (!fused && s == DC_ERR_RESULT_RANGE) {
+            /* an overflow (found only by computing): every contact written; an overflowing one
+             * NaN with its history untouched, the other finite */
+            int nan_seen = 0;
+            for (size_t i = 0; i < 2; i++) {
+                double o3[9] = {out[2 + 3 * i], out[3 + 3 * i], out[4 + 3 * i], out[8 + 3 * i], out[9 + 3 * i],
+                                out[10 + 3 * i], out[14 + 3 * i], out[15 + 3 * i], out[16 + 3 * i]};
+                if (isnan(out[i])) {
+                    nan_seen = 1;
+                    for (int k = 0; k < 9; k++)
+                        if (!isnan(o3[k])) abort();
+                    if (memcmp(hb + i * b.history_stride, hb0 + i * b.history_stride, 10 * sizeof(double)) != 0)
+                        abort();
+                } else if (!all_finite(out + i, 1) || !all_finite(o3, 9)) {
+                    abort();
+                }
+            }
+            if (!nan_seen) abort();
+        } else {
+            if (s != DC_OK && (memcmp(out, out0, sizeof out) != 0 || memcmp(hb, hb0, sizeof hb) != 0)) abort();
+            if (s == DC_OK && !all_finite(out, 20)) abort();
+        }
+        break;
+    }
+    case 4: /* arbitrary bytes as a model: rejected or computed, never a crash */
+        fuzz_take(&m, sizeof m, d, sizeof d);
+        s = dc_contact_force(&m, &st, 1e-7, h, DC_CONTACT_HISTORY_MAX, &r);
+        if (!known(s)) abort();
+        if (s != DC_OK && memcmp(&r, &r0, sizeof r) != 0) abort();
+        break;
+    }
+}
