@@ -88,7 +88,9 @@ int main(void) {
     CHECK_STATUS(dc_hertz_stiffness(63e9, 0.23, INFINITY, 63e9, 0.23, 1e-3, &k), DC_OK);
     CHECK(dc_rel(k, 4.0 / 3.0 * 63e9 / (2.0 * (1.0 - 0.23 * 0.23)) * sqrt(1e-3)) < 1e-14, "wall k = %g", k);
     CHECK_STATUS(dc_hertz_stiffness(-1.0, 0.23, 1e-3, 63e9, 0.23, 1e-3, &out), DC_ERR_NOT_POSITIVE);
-    CHECK_STATUS(dc_hertz_stiffness(63e9, 0.7, 1e-3, 63e9, 0.23, 1e-3, &out), DC_ERR_NOT_POSITIVE);
+    CHECK_STATUS(dc_hertz_stiffness(63e9, 0.7, 1e-3, 63e9, 0.23, 1e-3, &out), DC_ERR_POISSON_RANGE);
+    CHECK_STATUS(dc_hertz_stiffness(63e9, 0.23, 1e-3, 63e9, -1.0, 1e-3, &out), DC_ERR_POISSON_RANGE);
+    CHECK_STATUS(dc_hertz_stiffness(-1.0, 0.7, 1e-3, 63e9, 0.23, 1e-3, &out), DC_ERR_POISSON_RANGE);
     CHECK_STATUS(dc_hertz_stiffness(NAN, 0.2, 1e-3, 63e9, 0.23, 1e-3, &out), DC_ERR_NOT_FINITE);
     CHECK_STATUS(dc_hertz_stiffness(63e9, 0.2, 1e-3, 63e9, 0.23, 1e-3, NULL), DC_ERR_NULL_POINTER);
     double estar = 0;

@@ -692,7 +692,9 @@ DC_INLINE_FN int32_t dc_e_from_alpha_inline(double alpha, double p, int32_t crit
 
 DC_INLINE_FN int32_t dci_check_modulus(double E, double nu) {
     if (!isfinite(E) || !isfinite(nu)) return DC_ERR_NOT_FINITE;
-    if (!(E > 0.0 && nu > -1.0 && nu <= 0.5)) return DC_ERR_NOT_POSITIVE;
+    /* the ratio first, then the modulus: as the library's check_material */
+    if (!(nu > -1.0 && nu <= 0.5)) return DC_ERR_POISSON_RANGE;
+    if (!(E > 0.0)) return DC_ERR_NOT_POSITIVE;
     return DC_OK;
 }
 
@@ -1579,7 +1581,8 @@ DC_INLINE_FN int32_t dci_positive(double x, double *out) {
 DC_INLINE_FN int32_t dci_compliance(double e, double nu, double *out) {
     if (e != e || nu != nu) return DC_ERR_SPEC_UNSET;
     if (!isfinite(nu)) return DC_ERR_NOT_FINITE;
-    if (!(e > 0.0 && nu > -1.0 && nu <= 0.5)) return DC_ERR_NOT_POSITIVE;
+    if (!(nu > -1.0 && nu <= 0.5)) return DC_ERR_POISSON_RANGE;
+    if (!(e > 0.0)) return DC_ERR_NOT_POSITIVE;
     *out = (1.0 - nu) * (1.0 + nu) / e;
     return DC_OK;
 }
@@ -1668,7 +1671,7 @@ DC_INLINE_FN int32_t dci_zeta_from_e_t(double e_t, double *out) {
     DCI_NO_CONTRACT
     if (!isfinite(e_t)) return DC_ERR_NOT_FINITE;
     if (!(e_t > 0.0 && e_t <= 1.0)) return DC_ERR_RESTITUTION_RANGE;
-    const double l = -log(e_t);
+    const double l = 0.0 - log(e_t); /* +0, not -0, at e_t = 1: as the library */
     *out = l / sqrt(DCI_M(DCI_PI, DCI_PI) + DCI_M(l, l));
     return DC_OK;
 }
