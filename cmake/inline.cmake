@@ -21,10 +21,10 @@ add_executable(test_inline_contact_fma c_tests/inline/test_inline_contact.c)
 target_compile_definitions(test_inline_contact_fma PRIVATE DC_TEST_CONTRACTED)
 target_compile_options(test_inline_contact_fma PRIVATE -std=gnu11 -O3 -march=native
                                                        -ffp-contract=fast -Wall -Wextra -Werror)
-# The plugins' choice of the shaped entry (examples_cpp/sim/demcontact_shaped.h): the right
+# The plugins' choice of the shaped entry (plugins/common/demcontact_shaped.h): the right
 # instantiation per model shape, the library's bits along trajectories.
 add_executable(test_shaped_pick c_tests/inline/test_shaped_pick.cpp)
-target_include_directories(test_shaped_pick PRIVATE examples_cpp/sim)
+target_include_directories(test_shaped_pick PRIVATE plugins/common)
 target_compile_options(test_shaped_pick PRIVATE -std=c++17 -Wall -Wextra -Werror -O2)
 foreach(t test_inline_c test_inline_cpp test_inline_fma test_inline_contact_c
           test_inline_contact_cpp test_inline_contact_fma test_shaped_pick)
@@ -37,10 +37,10 @@ add_test(NAME inline_contact_c COMMAND test_inline_contact_c 10000000)
 add_test(NAME inline_contact_cpp COMMAND test_inline_contact_cpp 10000000)
 add_test(NAME inline_contact_fma COMMAND test_inline_contact_fma 2000000)
 add_test(NAME inline_shaped_pick COMMAND test_shaped_pick 20000)
-# The LIGGGHTS plugin's per-pass scan of atom arrays (examples_cpp/sim/scan_bad_values.h): each
+# The LIGGGHTS plugin's per-pass scan of atom arrays (plugins/common/scan_bad_values.h): each
 # variant this CPU runs (baseline, AVX2) against std::isfinite and > 0.
 add_executable(test_scan_bad_values c_tests/inline/test_scan_bad_values.cpp)
-target_include_directories(test_scan_bad_values PRIVATE examples_cpp/sim)
+target_include_directories(test_scan_bad_values PRIVATE plugins/common)
 target_compile_options(test_scan_bad_values PRIVATE -std=c++17 -Wall -Wextra -Werror -O2)
 add_test(NAME sim_scan_bad_values COMMAND test_scan_bad_values 2000)
 # nvcc for inline_cuda: from DEMCONTACT_CUDA_VENV (a venv holding NVIDIA's nvcc wheels, made by

@@ -4,11 +4,11 @@
 # (scripts/setup_simulators.sh installs both).
 
 # The library's own oblique sphere-wall impact, the reference of the simulators' oblique tests.
-add_executable(dc_oblique_ref examples_cpp/sim/oblique_ref.c)
+add_executable(dc_oblique_ref tests/simulators/oblique_ref.c)
 target_link_libraries(dc_oblique_ref PRIVATE demcontact::demcontact m)
 set_target_properties(dc_oblique_ref PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/simulators")
 
-add_subdirectory(examples_cpp/liggghts)
-add_subdirectory(examples_cpp/lammps)
+add_subdirectory(plugins/liggghts)
+add_subdirectory(plugins/lammps)
 # The corrected builtin inputs of LIGGGHTS, LAMMPS and YADE in the real codes.
-include(examples_cpp/sim/builtin_tests.cmake)
+include(tests/simulators/builtin_tests.cmake)

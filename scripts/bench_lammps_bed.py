@@ -6,7 +6,7 @@ disturbed run). Called by scripts/bench_simulators.sh.
   bench_lammps_bed.py --plugin demcontact_lammps.so --data settled.data --workdir DIR
                       [--lmp lmp] [--np 2] [--reps 3] [--steps 2000]
 
-The bed: the settled data file of the LIGGGHTS settling bed (examples_cpp/sim/bed.py: 5184
+The bed: the settled data file of the LIGGGHTS settling bed (tests/simulators/bed.py: 5184
 spheres, R = 1 mm, rho = 2500, E = 5e6 Pa, nu = 0.3, e = 0.5, mu = 0.5, in a 44 x 44 mm box with
 a floor and four side walls; LIGGGHTS writes the LAMMPS data format of atom_style sphere), run on
 for `--steps` steps under gravity with the same time step as there (Hertz contact time / 50).
@@ -26,7 +26,7 @@ import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "examples_cpp", "sim"))
+sys.path.insert(0, os.path.join(HERE, "..", "tests", "simulators"))
 import harness as H  # noqa: E402
 import bed  # noqa: E402
 import lammps_runs  # noqa: E402

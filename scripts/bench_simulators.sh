@@ -20,7 +20,7 @@ scripts/setup.sh
 scripts/setup_simulators.sh
 cmake -S . -B "$b" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$b" -j2 --target demcontact_liggghts demcontact_lammps >/dev/null
-h=examples_cpp/sim/harness.py
+h=tests/simulators/harness.py
 out="$b/simulators/bench"
 mkdir -p "$out"
 lmp=()

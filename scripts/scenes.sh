@@ -12,7 +12,7 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j2 --target demcontact_liggghts demcontact_lammps dc_oblique_ref >/dev/null
 out="${1:-build/simulators/scenes}"
 mkdir -p "$out"
-s=examples_cpp/sim
+s=tests/simulators
 lg=build/simulators/libdemcontact_liggghts.so
 lm=build/simulators/demcontact_lammps.so
 python3 $s/scenes.py --sim liggghts --np 2 --check --pour-reps 3 --plugin $lg --workdir "$out/liggghts_scene"

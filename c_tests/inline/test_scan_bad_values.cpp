@@ -1,4 +1,4 @@
-// ctest sim_scan_bad_values: the LIGGGHTS plugin's per-pass scan (examples_cpp/sim/scan_bad_values.h),
+// ctest sim_scan_bad_values: the LIGGGHTS plugin's per-pass scan (plugins/common/scan_bad_values.h),
 // every variant this CPU runs, against std::isfinite and > 0: each special value at every position
 // of arrays of every length up to 40 (the vector loops' bodies and tails), and random arrays of
 // finite values, with and without one bad value.

@@ -1,4 +1,4 @@
-/* examples_cpp/sim/demcontact_shaped.h, the plugins' choice of the shaped entry, against the
+/* plugins/common/demcontact_shaped.h, the plugins' choice of the shaped entry, against the
  * library: for random models of every shape (Hertz damped or clamped, power law p = 1.7,
  * viscoelastic; every tangential, rolling, twisting and carry code), the evaluation eval_for(m)
  * picks (and pick<V> through a visitor) gives dc_contact_force's status, result and history bits

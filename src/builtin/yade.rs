@@ -154,7 +154,7 @@ mod tests {
     #[test]
     fn thornton_is_decreasing_and_matches_yade() {
         // Values YADE 2023.02a stored in MindlinPhys.betan for these typed en (printed with
-        // %.17g from a YADE session, examples_cpp/sim/yade_runs.py --dump-betan).
+        // %.17g from a YADE session, tests/simulators/yade_runs.py --dump-betan).
         for (en, yade) in [
             (0.05, 1.7766773674799194),
             (0.5, 0.23302485768344239),

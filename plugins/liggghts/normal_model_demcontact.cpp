@@ -6,7 +6,7 @@
  *   fix wall wall/gran model demcontact tangential history primitive type 1 zplane 0.0
  *
  * Force: F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn (power-law Tsuji) from demcontact's dc_pair
- * and dc_normal_force_inline (header-only, see ../sim/tsuji_force.h): at the default p = 1.5 a dc_pair_hertz of the two
+ * and dc_normal_force_inline (header-only, see ../common/tsuji_force.h): at the default p = 1.5 a dc_pair_hertz of the two
  * types' youngsModulus and poissonsRatio (k = 4/3 E* sqrt(R*)); otherwise k = (4/3) E* R*^(2-p).
  * alpha is calibrated for coefficientRestitution (per type pair) with DC_END_FORCE when
  * `limitForce on` (the kernel clamps too), DC_END_OVERLAP otherwise: the realised restitution is

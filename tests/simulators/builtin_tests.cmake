@@ -1,4 +1,4 @@
-# The corrected builtin inputs in the real codes (examples_cpp/sim/builtin_table.py --quick --check:
+# The corrected builtin inputs in the real codes (tests/simulators/builtin_table.py --quick --check:
 # 2 targets at 1 m/s, corrected and uncorrected, every builtin model of the code). One test per
 # code; where the code is not installed the test prints "SKIPPED: <code> (<reason>)" and exits 77,
 # which ctest reports as Skipped (never as passed). The full table: the same script without --quick.
@@ -10,7 +10,7 @@ endif()
 foreach(code liggghts lammps yade)
   if(Python3_Interpreter_FOUND)
     add_test(NAME builtin_${code}
-      COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/examples_cpp/sim/builtin_table.py"
+      COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/tests/simulators/builtin_table.py"
               --code ${code} --quick --check --cli "${DC_LIB_DIR}/demcontact"
               --lmp "${DC_BUILTIN_LMP_VENV}/bin/lmp" --workdir "${CMAKE_BINARY_DIR}/builtin_${code}")
   else()

@@ -165,7 +165,7 @@ def cpu_is_x86_64_v4():
 def liggghts_surface_identity(exe, env, mpirun, nps, g, data, workdir, steps=100):
     """Our models with `surface demcontact` and with `surface default` from the same settled bed,
     and with the plugin's run-time dispatch forced to its baseline variants
-    (DEMCONTACT_DISPATCH=baseline, examples_cpp/sim/cpu_dispatch.h): the final dumps (positions,
+    (DEMCONTACT_DISPATCH=baseline, plugins/common/cpu_dispatch.h): the final dumps (positions,
     velocities, forces, torques, %.17g) must be the same bytes. Returns the list of mismatches
     (empty: identical)."""
     bad = []
