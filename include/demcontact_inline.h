@@ -855,7 +855,7 @@ DC_INLINE_FN int32_t dc_pair_viscoelastic_inline(double E1, double nu1, double E
     return DC_OK;
 }
 
-/* ------------------------------------------------------------------ full contact (issue 13)
+/* ------------------------------------------------------------------ full contact
  * dc_contact_model_init_inline and dc_contact_force_inline: the library's dc_contact_model_init
  * and dc_contact_force (src/contact/{spec,kinematics,frame,tangential*,rolling*,twisting*,
  * evaluate}.rs, src/ffi/contact.rs), the same operations in the same order, bit for bit (the

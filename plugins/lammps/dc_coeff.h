@@ -69,7 +69,7 @@ struct Coeff {
     double A = 0;                              // viscoelastic damping constant [s] (calibrated)
     bool clamp = false;                        // limit_damping
     bool set = false;
-    // full contact (issue 13 sub-models); NaN = unset
+    // full contact sub-models; NaN = unset
     int tangential = DC_TANGENTIAL_NONE, rolling = DC_ROLLING_NONE, twisting = DC_TWISTING_NONE;
     double mu = 0, k_t = NAN, e_t = 1, mu_r = 0, k_r = 0, eta_r = 0, mu_tw = 0, k_tw = NAN, eta_tw = 0;
     int carry = DC_CARRY_ROTATE; // frame carry of the history springs (keyword carry)

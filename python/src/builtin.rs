@@ -1,4 +1,4 @@
-//! Corrected inputs for simulators' builtin contact models (issue 17) and the fit of measured
+//! Corrected inputs for simulators' builtin contact models and the fit of measured
 //! restitution data: calls of `dc_builtin_*` and `dc_fit_restitution`.
 
 use demcontact::ffi as c;

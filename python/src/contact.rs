@@ -1,4 +1,4 @@
-//! Full contact (normal, tangential, rolling, twisting; issue 13) for Python.
+//! Full contact (normal, tangential, rolling, twisting) for Python.
 //!
 //! `ContactSpec` is a `dc_contact_spec` built by keyword (unset fields keep the defaults of
 //! `dc_contact_spec_init`), `ContactModel` the `dc_contact_model` of `dc_contact_model_init`,
