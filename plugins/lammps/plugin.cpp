@@ -1,6 +1,6 @@
 /*
  * The LAMMPS plugin entry point: registers pair_style demcontact, fix demcontact/wall and the
- * internal fix demcontact/history with the running `lmp` (`plugin load demcontact_lammps.so`).
+ * internal fix demcontact/history with the running `lmp` (`plugin load demcontactplugin.so`).
  *
  * The LAMMPS plugin ABI (lammpsplugin_t, lammpsplugin_init) is declared here: the PyPI wheel ships
  * the headers of the core classes but not lammpsplugin.h.

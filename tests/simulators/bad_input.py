@@ -3,7 +3,7 @@
 demcontact's status text (dc_status_str, read from the library the plugin links), never a crash,
 a NaN or a silent default.
 
-  bad_input.py --sim lammps   --plugin demcontact_lammps.so [--lmp lmp]
+  bad_input.py --sim lammps   --plugin demcontactplugin.so [--lmp lmp]
   bad_input.py --sim liggghts --plugin libdemcontact_liggghts.so
 
 Each case runs the simulator on a two-sphere deck with one bad value and checks: exit status != 0,

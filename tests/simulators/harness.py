@@ -2,7 +2,7 @@
 """Runs demcontact inside real DEM codes and compares it with their builtin contact models.
 
   harness.py collision --sim liggghts --plugin libdemcontact_liggghts.so [--check]
-  harness.py collision --sim lammps   --plugin demcontact_lammps.so      [--check]
+  harness.py collision --sim lammps   --plugin demcontactplugin.so      [--check]
   harness.py bed       --sim liggghts --plugin ... [--n 5000] [--np 2]
 
 collision: two-sphere head-on collisions (R = 1 mm, rho = 2500, nu = 0.3) at impact speeds

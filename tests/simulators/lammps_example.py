@@ -3,7 +3,7 @@
 changed only in its pair and wall lines, runs to completion with pair_style demcontact and fix
 demcontact/wall, serial and under mpirun -np 2, next to the unchanged deck.
 
-  lammps_example.py --plugin demcontact_lammps.so [--lmp lmp] [--np 2] [--deck in.pour.flatwall]
+  lammps_example.py --plugin demcontactplugin.so [--lmp lmp] [--np 2] [--deck in.pour.flatwall]
 
 The changes (printed): a `plugin load` line before the first pair_coeff, `pair_style demcontact`,
 one `pair_coeff * * hertz/material E e nu tangential mindlin NULL 0.5 0.5 rolling sds NULL 0 0.5`

@@ -3,7 +3,7 @@
 migration of both atoms (and the time the contact spends between two ranks), so the tangential
 force stays continuous.
 
-  migration.py --sim lammps   --plugin demcontact_lammps.so [--lmp lmp]
+  migration.py --sim lammps   --plugin demcontactplugin.so [--lmp lmp]
   migration.py --sim liggghts --plugin libdemcontact_liggghts.so
 
 Two spheres (R = 1 mm, rho = 2500, E = 5e6, nu = 0.3, e = 0.5, mu = 0.5, e_t = 0.5) touch along

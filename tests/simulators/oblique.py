@@ -3,7 +3,7 @@
 demcontact's full contact, against the library's own impact (oblique_ref: dc_contact_force
 integrated in the hosts' velocity-Verlet order).
 
-  oblique.py --sim lammps   --plugin demcontact_lammps.so --ref oblique_ref [--lmp lmp]
+  oblique.py --sim lammps   --plugin demcontactplugin.so --ref oblique_ref [--lmp lmp]
   oblique.py --sim liggghts --plugin libdemcontact_liggghts.so --ref oblique_ref
 
 Conditions: alumina sphere R = 2.5 mm, rho = 4000 kg/m^3, E = 380 GPa, nu = 0.23, onto a flat wall of

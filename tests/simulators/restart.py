@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """LAMMPS write_restart / read_restart keep demcontact's contact histories (pair and wall).
 
-  restart.py --plugin demcontact_lammps.so [--lmp lmp] [--np N] [--np-read M] [--workdir DIR]
+  restart.py --plugin demcontactplugin.so [--lmp lmp] [--np N] [--np-read M] [--workdir DIR]
 
 Three spheres (R = 1 mm, rho = 2500, E = 5e6, nu = 0.3, e = 0.5, mu = 0.5, e_t = 0.5; pair model
 with Mindlin tangential and EPSD rolling, so the history has all its parts), no gravity:

@@ -2,7 +2,7 @@
 """Wall time of the pour/settle scene's settled bed, demcontact against the builtin Hertz-Mindlin of
 the same code (and optionally an older build of the plugin), without re-running the settling:
 
-  scene_timing.py --sim lammps   --plugin demcontact_lammps.so      --data settled.data [--before old.so]
+  scene_timing.py --sim lammps   --plugin demcontactplugin.so      --data settled.data [--before old.so]
   scene_timing.py --sim liggghts --plugin libdemcontact_liggghts.so --data settled.data [--before old.so]
                   [--before LABEL=other.so ...]   (several older builds, each in the alternation)
                   [--np 2] [--reps 3] [--steps 2000] [--workdir DIR] [--lmp lmp]

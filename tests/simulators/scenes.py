@@ -2,7 +2,7 @@
 """Pour and settle: polydisperse frictional spheres with rolling resistance poured into a cylinder,
 in LIGGGHTS and LAMMPS, demcontact against each code's builtin Hertz-Mindlin, serial and 2 ranks.
 
-  scenes.py --sim lammps   --plugin demcontact_lammps.so      [--lmp lmp] [--np 2] [--check] [--smoke]
+  scenes.py --sim lammps   --plugin demcontactplugin.so      [--lmp lmp] [--np 2] [--check] [--smoke]
   scenes.py --sim liggghts --plugin libdemcontact_liggghts.so [--np 2] [--check] [--smoke]
             [--reps 3] [--pour-reps 3] [--resume] [--workdir DIR]
 
