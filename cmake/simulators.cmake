@@ -10,6 +10,18 @@ if(DEMCONTACT_BUILD_TESTS)
   set_target_properties(dc_oblique_ref PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/simulators")
 endif()
 
+# A plugin whose simulator is missing (the caller returns right after): the configure says what is
+# missing; with the tests, each of the plugin's tests is registered as a SKIP (exit 77) naming it.
+function(dc_plugin_missing simulator missing)
+  message(STATUS "demcontact: ${simulator} plugin not built, missing: ${missing} (run scripts/setup_simulators.sh)")
+  if(DEMCONTACT_BUILD_TESTS)
+    foreach(t IN LISTS ARGN)
+      add_test(NAME ${t} COMMAND sh -c "echo 'SKIPPED: ${t} (${simulator} not installed, missing: ${missing}; scripts/setup_simulators.sh installs it)'; exit 77")
+      set_tests_properties(${t} PROPERTIES SKIP_RETURN_CODE 77)
+    endforeach()
+  endif()
+endfunction()
+
 # Where the installed plugins find the installed libdemcontact.so.0: <prefix>/lib/demcontact/..
 set(DC_PLUGIN_DIR "${CMAKE_INSTALL_LIBDIR}/demcontact")
 add_subdirectory(plugins/liggghts)
