@@ -20,16 +20,6 @@
 #include <stddef.h>
 
 /**
- * The last release known to use Tsuji's η unscaled (YYYYMMDD): 22 Jul 2025, run by the harness.
- */
-#define TSUJI_PLAIN_UNTIL 20250722
-
-/**
- * The first release known to multiply η by √2 (YYYYMMDD): 2 Sep 2026.
- */
-#define TSUJI_SQRT2_FROM 20260902
-
-/**
  * LIGGGHTS `pair_style gran model hooke`; value = `coefficientRestitution` to type.
  */
 #define DC_BUILTIN_LIGGGHTS_HOOKE 1

@@ -10,8 +10,6 @@ module demcontact_c
   implicit none
   private :: ieee_value, ieee_quiet_nan
 
-  integer(c_int32_t), parameter :: TSUJI_PLAIN_UNTIL = 20250722
-  integer(c_int32_t), parameter :: TSUJI_SQRT2_FROM = 20260902
   integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HOOKE = 1
   integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HERTZ = 2
   integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_COEFF_RESTITUTION = 3

@@ -305,7 +305,7 @@ fn constructor_statuses() {
     );
     assert_eq!(
         run(&|o| unsafe { dc_pair_hertz(1e9, 0.7, 1e9, 0.3, 0.5, DC_END_FORCE, o) }),
-        DC_ERR_NOT_POSITIVE
+        DC_ERR_POISSON_RANGE
     );
     assert_eq!(
         run(&|o| unsafe { dc_pair_hertz(1e9, 0.3, 1e9, 0.3, 1.5, DC_END_FORCE, o) }),

@@ -415,12 +415,12 @@ mod tests {
                 LammpsCoeffRestitution,
             ),
         ] {
-            assert_eq!(b.for_lammps_release(2025_07_22), Ok(old));
-            assert_eq!(b.for_lammps_release(2026_09_02), Ok(new));
-            assert_eq!(b.for_lammps_release(2026_01_01), Err(Error::BuiltinVersion));
+            assert_eq!(b.for_lammps_release(20250722), Ok(old));
+            assert_eq!(b.for_lammps_release(20260902), Ok(new));
+            assert_eq!(b.for_lammps_release(20260101), Err(Error::BuiltinVersion));
         }
         assert_eq!(
-            LiggghtsHertz.for_lammps_release(2026_09_02),
+            LiggghtsHertz.for_lammps_release(20260902),
             Err(Error::BuiltinModel)
         );
         // The value for a target differs by release: typing the old release's value into the

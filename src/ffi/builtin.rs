@@ -328,34 +328,34 @@ mod tests {
         let mut m = -1;
         // SAFETY: valid pointer to a local, or NULL.
         unsafe {
-            assert_eq!(dc_builtin_for_lammps_release(4, 2026_09_02, &mut m), DC_OK);
+            assert_eq!(dc_builtin_for_lammps_release(4, 20260902, &mut m), DC_OK);
             assert_eq!(m, DC_BUILTIN_LAMMPS_TSUJI_HERTZ_SQRT2);
-            assert_eq!(dc_builtin_for_lammps_release(9, 2024_08_29, &mut m), DC_OK);
+            assert_eq!(dc_builtin_for_lammps_release(9, 20240829, &mut m), DC_OK);
             assert_eq!(m, DC_BUILTIN_LAMMPS_TSUJI_HERTZ);
-            assert_eq!(dc_builtin_for_lammps_release(5, 2027_01_01, &mut m), DC_OK);
+            assert_eq!(dc_builtin_for_lammps_release(5, 20270101, &mut m), DC_OK);
             assert_eq!(m, DC_BUILTIN_LAMMPS_TSUJI_HOOKE_SQRT2);
-            assert_eq!(dc_builtin_for_lammps_release(3, 2026_09_02, &mut m), DC_OK);
+            assert_eq!(dc_builtin_for_lammps_release(3, 20260902, &mut m), DC_OK);
             assert_eq!(m, DC_BUILTIN_LAMMPS_COEFF_RESTITUTION);
             m = -1;
             assert_eq!(
-                dc_builtin_for_lammps_release(4, 2026_02_11, &mut m),
+                dc_builtin_for_lammps_release(4, 20260211, &mut m),
                 DC_ERR_BUILTIN_VERSION
             );
             assert_eq!(
-                dc_builtin_for_lammps_release(4, 2026_02_30, &mut m),
+                dc_builtin_for_lammps_release(4, 20260230, &mut m),
                 DC_ERR_BUILTIN_VERSION
             );
             assert_eq!(
-                dc_builtin_for_lammps_release(2, 2026_09_02, &mut m),
+                dc_builtin_for_lammps_release(2, 20260902, &mut m),
                 DC_ERR_BUILTIN_MODEL
             );
             assert_eq!(
-                dc_builtin_for_lammps_release(0, 2026_09_02, &mut m),
+                dc_builtin_for_lammps_release(0, 20260902, &mut m),
                 DC_ERR_BUILTIN_MODEL
             );
             assert_eq!(m, -1, "untouched on error");
             assert_eq!(
-                dc_builtin_for_lammps_release(4, 2026_09_02, core::ptr::null_mut()),
+                dc_builtin_for_lammps_release(4, 20260902, core::ptr::null_mut()),
                 DC_ERR_NULL_POINTER
             );
         }
