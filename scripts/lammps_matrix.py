@@ -96,8 +96,9 @@ def install_debian(logdir):
     inc = os.path.join(prefix, "usr", "include", "lammps")
     missing = missing_headers(inc)
     if missing:
-        rc, out = sh(["apt-get", "source", "--print-uris", "lammps"], os.path.join(logdir, "apt-source.log"), timeout=120)
-        src = ("apt-get source: " + last_line(out)) if rc != 0 else "source package not tried"
+        rc, out = sh(["apt-get", "source", "--print-uris", "lammps"], os.path.join(logdir, "apt-source.log"),
+                     timeout=120)
+        src = ("apt-get source: " + last_line(out)) if rc != 0 else "the source package is there (not built)"
         raise Unavailable("Debian liblammps-dev %s lacks %s (included by LAMMPS' own %s); %s"
                           % (ver, ", ".join(sorted(missing)), ", ".join(sorted(set(sum(missing.values(), [])))), src))
     raise Unavailable("Debian build not wired up (headers complete: extend install_debian)")
