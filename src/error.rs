@@ -52,6 +52,13 @@ pub enum Error {
     /// A simulator release that is not a date or whose formula is not known (see
     /// [`crate::builtin::lammps::release_scale`]).
     BuiltinVersion,
+    /// An integrator code other than `DC_INTEGRATOR_*`.
+    Integrator,
+    /// The normal law has no step-aware form (viscoelastic, adhesive DMT).
+    StepUnsupported,
+    /// The host's explicit step cannot realise this restitution with the step-aware damping
+    /// (strong damping at steps near t_H/10).
+    StepUnreachable,
     /// A fit got fewer than two points.
     FitTooFew,
     /// A fit's data cannot determine the model: all speeds equal, or all weights zero.

@@ -23,7 +23,7 @@ use super::vec3::{
     V3, add, all_finite, all_positive, bits_finite, cross, dot, finite_bits, no_nan, normal_vector,
     scale, sub,
 };
-use super::{rolling_constant, rolling_epsd, twisting_sds};
+use super::{rolling_constant, rolling_epsd, step_exact, twisting_sds};
 use crate::Error;
 use crate::force::pair::{Consts, Law, Visit, eval};
 use crate::force::registry::{dispatch, normal_force_raw};
@@ -366,6 +366,25 @@ fn twisting_pass(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_
     }
 }
 
+/// Pass 1b of a step-aware model: the normal force of each contact in contact replaced by the
+/// step-aware one ([`step_exact::contact_normal`], as the scalar path computes it).
+#[inline(never)]
+fn step_pass(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_>, at: usize) {
+    let it = states(b)
+        .zip(o.f_n.iter_mut().zip(o.force.iter_mut()))
+        .zip(o.history.chunks_exact_mut(o.stride));
+    for ((s, (fo, fv)), h) in it {
+        if !(s.overlap > 0.0) {
+            continue;
+        }
+        let Some(slot) = h.get_mut(at) else { continue };
+        let k = Kin::of(&s);
+        let f = step_exact::contact_normal(m, &k, dt, slot);
+        *fo = f;
+        *fv = normal_vector(f, k.n);
+    }
+}
+
 /// Final pass: the current normal becomes the stored one; separated contacts start afresh.
 fn frame_pass(m: &ContactModel, b: &BatchIn<'_>, o: &mut BatchOut<'_>) {
     let len = m.layout.len;
@@ -380,7 +399,7 @@ fn frame_pass(m: &ContactModel, b: &BatchIn<'_>, o: &mut BatchOut<'_>) {
     for ((n, &d), h) in it {
         let Some(h) = h.get_mut(..len) else { continue };
         if d > 0.0 {
-            if let Some(hn) = h.get_mut(0..3) {
+            if let Some(hn) = h.get_mut(0..3).filter(|_| m.layout.has_normal()) {
                 hn.copy_from_slice(&n[..]);
             }
         } else {
@@ -428,7 +447,7 @@ fn check_call(
 }
 
 fn needs_torque(m: &ContactModel) -> bool {
-    m.layout.len > 0 || m.rolling != select::ROLLING_NONE
+    m.layout.has_normal() || m.rolling != select::ROLLING_NONE
 }
 
 /// Every state and history value valid? The status of the first bad state (states first, then
@@ -479,6 +498,9 @@ fn compute(
         },
     )
     .ok_or(Error::ContactModelInvalid)?;
+    if let Some(at) = m.layout.step {
+        step_pass(m, inp, dt, out, at);
+    }
     {
         for t in [out.torque1.as_deref_mut(), out.torque2.as_deref_mut()]
             .into_iter()
@@ -763,7 +785,7 @@ pub fn contact_force_batch_fused(
     out: &mut BatchOut<'_>,
 ) -> Result<Option<(usize, Error)>, Error> {
     check_call(m, inp, dt, out)?;
-    if !needs_torque(m) {
+    if !needs_torque(m) && !m.step.on() {
         return normal_only_fused(m, inp, dt, out);
     }
     let n = inp.overlap.len();

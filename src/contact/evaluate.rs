@@ -8,7 +8,7 @@ use super::tangential::{TangentialOut, step};
 use super::tangential_linear::Linear;
 use super::tangential_mindlin::Mindlin;
 use super::vec3::{V3, add, all_finite, cross, none_negative, normal_vector, scale, sub};
-use super::{rolling_constant, rolling_epsd, twisting_sds};
+use super::{rolling_constant, rolling_epsd, step_exact, twisting_sds};
 use crate::Error;
 use crate::force::registry::{needs, normal_force_raw};
 
@@ -52,6 +52,7 @@ pub(crate) fn check_model(m: &ContactModel) -> Result<(), Error> {
             m.eta_tw,
         ],
         m.layout,
+        m.step.on(),
     )
 }
 
@@ -65,6 +66,7 @@ pub(crate) fn check_model_parts(
     sel: [i32; 4],
     consts: &[f64; 13],
     layout: super::model::Layout,
+    step: bool,
 ) -> Result<(), Error> {
     let [tangential, rolling, twisting, carry] = sel;
     needs(kernel).ok_or(Error::ContactModelInvalid)?;
@@ -79,7 +81,7 @@ pub(crate) fn check_model_parts(
     // Integer reductions instead of a test and a branch per value (this runs on every call).
     let consts_ok = all_finite(consts) & none_negative(consts);
     let [.., kt, _, kappa, _, _, _, _, _, _] = *consts;
-    let layout_ok = layout == super::model::Layout::of(tangential, rolling, twisting)
+    let layout_ok = layout == super::model::Layout::of_model(tangential, rolling, twisting, step)
         && layout.len <= HISTORY_MAX;
     if !(codes_ok && consts_ok && layout_ok && kappa > 0.0) {
         return Err(Error::ContactModelInvalid);
@@ -142,8 +144,8 @@ pub(crate) fn evaluate(
 ) -> ContactForce {
     let k = Kin::of(s);
     let pair = &m.normal;
-    let f = normal_force_raw(pair.kernel, pair.consts, k.d, k.vn, k.r_eff, k.m_eff);
     if !(s.overlap > 0.0) {
+        let f = normal_force_raw(pair.kernel, pair.consts, k.d, k.vn, k.r_eff, k.m_eff);
         // Not touching: the history is reset so that a new contact starts fresh; only an
         // adhesive normal law still acts (no tangential, rolling or twisting force).
         *h = [0.0; HISTORY_MAX];
@@ -153,11 +155,15 @@ pub(crate) fn evaluate(
             ..ContactForce::default()
         };
     }
+    let f = match m.layout.step.and_then(|at| h.get_mut(at)) {
+        Some(slot) => step_exact::contact_normal(m, &k, dt, slot),
+        None => normal_force_raw(pair.kernel, pair.consts, k.d, k.vn, k.r_eff, k.m_eff),
+    };
     let mut out = ContactForce {
         fn_: f,
         ..ContactForce::default()
     };
-    if m.layout.len == 0 && m.rolling == select::ROLLING_NONE {
+    if !m.layout.has_normal() && m.rolling == select::ROLLING_NONE {
         out.force = normal_vector(f, k.n);
         return out;
     }
@@ -165,7 +171,7 @@ pub(crate) fn evaluate(
     // it (the tangential spring or the EPSD rolling torque).
     let frame = (m.layout.tangential.is_some() || m.layout.rolling.is_some())
         .then(|| Kin::frame(s, get3(h, 0), dt, m.carry));
-    if m.layout.len > 0 {
+    if m.layout.has_normal() {
         put3(h, 0, k.n);
     }
     // Operations in the order of the batch passes, so that both give the same bits (down to

@@ -15,6 +15,7 @@
 //!   the damping calibrated from a tangential restitution; laws [`tangential_linear`]
 //!   (Cundall–Strack) and [`tangential_mindlin`] (k_t = 8 G* a).
 //! * [`rolling_constant`], [`rolling_epsd`]: rolling resistance; [`twisting_sds`]: twisting.
+//! * [`step_exact`]: the normal damping corrected for the host's explicit step.
 //! * [`evaluate`]: one contact through every stage; [`batch`]: structure-of-arrays batches.
 
 pub mod batch;
@@ -25,6 +26,7 @@ pub mod model;
 pub mod rolling_constant;
 pub mod rolling_epsd;
 pub mod spec;
+pub mod step_exact;
 pub mod tangential;
 pub mod tangential_linear;
 pub mod tangential_mindlin;

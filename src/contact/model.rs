@@ -33,10 +33,11 @@ pub mod select {
 }
 
 /// Doubles per contact of the largest model: normal of the last step (3), tangential spring (3),
-/// rolling spring torque (3), twisting spring torque (1). (C: `DC_CONTACT_HISTORY_MAX`.)
+/// rolling spring torque (3), twisting spring torque (1), step-aware damping state (1).
+/// (C: `DC_CONTACT_HISTORY_MAX`.)
 ///
 /// cbindgen:ignore
-pub const HISTORY_MAX: usize = 10;
+pub const HISTORY_MAX: usize = 11;
 
 /// Where each sub-model keeps its state in the caller's history array (offsets in doubles).
 /// Only the parts a model uses are present, so a model's history is as short as it can be.
@@ -50,6 +51,9 @@ pub struct Layout {
     pub rolling: Option<usize>,
     /// Offset of the twisting spring torque [N m] (1 double), if any.
     pub twisting: Option<usize>,
+    /// Offset of the step-aware damping state (1 double: 0 fresh, ±R), if the model is
+    /// step-aware ([`super::step_exact`]); always last.
+    pub step: Option<usize>,
 }
 
 impl Layout {
@@ -75,7 +79,28 @@ impl Layout {
             tangential: t,
             rolling: r,
             twisting: tw,
+            step: None,
         }
+    }
+
+    /// The layout of a model with the given selectors, step-aware (`step`) or not.
+    pub fn of_model(tangential: i32, rolling: i32, twisting: i32, step: bool) -> Layout {
+        let l = Layout::of(tangential, rolling, twisting);
+        if step {
+            Layout {
+                len: l.len + 1,
+                step: Some(l.len),
+                ..l
+            }
+        } else {
+            l
+        }
+    }
+
+    /// True when the history starts with the normal of the last step (vector springs present).
+    #[inline(always)]
+    pub fn has_normal(&self) -> bool {
+        self.tangential.is_some() || self.rolling.is_some() || self.twisting.is_some()
     }
 }
 
@@ -114,4 +139,6 @@ pub struct ContactModel {
     pub eta_tw: f64,
     /// History layout.
     pub layout: Layout,
+    /// The step-aware damping (off unless `dc_contact_model_set_step` was called).
+    pub step: super::step_exact::StepExact,
 }

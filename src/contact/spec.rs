@@ -237,6 +237,7 @@ pub fn contact_model(s: &ContactSpec) -> Result<ContactModel, Error> {
         k_tw: 0.0,
         eta_tw: 0.0,
         layout: Layout::of(s.tangential, s.rolling, s.twisting),
+        step: super::step_exact::StepExact::default(),
     };
     if !matches!(s.carry, select::CARRY_ROTATE | select::CARRY_PROJECT) {
         return Err(Error::SpecModel);

@@ -83,6 +83,15 @@ pub enum dc_status {
     /// A LAMMPS release date that is not a date YYYYMMDD, or whose damping tsuji formula is not
     /// known: eta up to 22 Jul 2025, eta*sqrt(2) from 2 Sep 2026, unknown in between.
     DC_ERR_BUILTIN_VERSION = 6134,
+    /// An integrator code other than DC_INTEGRATOR_VELOCITY_VERLET or
+    /// DC_INTEGRATOR_SYMPLECTIC_EULER.
+    DC_ERR_INTEGRATOR = 6135,
+    /// The model's normal law has no step-aware form (viscoelastic, DMT): see
+    /// dc_contact_model_set_step.
+    DC_ERR_STEP_UNSUPPORTED = 6136,
+    /// The host's explicit step cannot realise this restitution with the step-aware damping
+    /// (strong damping, e well below 0.1, at steps near t_H/10).
+    DC_ERR_STEP_UNREACHABLE = 6137,
     /// An internal error was caught at the boundary (not expected; please report).
     DC_ERR_INTERNAL = 6199,
 }
@@ -138,6 +147,13 @@ impl dc_status {
             DC_ERR_BUILTIN_VERSION => {
                 c"unknown LAMMPS release: known are YYYYMMDD up to 20250722 (damping tsuji eta) and from 20260902 (eta*sqrt(2))"
             }
+            DC_ERR_INTEGRATOR => {
+                c"integrator must be DC_INTEGRATOR_VELOCITY_VERLET or DC_INTEGRATOR_SYMPLECTIC_EULER"
+            }
+            DC_ERR_STEP_UNSUPPORTED => c"the model's normal law has no step-aware form",
+            DC_ERR_STEP_UNREACHABLE => {
+                c"the explicit step cannot realise this restitution (step-aware damping)"
+            }
             DC_ERR_INTERNAL => c"internal error caught at the C boundary (please report)",
         }
     }
@@ -171,6 +187,9 @@ impl dc_status {
             Error::FitTooFew => DC_ERR_FIT_TOO_FEW,
             Error::FitDegenerate => DC_ERR_FIT_DEGENERATE,
             Error::BuiltinVersion => DC_ERR_BUILTIN_VERSION,
+            Error::Integrator => DC_ERR_INTEGRATOR,
+            Error::StepUnsupported => DC_ERR_STEP_UNSUPPORTED,
+            Error::StepUnreachable => DC_ERR_STEP_UNREACHABLE,
         }
     }
 }
@@ -215,6 +234,9 @@ mod codes {
     pub const DC_ERR_FIT_TOO_FEW: i32 = dc_status::DC_ERR_FIT_TOO_FEW as i32;
     pub const DC_ERR_FIT_DEGENERATE: i32 = dc_status::DC_ERR_FIT_DEGENERATE as i32;
     pub const DC_ERR_BUILTIN_VERSION: i32 = dc_status::DC_ERR_BUILTIN_VERSION as i32;
+    pub const DC_ERR_INTEGRATOR: i32 = dc_status::DC_ERR_INTEGRATOR as i32;
+    pub const DC_ERR_STEP_UNSUPPORTED: i32 = dc_status::DC_ERR_STEP_UNSUPPORTED as i32;
+    pub const DC_ERR_STEP_UNREACHABLE: i32 = dc_status::DC_ERR_STEP_UNREACHABLE as i32;
     pub const DC_ERR_INTERNAL: i32 = dc_status::DC_ERR_INTERNAL as i32;
 }
 pub use codes::*;
@@ -224,6 +246,12 @@ pub const DC_END_OVERLAP: i32 = 0;
 /// Contact ends when the total normal force first reaches zero while unloading (solvers that clamp
 /// attractive normal forces to zero: LIGGGHTS limitForce, LAMMPS limit_damping, Chrono, YADE).
 pub const DC_END_FORCE: i32 = 1;
+
+/// Velocity Verlet in the LAMMPS/LIGGGHTS order: half kick, drift, the force from the new
+/// position and the half-step velocity, half kick (dc_contact_model_set_step).
+pub const DC_INTEGRATOR_VELOCITY_VERLET: i32 = 0;
+/// Symplectic Euler: the force from (x, v), then v += dt f/m, then x += dt v.
+pub const DC_INTEGRATOR_SYMPLECTIC_EULER: i32 = 1;
 
 const UNKNOWN: &CStr = c"unknown demcontact status";
 
@@ -262,7 +290,7 @@ mod tests {
                 assert_ne!(a.message(), b.message());
             }
         }
-        for code in [-1, 1, 6100, 6115, 6135, 6200, i32::MIN, i32::MAX] {
+        for code in [-1, 1, 6100, 6115, 6138, 6200, i32::MIN, i32::MAX] {
             assert_eq!(dc_status_known(code), 0, "{code}");
             // SAFETY: dc_status_str returns a static NUL-terminated string.
             let s = unsafe { CStr::from_ptr(dc_status_str(code)) };

@@ -1,0 +1,446 @@
+//! The step-aware normal damping: the target restitution realised by the host's explicit step
+//! (velocity Verlet in the LAMMPS order, or symplectic Euler: one map), not only by the
+//! continuous contact. Derivation and study: docs/timestep.md, "Step-aware calibration".
+//!
+//! Three parts, each acting only on the dashpot of a Tsuji power-law (or Hertz) normal law:
+//! * (A) the damping coefficient α·R(h), h = dt/t_H(v_imp) the step in units of the elastic
+//!   contact duration at the impact speed; R(h) = 1 + h·(c0 + c1 h + c2 h² + c3 h³ + c4 h⁴),
+//!   fitted by [`calibrate`] to R solved on the discrete map at 16 steps h = 1/128 … 1/10 for the
+//!   model's own (p, criterion, e);
+//! * (B) the first contact step's dashpot replaced by the Hurwitz-zeta midpoint defect
+//!   `−F_d(v)·a^(−β)·ζ(−β, 1 + a)`, a = δ₁/(v dt) (the onset falls between steps);
+//! * (C) (DC_END_OVERLAP only) the same at the predicted last contact step, and one evaluation
+//!   without force if the pair still separates after it.
+//!
+//! History: one double per contact, 0 for a fresh contact, then +R in contact, −R on the step
+//! after (C) fired.
+
+use super::kinematics::Kin;
+use super::model::{ContactModel, Layout};
+use crate::force::pair::{Consts, MODEL_HERTZ, MODEL_POWERLAW};
+use crate::force::registry::{normal_force_raw, unclamped};
+use crate::numerics::pow_dd::pow_dd;
+use crate::{EndCriterion, Error};
+
+/// Nodes of the fit: h = 1/N (N = t_H/dt), as in the study's table.
+pub(crate) const FIT_N: [f64; 16] = [
+    10.0, 11.0, 12.0, 13.0, 14.0, 16.0, 18.0, 22.0, 26.0, 30.0, 36.0, 44.0, 56.0, 72.0, 96.0, 128.0,
+];
+/// Onset phases of the phase mean that [`calibrate`] solves.
+pub(crate) const PHASES: usize = 64;
+/// The largest h the correction is designed for (t_H/10); larger h use R(1/10).
+pub const H_MAX: f64 = 0.1;
+/// R is kept within these bounds (the fit is not designed beyond its nodes).
+const R_MIN: f64 = 0.25;
+const R_MAX: f64 = 2.0;
+
+/// What the model stores (the six reserved doubles of `dc_contact_model`): `scale` =
+/// dt / (2 I_p ((p+1)/2)^(1/(p+1))) (0: off) and the coefficients of R(h).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct StepExact {
+    /// dt over the t_H prefactor [s]; 0 when the model is not step-aware.
+    pub scale: f64,
+    /// R(h) = 1 + h (c0 + c1 h + c2 h² + c3 h³ + c4 h⁴).
+    pub coef: [f64; 5],
+}
+
+impl StepExact {
+    /// True when set by `dc_contact_model_set_step`.
+    #[inline(always)]
+    pub fn on(&self) -> bool {
+        self.scale > 0.0
+    }
+}
+
+/// x^β for 0 ≤ β ≤ 1 (x^0 = 1 exactly; [`pow_dd`] needs β > 0).
+#[inline(always)]
+fn pow_b(x: f64, beta: f64) -> f64 {
+    if beta > 0.0 { pow_dd(x, beta) } else { 1.0 }
+}
+
+/// The Hurwitz zeta function ζ(−β, x) for 0 ≤ β ≤ 1, x ≥ 1: Euler–Maclaurin after 4 terms with
+/// 4 Bernoulli corrections (5 powers). Error < 1e-9 absolute on that range (tests below, against
+/// a direct summation with many more terms).
+#[inline(always)]
+pub(crate) fn hurwitz_neg(beta: f64, x: f64) -> f64 {
+    let mut acc = pow_b(x, beta) + pow_b(x + 1.0, beta) + pow_b(x + 2.0, beta);
+    acc += pow_b(x + 3.0, beta);
+    let xx = x + 4.0;
+    let xb = pow_b(xx, beta);
+    acc += -(xx * xb) / (1.0 + beta) + 0.5 * xb;
+    // B_2j/(2j)!: 1/12, −1/720, 1/30240, −1/1209600; Pochhammer-type products of s = −β.
+    let s = -beta;
+    let inv = 1.0 / xx;
+    let inv2 = inv * inv;
+    let mut poch = s;
+    let mut pw = xb * inv; // X^(β−1)
+    acc += (1.0 / 12.0) * poch * pw;
+    poch *= (s + 1.0) * (s + 2.0);
+    pw *= inv2;
+    acc += (-1.0 / 720.0) * poch * pw;
+    poch *= (s + 3.0) * (s + 4.0);
+    pw *= inv2;
+    acc += (1.0 / 30240.0) * poch * pw;
+    poch *= (s + 5.0) * (s + 6.0);
+    pw *= inv2;
+    acc += (-1.0 / 1_209_600.0) * poch * pw;
+    acc
+}
+
+/// R(h), h clamped to [0, H_MAX], R to [R_MIN, R_MAX].
+#[inline(always)]
+pub(crate) fn r_of_h(c: &[f64; 5], h: f64) -> f64 {
+    let h = if h < H_MAX { h } else { H_MAX };
+    let h = if h > 0.0 { h } else { 0.0 };
+    let [c0, c1, c2, c3, c4] = *c;
+    let r = 1.0 + h * (c0 + h * (c1 + h * (c2 + h * (c3 + h * c4))));
+    r.clamp(R_MIN, R_MAX)
+}
+
+/// One contact's normal-force inputs for the step-aware kernel.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct StepIn {
+    /// Overlap δ > 0.
+    pub d: f64,
+    /// Overlap rate (> 0 approaching): the half-step velocity in velocity Verlet.
+    pub v: f64,
+    /// Effective mass.
+    pub m: f64,
+    /// Host step.
+    pub dt: f64,
+    /// Damping exponent β = (p − 1)/2.
+    pub beta: f64,
+    /// DC_END_OVERLAP (end handling (C) on) or DC_END_FORCE (clamp at zero).
+    pub criterion: EndCriterion,
+}
+
+/// The step-aware normal force of one contact in contact (δ > 0), repulsive positive.
+/// `raw(v)` is the law's unclamped force at this overlap with overlap rate v and the damping
+/// already scaled by R; `slot` is the contact's history double (0 fresh, +R, −R flagged);
+/// `r_new` gives R for the impact speed v (called on the first contact step only).
+#[inline(always)]
+pub(crate) fn normal_force(
+    x: StepIn,
+    slot: &mut f64,
+    r_new: impl FnOnce(f64) -> f64,
+    raw: impl Fn(f64, f64) -> f64,
+) -> f64 {
+    let first = *slot == 0.0;
+    if first {
+        *slot = if x.v > 0.0 { r_new(x.v) } else { 1.0 };
+    }
+    let r = slot.abs();
+    let flagged = *slot < 0.0;
+    let dt = x.dt;
+    let f = if first && x.v > 0.0 {
+        // (B) onset: the dashpot of the first kick.
+        let fel = raw(r, 0.0);
+        let fdv = raw(r, x.v) - fel;
+        let a = x.d / (x.v * dt);
+        fel - fdv / pow_b(a, x.beta) * hurwitz_neg(x.beta, 1.0 + a)
+    } else {
+        raw(r, x.v)
+    };
+    match x.criterion {
+        EndCriterion::Force => {
+            if f > 0.0 {
+                f
+            } else {
+                0.0
+            }
+        }
+        EndCriterion::Overlap => {
+            if flagged {
+                // (C)'s flag: one evaluation only.
+                *slot = r;
+                return if x.v < 0.0 { 0.0 } else { f };
+            }
+            let vp = x.v - dt * f / x.m;
+            if !first && x.d + dt * vp <= 0.0 {
+                // (C) predicted last contact step.
+                let fel = raw(r, 0.0);
+                let fdp = raw(r, vp) - fel;
+                let b = x.d / (vp.abs() * dt);
+                *slot = -r;
+                fel - fdp / pow_b(b, x.beta) * hurwitz_neg(x.beta, 1.0 + b)
+            } else {
+                f
+            }
+        }
+    }
+}
+
+/// The t_H prefactor 2 I_p ((p+1)/2)^(1/(p+1)), I_p = √π Γ(1 + 1/(p+1))/Γ(½ + 1/(p+1)):
+/// t_H(v) = prefactor · (m v²/k)^(1/(p+1)) / v (elastic contact duration at impact speed v).
+pub(crate) fn t_h_prefactor(p: f64) -> f64 {
+    let q = 1.0 / (p + 1.0);
+    let ip = core::f64::consts::PI.sqrt() * (libm::lgamma(1.0 + q) - libm::lgamma(0.5 + q)).exp();
+    2.0 * ip * libm::pow((p + 1.0) / 2.0, q)
+}
+
+/// h = dt/t_H(v) from the stored scale = dt/prefactor, for stiffness k (F = k δ^p) and mass m.
+#[inline(always)]
+pub(crate) fn h_of(scale: f64, p: f64, m: f64, k: f64, v: f64) -> f64 {
+    scale * v / pow_dd(m * v * v / k, 1.0 / (p + 1.0))
+}
+
+/// The phase-mean realised e of one collision (m = k = v0 = 1, F = δ^p + α R δ^β δ', velocity
+/// Verlet in the LAMMPS order through [`normal_force`]) at step dt = t_H/n.
+fn mean_e(p: f64, alpha: f64, criterion: EndCriterion, n: f64, r: f64) -> f64 {
+    let beta = (p - 1.0) / 2.0;
+    let dt = t_h_prefactor(p) / n;
+    let mut sum = 0.0;
+    for j in 0..PHASES {
+        let mut d = -(j as f64) / PHASES as f64 * dt;
+        let (mut v, mut acc, mut slot, mut touched) = (1.0f64, 0.0f64, 0.0f64, false);
+        let mut e = 0.0;
+        for _ in 0..100_000 {
+            let vh = v + 0.5 * dt * acc;
+            d += dt * vh;
+            let f = if d > 0.0 {
+                touched = true;
+                let x = StepIn {
+                    d,
+                    v: vh,
+                    m: 1.0,
+                    dt,
+                    beta,
+                    criterion,
+                };
+                let s = pow_b(d, beta);
+                normal_force(
+                    x,
+                    &mut slot,
+                    |_| r,
+                    |rr, vv| d * s * s + alpha * rr * s * vv,
+                )
+            } else {
+                slot = 0.0;
+                0.0
+            };
+            acc = -f;
+            v = vh + 0.5 * dt * acc;
+            if touched && d <= 0.0 {
+                e = -v;
+                break;
+            }
+        }
+        sum += e;
+    }
+    sum / PHASES as f64
+}
+
+/// R with phase-mean e = target at dt = t_H/n, on the branch through R → 1; None when the
+/// explicit step cannot reach the target in R ∈ [R_MIN, R_MAX].
+fn solve_r(p: f64, alpha: f64, criterion: EndCriterion, e: f64, n: f64) -> Option<f64> {
+    let f = |r: f64| mean_e(p, alpha, criterion, n, r) - e;
+    // More damping lowers e: f decreases in R. Bracket from R = 1 outwards: lo has f ≥ 0,
+    // hi has f < 0.
+    let f1 = f(1.0);
+    let factor = if f1 < 0.0 { 0.9 } else { 1.1 };
+    let mut prev = (1.0, f1);
+    let (mut lo, mut hi) = loop {
+        let r = prev.0 * factor;
+        if !(R_MIN..=R_MAX).contains(&r) {
+            return None;
+        }
+        let next = (r, f(r));
+        if (next.1 >= 0.0) != (prev.1 >= 0.0) {
+            break if next.1 >= 0.0 {
+                (next, prev)
+            } else {
+                (prev, next)
+            };
+        }
+        prev = next;
+    };
+    // Illinois false position on [lo, hi] (f(lo) ≥ 0 > f(hi)).
+    let mut side = 0;
+    for _ in 0..60 {
+        let r = (lo.0 * hi.1 - hi.0 * lo.1) / (hi.1 - lo.1);
+        let fr = f(r);
+        if fr == 0.0 || (hi.0 - lo.0).abs() < 1e-13 {
+            return Some(r);
+        }
+        if fr > 0.0 {
+            lo = (r, fr);
+            if side == 1 {
+                hi.1 *= 0.5;
+            }
+            side = 1;
+        } else {
+            hi = (r, fr);
+            if side == -1 {
+                lo.1 *= 0.5;
+            }
+            side = -1;
+        }
+        if (hi.0 - lo.0).abs() < 1e-12 {
+            break;
+        }
+    }
+    Some(0.5 * (lo.0 + hi.0))
+}
+
+/// The coefficients of R(h) for a Tsuji law of exponent p and damping α (from the target e),
+/// solved on the discrete map at the 16 nodes and fitted by least squares in (R − 1)/h. At
+/// least 8 nodes must be reachable (from the smallest h up); otherwise None.
+pub(crate) fn calibrate(p: f64, alpha: f64, criterion: EndCriterion, e: f64) -> Option<[f64; 5]> {
+    use nalgebra::{SMatrix, SVector};
+    let mut a = SMatrix::<f64, 16, 5>::zeros();
+    let mut y = SVector::<f64, 16>::zeros();
+    let mut rows = 0;
+    // From the smallest h up: stop at the first unreachable node.
+    for &n in FIT_N.iter().rev() {
+        let Some(r) = solve_r(p, alpha, criterion, e, n) else {
+            break;
+        };
+        let h = 1.0 / n;
+        let mut pw = 1.0;
+        for c in 0..5 {
+            a[(rows, c)] = pw;
+            pw *= h;
+        }
+        y[rows] = (r - 1.0) / h;
+        rows += 1;
+    }
+    if rows < 8 {
+        return None;
+    }
+    // Unused rows stay zero (they add nothing to the normal equations).
+    let ata = a.transpose() * a;
+    let aty = a.transpose() * y;
+    let sol = ata.cholesky()?.solve(&aty);
+    let c = [sol[0], sol[1], sol[2], sol[3], sol[4]];
+    c.iter().all(|x| x.is_finite()).then_some(c)
+}
+
+/// Integrator codes (`DC_INTEGRATOR_*`): one map, the same correction.
+///
+/// cbindgen:ignore
+pub mod integrator {
+    /// Velocity Verlet, LAMMPS order (the force from the new x and the half-step v).
+    pub const VELOCITY_VERLET: i32 = 0;
+    /// Symplectic Euler (the force from x, v; kick; drift).
+    pub const SYMPLECTIC_EULER: i32 = 1;
+}
+
+/// The model made step-aware for the host's step `dt` and integrator: checks, then the
+/// calibration of R(h) (reused when the model is already step-aware: it depends on p, the
+/// criterion and e only). An undamped law (α = 0) has no dashpot to correct: returned as it is.
+pub fn set_step(m: &ContactModel, dt: f64, integrator: i32) -> Result<ContactModel, Error> {
+    if !dt.is_finite() {
+        return Err(Error::NotFinite);
+    }
+    if !(dt > 0.0) {
+        return Err(Error::NotPositive);
+    }
+    if !matches!(
+        integrator,
+        integrator::VELOCITY_VERLET | integrator::SYMPLECTIC_EULER
+    ) {
+        return Err(Error::Integrator);
+    }
+    let pair = &m.normal;
+    if !matches!(pair.model, MODEL_POWERLAW | MODEL_HERTZ) {
+        return Err(Error::StepUnsupported);
+    }
+    if !(pair.alpha > 0.0) {
+        return Ok(*m);
+    }
+    if !(pair.e > 0.0 && pair.e < 1.0) {
+        return Err(Error::StepUnsupported);
+    }
+    let coef = if m.step.on() {
+        m.step.coef
+    } else {
+        calibrate(pair.p, pair.alpha, pair.criterion, pair.e).ok_or(Error::StepUnreachable)?
+    };
+    let scale = dt / t_h_prefactor(pair.p);
+    if !(scale.is_finite() && scale > 0.0) {
+        return Err(Error::ResultRange);
+    }
+    Ok(ContactModel {
+        step: StepExact { scale, coef },
+        layout: Layout::of_model(m.tangential, m.rolling, m.twisting, true),
+        ..*m
+    })
+}
+
+/// The step-aware normal force of one contact in contact (δ > 0) of a step-aware model;
+/// `slot` is its history double.
+#[inline(always)]
+pub(crate) fn contact_normal(m: &ContactModel, k: &Kin, dt: f64, slot: &mut f64) -> f64 {
+    let pair = &m.normal;
+    let kernel = unclamped(pair.kernel);
+    let x = StepIn {
+        d: k.d,
+        v: k.vn,
+        m: k.m_eff,
+        dt,
+        beta: 0.5 * (pair.p - 1.0),
+        criterion: pair.criterion,
+    };
+    let r_new = |v: f64| {
+        let kc = if pair.model == MODEL_HERTZ {
+            pair.consts.k * k.r_eff.sqrt()
+        } else {
+            pair.consts.k
+        };
+        r_of_h(&m.step.coef, h_of(m.step.scale, pair.p, k.m_eff, kc, v))
+    };
+    let raw = |r: f64, v: f64| {
+        let c = Consts {
+            c: pair.consts.c * r,
+            ..pair.consts
+        };
+        normal_force_raw(kernel, c, k.d, v, k.r_eff, k.m_eff)
+    };
+    normal_force(x, slot, r_new, raw)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// ζ(−β, x) by direct (compensated) summation of 200 terms plus the Euler–Maclaurin tail
+    /// with 3 corrections at X = 200 + x (remainder below 1e-14): an independent, much longer
+    /// evaluation than the kernel's 4 terms at X = 4 + x.
+    fn hurwitz_ref(beta: f64, x: f64) -> f64 {
+        let n = 200;
+        let (mut acc, mut comp) = (0.0f64, 0.0f64);
+        for k in 0..n {
+            let y = (k as f64 + x).powf(beta) - comp;
+            let t = acc + y;
+            comp = (t - acc) - y;
+            acc = t;
+        }
+        let xx = n as f64 + x;
+        let s = -beta;
+        acc += -xx.powf(1.0 + beta) / (1.0 + beta) + 0.5 * xx.powf(beta);
+        acc += s / 12.0 * xx.powf(beta - 1.0);
+        acc -= s * (s + 1.0) * (s + 2.0) / 720.0 * xx.powf(beta - 3.0);
+        acc += s * (s + 1.0) * (s + 2.0) * (s + 3.0) * (s + 4.0) / 30240.0 * xx.powf(beta - 5.0);
+        acc
+    }
+
+    #[test]
+    fn hurwitz_against_long_sum() {
+        let mut worst: f64 = 0.0;
+        for &beta in &[0.0, 0.1, 0.25, 0.5, 0.75, 1.0] {
+            for i in 0..=40 {
+                let x = 1.0 + i as f64 * 0.025;
+                worst = worst.max((hurwitz_neg(beta, x) - hurwitz_ref(beta, x)).abs());
+            }
+        }
+        assert!(worst < 1e-9, "worst {worst:e}");
+        // ζ(0, x) = 1/2 − x exactly in form.
+        assert!((hurwitz_neg(0.0, 1.3) - (0.5 - 1.3)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn t_h_prefactor_p1_is_pi() {
+        // p = 1: t_H = π √(m/k) for every speed: prefactor (m v²/k)^(1/2)/v = π.
+        assert!((t_h_prefactor(1.0) - core::f64::consts::PI).abs() < 1e-14);
+    }
+}
