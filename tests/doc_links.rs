@@ -84,7 +84,11 @@ fn broken_links(root: &Path, files: &[PathBuf]) -> (usize, Vec<String>) {
     let mut broken = Vec::new();
     for file in files {
         let text = std::fs::read_to_string(file).unwrap_or_default();
-        let name = file.strip_prefix(root).unwrap_or(file).display().to_string();
+        let name = file
+            .strip_prefix(root)
+            .unwrap_or(file)
+            .display()
+            .to_string();
         for line in prose_lines(&text) {
             for target in link_targets(line) {
                 let target = target.split_whitespace().next().unwrap_or_default();
@@ -130,7 +134,10 @@ fn every_relative_link_resolves() {
         "only {checked} relative links found: is the link parser broken?"
     );
     assert!(broken.is_empty(), "broken links:\n{}", broken.join("\n"));
-    println!("{} files, {checked} relative links, all resolve", files.len());
+    println!(
+        "{} files, {checked} relative links, all resolve",
+        files.len()
+    );
 }
 
 #[test]

@@ -39,7 +39,11 @@ fn quick_starts_quote_the_tested_programs() {
         ("README.md", "python/examples/quickstart.py"),
         ("docs/user/c_cpp.md", "examples_cpp/minimal.cpp"),
     ] {
-        let text = if doc == "README.md" { readme.clone() } else { read(root, doc) };
+        let text = if doc == "README.md" {
+            readme.clone()
+        } else {
+            read(root, doc)
+        };
         let src = read(root, file);
         assert!(text.contains(&src), "{doc} does not quote {file} verbatim");
     }
