@@ -73,9 +73,9 @@
 
 /* The full contact's per-contact helpers (vector algebra, frame carry, kinematics, sub-models,
  * checks): always inlined. Inside a host's large pair loop GCC otherwise keeps some of them out of
- * line (in LIGGGHTS' loop dci_carry and the normal-kernel switch stayed calls, 3-vectors passed
- * through memory; forcing them inline cut the LIGGGHTS scene's loop time by 11-18 %,
- * docs/simulators.md). Inlining changes no rounding (the products stay unfused as below), so no
+ * line (in LIGGGHTS' loop dci_carry and the normal-kernel switch stayed calls, with 3-vectors
+ * passed through memory, a measurable share of the scene's loop time: docs/simulators.md,
+ * "Wall time"). Inlining changes no rounding (the products stay unfused as below), so no
  * result. The attribute goes after `inline` and before __host__ __device__, where
  * GCC, clang (also in CUDA mode) and nvcc accept it; compilers without GNU attributes get
  * MSVC's __forceinline or a plain inline. */
@@ -923,10 +923,9 @@ DCI_ALWAYS_INLINE_FN int dci_fin(double s) { return s - s == 0.0; }
 DCI_ALWAYS_INLINE_FN double dci_sum3(const double a[3]) { return (a[0] + a[1]) + a[2]; }
 /* The history: copy n doubles from src to dst (dst may be NULL: no copy) and return their mask
  * (mask = 1) or their sum (mask = 0). n is a layout length (0, 4, 6, 7, 9, 10 for a valid
- * model): the switch gives each a constant trip count, which the compiler unrolls; loops over the
- * run-time n (copy in, mask, mask out, copy out) took ~10 % of the LAMMPS scene's perf samples,
- * and the unrolled copies cut its loop time by ~8 % (docs/simulators.md). Any other n takes the
- * loop. */
+ * model): the switch gives each a constant trip count, which the compiler unrolls, because loops
+ * over the run-time n (copy in, mask, mask out, copy out) were a hot spot of the LAMMPS scene's
+ * profile (docs/simulators.md, "Wall time"). Any other n takes the loop. */
 DCI_ALWAYS_INLINE_FN double dci_copy_sum_k(double *dst, const double *src, int n, int mask) {
     double s = 0.0;
     for (int i = 0; i < n; i++) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The two speed ratios issue 3 asks for, from `cargo bench --bench powerlaw`: the planned
+# The two speed ratios of the power-law calculus against its ODE reference, from `cargo bench --bench powerlaw`: the planned
 # force-end duration (plan level 2: measured 2.1e-11 from dc_contact_duration, asserted <= 5e-11
 # by tests/powerlaw_plan.rs) and the 1000-point trajectory, each against the adaptive
 # Dormand-Prince reference at the loosest tolerance reaching 1e-10 on the same quantity (asserted by

@@ -1,4 +1,4 @@
-//! Property tests of the builtin-correction and fit exports (issue 17), through the C ABI and the
+//! Property tests of the builtin-correction and fit exports, through the C ABI and the
 //! Rust API: for any bit pattern of the inputs no export panics or returns DC_ERR_INTERNAL,
 //! errors leave every output untouched, successes are finite; and on the valid domain the value
 //! to type round-trips through the builtin's forward map, the realised e is monotone in the typed

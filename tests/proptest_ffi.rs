@@ -121,7 +121,7 @@ proptest! {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Power-law calculus and viscoelastic exports (issue 8).
+// Power-law calculus and viscoelastic exports.
 
 /// Any bit pattern, or a value in a physically meaningful range (so that the valid branches are
 /// reached as often as the rejections).

@@ -1,6 +1,6 @@
-//! The README's `console` blocks ("Command-line tool `demcontact`") are real output: every
-//! `$ demcontact …` line is run with the built binary from the repository root and its standard
-//! output must equal the lines quoted under it, figure for figure. The one path the tool writes
+//! The `console` blocks of the README ("Command line") and of docs/user/cli.md are real output:
+//! every `$ demcontact …` line is run with the built binary from the repository root and its
+//! standard output must equal the lines quoted under it, figure for figure. The one path the tool writes
 //! (`--plot FILE`) is redirected to a temporary file, so the committed figure is not touched.
 //! Run: `cargo test --release --test readme_console`.
 #![cfg(feature = "cli")]
@@ -41,13 +41,18 @@ fn quoted_sessions(readme: &str) -> Vec<(Vec<String>, Vec<String>)> {
 #[test]
 fn readme_console_output_is_the_tools_output() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
-    let sessions = quoted_sessions(&readme);
-    assert!(
-        sessions.len() >= 4,
-        "found only {} sessions",
-        sessions.len()
-    );
+    let mut sessions = Vec::new();
+    // (file, the fewest sessions it quotes: a block lost in an edit fails here)
+    for (file, least) in [("README.md", 2), ("docs/user/cli.md", 3)] {
+        let text = std::fs::read_to_string(root.join(file)).unwrap();
+        let found = quoted_sessions(&text);
+        assert!(
+            found.len() >= least,
+            "{file}: found only {} sessions",
+            found.len()
+        );
+        sessions.extend(found);
+    }
     let plot = std::env::temp_dir().join(format!("dc_readme_{}.png", std::process::id()));
     let plot = plot.to_str().unwrap().to_owned();
     for (mut args, mut expected) in sessions {

@@ -212,7 +212,7 @@ costs one whole simulated collision; its error is the worst over 16 start phases
     Ok(())
 }
 
-/// Rows from the contact calculus (issue 3): δ_max in closed form, τ under the force end by
+/// Rows from the contact calculus: δ_max in closed form, τ under the force end by
 /// Jacobi–Clenshaw–Curtis quadrature at levels 0..=4 and under the overlap end in closed form
 /// (complex log-gamma), against the reference.
 fn calculus_rows(rows: &mut Vec<Row>) -> Res<()> {
@@ -288,7 +288,7 @@ fn calculus_rows(rows: &mut Vec<Row>) -> Res<()> {
     Ok(())
 }
 
-/// Rows from the viscoelastic module (issue 5): e(b) by the published series, the full-range
+/// Rows from the viscoelastic module: e(b) by the published series, the full-range
 /// Chebyshev tables and the reference integrator at several tolerances; truth = the reference at
 /// its default tolerance.
 fn viscoelastic_rows(rows: &mut Vec<Row>) -> Res<()> {

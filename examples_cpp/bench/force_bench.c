@@ -240,7 +240,7 @@ int main(int argc, char **argv) {
                best[1][v], best[1][v] / best[1][base]);
     }
     printf("\nratios: to the plain -O3 C loop of the same law (memory rows: to the Hertz one).\n\n");
-    /* The figures of issue 15's "Must show", from this run. */
+    /* The summary figures (ratios to the baselines of this run) quoted in docs/reference/benchmarks.md. */
     /* Memory traffic per contact of the Hertz batch: 4 loads + 1 store + the store's
      * write-allocate read = 48 bytes; of the copy, per double: 24 bytes (load, write-allocate,
      * store). The roofline is the copy's bandwidth applied to the batch's traffic. */

@@ -1,5 +1,5 @@
 #!/bin/sh
-# The LAMMPS quick start as a user runs it (README, docs/simulators.md "Install"):
+# The LAMMPS quick start as a user runs it (README, docs/user/lammps.md):
 #   lammps_quickstart.sh BUILD_DIR LMP DECK LIBDIR WORKDIR
 # installs BUILD_DIR into a scratch prefix (cmake --install), then runs the unmodified LMP on DECK
 # with only LAMMPS_PLUGIN_PATH=<prefix>/LIBDIR/demcontact set: no plugin load line, no

@@ -12,7 +12,7 @@ pub fn api_doc(header: &str) -> String {
     );
     o.push_str("(which cbindgen generates from the Rust sources); checked fresh by `cargo test --test bindings`.\n");
     o.push_str(
-        "Conventions shared by all functions are in the header's opening comment and the README.\n",
+        "Conventions shared by all functions are in the header's opening comment and docs/reference/status_codes.md.\n",
     );
     let mut doc: Vec<String> = Vec::new();
     let mut in_doc = false;

@@ -47,7 +47,7 @@ MASS = 4.0 / 3.0 * math.pi * R**3 * RHO
 def damping_cn(e, kn, m_reduced):
     """Contact damping cn [N s/m] realising e in YADE's clamped linear law, from demcontact."""
     corrected = getattr(dc, "builtin_yade_viscel_cn", None)
-    if corrected is not None:  # issue 17's corrected-builtin function, once merged
+    if corrected is not None:  # the library's corrected-builtin function, where this build has it
         return corrected(e, kn, m_reduced)
     # The law is the linear spring-dashpot F = kn d + alpha sqrt(m kn) vn with the force clamped:
     # alpha from the exact force-zero calibration at p = 1.
@@ -113,7 +113,7 @@ def main(targets):
             print(f"RESULT {scene} yade_tc_en {e:.6f} {run(scene, mat, dt):.9f}", flush=True)
             builtin_en = getattr(dc, "builtin_value_for_e", None)
             if builtin_en is not None and e >= 0.14:
-                # issue 17's corrected en for ViscElMat(tc, en): right where YADE's reduced mass
+                # the library's corrected en for ViscElMat(tc, en): right where YADE's reduced mass
                 # is the true one (two spheres), see the wall case in python/README.md.
                 en = builtin_en(dc.Builtin.YADE_VISCEL_EN, True, e)
                 mat = ViscElMat(tc=tau, en=en, et=1.0, frictionAngle=0.0, density=RHO)
