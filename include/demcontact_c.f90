@@ -10,6 +10,7 @@ module demcontact_c
   implicit none
   private :: ieee_value, ieee_quiet_nan
 
+  real(c_double), parameter :: H_MAX = 0.1_c_double
   integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HOOKE = 1
   integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HERTZ = 2
   integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_COEFF_RESTITUTION = 3
@@ -21,7 +22,7 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_TSUJI_HERTZ_SQRT2 = 9
   integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_TSUJI_HOOKE_SQRT2 = 10
   integer(c_int32_t), parameter :: DC_CONTACT_SPEC_VERSION = 1
-  integer(c_int32_t), parameter :: DC_CONTACT_HISTORY_MAX = 10
+  integer(c_int32_t), parameter :: DC_CONTACT_HISTORY_MAX = 11
   integer(c_int32_t), parameter :: DC_NORMAL_HERTZ = 1
   integer(c_int32_t), parameter :: DC_NORMAL_POWERLAW = 2
   integer(c_int32_t), parameter :: DC_NORMAL_LINEAR = 3
@@ -49,6 +50,8 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_LEVEL_MAX = 4
   integer(c_int32_t), parameter :: DC_END_OVERLAP = 0
   integer(c_int32_t), parameter :: DC_END_FORCE = 1
+  integer(c_int32_t), parameter :: DC_INTEGRATOR_VELOCITY_VERLET = 0
+  integer(c_int32_t), parameter :: DC_INTEGRATOR_SYMPLECTIC_EULER = 1
   integer(c_int32_t), parameter :: DC_DISPATCH_BASELINE = 0
   integer(c_int32_t), parameter :: DC_DISPATCH_AVX2 = 1
   integer(c_int32_t), parameter :: DC_DISPATCH_AVX512 = 2
@@ -79,6 +82,9 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_ERR_FIT_TOO_FEW = 6132
   integer(c_int32_t), parameter :: DC_ERR_FIT_DEGENERATE = 6133
   integer(c_int32_t), parameter :: DC_ERR_BUILTIN_VERSION = 6134
+  integer(c_int32_t), parameter :: DC_ERR_INTEGRATOR = 6135
+  integer(c_int32_t), parameter :: DC_ERR_STEP_UNSUPPORTED = 6136
+  integer(c_int32_t), parameter :: DC_ERR_STEP_UNREACHABLE = 6137
   integer(c_int32_t), parameter :: DC_ERR_INTERNAL = 6199
 
   type, bind(c) :: dc_contact_spec
@@ -319,6 +325,14 @@ module demcontact_c
       integer(c_int32_t), value, intent(in) :: carry
       integer(c_int32_t) :: dc_contact_model_set_carry
     end function dc_contact_model_set_carry
+    function dc_contact_model_set_step(model, dt, integrator) bind(c, &
+        name='dc_contact_model_set_step')
+      import
+      type(dc_contact_model), intent(inout) :: model
+      real(c_double), value, intent(in) :: dt
+      integer(c_int32_t), value, intent(in) :: integrator
+      integer(c_int32_t) :: dc_contact_model_set_step
+    end function dc_contact_model_set_step
     function dc_contact_history_len(model, len_out) bind(c, name='dc_contact_history_len')
       import
       type(dc_contact_model), intent(in) :: model

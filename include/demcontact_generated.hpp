@@ -33,6 +33,9 @@ enum class status : std::int32_t {
     fit_too_few = DC_ERR_FIT_TOO_FEW,
     fit_degenerate = DC_ERR_FIT_DEGENERATE,
     builtin_version = DC_ERR_BUILTIN_VERSION,
+    integrator = DC_ERR_INTEGRATOR,
+    step_unsupported = DC_ERR_STEP_UNSUPPORTED,
+    step_unreachable = DC_ERR_STEP_UNREACHABLE,
     internal = DC_ERR_INTERNAL,
 };
 

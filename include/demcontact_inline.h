@@ -923,9 +923,16 @@ DCI_ALWAYS_INLINE_FN int dci_fin(double s) { return s - s == 0.0; }
 DCI_ALWAYS_INLINE_FN double dci_sum3(const double a[3]) { return (a[0] + a[1]) + a[2]; }
 /* The history: copy n doubles from src to dst (dst may be NULL: no copy) and return their mask
  * (mask = 1) or their sum (mask = 0). n is a layout length (0, 4, 6, 7, 9, 10 for a valid
- * model): the switch gives each a constant trip count, which the compiler unrolls, because loops
+ * model; 1, 5, 7, 8, 10, 11 when step-aware): the switch gives each a constant trip count, which the compiler unrolls, because loops
  * over the run-time n (copy in, mask, mask out, copy out) were a hot spot of the LAMMPS scene's
  * profile (docs/simulators.md, "Wall time"). Any other n takes the loop. */
+/* GCC (12+) cannot tie the history copy's run-time length (one more with the step-aware
+ * damping) to the slots read after it and warns "may be used uninitialized" on the copy and the
+ * step slot; every slot read is one the copy wrote (lay.len covers lay.step). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 DCI_ALWAYS_INLINE_FN double dci_copy_sum_k(double *dst, const double *src, int n, int mask) {
     double s = 0.0;
     for (int i = 0; i < n; i++) {
@@ -937,14 +944,21 @@ DCI_ALWAYS_INLINE_FN double dci_copy_sum_k(double *dst, const double *src, int n
 DCI_ALWAYS_INLINE_FN double dci_copy_sum(double *dst, const double *src, int n, int mask) {
     switch (n) {
     case 0: return 0.0;
+    case 1: return dci_copy_sum_k(dst, src, 1, mask);
     case 4: return dci_copy_sum_k(dst, src, 4, mask);
+    case 5: return dci_copy_sum_k(dst, src, 5, mask);
     case 6: return dci_copy_sum_k(dst, src, 6, mask);
     case 7: return dci_copy_sum_k(dst, src, 7, mask);
+    case 8: return dci_copy_sum_k(dst, src, 8, mask);
     case 9: return dci_copy_sum_k(dst, src, 9, mask);
     case 10: return dci_copy_sum_k(dst, src, 10, mask);
+    case 11: return dci_copy_sum_k(dst, src, 11, mask);
     default: return dci_copy_sum_k(dst, src, n, mask);
     }
 }
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 /* n history doubles all finite, copied to dst unless NULL: the sum, the mask when it is not finite */
 DCI_ALWAYS_INLINE_FN int dci_copy_finite(double *dst, const double *src, int n) {
     if (DCI_LIKELY(dci_fin(dci_copy_sum(dst, src, n, 0)))) return 1;
@@ -1159,10 +1173,12 @@ DCI_ALWAYS_INLINE_FN double dci_twisting(const dc_contact_model *m, const dci_ki
     return spring - DCI_M(c, wt);
 }
 
-/* History layout (src/contact/model.rs Layout::of): normal of the last step at 0, then the
- * tangential spring (3), the rolling spring (3, EPSD only), the twisting spring (1). -1: absent. */
+/* History layout (src/contact/model.rs Layout::of_model): normal of the last step at 0, then the
+ * tangential spring (3), the rolling spring (3, EPSD only), the twisting spring (1), the
+ * step-aware damping state (1, after dc_contact_model_set_step). -1: absent. nrm: the normal is
+ * stored (Layout::has_normal). */
 typedef struct dci_layout {
-    int len, tangential, rolling, twisting;
+    int len, tangential, rolling, twisting, step, nrm;
 } dci_layout;
 
 DCI_ALWAYS_INLINE_FN dci_layout dci_layout_of(int32_t tangential, int32_t rolling,
@@ -1178,8 +1194,152 @@ DCI_ALWAYS_INLINE_FN dci_layout dci_layout_of(int32_t tangential, int32_t rollin
     l.len += has_r ? 3 : 0;
     l.twisting = has_tw ? l.len : -1;
     l.len += has_tw ? 1 : 0;
+    l.step = -1;
+    l.nrm = has_t || has_r || has_tw;
     return l;
 }
+
+/* The layout of model m, step-aware (reserved[0] not +0: src/ffi/contact.rs model_of) or not. */
+DCI_ALWAYS_INLINE_FN dci_layout dci_layout_step(dci_layout l, const dc_contact_model *m) {
+    if (dci_bits(m->reserved[0]) != 0) {
+        l.step = l.len;
+        l.len += 1;
+    }
+    return l;
+}
+
+/* The reserved fields as model_of accepts them: all +0 (not step-aware), or set by
+ * dc_contact_model_set_step (scale > 0, all finite, a damped Tsuji law). */
+DCI_ALWAYS_INLINE_FN int dci_step_fields_ok(const dc_contact_model *m) {
+    int ok = 1;
+    if (dci_bits(m->reserved[0]) != 0) {
+        ok = m->reserved[0] > 0.0;
+        for (int i = 0; i < 6; i++) ok = ok && isfinite(m->reserved[i]);
+        ok = ok && (m->normal.model == DC_MODEL_POWERLAW || m->normal.model == DC_MODEL_HERTZ) &&
+             m->normal.alpha > 0.0;
+    } else {
+        for (int i = 0; i < 6; i++) ok = ok && dci_bits(m->reserved[i]) == 0;
+    }
+    return ok;
+}
+
+/* ---- step-aware normal damping (src/contact/step_exact.rs; same operations, same bits) */
+
+/* x^b, 0 <= b <= 1 (pow_b) */
+DCI_ALWAYS_INLINE_FN double dci_pow_b(double x, double b) {
+    return b > 0.0 ? dc_pow_inline(x, b) : 1.0;
+}
+
+/* Hurwitz zeta(-b, x), x >= 1, 0 <= b <= 1 (hurwitz_neg) */
+DCI_ALWAYS_INLINE_FN double dci_hurwitz_neg(double b, double x) {
+    DCI_NO_CONTRACT
+    double acc = dci_pow_b(x, b) + dci_pow_b(x + 1.0, b) + dci_pow_b(x + 2.0, b);
+    acc += dci_pow_b(x + 3.0, b);
+    const double xx = x + 4.0;
+    const double xb = dci_pow_b(xx, b);
+    acc += -DCI_M(xx, xb) / (1.0 + b) + DCI_M(0.5, xb);
+    const double s = -b;
+    const double inv = 1.0 / xx;
+    const double inv2 = inv * inv;
+    double poch = s;
+    double pw = xb * inv;
+    acc += DCI_M(DCI_M(1.0 / 12.0, poch), pw);
+    poch *= DCI_M(s + 1.0, s + 2.0);
+    pw *= inv2;
+    acc += DCI_M(DCI_M(-1.0 / 720.0, poch), pw);
+    poch *= DCI_M(s + 3.0, s + 4.0);
+    pw *= inv2;
+    acc += DCI_M(DCI_M(1.0 / 30240.0, poch), pw);
+    poch *= DCI_M(s + 5.0, s + 6.0);
+    pw *= inv2;
+    acc += DCI_M(DCI_M(-1.0 / 1209600.0, poch), pw);
+    return acc;
+}
+
+/* the damping factor R(h) (r_of_h) */
+DCI_ALWAYS_INLINE_FN double dci_step_r(const double *c, double h) {
+    DCI_NO_CONTRACT
+    h = h < 0.1 ? h : 0.1;
+    h = h > 0.0 ? h : 0.0;
+    double r = 1.0 + DCI_M(h, c[0] + DCI_M(h, c[1] + DCI_M(h, c[2] + DCI_M(h, c[3] + DCI_M(h, c[4])))));
+    if (r < 0.25) r = 0.25;
+    if (r > 2.0) r = 2.0;
+    return r;
+}
+
+/* the unclamped twin of a kernel code (registry::unclamped) */
+DCI_ALWAYS_INLINE_FN int32_t dci_unclamped(int32_t kernel) {
+    switch (kernel) {
+    case DC_KERNEL_LIN_DAMPED_CLAMPED: return DC_KERNEL_LIN_DAMPED;
+    case DC_KERNEL_P15_DAMPED_CLAMPED: return DC_KERNEL_P15_DAMPED;
+    case DC_KERNEL_P2_DAMPED_CLAMPED: return DC_KERNEL_P2_DAMPED;
+    case DC_KERNEL_GEN_DAMPED_CLAMPED: return DC_KERNEL_GEN_DAMPED;
+    case DC_KERNEL_HERTZ_DAMPED_CLAMPED: return DC_KERNEL_HERTZ_DAMPED;
+    case DC_KERNEL_VISCO_DAMPED_CLAMPED: return DC_KERNEL_VISCO_DAMPED;
+    default: return kernel;
+    }
+}
+
+/* the law's unclamped force at overlap d > 0, rate v, damping scaled by r */
+DCI_ALWAYS_INLINE_FN double dci_step_raw(const dc_pair *pair, int32_t kernel, double r, double d,
+                                         double v, double r_eff, double m_eff) {
+    dc_pair pc = *pair;
+    pc.c = pair->c * r;
+    return dc_normal_force_kernel_inline(kernel, &pc, d, v, r_eff, m_eff);
+}
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+/* The step-aware normal force of one contact in contact (contact_normal + normal_force);
+ * slot: its history double (0 fresh, +R, -R after the end correction). */
+DCI_ALWAYS_INLINE_FN double dci_step_normal(const dc_contact_model *m, double d, double v,
+                                            double r_eff, double m_eff, double dt, double *slot) {
+    DCI_NO_CONTRACT
+    const dc_pair *pair = &m->normal;
+    const int32_t kernel = dci_unclamped(pair->kernel);
+    const double beta = 0.5 * (pair->p - 1.0);
+    const int first = *slot == 0.0;
+    if (first) {
+        if (v > 0.0) {
+            const double kc = pair->model == DC_MODEL_HERTZ ? pair->k * sqrt(r_eff) : pair->k;
+            const double h = m->reserved[0] * v /
+                             dc_pow_inline(m_eff * v * v / kc, 1.0 / (pair->p + 1.0));
+            *slot = dci_step_r(&m->reserved[1], h);
+        } else {
+            *slot = 1.0;
+        }
+    }
+    const double r = fabs(*slot);
+    const int flagged = *slot < 0.0;
+    double f;
+    if (first && v > 0.0) {
+        const double fel = dci_step_raw(pair, kernel, r, d, 0.0, r_eff, m_eff);
+        const double fdv = dci_step_raw(pair, kernel, r, d, v, r_eff, m_eff) - fel;
+        const double a = d / (v * dt);
+        f = fel - DCI_M(fdv / dci_pow_b(a, beta), dci_hurwitz_neg(beta, 1.0 + a));
+    } else {
+        f = dci_step_raw(pair, kernel, r, d, v, r_eff, m_eff);
+    }
+    if (pair->criterion == DC_END_FORCE) return f > 0.0 ? f : 0.0;
+    if (flagged) {
+        *slot = r;
+        return v < 0.0 ? 0.0 : f;
+    }
+    const double vp = v - dt * f / m_eff;
+    if (!first && d + DCI_M(dt, vp) <= 0.0) {
+        const double fel = dci_step_raw(pair, kernel, r, d, 0.0, r_eff, m_eff);
+        const double fdp = dci_step_raw(pair, kernel, r, d, vp, r_eff, m_eff) - fel;
+        const double b = d / (fabs(vp) * dt);
+        *slot = -r;
+        return fel - DCI_M(fdp / dci_pow_b(b, beta), dci_hurwitz_neg(beta, 1.0 + b));
+    }
+    return f;
+}
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 
 /* A model's selectors: its normal kernel, sub-model codes and frame carry (the fields
  * normal.kernel, tangential, rolling, twisting, carry). The evaluation reads them from here, not
@@ -1211,12 +1371,14 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_sh
                                                double dt, double *h, dc_contact_result *out) {
     DCI_NO_CONTRACT
     dci_frame frame;
-    const dci_v3 n_old = lay.len > 0 ? dci_v(h[0], h[1], h[2]) : dci_v(0.0, 0.0, 0.0);
+    const dci_v3 n_old = lay.len >= 3 && lay.nrm ? dci_v(h[0], h[1], h[2]) : dci_v(0.0, 0.0, 0.0);
     const dci_kin k = dci_kin_of(s, n_old, dt, sh.carry, &frame);
     const dc_pair *pair = &m->normal;
     /* fe: the force at vn = 0, for Ai's rolling stiffness rule below (same pass, same bits) */
     double fe;
-    const double f = dci_normal_force_fe(pair, sh.kernel, k.d, k.vn, k.r_eff, k.m_eff, &fe);
+    double f = dci_normal_force_fe(pair, sh.kernel, k.d, k.vn, k.r_eff, k.m_eff, &fe);
+    if (lay.step >= 0 && s->overlap > 0.0)
+        f = dci_step_normal(m, k.d, k.vn, k.r_eff, k.m_eff, dt, &h[lay.step]);
     dci_v3 ft = dci_v(0.0, 0.0, 0.0), t1 = dci_v(0.0, 0.0, 0.0), t2 = dci_v(0.0, 0.0, 0.0);
     dci_v3 force;
     int sliding = 0, rolling_sliding = 0;
@@ -1225,10 +1387,10 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_sh
         /* not touching: history reset, only an adhesive normal law acts */
         for (int i = 0; i < lay.len; i++) h[i] = 0.0;
         force = dci_normal_vector(f, k.n);
-    } else if (lay.len == 0 && sh.rolling == DC_ROLLING_NONE) {
+    } else if (!lay.nrm && sh.rolling == DC_ROLLING_NONE) {
         force = dci_normal_vector(f, k.n);
     } else {
-        if (lay.len > 0) {
+        if (lay.nrm) {
             h[0] = k.n.x;
             h[1] = k.n.y;
             h[2] = k.n.z;
@@ -1291,7 +1453,7 @@ DC_INLINE_FN int32_t dci_check_contact_model(const dc_contact_model *m, dci_layo
               (p->criterion == DC_END_FORCE && p->clamp == 1)) &&
              m->magic == DCI_CONTACT_MAGIC && m->history_len == (uint32_t)lay.len &&
              (m->carry == DC_CARRY_ROTATE || m->carry == DC_CARRY_PROJECT);
-    for (int i = 0; i < 6; i++) ok = ok && dci_bits(m->reserved[i]) == 0;
+    ok = ok && dci_step_fields_ok(m);
     if (!ok) return DC_ERR_CONTACT_MODEL_INVALID;
     ok = p->kernel >= DC_KERNEL_LIN_ELASTIC && p->kernel <= DC_KERNEL_DMT_DAMPED;
     ok = ok && (m->tangential == DC_TANGENTIAL_NONE || m->tangential == DC_TANGENTIAL_LINEAR ||
@@ -1336,13 +1498,14 @@ DC_INLINE_FN int32_t dc_contact_force_inline(const dc_contact_model *model,
                                              double *history, size_t history_len,
                                              dc_contact_result *out) {
     if (!state || !model || !out) return DC_ERR_NULL_POINTER;
-    const dci_layout lay = dci_layout_of(model->tangential, model->rolling, model->twisting);
+    const dci_layout lay =
+        dci_layout_step(dci_layout_of(model->tangential, model->rolling, model->twisting), model);
     const dc_pair *p = &model->normal;
     int ok = ((p->criterion == DC_END_OVERLAP && p->clamp == 0) ||
               (p->criterion == DC_END_FORCE && p->clamp == 1)) &&
              model->magic == DCI_CONTACT_MAGIC && model->history_len == (uint32_t)lay.len &&
              (model->carry == DC_CARRY_ROTATE || model->carry == DC_CARRY_PROJECT);
-    for (int i = 0; i < 6; i++) ok = ok && dci_bits(model->reserved[i]) == 0;
+    ok = ok && dci_step_fields_ok(model);
     if (!ok) return DC_ERR_CONTACT_MODEL_INVALID;
     /* the model's values before the history buffer, as the library (model_of) checks them */
     int32_t st = dci_check_contact_model(model, lay);
@@ -1374,13 +1537,14 @@ DC_INLINE_FN int32_t dc_contact_force_inline(const dc_contact_model *model,
  * (DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID). */
 DC_INLINE_FN int32_t dc_contact_model_check_inline(const dc_contact_model *model) {
     if (!model) return DC_ERR_NULL_POINTER;
-    const dci_layout lay = dci_layout_of(model->tangential, model->rolling, model->twisting);
+    const dci_layout lay =
+        dci_layout_step(dci_layout_of(model->tangential, model->rolling, model->twisting), model);
     const dc_pair *p = &model->normal;
     int ok = ((p->criterion == DC_END_OVERLAP && p->clamp == 0) ||
               (p->criterion == DC_END_FORCE && p->clamp == 1)) &&
              model->magic == DCI_CONTACT_MAGIC && model->history_len == (uint32_t)lay.len &&
              (model->carry == DC_CARRY_ROTATE || model->carry == DC_CARRY_PROJECT);
-    for (int i = 0; i < 6; i++) ok = ok && dci_bits(model->reserved[i]) == 0;
+    ok = ok && dci_step_fields_ok(model);
     if (!ok) return DC_ERR_CONTACT_MODEL_INVALID;
     return dci_check_contact_model(model, lay);
 }
@@ -1407,7 +1571,7 @@ DCI_ALWAYS_INLINE_FN int32_t dci_force_checked(const dc_contact_model *model, dc
                                                const dc_contact_state *state, double dt,
                                                double *history, dc_contact_result *out) {
     if (DCI_UNLIKELY(!out)) return DC_ERR_NULL_POINTER;
-    const dci_layout lay = dci_layout_of(sh.tangential, sh.rolling, sh.twisting);
+    const dci_layout lay = dci_layout_step(dci_layout_of(sh.tangential, sh.rolling, sh.twisting), model);
     const int32_t st = dc_contact_state_check_inline(state, dt); /* NULL state included */
     if (DCI_UNLIKELY(st != DC_OK)) return st;
     /* the model's lay.len doubles only (the evaluation reads and writes no others) */
@@ -1512,7 +1676,7 @@ DCI_ALWAYS_INLINE_FN int32_t dci_force_deferred(const dc_contact_model *model, d
                                                 double *history, dc_contact_result *out,
                                                 dc_contact_checks *c) {
     if (DCI_UNLIKELY(!state || !out || !c)) return DC_ERR_NULL_POINTER;
-    const dci_layout lay = dci_layout_of(sh.tangential, sh.rolling, sh.twisting);
+    const dci_layout lay = dci_layout_step(dci_layout_of(sh.tangential, sh.rolling, sh.twisting), model);
     /* straight through: the evaluation is + - * / sqrt and selects on any doubles (no trap,
      * no index from a value), so a bad value gives bad values, caught below or by the caller */
     double h[DC_CONTACT_HISTORY_MAX];

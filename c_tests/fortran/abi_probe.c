@@ -3,7 +3,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-int32_t dc_probe_n_consts(void) { return 70; }
+int32_t dc_probe_n_consts(void) { return 75; }
 int64_t dc_probe_const(int32_t i) {
   switch (i) {
   case 1: return (int64_t)(DC_BUILTIN_LIGGGHTS_HOOKE);
@@ -45,37 +45,42 @@ int64_t dc_probe_const(int32_t i) {
   case 37: return (int64_t)(DC_LEVEL_MAX);
   case 38: return (int64_t)(DC_END_OVERLAP);
   case 39: return (int64_t)(DC_END_FORCE);
-  case 40: return (int64_t)(DC_DISPATCH_BASELINE);
-  case 41: return (int64_t)(DC_DISPATCH_AVX2);
-  case 42: return (int64_t)(DC_DISPATCH_AVX512);
-  case 43: return (int64_t)(DC_OK);
-  case 44: return (int64_t)(DC_ERR_NULL_POINTER);
-  case 45: return (int64_t)(DC_ERR_NOT_FINITE);
-  case 46: return (int64_t)(DC_ERR_RESTITUTION_RANGE);
-  case 47: return (int64_t)(DC_ERR_EXPONENT_RANGE);
-  case 48: return (int64_t)(DC_ERR_NOT_POSITIVE);
-  case 49: return (int64_t)(DC_ERR_NEGATIVE);
-  case 50: return (int64_t)(DC_ERR_CRITERION);
-  case 51: return (int64_t)(DC_ERR_RESULT_RANGE);
-  case 52: return (int64_t)(DC_ERR_NO_CONVERGENCE);
-  case 53: return (int64_t)(DC_ERR_BUFFER_TOO_SHORT);
-  case 54: return (int64_t)(DC_ERR_NO_EVENT);
-  case 55: return (int64_t)(DC_ERR_LEVEL);
-  case 56: return (int64_t)(DC_ERR_PLAN);
-  case 57: return (int64_t)(DC_ERR_POISSON_RANGE);
-  case 58: return (int64_t)(DC_ERR_PAIR_INVALID);
-  case 59: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
-  case 60: return (int64_t)(DC_ERR_SPEC_VERSION);
-  case 61: return (int64_t)(DC_ERR_SPEC_MODEL);
-  case 62: return (int64_t)(DC_ERR_SPEC_UNSET);
-  case 63: return (int64_t)(DC_ERR_CONTACT_MODEL_INVALID);
-  case 64: return (int64_t)(DC_ERR_NOT_UNIT);
-  case 65: return (int64_t)(DC_ERR_BUILTIN_MODEL);
-  case 66: return (int64_t)(DC_ERR_BUILTIN_UNREACHABLE);
-  case 67: return (int64_t)(DC_ERR_FIT_TOO_FEW);
-  case 68: return (int64_t)(DC_ERR_FIT_DEGENERATE);
-  case 69: return (int64_t)(DC_ERR_BUILTIN_VERSION);
-  case 70: return (int64_t)(DC_ERR_INTERNAL);
+  case 40: return (int64_t)(DC_INTEGRATOR_VELOCITY_VERLET);
+  case 41: return (int64_t)(DC_INTEGRATOR_SYMPLECTIC_EULER);
+  case 42: return (int64_t)(DC_DISPATCH_BASELINE);
+  case 43: return (int64_t)(DC_DISPATCH_AVX2);
+  case 44: return (int64_t)(DC_DISPATCH_AVX512);
+  case 45: return (int64_t)(DC_OK);
+  case 46: return (int64_t)(DC_ERR_NULL_POINTER);
+  case 47: return (int64_t)(DC_ERR_NOT_FINITE);
+  case 48: return (int64_t)(DC_ERR_RESTITUTION_RANGE);
+  case 49: return (int64_t)(DC_ERR_EXPONENT_RANGE);
+  case 50: return (int64_t)(DC_ERR_NOT_POSITIVE);
+  case 51: return (int64_t)(DC_ERR_NEGATIVE);
+  case 52: return (int64_t)(DC_ERR_CRITERION);
+  case 53: return (int64_t)(DC_ERR_RESULT_RANGE);
+  case 54: return (int64_t)(DC_ERR_NO_CONVERGENCE);
+  case 55: return (int64_t)(DC_ERR_BUFFER_TOO_SHORT);
+  case 56: return (int64_t)(DC_ERR_NO_EVENT);
+  case 57: return (int64_t)(DC_ERR_LEVEL);
+  case 58: return (int64_t)(DC_ERR_PLAN);
+  case 59: return (int64_t)(DC_ERR_POISSON_RANGE);
+  case 60: return (int64_t)(DC_ERR_PAIR_INVALID);
+  case 61: return (int64_t)(DC_ERR_BUFFER_LAYOUT);
+  case 62: return (int64_t)(DC_ERR_SPEC_VERSION);
+  case 63: return (int64_t)(DC_ERR_SPEC_MODEL);
+  case 64: return (int64_t)(DC_ERR_SPEC_UNSET);
+  case 65: return (int64_t)(DC_ERR_CONTACT_MODEL_INVALID);
+  case 66: return (int64_t)(DC_ERR_NOT_UNIT);
+  case 67: return (int64_t)(DC_ERR_BUILTIN_MODEL);
+  case 68: return (int64_t)(DC_ERR_BUILTIN_UNREACHABLE);
+  case 69: return (int64_t)(DC_ERR_FIT_TOO_FEW);
+  case 70: return (int64_t)(DC_ERR_FIT_DEGENERATE);
+  case 71: return (int64_t)(DC_ERR_BUILTIN_VERSION);
+  case 72: return (int64_t)(DC_ERR_INTEGRATOR);
+  case 73: return (int64_t)(DC_ERR_STEP_UNSUPPORTED);
+  case 74: return (int64_t)(DC_ERR_STEP_UNREACHABLE);
+  case 75: return (int64_t)(DC_ERR_INTERNAL);
   default: return INT64_MIN;
   }
 }

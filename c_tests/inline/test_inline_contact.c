@@ -276,6 +276,9 @@ static int deferred_step(const dc_contact_model *m, const dc_contact_state *s, d
 }
 
 /* One contact evolved over `steps` steps of `m`; counts of regimes seen added to `seen`. */
+/* step-aware steps compared, first contact steps (onset correction), end corrections fired */
+static long n_step_steps = 0, n_step_onsets = 0, n_step_ends = 0;
+
 static void trajectory(const dc_contact_model *m, long steps, long *seen) {
     double hl[DC_CONTACT_HISTORY_MAX] = {0}, hi[DC_CONTACT_HISTORY_MAX] = {0};
     double hc[DC_CONTACT_HISTORY_MAX] = {0}; /* dc_contact_force_checked_inline's own history */
@@ -367,6 +370,12 @@ static void trajectory(const dc_contact_model *m, long steps, long *seen) {
             return;
         }
         n_pass++;
+        if (dci_bits(m->reserved[0]) != 0 && sl == DC_OK) {
+            const int at = (int)m->history_len - 1; /* the step slot is last */
+            n_step_steps++;
+            n_step_onsets += h0[at] == 0.0 && s.overlap > 0.0;
+            n_step_ends += hl[at] < 0.0;
+        }
         if (sl == DC_OK) {
             seen[0]++;
             seen[1] += rl.sliding;
@@ -730,6 +739,52 @@ int main(int argc, char **argv) {
         dc_contact_model_set_carry_inline(NULL, DC_CARRY_PROJECT) != DC_ERR_NULL_POINTER)
         fail("set_carry NULL", 0);
     dmt_forces(total / 4);
+    /* the step-aware model: coefficients of R(h) from the library for one Hertz model (the
+     * calibration takes milliseconds), then copied into 1 model in 3 below (the evaluation does
+     * not depend on where they came from); set_step's statuses and untouched output on error */
+    double step_coef[5] = {0};
+    {
+        dc_contact_spec s;
+        dc_contact_spec_init(&s);
+        s.normal = DC_NORMAL_HERTZ;
+        s.damping = DC_DAMPING_RESTITUTION;
+        s.criterion = DC_END_OVERLAP;
+        s.E1 = s.E2 = 1e9;
+        s.nu1 = s.nu2 = 0.3;
+        s.e_n = 0.3;
+        dc_contact_model a, a0;
+        if (dc_contact_model_init(&s, &a) != DC_OK) fail("step model init", 0);
+        a0 = a;
+        const double bad_dt[4] = {0.0, -1e-6, (double)NAN, (double)INFINITY};
+        const int32_t bad_st[4] = {DC_ERR_NOT_POSITIVE, DC_ERR_NOT_POSITIVE, DC_ERR_NOT_FINITE,
+                                   DC_ERR_NOT_FINITE};
+        for (int i = 0; i < 4; i++)
+            if (dc_contact_model_set_step(&a, bad_dt[i], DC_INTEGRATOR_VELOCITY_VERLET) != bad_st[i] ||
+                memcmp(&a, &a0, sizeof a) != 0)
+                fail("set_step bad dt", i);
+        if (dc_contact_model_set_step(&a, 1e-6, 2) != DC_ERR_INTEGRATOR ||
+            memcmp(&a, &a0, sizeof a) != 0 ||
+            dc_contact_model_set_step(NULL, 1e-6, 0) != DC_ERR_NULL_POINTER)
+            fail("set_step bad integrator / NULL", 0);
+        if (dc_contact_model_set_step(&a, 1e-6, DC_INTEGRATOR_SYMPLECTIC_EULER) != DC_OK ||
+            a.history_len != a0.history_len + 1 || !(a.reserved[0] > 0.0))
+            fail("set_step", 0);
+        for (int i = 0; i < 5; i++) step_coef[i] = a.reserved[i + 1];
+        size_t len = 0;
+        if (dc_contact_history_len(&a, &len) != DC_OK || len != a.history_len)
+            fail("set_step history_len", 0);
+        /* a viscoelastic law has no step-aware form */
+        s.normal = DC_NORMAL_VISCOELASTIC;
+        s.damping = DC_DAMPING_NONE;
+        s.visco_A = 1e-6;
+        if (dc_contact_model_init(&s, &a) != DC_OK) fail("visco init", 0);
+        a0 = a;
+        if (dc_contact_model_set_step(&a, 1e-6, 0) != DC_ERR_STEP_UNSUPPORTED ||
+            memcmp(&a, &a0, sizeof a) != 0)
+            fail("set_step viscoelastic", 0);
+        n_pass++;
+    }
+    long stepped = 0;
     /* trajectories */
     while (models * per < total) {
         dc_contact_spec s;
@@ -745,6 +800,14 @@ int main(int argc, char **argv) {
                 fail("set_carry", models);
             projected++;
         }
+        if (models % 3 == 2 && (m.normal.model == DC_MODEL_POWERLAW || m.normal.model == DC_MODEL_HERTZ) &&
+            m.normal.alpha > 0.0) {
+            /* step-aware: what dc_contact_model_set_step writes, with the template's R(h) */
+            m.reserved[0] = logu(-9, -3);
+            for (int i = 0; i < 5; i++) m.reserved[i + 1] = step_coef[i];
+            m.history_len += 1;
+            stepped++;
+        }
         trajectory(&m, per, seen);
         if (models % 50 == 0) bad_inputs(&m);
         models++;
@@ -757,6 +820,8 @@ int main(int argc, char **argv) {
            seen[6], seen[7], seen[5]);
     printf("test_inline_contact[%s]: %ld of the trajectories with the projection carry\n", LANG,
            projected);
+    printf("test_inline_contact[%s]: step-aware: %ld trajectories, %ld steps (%ld contact onsets, "
+           "%ld end corrections)\n", LANG, stepped, n_step_steps, n_step_onsets, n_step_ends);
     int shapes_hit = 0;
     for (int i = 0; i < 108; i++) shapes_hit += shape_hits[i] > 0;
     printf("test_inline_contact[%s]: shaped entry: %ld steps with a constant shape (%d of the 108 "
@@ -772,6 +837,7 @@ int main(int argc, char **argv) {
     /* the comparison must have exercised every regime */
     if (!(seen[1] > 1000 && seen[2] > 1000 && seen[3] > 1000 && seen[4] > 1000 && seen[6] > 1000 &&
           seen[7] > 1000 && specs_bad > 1000 && projected * 4 > models &&
+          n_step_steps > 1000 && n_step_onsets > 10 && n_step_ends > 10 &&
           n_shaped_const * 10 > n_shaped_runtime && n_shaped_runtime > 1000 &&
           n_deferred * 2 > seen[0] && n_deferred_bad[0] > 0 && n_deferred_bad[1] > 0 &&
           /* every constant shape in the long runs (10^7 steps; shorter runs reach fewer) */
