@@ -52,6 +52,11 @@ pub enum Error {
     /// A simulator release that is not a date or whose formula is not known (see
     /// [`crate::builtin::lammps::release_scale`]).
     BuiltinVersion,
+    /// A planner input is outside its documented range (e.g. R_min > R_max, a solid fraction
+    /// outside (0, 1), a tolerance ≥ 1).
+    PlanRange,
+    /// No modulus meets the planner's tolerances: the real material itself misses one.
+    PlanInfeasible,
     /// A fit got fewer than two points.
     FitTooFew,
     /// A fit's data cannot determine the model: all speeds equal, or all weights zero.

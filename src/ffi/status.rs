@@ -83,6 +83,11 @@ pub enum dc_status {
     /// A LAMMPS release date that is not a date YYYYMMDD, or whose damping tsuji formula is not
     /// known: eta up to 22 Jul 2025, eta*sqrt(2) from 2 Sep 2026, unknown in between.
     DC_ERR_BUILTIN_VERSION = 6134,
+    /// A dc_plan_input value is outside its documented range (radius_min > radius_max, a solid
+    /// fraction outside (0, 1), a tolerance >= 1, ...); dc_plan names the field.
+    DC_ERR_PLAN_RANGE = 6140,
+    /// No Young's modulus meets the planner's tolerances: the real material itself misses one.
+    DC_ERR_PLAN_INFEASIBLE = 6141,
     /// An internal error was caught at the boundary (not expected; please report).
     DC_ERR_INTERNAL = 6199,
 }
@@ -138,6 +143,10 @@ impl dc_status {
             DC_ERR_BUILTIN_VERSION => {
                 c"unknown LAMMPS release: known are YYYYMMDD up to 20250722 (damping tsuji eta) and from 20260902 (eta*sqrt(2))"
             }
+            DC_ERR_PLAN_RANGE => c"a planner input is outside its documented range",
+            DC_ERR_PLAN_INFEASIBLE => {
+                c"no Young's modulus meets the tolerances: the real material misses one"
+            }
             DC_ERR_INTERNAL => c"internal error caught at the C boundary (please report)",
         }
     }
@@ -171,6 +180,8 @@ impl dc_status {
             Error::FitTooFew => DC_ERR_FIT_TOO_FEW,
             Error::FitDegenerate => DC_ERR_FIT_DEGENERATE,
             Error::BuiltinVersion => DC_ERR_BUILTIN_VERSION,
+            Error::PlanRange => DC_ERR_PLAN_RANGE,
+            Error::PlanInfeasible => DC_ERR_PLAN_INFEASIBLE,
         }
     }
 }
@@ -215,6 +226,8 @@ mod codes {
     pub const DC_ERR_FIT_TOO_FEW: i32 = dc_status::DC_ERR_FIT_TOO_FEW as i32;
     pub const DC_ERR_FIT_DEGENERATE: i32 = dc_status::DC_ERR_FIT_DEGENERATE as i32;
     pub const DC_ERR_BUILTIN_VERSION: i32 = dc_status::DC_ERR_BUILTIN_VERSION as i32;
+    pub const DC_ERR_PLAN_RANGE: i32 = dc_status::DC_ERR_PLAN_RANGE as i32;
+    pub const DC_ERR_PLAN_INFEASIBLE: i32 = dc_status::DC_ERR_PLAN_INFEASIBLE as i32;
     pub const DC_ERR_INTERNAL: i32 = dc_status::DC_ERR_INTERNAL as i32;
 }
 pub use codes::*;
