@@ -601,7 +601,10 @@ fn plan_json_matches_the_library() {
     ] {
         // serde_json's parser may round the last bit (no float_roundtrip feature).
         let got = j[key].as_f64().unwrap();
-        assert!((got - want).abs() <= 4e-16 * want.abs(), "{key}: {got} vs {want}");
+        assert!(
+            (got - want).abs() <= 4e-16 * want.abs(),
+            "{key}: {got} vs {want}"
+        );
     }
     assert_eq!(j["binding"], "overlap-tol");
     assert_eq!(j["binding_dt"], "e-tol");

@@ -84,7 +84,8 @@ pub enum dc_status {
     /// known: eta up to 22 Jul 2025, eta*sqrt(2) from 2 Sep 2026, unknown in between.
     DC_ERR_BUILTIN_VERSION = 6134,
     /// A dc_plan_input value is outside its documented range (radius_min > radius_max, a solid
-    /// fraction outside (0, 1), a tolerance >= 1, ...); dc_plan names the field.
+    /// fraction outside (0, 1), a tolerance >= 1, ...; dc_plan names the member), or its version
+    /// or size is not this library's.
     DC_ERR_PLAN_RANGE = 6140,
     /// No Young's modulus meets the planner's tolerances: the real material itself misses one.
     DC_ERR_PLAN_INFEASIBLE = 6141,
@@ -143,7 +144,7 @@ impl dc_status {
             DC_ERR_BUILTIN_VERSION => {
                 c"unknown LAMMPS release: known are YYYYMMDD up to 20250722 (damping tsuji eta) and from 20260902 (eta*sqrt(2))"
             }
-            DC_ERR_PLAN_RANGE => c"a planner input is outside its documented range",
+            DC_ERR_PLAN_RANGE => c"a planner input (or dc_plan_input version/size) is out of range",
             DC_ERR_PLAN_INFEASIBLE => {
                 c"no Young's modulus meets the tolerances: the real material misses one"
             }

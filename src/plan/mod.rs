@@ -213,6 +213,8 @@ pub enum PlanField {
     StabilityFraction = 21,
     /// [`PlanInput::conventional_divisor`].
     ConventionalDivisor = 22,
+    /// [`PlanInput::walls`] (C ABI only: an int that is not 0 or 1).
+    Walls = 23,
 }
 
 /// A refusal: the library error and the input at fault.

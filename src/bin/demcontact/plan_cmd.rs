@@ -154,6 +154,7 @@ impl Args {
             PlanField::StaticTol => (v("--static-tol", i.static_tol), "must be > 0"),
             PlanField::DurationTol => (v("--duration-tol", i.duration_tol), "must be > 0"),
             PlanField::Criterion => ("--criterion".into(), "force or overlap"),
+            PlanField::Walls => ("--no-walls".into(), "a switch"),
             PlanField::StabilityFraction => (
                 v("--stability-fraction", i.stability_fraction),
                 "must be in (0, 1]",
@@ -186,6 +187,9 @@ impl Args {
                     _ => String::new(),
                 };
                 format!("{flag}: {}{figure}", describe(pe.error))
+            }
+            (_, e @ (demcontact::Error::RestitutionRange | demcontact::Error::PoissonRange)) => {
+                format!("{flag}: {}", describe(e))
             }
             (_, e) => format!("{flag}: {} ({range})", describe(e)),
         };
