@@ -33,6 +33,8 @@ enum class status : std::int32_t {
     fit_too_few = DC_ERR_FIT_TOO_FEW,
     fit_degenerate = DC_ERR_FIT_DEGENERATE,
     builtin_version = DC_ERR_BUILTIN_VERSION,
+    plan_range = DC_ERR_PLAN_RANGE,
+    plan_infeasible = DC_ERR_PLAN_INFEASIBLE,
     internal = DC_ERR_INTERNAL,
 };
 

@@ -9,78 +9,78 @@ pub const DC_PLAN_INPUT_VERSION: u32 = 1;
 
 /// dc_plan's field codes (`field_out`): which dc_plan_input member a refusal is about.
 /// DC_PLAN_FIELD_NONE: no single member (e.g. DC_ERR_RESULT_RANGE).
-pub const DC_PLAN_FIELD_NONE: i32 = PlanField::None as i32;
+pub const DC_PLAN_FIELD_NONE: i32 = 0;
 /// youngs.
-pub const DC_PLAN_FIELD_YOUNGS: i32 = PlanField::Youngs as i32;
+pub const DC_PLAN_FIELD_YOUNGS: i32 = 1;
 /// poisson.
-pub const DC_PLAN_FIELD_POISSON: i32 = PlanField::Poisson as i32;
+pub const DC_PLAN_FIELD_POISSON: i32 = 2;
 /// density.
-pub const DC_PLAN_FIELD_DENSITY: i32 = PlanField::Density as i32;
+pub const DC_PLAN_FIELD_DENSITY: i32 = 3;
 /// restitution.
-pub const DC_PLAN_FIELD_RESTITUTION: i32 = PlanField::Restitution as i32;
+pub const DC_PLAN_FIELD_RESTITUTION: i32 = 4;
 /// radius_min.
-pub const DC_PLAN_FIELD_RADIUS_MIN: i32 = PlanField::RadiusMin as i32;
+pub const DC_PLAN_FIELD_RADIUS_MIN: i32 = 5;
 /// radius_max (also when radius_max < radius_min).
-pub const DC_PLAN_FIELD_RADIUS_MAX: i32 = PlanField::RadiusMax as i32;
+pub const DC_PLAN_FIELD_RADIUS_MAX: i32 = 6;
 /// v_max.
-pub const DC_PLAN_FIELD_V_MAX: i32 = PlanField::VMax as i32;
+pub const DC_PLAN_FIELD_V_MAX: i32 = 7;
 /// depth.
-pub const DC_PLAN_FIELD_DEPTH: i32 = PlanField::Depth as i32;
+pub const DC_PLAN_FIELD_DEPTH: i32 = 8;
 /// gravity.
-pub const DC_PLAN_FIELD_GRAVITY: i32 = PlanField::Gravity as i32;
+pub const DC_PLAN_FIELD_GRAVITY: i32 = 9;
 /// pressure.
-pub const DC_PLAN_FIELD_PRESSURE: i32 = PlanField::Pressure as i32;
+pub const DC_PLAN_FIELD_PRESSURE: i32 = 10;
 /// solid_fraction.
-pub const DC_PLAN_FIELD_SOLID_FRACTION: i32 = PlanField::SolidFraction as i32;
+pub const DC_PLAN_FIELD_SOLID_FRACTION: i32 = 11;
 /// coordination.
-pub const DC_PLAN_FIELD_COORDINATION: i32 = PlanField::Coordination as i32;
+pub const DC_PLAN_FIELD_COORDINATION: i32 = 12;
 /// load_factor.
-pub const DC_PLAN_FIELD_LOAD_FACTOR: i32 = PlanField::LoadFactor as i32;
+pub const DC_PLAN_FIELD_LOAD_FACTOR: i32 = 13;
 /// friction.
-pub const DC_PLAN_FIELD_FRICTION: i32 = PlanField::Friction as i32;
+pub const DC_PLAN_FIELD_FRICTION: i32 = 14;
 /// rolling_friction.
-pub const DC_PLAN_FIELD_ROLLING_FRICTION: i32 = PlanField::RollingFriction as i32;
+pub const DC_PLAN_FIELD_ROLLING_FRICTION: i32 = 15;
 /// overlap_tol (also DC_ERR_PLAN_INFEASIBLE: the real material misses it).
-pub const DC_PLAN_FIELD_OVERLAP_TOL: i32 = PlanField::OverlapTol as i32;
+pub const DC_PLAN_FIELD_OVERLAP_TOL: i32 = 16;
 /// e_tol.
-pub const DC_PLAN_FIELD_E_TOL: i32 = PlanField::ETol as i32;
+pub const DC_PLAN_FIELD_E_TOL: i32 = 17;
 /// static_tol (also DC_ERR_PLAN_INFEASIBLE).
-pub const DC_PLAN_FIELD_STATIC_TOL: i32 = PlanField::StaticTol as i32;
+pub const DC_PLAN_FIELD_STATIC_TOL: i32 = 18;
 /// duration_tol.
-pub const DC_PLAN_FIELD_DURATION_TOL: i32 = PlanField::DurationTol as i32;
+pub const DC_PLAN_FIELD_DURATION_TOL: i32 = 19;
 /// criterion.
-pub const DC_PLAN_FIELD_CRITERION: i32 = PlanField::Criterion as i32;
+pub const DC_PLAN_FIELD_CRITERION: i32 = 20;
 /// stability_fraction.
-pub const DC_PLAN_FIELD_STABILITY_FRACTION: i32 = PlanField::StabilityFraction as i32;
+pub const DC_PLAN_FIELD_STABILITY_FRACTION: i32 = 21;
 /// conventional_divisor.
-pub const DC_PLAN_FIELD_CONVENTIONAL_DIVISOR: i32 = PlanField::ConventionalDivisor as i32;
+pub const DC_PLAN_FIELD_CONVENTIONAL_DIVISOR: i32 = 22;
 /// walls (not 0 or 1).
-pub const DC_PLAN_FIELD_WALLS: i32 = PlanField::Walls as i32;
+pub const DC_PLAN_FIELD_WALLS: i32 = 23;
 
 /// dc_plan_result.binding: the impact overlap tolerance sets the modulus.
-pub const DC_PLAN_BINDING_OVERLAP: i32 = plan::Binding::Overlap as i32;
+pub const DC_PLAN_BINDING_OVERLAP: i32 = 0;
 /// dc_plan_result.binding: the static overlap tolerance sets the modulus.
-pub const DC_PLAN_BINDING_STATIC: i32 = plan::Binding::Static as i32;
+pub const DC_PLAN_BINDING_STATIC: i32 = 1;
 /// dc_plan_result.binding: the duration tolerance sets the modulus.
-pub const DC_PLAN_BINDING_DURATION: i32 = plan::Binding::Duration as i32;
+pub const DC_PLAN_BINDING_DURATION: i32 = 2;
 /// dc_plan_result.binding_dt: the restitution tolerance sets the step.
-pub const DC_PLAN_STEP_RESTITUTION: i32 = plan::StepBinding::Restitution as i32;
+pub const DC_PLAN_STEP_RESTITUTION: i32 = 0;
 /// dc_plan_result.binding_dt: the resting-contact stability limit sets the step.
-pub const DC_PLAN_STEP_STABILITY: i32 = plan::StepBinding::Stability as i32;
+pub const DC_PLAN_STEP_STABILITY: i32 = 1;
 
 /// dc_plan_result pair codes: two spheres of radius_min.
-pub const DC_PLAN_PAIR_MIN_MIN: i32 = plan::PairKind::MinMin as i32;
+pub const DC_PLAN_PAIR_MIN_MIN: i32 = 0;
 /// radius_min against radius_max.
-pub const DC_PLAN_PAIR_MIN_MAX: i32 = plan::PairKind::MinMax as i32;
+pub const DC_PLAN_PAIR_MIN_MAX: i32 = 1;
 /// Two spheres of radius_max.
-pub const DC_PLAN_PAIR_MAX_MAX: i32 = plan::PairKind::MaxMax as i32;
+pub const DC_PLAN_PAIR_MAX_MAX: i32 = 2;
 /// radius_min against a wall.
-pub const DC_PLAN_PAIR_MIN_WALL: i32 = plan::PairKind::MinWall as i32;
+pub const DC_PLAN_PAIR_MIN_WALL: i32 = 3;
 /// radius_max against a wall.
-pub const DC_PLAN_PAIR_MAX_WALL: i32 = plan::PairKind::MaxWall as i32;
+pub const DC_PLAN_PAIR_MAX_WALL: i32 = 4;
 /// radius_min against min(radius_max, 2.7913 radius_min), the size ratio (1 + sqrt(21))/2 of
 /// the largest impact overlap.
-pub const DC_PLAN_PAIR_MIN_PEAK: i32 = plan::PairKind::MinPeak as i32;
+pub const DC_PLAN_PAIR_MIN_PEAK: i32 = 5;
 
 /// A scene for dc_plan (docs/plan.md): fill it with dc_plan_input_init, then set the members by
 /// name. Units SI. Members the init leaves NaN are required.
@@ -392,6 +392,62 @@ mod tests {
             overlap_tol: 0.01,
             e_tol: 0.01,
             ..default_input()
+        }
+    }
+
+    #[test]
+    fn codes_are_the_core_values() {
+        use plan::{Binding, PairKind, StepBinding};
+        let fields = [
+            (DC_PLAN_FIELD_NONE, PlanField::None),
+            (DC_PLAN_FIELD_YOUNGS, PlanField::Youngs),
+            (DC_PLAN_FIELD_POISSON, PlanField::Poisson),
+            (DC_PLAN_FIELD_DENSITY, PlanField::Density),
+            (DC_PLAN_FIELD_RESTITUTION, PlanField::Restitution),
+            (DC_PLAN_FIELD_RADIUS_MIN, PlanField::RadiusMin),
+            (DC_PLAN_FIELD_RADIUS_MAX, PlanField::RadiusMax),
+            (DC_PLAN_FIELD_V_MAX, PlanField::VMax),
+            (DC_PLAN_FIELD_DEPTH, PlanField::Depth),
+            (DC_PLAN_FIELD_GRAVITY, PlanField::Gravity),
+            (DC_PLAN_FIELD_PRESSURE, PlanField::Pressure),
+            (DC_PLAN_FIELD_SOLID_FRACTION, PlanField::SolidFraction),
+            (DC_PLAN_FIELD_COORDINATION, PlanField::Coordination),
+            (DC_PLAN_FIELD_LOAD_FACTOR, PlanField::LoadFactor),
+            (DC_PLAN_FIELD_FRICTION, PlanField::Friction),
+            (DC_PLAN_FIELD_ROLLING_FRICTION, PlanField::RollingFriction),
+            (DC_PLAN_FIELD_OVERLAP_TOL, PlanField::OverlapTol),
+            (DC_PLAN_FIELD_E_TOL, PlanField::ETol),
+            (DC_PLAN_FIELD_STATIC_TOL, PlanField::StaticTol),
+            (DC_PLAN_FIELD_DURATION_TOL, PlanField::DurationTol),
+            (DC_PLAN_FIELD_CRITERION, PlanField::Criterion),
+            (
+                DC_PLAN_FIELD_STABILITY_FRACTION,
+                PlanField::StabilityFraction,
+            ),
+            (
+                DC_PLAN_FIELD_CONVENTIONAL_DIVISOR,
+                PlanField::ConventionalDivisor,
+            ),
+            (DC_PLAN_FIELD_WALLS, PlanField::Walls),
+        ];
+        for (c, f) in fields {
+            assert_eq!(c, f as i32, "{f:?}");
+        }
+        assert_eq!(DC_PLAN_BINDING_OVERLAP, Binding::Overlap as i32);
+        assert_eq!(DC_PLAN_BINDING_STATIC, Binding::Static as i32);
+        assert_eq!(DC_PLAN_BINDING_DURATION, Binding::Duration as i32);
+        assert_eq!(DC_PLAN_STEP_RESTITUTION, StepBinding::Restitution as i32);
+        assert_eq!(DC_PLAN_STEP_STABILITY, StepBinding::Stability as i32);
+        let pairs = [
+            DC_PLAN_PAIR_MIN_MIN,
+            DC_PLAN_PAIR_MIN_MAX,
+            DC_PLAN_PAIR_MAX_MAX,
+            DC_PLAN_PAIR_MIN_WALL,
+            DC_PLAN_PAIR_MAX_WALL,
+            DC_PLAN_PAIR_MIN_PEAK,
+        ];
+        for (c, k) in pairs.into_iter().zip(PairKind::ALL) {
+            assert_eq!(c, k as i32, "{k:?}");
         }
     }
 

@@ -70,6 +70,8 @@ const P: f64 = 1.5;
 /// Quadrature level of the durations (the library's highest: ~1e-12 relative).
 const LEVEL: u32 = 4;
 /// Onset phases over which the realised e is reported (as [`crate::timestep::accuracy`] samples).
+///
+/// cbindgen:ignore
 pub const N_PHASE: u32 = 64;
 
 /// What the planner is told about the scene. See the module docs for the model.
@@ -164,6 +166,8 @@ impl Default for PlanInput {
 }
 
 /// Which input a refusal is about (the C ABI's `DC_PLAN_FIELD_*` codes are these values).
+///
+/// cbindgen:ignore
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[repr(i32)]
 pub enum PlanField {
@@ -233,6 +237,8 @@ impl PlanError {
 }
 
 /// The extreme pairs the planner evaluates.
+///
+/// cbindgen:ignore
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[repr(i32)]
 pub enum PairKind {
@@ -255,6 +261,8 @@ pub enum PairKind {
 /// and m*/√R* ∝ R1^(5/2) f(r), f(r) = r^(5/2) (1 + r)^(1/2)/(1 + r³), whose logarithmic derivative
 /// vanishes where r³ − 6r − 5 = (r + 1)(r² − r − 5) = 0: r = (1 + √21)/2 ≈ 2.791 (f = 1.113 there,
 /// against 1/√2 for equal spheres and 1 for a wall).
+///
+/// cbindgen:ignore
 pub const PEAK_RATIO: f64 = 2.791_287_847_477_920;
 
 impl PairKind {
@@ -286,6 +294,8 @@ impl PairKind {
 }
 
 /// What sets the softest modulus.
+///
+/// cbindgen:ignore
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[repr(i32)]
 pub enum Binding {
@@ -309,6 +319,8 @@ impl Binding {
 }
 
 /// What sets the step.
+///
+/// cbindgen:ignore
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[repr(i32)]
 pub enum StepBinding {
