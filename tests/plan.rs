@@ -18,7 +18,12 @@
 //! Tolerances: 1e-6 relative for the RK4 figures (the integration's own error is below 1e-8;
 //! the δ^(1/4) dashpot is not smooth at δ = 0, so RK4 is not fourth order there), 1e-9 for the
 //! velocity-Verlet e (same arithmetic, summation order aside).
-#![allow(clippy::unwrap_used, clippy::expect_used, clippy::indexing_slicing)]
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
 
 use demcontact::EndCriterion;
 use demcontact::plan::{Binding, PairKind, Plan, PlanInput, StepBinding, plan};

@@ -263,7 +263,7 @@ pub enum PairKind {
 /// against 1/√2 for equal spheres and 1 for a wall).
 ///
 /// cbindgen:ignore
-pub const PEAK_RATIO: f64 = 2.791_287_847_477_920;
+pub const PEAK_RATIO: f64 = 2.791_287_847_477_92;
 
 impl PairKind {
     /// All six, in code order.
