@@ -215,6 +215,188 @@
 #define DC_MODEL_DMT 4
 
 /**
+ * Version of dc_plan_input this library reads (dc_plan_input_init sets it).
+ */
+#define DC_PLAN_INPUT_VERSION 1
+
+/**
+ * dc_plan's field codes (`field_out`): which dc_plan_input member a refusal is about.
+ * DC_PLAN_FIELD_NONE: no single member (e.g. DC_ERR_RESULT_RANGE).
+ */
+#define DC_PLAN_FIELD_NONE 0
+
+/**
+ * youngs.
+ */
+#define DC_PLAN_FIELD_YOUNGS 1
+
+/**
+ * poisson.
+ */
+#define DC_PLAN_FIELD_POISSON 2
+
+/**
+ * density.
+ */
+#define DC_PLAN_FIELD_DENSITY 3
+
+/**
+ * restitution.
+ */
+#define DC_PLAN_FIELD_RESTITUTION 4
+
+/**
+ * radius_min.
+ */
+#define DC_PLAN_FIELD_RADIUS_MIN 5
+
+/**
+ * radius_max (also when radius_max < radius_min).
+ */
+#define DC_PLAN_FIELD_RADIUS_MAX 6
+
+/**
+ * v_max.
+ */
+#define DC_PLAN_FIELD_V_MAX 7
+
+/**
+ * depth.
+ */
+#define DC_PLAN_FIELD_DEPTH 8
+
+/**
+ * gravity.
+ */
+#define DC_PLAN_FIELD_GRAVITY 9
+
+/**
+ * pressure.
+ */
+#define DC_PLAN_FIELD_PRESSURE 10
+
+/**
+ * solid_fraction.
+ */
+#define DC_PLAN_FIELD_SOLID_FRACTION 11
+
+/**
+ * coordination.
+ */
+#define DC_PLAN_FIELD_COORDINATION 12
+
+/**
+ * load_factor.
+ */
+#define DC_PLAN_FIELD_LOAD_FACTOR 13
+
+/**
+ * friction.
+ */
+#define DC_PLAN_FIELD_FRICTION 14
+
+/**
+ * rolling_friction.
+ */
+#define DC_PLAN_FIELD_ROLLING_FRICTION 15
+
+/**
+ * overlap_tol (also DC_ERR_PLAN_INFEASIBLE: the real material misses it).
+ */
+#define DC_PLAN_FIELD_OVERLAP_TOL 16
+
+/**
+ * e_tol.
+ */
+#define DC_PLAN_FIELD_E_TOL 17
+
+/**
+ * static_tol (also DC_ERR_PLAN_INFEASIBLE).
+ */
+#define DC_PLAN_FIELD_STATIC_TOL 18
+
+/**
+ * duration_tol.
+ */
+#define DC_PLAN_FIELD_DURATION_TOL 19
+
+/**
+ * criterion.
+ */
+#define DC_PLAN_FIELD_CRITERION 20
+
+/**
+ * stability_fraction.
+ */
+#define DC_PLAN_FIELD_STABILITY_FRACTION 21
+
+/**
+ * conventional_divisor.
+ */
+#define DC_PLAN_FIELD_CONVENTIONAL_DIVISOR 22
+
+/**
+ * walls (not 0 or 1).
+ */
+#define DC_PLAN_FIELD_WALLS 23
+
+/**
+ * dc_plan_result.binding: the impact overlap tolerance sets the modulus.
+ */
+#define DC_PLAN_BINDING_OVERLAP 0
+
+/**
+ * dc_plan_result.binding: the static overlap tolerance sets the modulus.
+ */
+#define DC_PLAN_BINDING_STATIC 1
+
+/**
+ * dc_plan_result.binding: the duration tolerance sets the modulus.
+ */
+#define DC_PLAN_BINDING_DURATION 2
+
+/**
+ * dc_plan_result.binding_dt: the restitution tolerance sets the step.
+ */
+#define DC_PLAN_STEP_RESTITUTION 0
+
+/**
+ * dc_plan_result.binding_dt: the resting-contact stability limit sets the step.
+ */
+#define DC_PLAN_STEP_STABILITY 1
+
+/**
+ * dc_plan_result pair codes: two spheres of radius_min.
+ */
+#define DC_PLAN_PAIR_MIN_MIN 0
+
+/**
+ * radius_min against radius_max.
+ */
+#define DC_PLAN_PAIR_MIN_MAX 1
+
+/**
+ * Two spheres of radius_max.
+ */
+#define DC_PLAN_PAIR_MAX_MAX 2
+
+/**
+ * radius_min against a wall.
+ */
+#define DC_PLAN_PAIR_MIN_WALL 3
+
+/**
+ * radius_max against a wall.
+ */
+#define DC_PLAN_PAIR_MAX_WALL 4
+
+/**
+ * radius_min against min(radius_max, 2.7913 radius_min), the size ratio (1 + sqrt(21))/2 of
+ * the largest impact overlap.
+ */
+#define DC_PLAN_PAIR_MIN_PEAK 5
+
+/**
  * Lowest quadrature accuracy level (fastest; see docs/powerlaw.md for its measured error).
  */
 #define DC_LEVEL_MIN 0
@@ -401,6 +583,16 @@ enum dc_status
      * (strong damping, e well below 0.1, at steps near t_H/10).
      */
     DC_ERR_STEP_UNREACHABLE = 6137,
+    /**
+     * A dc_plan_input value is outside its documented range (radius_min > radius_max, a solid
+     * fraction outside (0, 1), a tolerance >= 1, ...; dc_plan names the member), or its version
+     * or size is not this library's.
+     */
+    DC_ERR_PLAN_RANGE = 6140,
+    /**
+     * No Young's modulus meets the planner's tolerances: the real material itself misses one.
+     */
+    DC_ERR_PLAN_INFEASIBLE = 6141,
     /**
      * An internal error was caught at the boundary (not expected; please report).
      */
@@ -931,6 +1123,237 @@ typedef struct dc_fit_result {
 } dc_fit_result;
 
 /**
+ * A scene for dc_plan (docs/plan.md): fill it with dc_plan_input_init, then set the members by
+ * name. Units SI. Members the init leaves NaN are required.
+ *
+ * Versioned: `version` and `size` (set by dc_plan_input_init) let later library versions append
+ * members (a step-aware option) without breaking callers compiled against this one; dc_plan
+ * writes the dc_plan_result of the input's version.
+ */
+typedef struct dc_plan_input {
+    /**
+     * DC_PLAN_INPUT_VERSION.
+     */
+    uint32_t version;
+    /**
+     * sizeof(dc_plan_input) as the caller compiled it.
+     */
+    uint32_t size;
+    /**
+     * Real Young's modulus E [Pa] > 0 (required).
+     */
+    double youngs;
+    /**
+     * Poisson's ratio in (-1, 0.5] (required).
+     */
+    double poisson;
+    /**
+     * Particle density [kg/m^3] > 0 (required).
+     */
+    double density;
+    /**
+     * Target restitution in (0, 1] (required).
+     */
+    double restitution;
+    /**
+     * Smallest radius [m] > 0 (required).
+     */
+    double radius_min;
+    /**
+     * Largest radius [m] >= radius_min (required).
+     */
+    double radius_max;
+    /**
+     * Largest impact speed [m/s] > 0 (required).
+     */
+    double v_max;
+    /**
+     * Bed depth [m] >= 0 (required).
+     */
+    double depth;
+    /**
+     * Gravity [m/s^2] >= 0 (init: 9.81).
+     */
+    double gravity;
+    /**
+     * Confining pressure added to the bed weight [Pa] >= 0 (init: 0).
+     */
+    double pressure;
+    /**
+     * Solid fraction of the bed in (0, 1) (init: 0.6).
+     */
+    double solid_fraction;
+    /**
+     * Coordination number > 0 (init: 6).
+     */
+    double coordination;
+    /**
+     * Largest over mean contact force >= 1 (init: 1).
+     */
+    double load_factor;
+    /**
+     * Sliding friction >= 0 (init: 0; recorded, not used by the bounds).
+     */
+    double friction;
+    /**
+     * Rolling friction >= 0 (init: 0; recorded, not used by the bounds).
+     */
+    double rolling_friction;
+    /**
+     * Largest delta_max/R at v_max, in (0, 1) (required).
+     */
+    double overlap_tol;
+    /**
+     * Largest relative error of the realised e at the step, in (0, 1) (required).
+     */
+    double e_tol;
+    /**
+     * Largest static delta/R, > 0; +INFINITY: no bound (init: +INFINITY; the CLI's default is
+     * overlap_tol).
+     */
+    double static_tol;
+    /**
+     * Largest tau_soft/tau_real - 1, > 0; +INFINITY: no bound (init: +INFINITY).
+     */
+    double duration_tol;
+    /**
+     * DC_END_FORCE or DC_END_OVERLAP (init: DC_END_FORCE).
+     */
+    int32_t criterion;
+    /**
+     * 1: walls of the same material are part of the scene; 0: none (init: 1).
+     */
+    int32_t walls;
+    /**
+     * Fraction of the resting-contact stability limit the step may use, in (0, 1] (init: 0.5).
+     */
+    double stability_fraction;
+    /**
+     * The conventional step is tau_real/conventional_divisor, >= 1 (init: 50).
+     */
+    double conventional_divisor;
+} dc_plan_input;
+
+/**
+ * What dc_plan chooses and predicts (the members of docs/plan.md's JSON, same names).
+ */
+typedef struct dc_plan_result {
+    /**
+     * Softest Young's modulus meeting every tolerance [Pa].
+     */
+    double youngs_soft;
+    /**
+     * youngs / youngs_soft.
+     */
+    double softening;
+    /**
+     * DC_PLAN_BINDING_*: the tolerance that sets youngs_soft.
+     */
+    int32_t binding;
+    /**
+     * DC_PLAN_STEP_*: what sets dt.
+     */
+    int32_t binding_dt;
+    /**
+     * Largest step [s].
+     */
+    double dt;
+    /**
+     * The e-tolerance step [s].
+     */
+    double dt_restitution;
+    /**
+     * Resting-contact stability limit [s] (+INFINITY without static load), before
+     * stability_fraction.
+     */
+    double dt_stability;
+    /**
+     * Conventional step: tau_real / conventional_divisor [s].
+     */
+    double dt_conventional;
+    /**
+     * dt / dt_conventional.
+     */
+    double speedup;
+    /**
+     * Damping coefficient alpha.
+     */
+    double alpha;
+    /**
+     * Largest delta_max/R at v_max at youngs_soft.
+     */
+    double max_overlap_ratio;
+    /**
+     * The same at the real modulus.
+     */
+    double max_overlap_ratio_real;
+    /**
+     * Largest static delta/R at youngs_soft.
+     */
+    double static_overlap_ratio;
+    /**
+     * The same at the real modulus.
+     */
+    double static_overlap_ratio_real;
+    /**
+     * DC_PLAN_PAIR_* of max_overlap_ratio.
+     */
+    int32_t max_overlap_pair;
+    /**
+     * DC_PLAN_PAIR_* of static_overlap_ratio.
+     */
+    int32_t static_pair;
+    /**
+     * Bed stress [Pa].
+     */
+    double stress;
+    /**
+     * Static force on static_pair's contact [N].
+     */
+    double static_force;
+    /**
+     * Contact duration at v_max, radius_min pair, youngs_soft [s].
+     */
+    double duration;
+    /**
+     * The same at the real modulus [s].
+     */
+    double duration_real;
+    /**
+     * duration / duration_real - 1.
+     */
+    double duration_change;
+    /**
+     * Elastic Hertz duration at v_max, radius_min pair, youngs_soft [s].
+     */
+    double t_hertz;
+    /**
+     * dt / t_hertz.
+     */
+    double dt_over_t_hertz;
+    /**
+     * duration / dt.
+     */
+    double steps_per_contact;
+    /**
+     * Realised e at dt (plain dashpot) farthest from the target over 64 onset phases.
+     */
+    double e_plain_at_dt;
+    /**
+     * Smallest realised e over the phases.
+     */
+    double e_plain_min;
+    /**
+     * Largest realised e over the phases.
+     */
+    double e_plain_max;
+    /**
+     * Mean realised e over the phases.
+     */
+    double e_plain_mean;
+} dc_plan_result;
+
+/**
  * A contact-duration plan: everything dc_contact_duration_level computes from the exponent p and
  * the accuracy level alone (transform constants, ln Gamma(q), Gauss-Jacobi nodes and weights for
  * the integrand's end singularity), built once by dc_duration_plan_init and then reused by
@@ -1008,6 +1431,8 @@ typedef struct dc_energy {
      */
     double clamped;
 } dc_energy;
+
+
 
 #ifdef __cplusplus
 extern "C" {
@@ -1700,6 +2125,50 @@ int32_t dc_hertz_stiffness(double E1,
  * `E_star_out` must be NULL or point to writable memory for one double.
  */
 int32_t dc_effective_modulus(double E1, double nu1, double E2, double nu2, double *E_star_out);
+
+/**
+ * Fills a dc_plan_input with its version, size and defaults (required members NaN).
+ *
+ * @param input  receives the defaults; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER.
+ *
+ * # Safety
+ * `input` must be NULL or point to writable memory for one dc_plan_input.
+ */
+int32_t dc_plan_input_init(struct dc_plan_input *input);
+
+/**
+ * The scene planner: the softest Young's modulus and the largest velocity-Verlet step that keep
+ * delta_max/R at v_max, the static delta/R under the bed load, the contact duration's
+ * lengthening and the realised e within the input's tolerances, and the per-contact figures at
+ * that choice (docs/plan.md has the model: six extreme pairs, the bed load
+ * f = pi (R1+R2)^2 (phi rho g H + P)/(phi Z), the exact scaling of each figure in E, and the
+ * speed-up dt/dt_conventional at unchanged cost per step). Every figure comes from the
+ * library's exact functions (dc_max_overlap, dc_contact_duration, dc_dt_for_accuracy,
+ * dc_dt_static, and velocity-Verlet collisions at 64 onset phases).
+ *
+ * Cost: one dc_dt_for_accuracy (up to ~200 ms for e ~ 0.1, e_tol ~ 1e-3) and 64 simulated
+ * collisions; allocation-free, thread-safe. Call it at set-up.
+ *
+ * @param input      the scene (dc_plan_input_init, then the members set by name).
+ * @param out        receives the plan on DC_OK; untouched on error.
+ * @param field_out  NULL, or receives DC_PLAN_FIELD_* of the member at fault on an error
+ *                   status (DC_PLAN_FIELD_NONE when no single member is); untouched on DC_OK.
+ * @return DC_OK, DC_ERR_NULL_POINTER (input or out), DC_ERR_NOT_FINITE (a NaN or infinite member; +INFINITY is allowed
+ *         for static_tol and duration_tol), DC_ERR_NOT_POSITIVE, DC_ERR_NEGATIVE,
+ *         DC_ERR_POISSON_RANGE, DC_ERR_RESTITUTION_RANGE, DC_ERR_CRITERION,
+ *         DC_ERR_PLAN_RANGE (version or size not this library's (field NONE), radius_max < radius_min, solid_fraction outside (0, 1), a
+ *         tolerance >= 1, load_factor < 1, stability_fraction outside (0, 1], conventional_divisor
+ *         < 1, walls not 0/1), DC_ERR_PLAN_INFEASIBLE (the real material misses the tolerance
+ *         named by field_out), DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `input` must be NULL or readable for one dc_plan_input; `out` NULL or writable for one
+ * dc_plan_result; `field_out` NULL or writable for one int32_t.
+ */
+int32_t dc_plan(const struct dc_plan_input *input,
+                struct dc_plan_result *out,
+                int32_t *field_out);
 
 /**
  * Maximum overlap of a collision, in closed form for every p >= 1 and every alpha >= 0

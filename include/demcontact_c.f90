@@ -46,6 +46,42 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_MODEL_HERTZ = 2
   integer(c_int32_t), parameter :: DC_MODEL_VISCOELASTIC = 3
   integer(c_int32_t), parameter :: DC_MODEL_DMT = 4
+  integer(c_int32_t), parameter :: DC_PLAN_INPUT_VERSION = 1
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_NONE = 0
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_YOUNGS = 1
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_POISSON = 2
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_DENSITY = 3
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_RESTITUTION = 4
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_RADIUS_MIN = 5
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_RADIUS_MAX = 6
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_V_MAX = 7
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_DEPTH = 8
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_GRAVITY = 9
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_PRESSURE = 10
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_SOLID_FRACTION = 11
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_COORDINATION = 12
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_LOAD_FACTOR = 13
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_FRICTION = 14
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_ROLLING_FRICTION = 15
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_OVERLAP_TOL = 16
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_E_TOL = 17
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_STATIC_TOL = 18
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_DURATION_TOL = 19
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_CRITERION = 20
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_STABILITY_FRACTION = 21
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_CONVENTIONAL_DIVISOR = 22
+  integer(c_int32_t), parameter :: DC_PLAN_FIELD_WALLS = 23
+  integer(c_int32_t), parameter :: DC_PLAN_BINDING_OVERLAP = 0
+  integer(c_int32_t), parameter :: DC_PLAN_BINDING_STATIC = 1
+  integer(c_int32_t), parameter :: DC_PLAN_BINDING_DURATION = 2
+  integer(c_int32_t), parameter :: DC_PLAN_STEP_RESTITUTION = 0
+  integer(c_int32_t), parameter :: DC_PLAN_STEP_STABILITY = 1
+  integer(c_int32_t), parameter :: DC_PLAN_PAIR_MIN_MIN = 0
+  integer(c_int32_t), parameter :: DC_PLAN_PAIR_MIN_MAX = 1
+  integer(c_int32_t), parameter :: DC_PLAN_PAIR_MAX_MAX = 2
+  integer(c_int32_t), parameter :: DC_PLAN_PAIR_MIN_WALL = 3
+  integer(c_int32_t), parameter :: DC_PLAN_PAIR_MAX_WALL = 4
+  integer(c_int32_t), parameter :: DC_PLAN_PAIR_MIN_PEAK = 5
   integer(c_int32_t), parameter :: DC_LEVEL_MIN = 0
   integer(c_int32_t), parameter :: DC_LEVEL_MAX = 4
   integer(c_int32_t), parameter :: DC_END_OVERLAP = 0
@@ -85,6 +121,8 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_ERR_INTEGRATOR = 6135
   integer(c_int32_t), parameter :: DC_ERR_STEP_UNSUPPORTED = 6136
   integer(c_int32_t), parameter :: DC_ERR_STEP_UNREACHABLE = 6137
+  integer(c_int32_t), parameter :: DC_ERR_PLAN_RANGE = 6140
+  integer(c_int32_t), parameter :: DC_ERR_PLAN_INFEASIBLE = 6141
   integer(c_int32_t), parameter :: DC_ERR_INTERNAL = 6199
 
   type, bind(c) :: dc_contact_spec
@@ -215,6 +253,65 @@ module demcontact_c
     integer(c_int32_t) :: iterations
     integer(c_int32_t) :: robust
   end type dc_fit_result
+
+  type, bind(c) :: dc_plan_input
+    integer(c_int32_t) :: version
+    integer(c_int32_t) :: size
+    real(c_double) :: youngs
+    real(c_double) :: poisson
+    real(c_double) :: density
+    real(c_double) :: restitution
+    real(c_double) :: radius_min
+    real(c_double) :: radius_max
+    real(c_double) :: v_max
+    real(c_double) :: depth
+    real(c_double) :: gravity
+    real(c_double) :: pressure
+    real(c_double) :: solid_fraction
+    real(c_double) :: coordination
+    real(c_double) :: load_factor
+    real(c_double) :: friction
+    real(c_double) :: rolling_friction
+    real(c_double) :: overlap_tol
+    real(c_double) :: e_tol
+    real(c_double) :: static_tol
+    real(c_double) :: duration_tol
+    integer(c_int32_t) :: criterion
+    integer(c_int32_t) :: walls
+    real(c_double) :: stability_fraction
+    real(c_double) :: conventional_divisor
+  end type dc_plan_input
+
+  type, bind(c) :: dc_plan_result
+    real(c_double) :: youngs_soft
+    real(c_double) :: softening
+    integer(c_int32_t) :: binding
+    integer(c_int32_t) :: binding_dt
+    real(c_double) :: dt
+    real(c_double) :: dt_restitution
+    real(c_double) :: dt_stability
+    real(c_double) :: dt_conventional
+    real(c_double) :: speedup
+    real(c_double) :: alpha
+    real(c_double) :: max_overlap_ratio
+    real(c_double) :: max_overlap_ratio_real
+    real(c_double) :: static_overlap_ratio
+    real(c_double) :: static_overlap_ratio_real
+    integer(c_int32_t) :: max_overlap_pair
+    integer(c_int32_t) :: static_pair
+    real(c_double) :: stress
+    real(c_double) :: static_force
+    real(c_double) :: duration
+    real(c_double) :: duration_real
+    real(c_double) :: duration_change
+    real(c_double) :: t_hertz
+    real(c_double) :: dt_over_t_hertz
+    real(c_double) :: steps_per_contact
+    real(c_double) :: e_plain_at_dt
+    real(c_double) :: e_plain_min
+    real(c_double) :: e_plain_max
+    real(c_double) :: e_plain_mean
+  end type dc_plan_result
 
   type, bind(c) :: dc_duration_plan
     integer(c_int64_t) :: tag
@@ -530,6 +627,18 @@ module demcontact_c
       real(c_double), intent(out) :: E_star_out
       integer(c_int32_t) :: dc_effective_modulus
     end function dc_effective_modulus
+    function dc_plan_input_init(input) bind(c, name='dc_plan_input_init')
+      import
+      type(dc_plan_input), intent(inout) :: input
+      integer(c_int32_t) :: dc_plan_input_init
+    end function dc_plan_input_init
+    function dc_plan(input, out, field_out) bind(c, name='dc_plan')
+      import
+      type(dc_plan_input), intent(in) :: input
+      type(dc_plan_result), intent(out) :: out
+      integer(c_int32_t), intent(out) :: field_out
+      integer(c_int32_t) :: dc_plan
+    end function dc_plan
     function dc_max_overlap(p, alpha, v0, omega0, delta_max_out) bind(c, name='dc_max_overlap')
       import
       real(c_double), value, intent(in) :: p

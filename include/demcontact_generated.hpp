@@ -36,6 +36,8 @@ enum class status : std::int32_t {
     integrator = DC_ERR_INTEGRATOR,
     step_unsupported = DC_ERR_STEP_UNSUPPORTED,
     step_unreachable = DC_ERR_STEP_UNREACHABLE,
+    plan_range = DC_ERR_PLAN_RANGE,
+    plan_infeasible = DC_ERR_PLAN_INFEASIBLE,
     internal = DC_ERR_INTERNAL,
 };
 

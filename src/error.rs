@@ -59,6 +59,11 @@ pub enum Error {
     /// The host's explicit step cannot realise this restitution with the step-aware damping
     /// (strong damping at steps near t_H/10).
     StepUnreachable,
+    /// A planner input is outside its documented range (e.g. R_min > R_max, a solid fraction
+    /// outside (0, 1), a tolerance ≥ 1).
+    PlanRange,
+    /// No modulus meets the planner's tolerances: the real material itself misses one.
+    PlanInfeasible,
     /// A fit got fewer than two points.
     FitTooFew,
     /// A fit's data cannot determine the model: all speeds equal, or all weights zero.

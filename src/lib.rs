@@ -27,6 +27,7 @@ pub mod force;
 pub mod lsd;
 pub mod material;
 pub mod numerics;
+pub mod plan;
 pub mod powerlaw;
 pub mod timestep;
 pub mod viscoelastic;

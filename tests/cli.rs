@@ -511,3 +511,182 @@ fn fit_bad_input() {
     ]);
     assert_eq!(o.status.code(), Some(4));
 }
+
+const PLAN: [&str; 25] = [
+    "plan",
+    "--E1",
+    "7e10",
+    "--nu1",
+    "0.22",
+    "--rho1",
+    "2500",
+    "--e",
+    "0.5",
+    "--R-min",
+    "1e-3",
+    "--R-max",
+    "2e-3",
+    "--v-max",
+    "2",
+    "--depth",
+    "0.5",
+    "--overlap-tol",
+    "0.01",
+    "--e-tol",
+    "0.01",
+    "--mu",
+    "0.5",
+    "--mu-r",
+    "0.1",
+];
+
+/// The plan command line with `flag` set to `value` (added when absent), or removed (None).
+fn plan_with(flag: &str, value: Option<&str>) -> Vec<String> {
+    let mut a: Vec<String> = PLAN.iter().map(|s| s.to_string()).collect();
+    match a.iter().position(|s| s == flag) {
+        Some(i) => match value {
+            Some(v) => a[i + 1] = v.into(),
+            None => {
+                a.remove(i + 1);
+                a.remove(i);
+            }
+        },
+        None => {
+            if let Some(v) = value {
+                a.push(flag.into());
+                a.push(v.into());
+            }
+        }
+    }
+    a
+}
+
+#[test]
+fn plan_json_matches_the_library() {
+    let args: Vec<&str> = PLAN.iter().copied().chain(["--json"]).collect();
+    let o = run(&args);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let j = json_of(&o);
+    let inp = demcontact::plan::PlanInput {
+        youngs: 7e10,
+        poisson: 0.22,
+        density: 2500.0,
+        restitution: 0.5,
+        radius_min: 1e-3,
+        radius_max: 2e-3,
+        v_max: 2.0,
+        depth: 0.5,
+        friction: 0.5,
+        rolling_friction: 0.1,
+        overlap_tol: 0.01,
+        e_tol: 0.01,
+        static_tol: 0.01,
+        ..demcontact::plan::PlanInput::new()
+    };
+    let p = demcontact::plan::plan(&inp).unwrap();
+    for (key, want) in [
+        ("youngs_soft", p.youngs_soft),
+        ("dt", p.dt),
+        ("speedup", p.speedup),
+        ("max_overlap_ratio", p.max_overlap_ratio),
+        ("static_overlap_ratio", p.static_overlap_ratio),
+        ("duration", p.duration),
+        ("e_plain_at_dt", p.e_plain_at_dt),
+        ("steps_per_contact", p.steps_per_contact),
+    ] {
+        // serde_json's parser may round the last bit (no float_roundtrip feature).
+        let got = j[key].as_f64().unwrap();
+        assert!(
+            (got - want).abs() <= 4e-16 * want.abs(),
+            "{key}: {got} vs {want}"
+        );
+    }
+    assert_eq!(j["binding"], "overlap-tol");
+    assert_eq!(j["binding_dt"], "e-tol");
+    assert_eq!(j["mu"].as_f64(), Some(0.5));
+    assert_eq!(j["tolerances"]["duration_tol"], Value::Null); // no bound
+    // The text table names the same figures.
+    let o = run(&PLAN);
+    assert_eq!(o.status.code(), Some(0));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(text.contains(&format!("{:.6e}", p.youngs_soft)), "{text}");
+    assert!(text.contains("binding: overlap-tol"), "{text}");
+    assert!(text.contains(&format!("{:.4}", p.speedup)), "{text}");
+    // --help lists the contract flags.
+    let o = run(&["plan", "--help"]);
+    assert_eq!(o.status.code(), Some(0));
+    let help = String::from_utf8(o.stdout).unwrap();
+    for flag in [
+        "--E1",
+        "--nu1",
+        "--rho1",
+        "--e ",
+        "--R-min",
+        "--R-max",
+        "--v-max",
+        "--depth",
+        "--g ",
+        "--mu ",
+        "--mu-r",
+        "--overlap-tol",
+        "--e-tol",
+        "--json",
+    ] {
+        assert!(help.contains(flag), "--help lacks {flag}: {help}");
+    }
+}
+
+#[test]
+fn plan_bad_input() {
+    // (flag, value, status, what the message must contain)
+    let cases: [(&str, &str, i64, &str); 11] = [
+        ("--E1", "-7e10", 6105, "--E1 -70000000000"),
+        ("--E1", "NaN", 6102, "--E1 NaN"),
+        ("--e", "1.5", 6103, "--e 1.5"),
+        ("--R-max", "5e-4", 6140, "--R-min 0.001 --R-max 0.0005"),
+        ("--overlap-tol", "0", 6105, "--overlap-tol 0"),
+        ("--e-tol", "-0.01", 6105, "--e-tol -0.01"),
+        ("--e-tol", "inf", 6102, "--e-tol inf"),
+        ("--nu1", "0.7", 6114, "--nu1 0.7"),
+        ("--v-max", "0", 6105, "--v-max 0"),
+        ("--depth", "-1", 6106, "--depth -1"),
+        // The real glass already overlaps more than 1e-4 of R at 2 m/s.
+        ("--overlap-tol", "1e-4", 6141, "--overlap-tol 0.0001"),
+    ];
+    for (flag, value, status, says) in cases {
+        let args = plan_with(flag, Some(value));
+        let mut a: Vec<&str> = args.iter().map(String::as_str).collect();
+        let o = run(&a);
+        assert_eq!(o.status.code(), Some(1), "{flag} {value}");
+        assert!(o.stdout.is_empty(), "{flag} {value}: stdout written");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains(says), "{flag} {value}: {err}");
+        a.push("--json");
+        let o = run(&a);
+        assert_eq!(o.status.code(), Some(1), "{flag} {value}");
+        let j = json_of(&o);
+        assert_eq!(
+            j["error"]["status"].as_i64(),
+            Some(status),
+            "{flag} {value}: {j}"
+        );
+        assert!(j.get("youngs_soft").is_none() && j.as_object().unwrap().len() == 1);
+    }
+    let o = run(&plan_with("--overlap-tol", Some("1e-4"))
+        .iter()
+        .map(String::as_str)
+        .collect::<Vec<_>>());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("the real modulus gives delta_max/R"));
+    // A missing required flag or a value that is not a number: clap, exit 2, nothing on stdout.
+    for args in [plan_with("--depth", None), plan_with("--E1", Some("seven"))] {
+        let a: Vec<&str> = args.iter().map(String::as_str).collect();
+        let o = run(&a);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(o.stdout.is_empty());
+    }
+}

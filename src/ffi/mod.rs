@@ -16,6 +16,7 @@ pub mod contact;
 pub mod fit;
 pub mod force;
 pub mod material;
+pub mod plan;
 pub mod powerlaw;
 pub mod status;
 pub mod step_accuracy;

@@ -92,6 +92,12 @@ pub enum dc_status {
     /// The host's explicit step cannot realise this restitution with the step-aware damping
     /// (strong damping, e well below 0.1, at steps near t_H/10).
     DC_ERR_STEP_UNREACHABLE = 6137,
+    /// A dc_plan_input value is outside its documented range (radius_min > radius_max, a solid
+    /// fraction outside (0, 1), a tolerance >= 1, ...; dc_plan names the member), or its version
+    /// or size is not this library's.
+    DC_ERR_PLAN_RANGE = 6140,
+    /// No Young's modulus meets the planner's tolerances: the real material itself misses one.
+    DC_ERR_PLAN_INFEASIBLE = 6141,
     /// An internal error was caught at the boundary (not expected; please report).
     DC_ERR_INTERNAL = 6199,
 }
@@ -154,6 +160,10 @@ impl dc_status {
             DC_ERR_STEP_UNREACHABLE => {
                 c"the explicit step cannot realise this restitution (step-aware damping)"
             }
+            DC_ERR_PLAN_RANGE => c"a planner input (or dc_plan_input version/size) is out of range",
+            DC_ERR_PLAN_INFEASIBLE => {
+                c"no Young's modulus meets the tolerances: the real material misses one"
+            }
             DC_ERR_INTERNAL => c"internal error caught at the C boundary (please report)",
         }
     }
@@ -190,6 +200,8 @@ impl dc_status {
             Error::Integrator => DC_ERR_INTEGRATOR,
             Error::StepUnsupported => DC_ERR_STEP_UNSUPPORTED,
             Error::StepUnreachable => DC_ERR_STEP_UNREACHABLE,
+            Error::PlanRange => DC_ERR_PLAN_RANGE,
+            Error::PlanInfeasible => DC_ERR_PLAN_INFEASIBLE,
         }
     }
 }
@@ -237,6 +249,8 @@ mod codes {
     pub const DC_ERR_INTEGRATOR: i32 = dc_status::DC_ERR_INTEGRATOR as i32;
     pub const DC_ERR_STEP_UNSUPPORTED: i32 = dc_status::DC_ERR_STEP_UNSUPPORTED as i32;
     pub const DC_ERR_STEP_UNREACHABLE: i32 = dc_status::DC_ERR_STEP_UNREACHABLE as i32;
+    pub const DC_ERR_PLAN_RANGE: i32 = dc_status::DC_ERR_PLAN_RANGE as i32;
+    pub const DC_ERR_PLAN_INFEASIBLE: i32 = dc_status::DC_ERR_PLAN_INFEASIBLE as i32;
     pub const DC_ERR_INTERNAL: i32 = dc_status::DC_ERR_INTERNAL as i32;
 }
 pub use codes::*;
@@ -290,7 +304,7 @@ mod tests {
                 assert_ne!(a.message(), b.message());
             }
         }
-        for code in [-1, 1, 6100, 6115, 6138, 6200, i32::MIN, i32::MAX] {
+        for code in [-1, 1, 6100, 6115, 6138, 6142, 6200, i32::MIN, i32::MAX] {
             assert_eq!(dc_status_known(code), 0, "{code}");
             // SAFETY: dc_status_str returns a static NUL-terminated string.
             let s = unsafe { CStr::from_ptr(dc_status_str(code)) };

@@ -4,6 +4,8 @@
 //! demcontact builtin --code liggghts --model hertz --limit-force --e 0.5
 //! demcontact contact --E1 7e10 --nu1 0.22 --rho1 2500 --R1 1e-3 --v 2 --e 0.5 [--wall]
 //! demcontact fit data.csv [--tol 0.02] [--plot fit.png]
+//! demcontact plan --E1 7e10 --nu1 0.22 --rho1 2500 --e 0.5 --R-min 1e-3 --R-max 2e-3 \
+//!     --v-max 2 --depth 0.5 --overlap-tol 0.01 --e-tol 0.01
 //! ```
 //!
 //! `--json` on every command prints one JSON object on stdout (errors too: `{"error": …}`).
@@ -17,6 +19,7 @@ mod contact_cmd;
 mod csv;
 mod fit_cmd;
 mod output;
+mod plan_cmd;
 mod plot;
 
 use clap::{Parser, Subcommand};
@@ -51,6 +54,9 @@ enum Command {
     /// Fit measured restitution (CSV: v, e[, sigma]) with the viscoelastic and constant-e models.
     #[command(allow_hyphen_values = true)]
     Fit(fit_cmd::Args),
+    /// The softest Young's modulus and the largest time step that meet a scene's tolerances.
+    #[command(allow_hyphen_values = true)]
+    Plan(plan_cmd::Args),
 }
 
 fn main() -> ExitCode {
@@ -66,6 +72,7 @@ fn main() -> ExitCode {
         Command::Builtin(a) => (a.json, builtin_cmd::run(a)),
         Command::Contact(a) => (a.json, contact_cmd::run(a)),
         Command::Fit(a) => (a.json, fit_cmd::run(a)),
+        Command::Plan(a) => (a.json, plan_cmd::run(a)),
     };
     match result {
         Ok(out) => {
