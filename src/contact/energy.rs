@@ -10,11 +10,13 @@
 //! stored energy is E = |S|²/(2k) (a displacement spring ξ is S = −k ξ). Per step:
 //!   E_before: the record as stored (at its last stiffness: known for the rescaled Mindlin law,
 //!             which stores a_old; the current k for the others),
-//!   S_c:      the record carried into the current frame (and rescaled, for that law),
+//!   S_c:      the record carried into the current frame (before the rescaling of that law: the
+//!             force the bodies felt at the start of the step),
 //!   W_in = −½ (S_c + S_new)·Δ: the work the bodies did on the spring (the trapezoid, exact for
 //!             an elastic increment S_new = S_c − k Δ),
-//!   slip = E_before − E_new + W_in   (0 to rounding while sticking; the Coulomb slip, the
-//!             rescaling loss and any loss of the frame carry otherwise),
+//!   slip = E_before − E_new + W_in   (0 to rounding while a constant-stiffness spring sticks;
+//!             the Coulomb slip, the loss of the rescaled law and any loss of the frame carry
+//!             otherwise),
 //!   damping = c |rate|² dt           (while the dashpot acts),
 //!   elastic = E_new.
 //! The constant rolling torque M has no spring: slip = −M·ω_r dt. The normal dashpot:
@@ -23,9 +25,14 @@
 //! Not counted, on purpose: the energy a law creates. `TANGENTIAL_MINDLIN` changes k_t under a
 //! stored ξ (E_before is taken at the current k_t, because the previous one is not stored), so
 //! its gain shows as ΔKE + Σ dissipated > 0, which is what the ledger is for; likewise EPSD
-//! rolling with Ai's stiffness rule (k_r = 0) when the overlap changes. When the contact ends
-//! (overlap ≤ 0) the history is reset: the energy dropped with it is counted as slip where the
-//! stiffness is known (linear and rescaled Mindlin springs, EPSD with k_r > 0, twisting).
+//! rolling with Ai's stiffness rule (k_r = 0) when the overlap changes. The step on which the
+//! contact ends (overlap ≤ 0) resets the history: it is a step to S_new = 0, so the energy
+//! dropped with the springs is counted as slip where their stiffness is known (linear and
+//! rescaled Mindlin springs, EPSD with k_r > 0, twisting).
+//!
+//! The trapezoid is what a velocity-Verlet host integrates to O(dt²) per step; what it leaves
+//! (the lever arms a_i = r_i − δ/2 and the frame turning within a step) is the scheme's own
+//! first-order error, measured in tests/passivity.rs.
 
 use super::evaluate::ContactForce;
 use super::frame::FrameStep;
@@ -111,7 +118,9 @@ fn spring(e_before: f64, k: f64, s_c: V3, s_new: V3, delta: V3) -> (f64, f64) {
     (e_before - e_new + w_in, e_new)
 }
 
-/// The tangential record as a force S and its stiffness: (k_before, S_old, k, S_c, S_new).
+/// The tangential record as a force S and its stiffness: (k_before, S_old, k, S_c, S_new), S_c
+/// the old force carried into the current frame (before any rescaling: the force the bodies
+/// felt at the start of the step).
 fn tangential_forces(
     m: &ContactModel,
     k: &Kin,
@@ -124,9 +133,13 @@ fn tangential_forces(
         let a = contact_radius(k);
         let a_old = get1(old, at + 3);
         let f_old = get3(old, at);
-        let c = frame.carry(f_old);
-        let c = if a < a_old { scale(a / a_old, c) } else { c };
-        return (m.kt * a_old, f_old, m.kt * a, c, get3(new, at));
+        return (
+            m.kt * a_old,
+            f_old,
+            m.kt * a,
+            frame.carry(f_old),
+            get3(new, at),
+        );
     }
     let kt = if m.tangential == select::TANGENTIAL_MINDLIN {
         Mindlin::stiffness(m, k)
@@ -138,26 +151,6 @@ fn tangential_forces(
     (kt, f(xi_old), kt, f(frame.carry(xi_old)), f(get3(new, at)))
 }
 
-/// The energy dropped with the history when a contact ends (see the module documentation).
-fn dropped(m: &ContactModel, old: &[f64; HISTORY_MAX]) -> ContactEnergy {
-    let mut e = ContactEnergy::default();
-    if let Some(at) = m.layout.tangential {
-        e.tangential_slip = match m.tangential {
-            select::TANGENTIAL_LINEAR => stored(m.kt, scale(m.kt, get3(old, at))),
-            select::TANGENTIAL_MINDLIN_RESCALE => stored(m.kt * get1(old, at + 3), get3(old, at)),
-            _ => 0.0,
-        };
-    }
-    if let Some(at) = m.layout.rolling {
-        e.rolling_slip = stored(m.k_r, get3(old, at));
-    }
-    if let Some(at) = m.layout.twisting {
-        e.twisting_slip = stored(m.k_tw, [get1(old, at), 0.0, 0.0]);
-    }
-    e.dissipated = e.tangential_slip + e.rolling_slip + e.twisting_slip;
-    e
-}
-
 /// The ledger of the step that took the history from `old` to `new` and gave `out`.
 pub(crate) fn ledger(
     m: &ContactModel,
@@ -167,18 +160,37 @@ pub(crate) fn ledger(
     new: &[f64; HISTORY_MAX],
     out: &ContactForce,
 ) -> ContactEnergy {
-    if !(s.overlap > 0.0) {
-        return dropped(m, old);
-    }
     let mut e = ContactEnergy::default();
     let k = Kin::of(s);
     let pair = &m.normal;
     let f = out.fn_;
-    let fe = normal_force_raw(pair.kernel, pair.consts, k.d, 0.0, k.r_eff, k.m_eff);
+    let touching = s.overlap > 0.0;
+    let fe = if touching {
+        normal_force_raw(pair.kernel, pair.consts, k.d, 0.0, k.r_eff, k.m_eff)
+    } else {
+        f
+    };
     e.normal_damping = (f - fe) * k.vn * dt;
     let frame = Kin::frame(s, get3(old, 0), dt, m.carry);
     if let Some(at) = m.layout.tangential {
-        let (k0, s_old, kt, s_c, s_new) = tangential_forces(m, &k, &frame, old, new, at);
+        let (k0, s_old, kt, s_c, s_new) = if touching {
+            tangential_forces(m, &k, &frame, old, new, at)
+        } else {
+            // The contact ended: the reset spring; its stiffness as it was stored (the
+            // current one of a linear spring, 8 G* a_old of the rescaled law, unknown: 0, of
+            // the total-form Mindlin spring).
+            let k0 = match m.tangential {
+                select::TANGENTIAL_LINEAR => m.kt,
+                select::TANGENTIAL_MINDLIN_RESCALE => m.kt * get1(old, at + 3),
+                _ => 0.0,
+            };
+            let s_old = if m.tangential == select::TANGENTIAL_MINDLIN_RESCALE {
+                get3(old, at)
+            } else {
+                scale(-k0, get3(old, at))
+            };
+            (k0, s_old, k0, frame.carry(s_old), [0.0; 3])
+        };
         let (slip, el) = spring(stored(k0, s_old), kt, s_c, s_new, scale(dt, k.vt));
         let ct = if m.zeta_t > 0.0 {
             2.0 * m.zeta_t * (mass_factor(m.kappa) * k.m_eff * kt).sqrt()
@@ -190,13 +202,15 @@ pub(crate) fn ledger(
         e.tangential_damping = ct * norm2(k.vt) * dt;
     }
     match (m.rolling, m.layout.rolling) {
-        (select::ROLLING_CONSTANT, _) => {
+        (select::ROLLING_CONSTANT, _) if touching => {
             let (t, _) = rolling_constant::torque(m, &k, f);
             e.rolling_slip = -dot(t, k.w_roll) * dt;
         }
         (select::ROLLING_EPSD, Some(at)) => {
             let kr = if m.k_r > 0.0 {
                 m.k_r
+            } else if !touching {
+                0.0
             } else {
                 2.25 * (pair.p * fe / k.d) * m.mu_r * m.mu_r * k.r_eff * k.r_eff
             };
@@ -207,7 +221,7 @@ pub(crate) fn ledger(
             e.rolling_slip = slip;
             e.rolling_elastic = el;
             // The dashpot acts only below the limit (the increment was kept as it is).
-            if m_new == add(m_c, scale(-kr * dt, k.w_roll)) {
+            if touching && m_new == add(m_c, scale(-kr * dt, k.w_roll)) {
                 let i1 = (1.0 + m.kappa) * k.m1 * k.r1 * k.r1;
                 let i2 = (1.0 + m.kappa) * k.m2 * k.r2 * k.r2;
                 let ir = 1.0 / (1.0 / i1 + 1.0 / i2);
@@ -230,7 +244,7 @@ pub(crate) fn ledger(
         );
         e.twisting_slip = slip;
         e.twisting_elastic = el;
-        if m_new == m_old - m.k_tw * wt * dt {
+        if touching && m_new == m_old - m.k_tw * wt * dt {
             let i1 = m.kappa * k.m1 * k.r1 * k.r1;
             let i2 = m.kappa * k.m2 * k.r2 * k.r2;
             let it = 1.0 / (1.0 / i1 + 1.0 / i2);
