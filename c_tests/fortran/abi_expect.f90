@@ -29,55 +29,56 @@ contains
     v(20) = DC_TANGENTIAL_NONE
     v(21) = DC_TANGENTIAL_LINEAR
     v(22) = DC_TANGENTIAL_MINDLIN
-    v(23) = DC_ROLLING_NONE
-    v(24) = DC_ROLLING_CONSTANT
-    v(25) = DC_ROLLING_EPSD
-    v(26) = DC_TWISTING_NONE
-    v(27) = DC_TWISTING_SDS
-    v(28) = DC_CARRY_ROTATE
-    v(29) = DC_CARRY_PROJECT
-    v(30) = DC_FIT_MODEL_CONSTANT
-    v(31) = DC_FIT_MODEL_VISCOELASTIC
-    v(32) = DC_MODEL_POWERLAW
-    v(33) = DC_MODEL_HERTZ
-    v(34) = DC_MODEL_VISCOELASTIC
-    v(35) = DC_MODEL_DMT
-    v(36) = DC_LEVEL_MIN
-    v(37) = DC_LEVEL_MAX
-    v(38) = DC_END_OVERLAP
-    v(39) = DC_END_FORCE
-    v(40) = DC_DISPATCH_BASELINE
-    v(41) = DC_DISPATCH_AVX2
-    v(42) = DC_DISPATCH_AVX512
-    v(43) = DC_OK
-    v(44) = DC_ERR_NULL_POINTER
-    v(45) = DC_ERR_NOT_FINITE
-    v(46) = DC_ERR_RESTITUTION_RANGE
-    v(47) = DC_ERR_EXPONENT_RANGE
-    v(48) = DC_ERR_NOT_POSITIVE
-    v(49) = DC_ERR_NEGATIVE
-    v(50) = DC_ERR_CRITERION
-    v(51) = DC_ERR_RESULT_RANGE
-    v(52) = DC_ERR_NO_CONVERGENCE
-    v(53) = DC_ERR_BUFFER_TOO_SHORT
-    v(54) = DC_ERR_NO_EVENT
-    v(55) = DC_ERR_LEVEL
-    v(56) = DC_ERR_PLAN
-    v(57) = DC_ERR_POISSON_RANGE
-    v(58) = DC_ERR_PAIR_INVALID
-    v(59) = DC_ERR_BUFFER_LAYOUT
-    v(60) = DC_ERR_SPEC_VERSION
-    v(61) = DC_ERR_SPEC_MODEL
-    v(62) = DC_ERR_SPEC_UNSET
-    v(63) = DC_ERR_CONTACT_MODEL_INVALID
-    v(64) = DC_ERR_NOT_UNIT
-    v(65) = DC_ERR_BUILTIN_MODEL
-    v(66) = DC_ERR_BUILTIN_UNREACHABLE
-    v(67) = DC_ERR_FIT_TOO_FEW
-    v(68) = DC_ERR_FIT_DEGENERATE
-    v(69) = DC_ERR_BUILTIN_VERSION
-    v(70) = DC_ERR_INTERNAL
-    n = 70
+    v(23) = DC_TANGENTIAL_MINDLIN_RESCALE
+    v(24) = DC_ROLLING_NONE
+    v(25) = DC_ROLLING_CONSTANT
+    v(26) = DC_ROLLING_EPSD
+    v(27) = DC_TWISTING_NONE
+    v(28) = DC_TWISTING_SDS
+    v(29) = DC_CARRY_ROTATE
+    v(30) = DC_CARRY_PROJECT
+    v(31) = DC_FIT_MODEL_CONSTANT
+    v(32) = DC_FIT_MODEL_VISCOELASTIC
+    v(33) = DC_MODEL_POWERLAW
+    v(34) = DC_MODEL_HERTZ
+    v(35) = DC_MODEL_VISCOELASTIC
+    v(36) = DC_MODEL_DMT
+    v(37) = DC_LEVEL_MIN
+    v(38) = DC_LEVEL_MAX
+    v(39) = DC_END_OVERLAP
+    v(40) = DC_END_FORCE
+    v(41) = DC_DISPATCH_BASELINE
+    v(42) = DC_DISPATCH_AVX2
+    v(43) = DC_DISPATCH_AVX512
+    v(44) = DC_OK
+    v(45) = DC_ERR_NULL_POINTER
+    v(46) = DC_ERR_NOT_FINITE
+    v(47) = DC_ERR_RESTITUTION_RANGE
+    v(48) = DC_ERR_EXPONENT_RANGE
+    v(49) = DC_ERR_NOT_POSITIVE
+    v(50) = DC_ERR_NEGATIVE
+    v(51) = DC_ERR_CRITERION
+    v(52) = DC_ERR_RESULT_RANGE
+    v(53) = DC_ERR_NO_CONVERGENCE
+    v(54) = DC_ERR_BUFFER_TOO_SHORT
+    v(55) = DC_ERR_NO_EVENT
+    v(56) = DC_ERR_LEVEL
+    v(57) = DC_ERR_PLAN
+    v(58) = DC_ERR_POISSON_RANGE
+    v(59) = DC_ERR_PAIR_INVALID
+    v(60) = DC_ERR_BUFFER_LAYOUT
+    v(61) = DC_ERR_SPEC_VERSION
+    v(62) = DC_ERR_SPEC_MODEL
+    v(63) = DC_ERR_SPEC_UNSET
+    v(64) = DC_ERR_CONTACT_MODEL_INVALID
+    v(65) = DC_ERR_NOT_UNIT
+    v(66) = DC_ERR_BUILTIN_MODEL
+    v(67) = DC_ERR_BUILTIN_UNREACHABLE
+    v(68) = DC_ERR_FIT_TOO_FEW
+    v(69) = DC_ERR_FIT_DEGENERATE
+    v(70) = DC_ERR_BUILTIN_VERSION
+    v(71) = DC_ERR_INTERNAL
+    n = 71
   end subroutine expected_consts
 
   subroutine expected_layout(v, n)
@@ -252,119 +253,145 @@ contains
           - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
     end block
     block
+      type(dc_contact_energy), target :: x_dc_contact_energy
+      v(80) = c_sizeof(x_dc_contact_energy)
+      v(81) = transfer(c_loc(x_dc_contact_energy%dissipated), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(82) = transfer(c_loc(x_dc_contact_energy%normal_damping), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(83) = transfer(c_loc(x_dc_contact_energy%tangential_damping), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(84) = transfer(c_loc(x_dc_contact_energy%tangential_slip), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(85) = transfer(c_loc(x_dc_contact_energy%tangential_elastic), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(86) = transfer(c_loc(x_dc_contact_energy%rolling_damping), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(87) = transfer(c_loc(x_dc_contact_energy%rolling_slip), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(88) = transfer(c_loc(x_dc_contact_energy%rolling_elastic), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(89) = transfer(c_loc(x_dc_contact_energy%twisting_damping), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(90) = transfer(c_loc(x_dc_contact_energy%twisting_slip), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(91) = transfer(c_loc(x_dc_contact_energy%twisting_elastic), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+    end block
+    block
       type(dc_contact_batch), target :: x_dc_contact_batch
-      v(80) = c_sizeof(x_dc_contact_batch)
-      v(81) = transfer(c_loc(x_dc_contact_batch%n), 0_c_intptr_t) &
+      v(92) = c_sizeof(x_dc_contact_batch)
+      v(93) = transfer(c_loc(x_dc_contact_batch%n), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(82) = transfer(c_loc(x_dc_contact_batch%history_stride), 0_c_intptr_t) &
+      v(94) = transfer(c_loc(x_dc_contact_batch%history_stride), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(83) = transfer(c_loc(x_dc_contact_batch%normal), 0_c_intptr_t) &
+      v(95) = transfer(c_loc(x_dc_contact_batch%normal), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(84) = transfer(c_loc(x_dc_contact_batch%overlap), 0_c_intptr_t) &
+      v(96) = transfer(c_loc(x_dc_contact_batch%overlap), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(85) = transfer(c_loc(x_dc_contact_batch%v1), 0_c_intptr_t) &
+      v(97) = transfer(c_loc(x_dc_contact_batch%v1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(86) = transfer(c_loc(x_dc_contact_batch%v2), 0_c_intptr_t) &
+      v(98) = transfer(c_loc(x_dc_contact_batch%v2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(87) = transfer(c_loc(x_dc_contact_batch%w1), 0_c_intptr_t) &
+      v(99) = transfer(c_loc(x_dc_contact_batch%w1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(88) = transfer(c_loc(x_dc_contact_batch%w2), 0_c_intptr_t) &
+      v(100) = transfer(c_loc(x_dc_contact_batch%w2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(89) = transfer(c_loc(x_dc_contact_batch%r1), 0_c_intptr_t) &
+      v(101) = transfer(c_loc(x_dc_contact_batch%r1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(90) = transfer(c_loc(x_dc_contact_batch%r2), 0_c_intptr_t) &
+      v(102) = transfer(c_loc(x_dc_contact_batch%r2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(91) = transfer(c_loc(x_dc_contact_batch%m1), 0_c_intptr_t) &
+      v(103) = transfer(c_loc(x_dc_contact_batch%m1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(92) = transfer(c_loc(x_dc_contact_batch%m2), 0_c_intptr_t) &
+      v(104) = transfer(c_loc(x_dc_contact_batch%m2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(93) = transfer(c_loc(x_dc_contact_batch%history), 0_c_intptr_t) &
+      v(105) = transfer(c_loc(x_dc_contact_batch%history), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(94) = transfer(c_loc(x_dc_contact_batch%f_n), 0_c_intptr_t) &
+      v(106) = transfer(c_loc(x_dc_contact_batch%f_n), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(95) = transfer(c_loc(x_dc_contact_batch%force), 0_c_intptr_t) &
+      v(107) = transfer(c_loc(x_dc_contact_batch%force), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(96) = transfer(c_loc(x_dc_contact_batch%torque1), 0_c_intptr_t) &
+      v(108) = transfer(c_loc(x_dc_contact_batch%torque1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(97) = transfer(c_loc(x_dc_contact_batch%torque2), 0_c_intptr_t) &
+      v(109) = transfer(c_loc(x_dc_contact_batch%torque2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
     end block
     block
       type(dc_fit_result), target :: x_dc_fit_result
-      v(98) = c_sizeof(x_dc_fit_result)
-      v(99) = transfer(c_loc(x_dc_fit_result%beta), 0_c_intptr_t) &
+      v(110) = c_sizeof(x_dc_fit_result)
+      v(111) = transfer(c_loc(x_dc_fit_result%beta), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(100) = transfer(c_loc(x_dc_fit_result%beta_se), 0_c_intptr_t) &
+      v(112) = transfer(c_loc(x_dc_fit_result%beta_se), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(101) = transfer(c_loc(x_dc_fit_result%e_const), 0_c_intptr_t) &
+      v(113) = transfer(c_loc(x_dc_fit_result%e_const), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(102) = transfer(c_loc(x_dc_fit_result%e_const_se), 0_c_intptr_t) &
+      v(114) = transfer(c_loc(x_dc_fit_result%e_const_se), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(103) = transfer(c_loc(x_dc_fit_result%chi2_viscoelastic), 0_c_intptr_t) &
+      v(115) = transfer(c_loc(x_dc_fit_result%chi2_viscoelastic), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(104) = transfer(c_loc(x_dc_fit_result%chi2_constant), 0_c_intptr_t) &
+      v(116) = transfer(c_loc(x_dc_fit_result%chi2_constant), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(105) = transfer(c_loc(x_dc_fit_result%max_residual_viscoelastic), 0_c_intptr_t) &
+      v(117) = transfer(c_loc(x_dc_fit_result%max_residual_viscoelastic), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(106) = transfer(c_loc(x_dc_fit_result%max_residual_constant), 0_c_intptr_t) &
+      v(118) = transfer(c_loc(x_dc_fit_result%max_residual_constant), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(107) = transfer(c_loc(x_dc_fit_result%v_min), 0_c_intptr_t) &
+      v(119) = transfer(c_loc(x_dc_fit_result%v_min), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(108) = transfer(c_loc(x_dc_fit_result%v_max), 0_c_intptr_t) &
+      v(120) = transfer(c_loc(x_dc_fit_result%v_max), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(109) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_min), 0_c_intptr_t) &
+      v(121) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_min), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(110) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_max), 0_c_intptr_t) &
+      v(122) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_max), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(111) = transfer(c_loc(x_dc_fit_result%max_model_deviation), 0_c_intptr_t) &
+      v(123) = transfer(c_loc(x_dc_fit_result%max_model_deviation), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(112) = transfer(c_loc(x_dc_fit_result%model), 0_c_intptr_t) &
+      v(124) = transfer(c_loc(x_dc_fit_result%model), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(113) = transfer(c_loc(x_dc_fit_result%se_from_scatter), 0_c_intptr_t) &
+      v(125) = transfer(c_loc(x_dc_fit_result%se_from_scatter), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(114) = transfer(c_loc(x_dc_fit_result%iterations), 0_c_intptr_t) &
+      v(126) = transfer(c_loc(x_dc_fit_result%iterations), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(115) = transfer(c_loc(x_dc_fit_result%robust), 0_c_intptr_t) &
+      v(127) = transfer(c_loc(x_dc_fit_result%robust), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
     end block
     block
       type(dc_duration_plan), target :: x_dc_duration_plan
-      v(116) = c_sizeof(x_dc_duration_plan)
-      v(117) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) &
+      v(128) = c_sizeof(x_dc_duration_plan)
+      v(129) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(118) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) &
+      v(130) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(119) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) &
+      v(131) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(120) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) &
+      v(132) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(121) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) &
+      v(133) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(122) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) &
+      v(134) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(123) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) &
+      v(135) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(124) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) &
+      v(136) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(125) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) &
+      v(137) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(126) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) &
+      v(138) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
     end block
     block
       type(dc_energy), target :: x_dc_energy
-      v(127) = c_sizeof(x_dc_energy)
-      v(128) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) &
+      v(139) = c_sizeof(x_dc_energy)
+      v(140) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(129) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) &
+      v(141) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(130) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) &
+      v(142) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(131) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) &
+      v(143) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(132) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) &
+      v(144) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
     end block
-    n = 132
+    n = 144
   end subroutine expected_layout
 end module abi_expect
