@@ -89,7 +89,7 @@
  * Doubles of history per contact for the largest contact model
  * (dc_contact_history_len gives the exact, usually smaller, figure of one model).
  */
-#define DC_CONTACT_HISTORY_MAX 11
+#define DC_CONTACT_HISTORY_MAX 12
 
 /**
  * Normal law: Hertz from E, nu of both bodies, k = (4/3) E* sqrt(R*) per contact.
@@ -140,8 +140,18 @@
 
 /**
  * Tangential: Mindlin k_t = 8 G* a, a = sqrt(R* d), dashpot from e_t, Coulomb limit.
+ * Kept as LAMMPS `mindlin` has it (total form k_t(d) xi); it creates energy when the contact
+ * grows (up to +0.27 % of the kinetic energy in an elastic oblique impact, docs/force.md):
+ * prefer DC_TANGENTIAL_MINDLIN_RESCALE.
  */
 #define DC_TANGENTIAL_MINDLIN 2
+
+/**
+ * Tangential: Mindlin k_t = 8 G* a in incremental force form, the force history rescaled by
+ * a/a_old when the contact shrinks (Thornton et al. 2013; LAMMPS `mindlin_rescale/force`),
+ * dashpot from e_t, Coulomb limit: creates no energy. 4 doubles of tangential history.
+ */
+#define DC_TANGENTIAL_MINDLIN_RESCALE 3
 
 /**
  * Rolling resistance: none.
@@ -841,7 +851,7 @@ typedef struct dc_contact_model {
      */
     double mu;
     /**
-     * k_t [N/m] (linear) or 8 G* [Pa] (Mindlin, k_t = 8 G* sqrt(R* d)).
+     * k_t [N/m] (linear) or 8 G* [Pa] (both Mindlin laws, k_t = 8 G* sqrt(R* d)).
      */
     double kt;
     /**
@@ -968,6 +978,65 @@ typedef struct dc_contact_result {
      */
     int32_t rolling_sliding;
 } dc_contact_result;
+
+/**
+ * The energy ledger of one contact step [J] (dc_contact_force_energy): what the dashpots and
+ * the slips removed during the step, and the elastic energy left in the history springs, so
+ * that a host can check that nothing is created: over a whole contact (springs empty and
+ * overlap zero at both ends) the kinetic energy change is -(sum of `dissipated`) to the
+ * integrator's error. Spring energies are |S|^2/(2k) of the stored force or torque S; the work
+ * of a spring step is the trapezoid of its force before and after over the increment; the
+ * energy a law creates is not counted (DC_TANGENTIAL_MINDLIN's gain, EPSD rolling under Ai's
+ * stiffness rule), so it shows up as a gain. Definitions: docs/force.md.
+ */
+typedef struct dc_contact_energy {
+    /**
+     * Everything removed this step: the sum of the damping and slip terms.
+     */
+    double dissipated;
+    /**
+     * Work of the normal dashpot, (F_n - F_el) vn dt.
+     */
+    double normal_damping;
+    /**
+     * Work of the tangential dashpot, c_t |v_t|^2 dt.
+     */
+    double tangential_damping;
+    /**
+     * Work of the tangential slip (and, DC_TANGENTIAL_MINDLIN_RESCALE, the loss of its force
+     * history when the contact radius changes; when the contact ends, the energy its reset
+     * spring held).
+     */
+    double tangential_slip;
+    /**
+     * Elastic energy left in the tangential spring.
+     */
+    double tangential_elastic;
+    /**
+     * Work of the EPSD rolling dashpot.
+     */
+    double rolling_damping;
+    /**
+     * Work of the rolling slip (EPSD at its limit, or the constant rolling torque).
+     */
+    double rolling_slip;
+    /**
+     * Elastic energy left in the EPSD rolling spring.
+     */
+    double rolling_elastic;
+    /**
+     * Work of the twisting dashpot.
+     */
+    double twisting_damping;
+    /**
+     * Work of the twisting slip.
+     */
+    double twisting_slip;
+    /**
+     * Elastic energy left in the twisting spring.
+     */
+    double twisting_elastic;
+} dc_contact_energy;
 
 /**
  * n contacts of one model as a structure of arrays (one dc_contact_force_batch call). Vectors
@@ -1682,7 +1751,8 @@ int32_t dc_contact_model_set_step(struct dc_contact_model *model, double dt, int
 /**
  * The number of doubles of history one contact of this model needs (0 for a normal-only or
  * constant-rolling model; at most DC_CONTACT_HISTORY_MAX). Layout (for inspection only):
- * normal of the last step (3), tangential spring [m] (3), rolling spring torque [N m] (3),
+ * normal of the last step (3), tangential spring [m] (3; DC_TANGENTIAL_MINDLIN_RESCALE: its
+ * force [N] (3) and the last contact radius [m] (1)), rolling spring torque [N m] (3),
  * twisting spring torque [N m] (1), each present only if its sub-model is.
  *
  * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID.
@@ -1725,6 +1795,26 @@ int32_t dc_contact_force(const struct dc_contact_model *model,
                          double *history,
                          size_t history_len,
                          struct dc_contact_result *out);
+
+/**
+ * dc_contact_force with the energy ledger of the step (dc_contact_energy): the same force,
+ * torques, history and statuses bit for bit, and what the step dissipated and left stored in
+ * the springs. Allocation-free like dc_contact_force; it costs a second pass over the stages.
+ *
+ * @param energy  receives the ledger on success (with `out`); untouched on error.
+ * @return as dc_contact_force; DC_ERR_NULL_POINTER also for `energy` NULL; DC_ERR_RESULT_RANGE
+ *         also for a ledger value that is not finite.
+ *
+ * # Safety
+ * As dc_contact_force; `energy` NULL or writable for one dc_contact_energy.
+ */
+int32_t dc_contact_force_energy(const struct dc_contact_model *model,
+                                const struct dc_contact_state *state,
+                                double dt,
+                                double *history,
+                                size_t history_len,
+                                struct dc_contact_result *out,
+                                struct dc_contact_energy *energy);
 
 /**
  * dc_contact_force for two spheres given by their centres: n = (x1 - x2)/|x1 - x2| and

@@ -22,7 +22,7 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_TSUJI_HERTZ_SQRT2 = 9
   integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_TSUJI_HOOKE_SQRT2 = 10
   integer(c_int32_t), parameter :: DC_CONTACT_SPEC_VERSION = 1
-  integer(c_int32_t), parameter :: DC_CONTACT_HISTORY_MAX = 11
+  integer(c_int32_t), parameter :: DC_CONTACT_HISTORY_MAX = 12
   integer(c_int32_t), parameter :: DC_NORMAL_HERTZ = 1
   integer(c_int32_t), parameter :: DC_NORMAL_POWERLAW = 2
   integer(c_int32_t), parameter :: DC_NORMAL_LINEAR = 3
@@ -33,6 +33,7 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_TANGENTIAL_NONE = 0
   integer(c_int32_t), parameter :: DC_TANGENTIAL_LINEAR = 1
   integer(c_int32_t), parameter :: DC_TANGENTIAL_MINDLIN = 2
+  integer(c_int32_t), parameter :: DC_TANGENTIAL_MINDLIN_RESCALE = 3
   integer(c_int32_t), parameter :: DC_ROLLING_NONE = 0
   integer(c_int32_t), parameter :: DC_ROLLING_CONSTANT = 1
   integer(c_int32_t), parameter :: DC_ROLLING_EPSD = 2
@@ -213,6 +214,20 @@ module demcontact_c
     integer(c_int32_t) :: sliding
     integer(c_int32_t) :: rolling_sliding
   end type dc_contact_result
+
+  type, bind(c) :: dc_contact_energy
+    real(c_double) :: dissipated
+    real(c_double) :: normal_damping
+    real(c_double) :: tangential_damping
+    real(c_double) :: tangential_slip
+    real(c_double) :: tangential_elastic
+    real(c_double) :: rolling_damping
+    real(c_double) :: rolling_slip
+    real(c_double) :: rolling_elastic
+    real(c_double) :: twisting_damping
+    real(c_double) :: twisting_slip
+    real(c_double) :: twisting_elastic
+  end type dc_contact_energy
 
   type, bind(c) :: dc_contact_batch
     integer(c_size_t) :: n
@@ -447,6 +462,18 @@ module demcontact_c
       type(dc_contact_result), intent(out) :: out
       integer(c_int32_t) :: dc_contact_force
     end function dc_contact_force
+    function dc_contact_force_energy(model, state, dt, history, history_len, out, energy) bind(c, &
+        name='dc_contact_force_energy')
+      import
+      type(dc_contact_model), intent(in) :: model
+      type(dc_contact_state), intent(in) :: state
+      real(c_double), value, intent(in) :: dt
+      real(c_double), intent(inout) :: history(*)
+      integer(c_size_t), value, intent(in) :: history_len
+      type(dc_contact_result), intent(out) :: out
+      type(dc_contact_energy), intent(inout) :: energy
+      integer(c_int32_t) :: dc_contact_force_energy
+    end function dc_contact_force_energy
     function dc_contact_force_spheres(model, x1, x2, state, dt, history, history_len, out) bind(c, &
         name='dc_contact_force_spheres')
       import

@@ -1113,6 +1113,37 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_step(const dc_contact_model *m, const
     return trial;
 }
 
+/* Rescaled incremental Mindlin stage (src/contact/tangential_mindlin_rescale.rs): the force
+ * history fs carried, scaled by a/a_old when the contact radius shrank, incremented by
+ * -k_t v_t dt; dashpot, Coulomb truncation with LAMMPS's reset; a_old <- a. */
+DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_rescale_step(const dc_contact_model *m,
+                                                        const dci_kin *k, double f_normal,
+                                                        double dt, const dci_frame *frame,
+                                                        dci_v3 *fs, double *a_old, int *sliding) {
+    DCI_NO_CONTRACT
+    const double a = sqrt(k->r_eff * k->d);
+    const double kt = m->kt * a;
+    const double ct = m->zeta_t > 0.0
+                          ? 2.0 * m->zeta_t * sqrt(m->kappa / (1.0 + m->kappa) * k->m_eff * kt)
+                          : 0.0;
+    dci_v3 carried = dci_carry(frame, *fs);
+    if (a < *a_old) carried = dci_scale(a / *a_old, carried);
+    const dci_v3 spring = dci_sub(carried, dci_scale(kt * dt, k->vt));
+    const dci_v3 trial = dci_sub(spring, dci_scale(ct, k->vt));
+    const double limit = m->mu * fabs(f_normal);
+    const double t2 = dci_norm2(trial);
+    *a_old = a;
+    if (t2 > limit * limit) {
+        const dci_v3 ft = dci_scale(limit / sqrt(t2), trial);
+        *fs = dci_add(ft, dci_scale(ct, k->vt));
+        *sliding = 1;
+        return ft;
+    }
+    *fs = spring;
+    *sliding = 0;
+    return trial;
+}
+
 /* Constant rolling torque (src/contact/rolling_constant.rs). */
 DCI_ALWAYS_INLINE_FN dci_v3 dci_rolling_constant(const dc_contact_model *m, const dci_kin *k,
                                                  double f_normal, int *on) {
@@ -1174,9 +1205,9 @@ DCI_ALWAYS_INLINE_FN double dci_twisting(const dc_contact_model *m, const dci_ki
 }
 
 /* History layout (src/contact/model.rs Layout::of_model): normal of the last step at 0, then the
- * tangential spring (3), the rolling spring (3, EPSD only), the twisting spring (1), the
- * step-aware damping state (1, after dc_contact_model_set_step). -1: absent. nrm: the normal is
- * stored (Layout::has_normal). */
+ * tangential spring (3; 4 for DC_TANGENTIAL_MINDLIN_RESCALE: force and last contact radius), the
+ * rolling spring (3, EPSD only), the twisting spring (1), the step-aware damping state (1, after
+ * dc_contact_model_set_step). -1: absent. nrm: the normal is stored (Layout::has_normal). */
 typedef struct dci_layout {
     int len, tangential, rolling, twisting, step, nrm;
 } dci_layout;
@@ -1189,7 +1220,7 @@ DCI_ALWAYS_INLINE_FN dci_layout dci_layout_of(int32_t tangential, int32_t rollin
     const int has_tw = twisting != DC_TWISTING_NONE;
     l.len = has_t || has_r || has_tw ? 3 : 0;
     l.tangential = has_t ? l.len : -1;
-    l.len += has_t ? 3 : 0;
+    l.len += has_t ? (tangential == DC_TANGENTIAL_MINDLIN_RESCALE ? 4 : 3) : 0;
     l.rolling = has_r ? l.len : -1;
     l.len += has_r ? 3 : 0;
     l.twisting = has_tw ? l.len : -1;
@@ -1402,6 +1433,9 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_sh
                                                                     : m->kt;
             if (sh.tangential == DC_TANGENTIAL_LINEAR || sh.tangential == DC_TANGENTIAL_MINDLIN)
                 ft = dci_tangential_step(m, &k, kt, f, dt, &frame, &xi, &sliding);
+            else if (sh.tangential == DC_TANGENTIAL_MINDLIN_RESCALE)
+                ft = dci_tangential_rescale_step(m, &k, f, dt, &frame, &xi,
+                                                 &h[lay.tangential + 3], &sliding);
             h[lay.tangential] = xi.x;
             h[lay.tangential + 1] = xi.y;
             h[lay.tangential + 2] = xi.z;
@@ -1457,7 +1491,8 @@ DC_INLINE_FN int32_t dci_check_contact_model(const dc_contact_model *m, dci_layo
     if (!ok) return DC_ERR_CONTACT_MODEL_INVALID;
     ok = p->kernel >= DC_KERNEL_LIN_ELASTIC && p->kernel <= DC_KERNEL_DMT_DAMPED;
     ok = ok && (m->tangential == DC_TANGENTIAL_NONE || m->tangential == DC_TANGENTIAL_LINEAR ||
-                m->tangential == DC_TANGENTIAL_MINDLIN);
+                m->tangential == DC_TANGENTIAL_MINDLIN ||
+                m->tangential == DC_TANGENTIAL_MINDLIN_RESCALE);
     ok = ok && (m->rolling == DC_ROLLING_NONE || m->rolling == DC_ROLLING_CONSTANT ||
                 m->rolling == DC_ROLLING_EPSD);
     ok = ok && (m->twisting == DC_TWISTING_NONE || m->twisting == DC_TWISTING_SDS);
@@ -1857,7 +1892,8 @@ DC_INLINE_FN int32_t dci_contact_model(const dc_contact_spec *s, dc_contact_mode
     if ((st = dci_spec_normal(s, s->criterion, &m->normal)) != DC_OK) return st;
     if ((st = dci_positive(s->inertia_factor, &m->kappa)) != DC_OK) return st;
     if (!(m->kappa <= 1.0)) return DC_ERR_SPEC_MODEL;
-    if (s->tangential == DC_TANGENTIAL_LINEAR || s->tangential == DC_TANGENTIAL_MINDLIN) {
+    if (s->tangential == DC_TANGENTIAL_LINEAR || s->tangential == DC_TANGENTIAL_MINDLIN ||
+        s->tangential == DC_TANGENTIAL_MINDLIN_RESCALE) {
         if ((st = dci_non_negative(s->mu, &m->mu)) != DC_OK) return st;
         if ((st = dci_set(s->e_t)) != DC_OK) return st;
         if ((st = dci_zeta_from_e_t(s->e_t, &m->zeta_t)) != DC_OK) return st;

@@ -167,7 +167,7 @@ fn model_init_statuses() {
         [size = s.size + 8] => DC_ERR_SPEC_VERSION,
         [normal = 99] => DC_ERR_SPEC_MODEL,
         [damping = 2] => DC_ERR_SPEC_MODEL,
-        [tangential = 3] => DC_ERR_SPEC_MODEL,
+        [tangential = 4] => DC_ERR_SPEC_MODEL,
         [rolling = -1] => DC_ERR_SPEC_MODEL,
         [twisting = 2] => DC_ERR_SPEC_MODEL,
         [criterion = 2] => DC_ERR_CRITERION,

@@ -29,98 +29,99 @@ contains
     v(20) = DC_TANGENTIAL_NONE
     v(21) = DC_TANGENTIAL_LINEAR
     v(22) = DC_TANGENTIAL_MINDLIN
-    v(23) = DC_ROLLING_NONE
-    v(24) = DC_ROLLING_CONSTANT
-    v(25) = DC_ROLLING_EPSD
-    v(26) = DC_TWISTING_NONE
-    v(27) = DC_TWISTING_SDS
-    v(28) = DC_CARRY_ROTATE
-    v(29) = DC_CARRY_PROJECT
-    v(30) = DC_FIT_MODEL_CONSTANT
-    v(31) = DC_FIT_MODEL_VISCOELASTIC
-    v(32) = DC_MODEL_POWERLAW
-    v(33) = DC_MODEL_HERTZ
-    v(34) = DC_MODEL_VISCOELASTIC
-    v(35) = DC_MODEL_DMT
-    v(36) = DC_PLAN_INPUT_VERSION
-    v(37) = DC_PLAN_FIELD_NONE
-    v(38) = DC_PLAN_FIELD_YOUNGS
-    v(39) = DC_PLAN_FIELD_POISSON
-    v(40) = DC_PLAN_FIELD_DENSITY
-    v(41) = DC_PLAN_FIELD_RESTITUTION
-    v(42) = DC_PLAN_FIELD_RADIUS_MIN
-    v(43) = DC_PLAN_FIELD_RADIUS_MAX
-    v(44) = DC_PLAN_FIELD_V_MAX
-    v(45) = DC_PLAN_FIELD_DEPTH
-    v(46) = DC_PLAN_FIELD_GRAVITY
-    v(47) = DC_PLAN_FIELD_PRESSURE
-    v(48) = DC_PLAN_FIELD_SOLID_FRACTION
-    v(49) = DC_PLAN_FIELD_COORDINATION
-    v(50) = DC_PLAN_FIELD_LOAD_FACTOR
-    v(51) = DC_PLAN_FIELD_FRICTION
-    v(52) = DC_PLAN_FIELD_ROLLING_FRICTION
-    v(53) = DC_PLAN_FIELD_OVERLAP_TOL
-    v(54) = DC_PLAN_FIELD_E_TOL
-    v(55) = DC_PLAN_FIELD_STATIC_TOL
-    v(56) = DC_PLAN_FIELD_DURATION_TOL
-    v(57) = DC_PLAN_FIELD_CRITERION
-    v(58) = DC_PLAN_FIELD_STABILITY_FRACTION
-    v(59) = DC_PLAN_FIELD_CONVENTIONAL_DIVISOR
-    v(60) = DC_PLAN_FIELD_WALLS
-    v(61) = DC_PLAN_BINDING_OVERLAP
-    v(62) = DC_PLAN_BINDING_STATIC
-    v(63) = DC_PLAN_BINDING_DURATION
-    v(64) = DC_PLAN_STEP_RESTITUTION
-    v(65) = DC_PLAN_STEP_STABILITY
-    v(66) = DC_PLAN_PAIR_MIN_MIN
-    v(67) = DC_PLAN_PAIR_MIN_MAX
-    v(68) = DC_PLAN_PAIR_MAX_MAX
-    v(69) = DC_PLAN_PAIR_MIN_WALL
-    v(70) = DC_PLAN_PAIR_MAX_WALL
-    v(71) = DC_PLAN_PAIR_MIN_PEAK
-    v(72) = DC_LEVEL_MIN
-    v(73) = DC_LEVEL_MAX
-    v(74) = DC_END_OVERLAP
-    v(75) = DC_END_FORCE
-    v(76) = DC_INTEGRATOR_VELOCITY_VERLET
-    v(77) = DC_INTEGRATOR_SYMPLECTIC_EULER
-    v(78) = DC_DISPATCH_BASELINE
-    v(79) = DC_DISPATCH_AVX2
-    v(80) = DC_DISPATCH_AVX512
-    v(81) = DC_OK
-    v(82) = DC_ERR_NULL_POINTER
-    v(83) = DC_ERR_NOT_FINITE
-    v(84) = DC_ERR_RESTITUTION_RANGE
-    v(85) = DC_ERR_EXPONENT_RANGE
-    v(86) = DC_ERR_NOT_POSITIVE
-    v(87) = DC_ERR_NEGATIVE
-    v(88) = DC_ERR_CRITERION
-    v(89) = DC_ERR_RESULT_RANGE
-    v(90) = DC_ERR_NO_CONVERGENCE
-    v(91) = DC_ERR_BUFFER_TOO_SHORT
-    v(92) = DC_ERR_NO_EVENT
-    v(93) = DC_ERR_LEVEL
-    v(94) = DC_ERR_PLAN
-    v(95) = DC_ERR_POISSON_RANGE
-    v(96) = DC_ERR_PAIR_INVALID
-    v(97) = DC_ERR_BUFFER_LAYOUT
-    v(98) = DC_ERR_SPEC_VERSION
-    v(99) = DC_ERR_SPEC_MODEL
-    v(100) = DC_ERR_SPEC_UNSET
-    v(101) = DC_ERR_CONTACT_MODEL_INVALID
-    v(102) = DC_ERR_NOT_UNIT
-    v(103) = DC_ERR_BUILTIN_MODEL
-    v(104) = DC_ERR_BUILTIN_UNREACHABLE
-    v(105) = DC_ERR_FIT_TOO_FEW
-    v(106) = DC_ERR_FIT_DEGENERATE
-    v(107) = DC_ERR_BUILTIN_VERSION
-    v(108) = DC_ERR_INTEGRATOR
-    v(109) = DC_ERR_STEP_UNSUPPORTED
-    v(110) = DC_ERR_STEP_UNREACHABLE
-    v(111) = DC_ERR_PLAN_RANGE
-    v(112) = DC_ERR_PLAN_INFEASIBLE
-    v(113) = DC_ERR_INTERNAL
-    n = 113
+    v(23) = DC_TANGENTIAL_MINDLIN_RESCALE
+    v(24) = DC_ROLLING_NONE
+    v(25) = DC_ROLLING_CONSTANT
+    v(26) = DC_ROLLING_EPSD
+    v(27) = DC_TWISTING_NONE
+    v(28) = DC_TWISTING_SDS
+    v(29) = DC_CARRY_ROTATE
+    v(30) = DC_CARRY_PROJECT
+    v(31) = DC_FIT_MODEL_CONSTANT
+    v(32) = DC_FIT_MODEL_VISCOELASTIC
+    v(33) = DC_MODEL_POWERLAW
+    v(34) = DC_MODEL_HERTZ
+    v(35) = DC_MODEL_VISCOELASTIC
+    v(36) = DC_MODEL_DMT
+    v(37) = DC_PLAN_INPUT_VERSION
+    v(38) = DC_PLAN_FIELD_NONE
+    v(39) = DC_PLAN_FIELD_YOUNGS
+    v(40) = DC_PLAN_FIELD_POISSON
+    v(41) = DC_PLAN_FIELD_DENSITY
+    v(42) = DC_PLAN_FIELD_RESTITUTION
+    v(43) = DC_PLAN_FIELD_RADIUS_MIN
+    v(44) = DC_PLAN_FIELD_RADIUS_MAX
+    v(45) = DC_PLAN_FIELD_V_MAX
+    v(46) = DC_PLAN_FIELD_DEPTH
+    v(47) = DC_PLAN_FIELD_GRAVITY
+    v(48) = DC_PLAN_FIELD_PRESSURE
+    v(49) = DC_PLAN_FIELD_SOLID_FRACTION
+    v(50) = DC_PLAN_FIELD_COORDINATION
+    v(51) = DC_PLAN_FIELD_LOAD_FACTOR
+    v(52) = DC_PLAN_FIELD_FRICTION
+    v(53) = DC_PLAN_FIELD_ROLLING_FRICTION
+    v(54) = DC_PLAN_FIELD_OVERLAP_TOL
+    v(55) = DC_PLAN_FIELD_E_TOL
+    v(56) = DC_PLAN_FIELD_STATIC_TOL
+    v(57) = DC_PLAN_FIELD_DURATION_TOL
+    v(58) = DC_PLAN_FIELD_CRITERION
+    v(59) = DC_PLAN_FIELD_STABILITY_FRACTION
+    v(60) = DC_PLAN_FIELD_CONVENTIONAL_DIVISOR
+    v(61) = DC_PLAN_FIELD_WALLS
+    v(62) = DC_PLAN_BINDING_OVERLAP
+    v(63) = DC_PLAN_BINDING_STATIC
+    v(64) = DC_PLAN_BINDING_DURATION
+    v(65) = DC_PLAN_STEP_RESTITUTION
+    v(66) = DC_PLAN_STEP_STABILITY
+    v(67) = DC_PLAN_PAIR_MIN_MIN
+    v(68) = DC_PLAN_PAIR_MIN_MAX
+    v(69) = DC_PLAN_PAIR_MAX_MAX
+    v(70) = DC_PLAN_PAIR_MIN_WALL
+    v(71) = DC_PLAN_PAIR_MAX_WALL
+    v(72) = DC_PLAN_PAIR_MIN_PEAK
+    v(73) = DC_LEVEL_MIN
+    v(74) = DC_LEVEL_MAX
+    v(75) = DC_END_OVERLAP
+    v(76) = DC_END_FORCE
+    v(77) = DC_INTEGRATOR_VELOCITY_VERLET
+    v(78) = DC_INTEGRATOR_SYMPLECTIC_EULER
+    v(79) = DC_DISPATCH_BASELINE
+    v(80) = DC_DISPATCH_AVX2
+    v(81) = DC_DISPATCH_AVX512
+    v(82) = DC_OK
+    v(83) = DC_ERR_NULL_POINTER
+    v(84) = DC_ERR_NOT_FINITE
+    v(85) = DC_ERR_RESTITUTION_RANGE
+    v(86) = DC_ERR_EXPONENT_RANGE
+    v(87) = DC_ERR_NOT_POSITIVE
+    v(88) = DC_ERR_NEGATIVE
+    v(89) = DC_ERR_CRITERION
+    v(90) = DC_ERR_RESULT_RANGE
+    v(91) = DC_ERR_NO_CONVERGENCE
+    v(92) = DC_ERR_BUFFER_TOO_SHORT
+    v(93) = DC_ERR_NO_EVENT
+    v(94) = DC_ERR_LEVEL
+    v(95) = DC_ERR_PLAN
+    v(96) = DC_ERR_POISSON_RANGE
+    v(97) = DC_ERR_PAIR_INVALID
+    v(98) = DC_ERR_BUFFER_LAYOUT
+    v(99) = DC_ERR_SPEC_VERSION
+    v(100) = DC_ERR_SPEC_MODEL
+    v(101) = DC_ERR_SPEC_UNSET
+    v(102) = DC_ERR_CONTACT_MODEL_INVALID
+    v(103) = DC_ERR_NOT_UNIT
+    v(104) = DC_ERR_BUILTIN_MODEL
+    v(105) = DC_ERR_BUILTIN_UNREACHABLE
+    v(106) = DC_ERR_FIT_TOO_FEW
+    v(107) = DC_ERR_FIT_DEGENERATE
+    v(108) = DC_ERR_BUILTIN_VERSION
+    v(109) = DC_ERR_INTEGRATOR
+    v(110) = DC_ERR_STEP_UNSUPPORTED
+    v(111) = DC_ERR_STEP_UNREACHABLE
+    v(112) = DC_ERR_PLAN_RANGE
+    v(113) = DC_ERR_PLAN_INFEASIBLE
+    v(114) = DC_ERR_INTERNAL
+    n = 114
   end subroutine expected_consts
 
   subroutine expected_layout(v, n)
@@ -295,233 +296,259 @@ contains
           - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
     end block
     block
+      type(dc_contact_energy), target :: x_dc_contact_energy
+      v(80) = c_sizeof(x_dc_contact_energy)
+      v(81) = transfer(c_loc(x_dc_contact_energy%dissipated), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(82) = transfer(c_loc(x_dc_contact_energy%normal_damping), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(83) = transfer(c_loc(x_dc_contact_energy%tangential_damping), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(84) = transfer(c_loc(x_dc_contact_energy%tangential_slip), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(85) = transfer(c_loc(x_dc_contact_energy%tangential_elastic), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(86) = transfer(c_loc(x_dc_contact_energy%rolling_damping), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(87) = transfer(c_loc(x_dc_contact_energy%rolling_slip), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(88) = transfer(c_loc(x_dc_contact_energy%rolling_elastic), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(89) = transfer(c_loc(x_dc_contact_energy%twisting_damping), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(90) = transfer(c_loc(x_dc_contact_energy%twisting_slip), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+      v(91) = transfer(c_loc(x_dc_contact_energy%twisting_elastic), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
+    end block
+    block
       type(dc_contact_batch), target :: x_dc_contact_batch
-      v(80) = c_sizeof(x_dc_contact_batch)
-      v(81) = transfer(c_loc(x_dc_contact_batch%n), 0_c_intptr_t) &
+      v(92) = c_sizeof(x_dc_contact_batch)
+      v(93) = transfer(c_loc(x_dc_contact_batch%n), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(82) = transfer(c_loc(x_dc_contact_batch%history_stride), 0_c_intptr_t) &
+      v(94) = transfer(c_loc(x_dc_contact_batch%history_stride), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(83) = transfer(c_loc(x_dc_contact_batch%normal), 0_c_intptr_t) &
+      v(95) = transfer(c_loc(x_dc_contact_batch%normal), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(84) = transfer(c_loc(x_dc_contact_batch%overlap), 0_c_intptr_t) &
+      v(96) = transfer(c_loc(x_dc_contact_batch%overlap), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(85) = transfer(c_loc(x_dc_contact_batch%v1), 0_c_intptr_t) &
+      v(97) = transfer(c_loc(x_dc_contact_batch%v1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(86) = transfer(c_loc(x_dc_contact_batch%v2), 0_c_intptr_t) &
+      v(98) = transfer(c_loc(x_dc_contact_batch%v2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(87) = transfer(c_loc(x_dc_contact_batch%w1), 0_c_intptr_t) &
+      v(99) = transfer(c_loc(x_dc_contact_batch%w1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(88) = transfer(c_loc(x_dc_contact_batch%w2), 0_c_intptr_t) &
+      v(100) = transfer(c_loc(x_dc_contact_batch%w2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(89) = transfer(c_loc(x_dc_contact_batch%r1), 0_c_intptr_t) &
+      v(101) = transfer(c_loc(x_dc_contact_batch%r1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(90) = transfer(c_loc(x_dc_contact_batch%r2), 0_c_intptr_t) &
+      v(102) = transfer(c_loc(x_dc_contact_batch%r2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(91) = transfer(c_loc(x_dc_contact_batch%m1), 0_c_intptr_t) &
+      v(103) = transfer(c_loc(x_dc_contact_batch%m1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(92) = transfer(c_loc(x_dc_contact_batch%m2), 0_c_intptr_t) &
+      v(104) = transfer(c_loc(x_dc_contact_batch%m2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(93) = transfer(c_loc(x_dc_contact_batch%history), 0_c_intptr_t) &
+      v(105) = transfer(c_loc(x_dc_contact_batch%history), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(94) = transfer(c_loc(x_dc_contact_batch%f_n), 0_c_intptr_t) &
+      v(106) = transfer(c_loc(x_dc_contact_batch%f_n), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(95) = transfer(c_loc(x_dc_contact_batch%force), 0_c_intptr_t) &
+      v(107) = transfer(c_loc(x_dc_contact_batch%force), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(96) = transfer(c_loc(x_dc_contact_batch%torque1), 0_c_intptr_t) &
+      v(108) = transfer(c_loc(x_dc_contact_batch%torque1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(97) = transfer(c_loc(x_dc_contact_batch%torque2), 0_c_intptr_t) &
+      v(109) = transfer(c_loc(x_dc_contact_batch%torque2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
     end block
     block
       type(dc_fit_result), target :: x_dc_fit_result
-      v(98) = c_sizeof(x_dc_fit_result)
-      v(99) = transfer(c_loc(x_dc_fit_result%beta), 0_c_intptr_t) &
+      v(110) = c_sizeof(x_dc_fit_result)
+      v(111) = transfer(c_loc(x_dc_fit_result%beta), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(100) = transfer(c_loc(x_dc_fit_result%beta_se), 0_c_intptr_t) &
+      v(112) = transfer(c_loc(x_dc_fit_result%beta_se), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(101) = transfer(c_loc(x_dc_fit_result%e_const), 0_c_intptr_t) &
+      v(113) = transfer(c_loc(x_dc_fit_result%e_const), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(102) = transfer(c_loc(x_dc_fit_result%e_const_se), 0_c_intptr_t) &
+      v(114) = transfer(c_loc(x_dc_fit_result%e_const_se), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(103) = transfer(c_loc(x_dc_fit_result%chi2_viscoelastic), 0_c_intptr_t) &
+      v(115) = transfer(c_loc(x_dc_fit_result%chi2_viscoelastic), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(104) = transfer(c_loc(x_dc_fit_result%chi2_constant), 0_c_intptr_t) &
+      v(116) = transfer(c_loc(x_dc_fit_result%chi2_constant), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(105) = transfer(c_loc(x_dc_fit_result%max_residual_viscoelastic), 0_c_intptr_t) &
+      v(117) = transfer(c_loc(x_dc_fit_result%max_residual_viscoelastic), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(106) = transfer(c_loc(x_dc_fit_result%max_residual_constant), 0_c_intptr_t) &
+      v(118) = transfer(c_loc(x_dc_fit_result%max_residual_constant), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(107) = transfer(c_loc(x_dc_fit_result%v_min), 0_c_intptr_t) &
+      v(119) = transfer(c_loc(x_dc_fit_result%v_min), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(108) = transfer(c_loc(x_dc_fit_result%v_max), 0_c_intptr_t) &
+      v(120) = transfer(c_loc(x_dc_fit_result%v_max), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(109) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_min), 0_c_intptr_t) &
+      v(121) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_min), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(110) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_max), 0_c_intptr_t) &
+      v(122) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_max), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(111) = transfer(c_loc(x_dc_fit_result%max_model_deviation), 0_c_intptr_t) &
+      v(123) = transfer(c_loc(x_dc_fit_result%max_model_deviation), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(112) = transfer(c_loc(x_dc_fit_result%model), 0_c_intptr_t) &
+      v(124) = transfer(c_loc(x_dc_fit_result%model), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(113) = transfer(c_loc(x_dc_fit_result%se_from_scatter), 0_c_intptr_t) &
+      v(125) = transfer(c_loc(x_dc_fit_result%se_from_scatter), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(114) = transfer(c_loc(x_dc_fit_result%iterations), 0_c_intptr_t) &
+      v(126) = transfer(c_loc(x_dc_fit_result%iterations), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(115) = transfer(c_loc(x_dc_fit_result%robust), 0_c_intptr_t) &
+      v(127) = transfer(c_loc(x_dc_fit_result%robust), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
     end block
     block
       type(dc_plan_input), target :: x_dc_plan_input
-      v(116) = c_sizeof(x_dc_plan_input)
-      v(117) = transfer(c_loc(x_dc_plan_input%version), 0_c_intptr_t) &
+      v(128) = c_sizeof(x_dc_plan_input)
+      v(129) = transfer(c_loc(x_dc_plan_input%version), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(118) = transfer(c_loc(x_dc_plan_input%size), 0_c_intptr_t) &
+      v(130) = transfer(c_loc(x_dc_plan_input%size), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(119) = transfer(c_loc(x_dc_plan_input%youngs), 0_c_intptr_t) &
+      v(131) = transfer(c_loc(x_dc_plan_input%youngs), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(120) = transfer(c_loc(x_dc_plan_input%poisson), 0_c_intptr_t) &
+      v(132) = transfer(c_loc(x_dc_plan_input%poisson), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(121) = transfer(c_loc(x_dc_plan_input%density), 0_c_intptr_t) &
+      v(133) = transfer(c_loc(x_dc_plan_input%density), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(122) = transfer(c_loc(x_dc_plan_input%restitution), 0_c_intptr_t) &
+      v(134) = transfer(c_loc(x_dc_plan_input%restitution), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(123) = transfer(c_loc(x_dc_plan_input%radius_min), 0_c_intptr_t) &
+      v(135) = transfer(c_loc(x_dc_plan_input%radius_min), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(124) = transfer(c_loc(x_dc_plan_input%radius_max), 0_c_intptr_t) &
+      v(136) = transfer(c_loc(x_dc_plan_input%radius_max), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(125) = transfer(c_loc(x_dc_plan_input%v_max), 0_c_intptr_t) &
+      v(137) = transfer(c_loc(x_dc_plan_input%v_max), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(126) = transfer(c_loc(x_dc_plan_input%depth), 0_c_intptr_t) &
+      v(138) = transfer(c_loc(x_dc_plan_input%depth), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(127) = transfer(c_loc(x_dc_plan_input%gravity), 0_c_intptr_t) &
+      v(139) = transfer(c_loc(x_dc_plan_input%gravity), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(128) = transfer(c_loc(x_dc_plan_input%pressure), 0_c_intptr_t) &
+      v(140) = transfer(c_loc(x_dc_plan_input%pressure), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(129) = transfer(c_loc(x_dc_plan_input%solid_fraction), 0_c_intptr_t) &
+      v(141) = transfer(c_loc(x_dc_plan_input%solid_fraction), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(130) = transfer(c_loc(x_dc_plan_input%coordination), 0_c_intptr_t) &
+      v(142) = transfer(c_loc(x_dc_plan_input%coordination), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(131) = transfer(c_loc(x_dc_plan_input%load_factor), 0_c_intptr_t) &
+      v(143) = transfer(c_loc(x_dc_plan_input%load_factor), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(132) = transfer(c_loc(x_dc_plan_input%friction), 0_c_intptr_t) &
+      v(144) = transfer(c_loc(x_dc_plan_input%friction), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(133) = transfer(c_loc(x_dc_plan_input%rolling_friction), 0_c_intptr_t) &
+      v(145) = transfer(c_loc(x_dc_plan_input%rolling_friction), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(134) = transfer(c_loc(x_dc_plan_input%overlap_tol), 0_c_intptr_t) &
+      v(146) = transfer(c_loc(x_dc_plan_input%overlap_tol), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(135) = transfer(c_loc(x_dc_plan_input%e_tol), 0_c_intptr_t) &
+      v(147) = transfer(c_loc(x_dc_plan_input%e_tol), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(136) = transfer(c_loc(x_dc_plan_input%static_tol), 0_c_intptr_t) &
+      v(148) = transfer(c_loc(x_dc_plan_input%static_tol), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(137) = transfer(c_loc(x_dc_plan_input%duration_tol), 0_c_intptr_t) &
+      v(149) = transfer(c_loc(x_dc_plan_input%duration_tol), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(138) = transfer(c_loc(x_dc_plan_input%criterion), 0_c_intptr_t) &
+      v(150) = transfer(c_loc(x_dc_plan_input%criterion), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(139) = transfer(c_loc(x_dc_plan_input%walls), 0_c_intptr_t) &
+      v(151) = transfer(c_loc(x_dc_plan_input%walls), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(140) = transfer(c_loc(x_dc_plan_input%stability_fraction), 0_c_intptr_t) &
+      v(152) = transfer(c_loc(x_dc_plan_input%stability_fraction), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(141) = transfer(c_loc(x_dc_plan_input%conventional_divisor), 0_c_intptr_t) &
+      v(153) = transfer(c_loc(x_dc_plan_input%conventional_divisor), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
     end block
     block
       type(dc_plan_result), target :: x_dc_plan_result
-      v(142) = c_sizeof(x_dc_plan_result)
-      v(143) = transfer(c_loc(x_dc_plan_result%youngs_soft), 0_c_intptr_t) &
+      v(154) = c_sizeof(x_dc_plan_result)
+      v(155) = transfer(c_loc(x_dc_plan_result%youngs_soft), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(144) = transfer(c_loc(x_dc_plan_result%softening), 0_c_intptr_t) &
+      v(156) = transfer(c_loc(x_dc_plan_result%softening), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(145) = transfer(c_loc(x_dc_plan_result%binding), 0_c_intptr_t) &
+      v(157) = transfer(c_loc(x_dc_plan_result%binding), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(146) = transfer(c_loc(x_dc_plan_result%binding_dt), 0_c_intptr_t) &
+      v(158) = transfer(c_loc(x_dc_plan_result%binding_dt), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(147) = transfer(c_loc(x_dc_plan_result%dt), 0_c_intptr_t) &
+      v(159) = transfer(c_loc(x_dc_plan_result%dt), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(148) = transfer(c_loc(x_dc_plan_result%dt_restitution), 0_c_intptr_t) &
+      v(160) = transfer(c_loc(x_dc_plan_result%dt_restitution), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(149) = transfer(c_loc(x_dc_plan_result%dt_stability), 0_c_intptr_t) &
+      v(161) = transfer(c_loc(x_dc_plan_result%dt_stability), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(150) = transfer(c_loc(x_dc_plan_result%dt_conventional), 0_c_intptr_t) &
+      v(162) = transfer(c_loc(x_dc_plan_result%dt_conventional), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(151) = transfer(c_loc(x_dc_plan_result%speedup), 0_c_intptr_t) &
+      v(163) = transfer(c_loc(x_dc_plan_result%speedup), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(152) = transfer(c_loc(x_dc_plan_result%alpha), 0_c_intptr_t) &
+      v(164) = transfer(c_loc(x_dc_plan_result%alpha), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(153) = transfer(c_loc(x_dc_plan_result%max_overlap_ratio), 0_c_intptr_t) &
+      v(165) = transfer(c_loc(x_dc_plan_result%max_overlap_ratio), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(154) = transfer(c_loc(x_dc_plan_result%max_overlap_ratio_real), 0_c_intptr_t) &
+      v(166) = transfer(c_loc(x_dc_plan_result%max_overlap_ratio_real), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(155) = transfer(c_loc(x_dc_plan_result%static_overlap_ratio), 0_c_intptr_t) &
+      v(167) = transfer(c_loc(x_dc_plan_result%static_overlap_ratio), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(156) = transfer(c_loc(x_dc_plan_result%static_overlap_ratio_real), 0_c_intptr_t) &
+      v(168) = transfer(c_loc(x_dc_plan_result%static_overlap_ratio_real), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(157) = transfer(c_loc(x_dc_plan_result%max_overlap_pair), 0_c_intptr_t) &
+      v(169) = transfer(c_loc(x_dc_plan_result%max_overlap_pair), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(158) = transfer(c_loc(x_dc_plan_result%static_pair), 0_c_intptr_t) &
+      v(170) = transfer(c_loc(x_dc_plan_result%static_pair), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(159) = transfer(c_loc(x_dc_plan_result%stress), 0_c_intptr_t) &
+      v(171) = transfer(c_loc(x_dc_plan_result%stress), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(160) = transfer(c_loc(x_dc_plan_result%static_force), 0_c_intptr_t) &
+      v(172) = transfer(c_loc(x_dc_plan_result%static_force), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(161) = transfer(c_loc(x_dc_plan_result%duration), 0_c_intptr_t) &
+      v(173) = transfer(c_loc(x_dc_plan_result%duration), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(162) = transfer(c_loc(x_dc_plan_result%duration_real), 0_c_intptr_t) &
+      v(174) = transfer(c_loc(x_dc_plan_result%duration_real), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(163) = transfer(c_loc(x_dc_plan_result%duration_change), 0_c_intptr_t) &
+      v(175) = transfer(c_loc(x_dc_plan_result%duration_change), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(164) = transfer(c_loc(x_dc_plan_result%t_hertz), 0_c_intptr_t) &
+      v(176) = transfer(c_loc(x_dc_plan_result%t_hertz), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(165) = transfer(c_loc(x_dc_plan_result%dt_over_t_hertz), 0_c_intptr_t) &
+      v(177) = transfer(c_loc(x_dc_plan_result%dt_over_t_hertz), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(166) = transfer(c_loc(x_dc_plan_result%steps_per_contact), 0_c_intptr_t) &
+      v(178) = transfer(c_loc(x_dc_plan_result%steps_per_contact), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(167) = transfer(c_loc(x_dc_plan_result%e_plain_at_dt), 0_c_intptr_t) &
+      v(179) = transfer(c_loc(x_dc_plan_result%e_plain_at_dt), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(168) = transfer(c_loc(x_dc_plan_result%e_plain_min), 0_c_intptr_t) &
+      v(180) = transfer(c_loc(x_dc_plan_result%e_plain_min), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(169) = transfer(c_loc(x_dc_plan_result%e_plain_max), 0_c_intptr_t) &
+      v(181) = transfer(c_loc(x_dc_plan_result%e_plain_max), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(170) = transfer(c_loc(x_dc_plan_result%e_plain_mean), 0_c_intptr_t) &
+      v(182) = transfer(c_loc(x_dc_plan_result%e_plain_mean), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
     end block
     block
       type(dc_duration_plan), target :: x_dc_duration_plan
-      v(171) = c_sizeof(x_dc_duration_plan)
-      v(172) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) &
+      v(183) = c_sizeof(x_dc_duration_plan)
+      v(184) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(173) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) &
+      v(185) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(174) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) &
+      v(186) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(175) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) &
+      v(187) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(176) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) &
+      v(188) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(177) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) &
+      v(189) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(178) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) &
+      v(190) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(179) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) &
+      v(191) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(180) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) &
+      v(192) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(181) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) &
+      v(193) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
     end block
     block
       type(dc_energy), target :: x_dc_energy
-      v(182) = c_sizeof(x_dc_energy)
-      v(183) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) &
+      v(194) = c_sizeof(x_dc_energy)
+      v(195) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(184) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) &
+      v(196) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(185) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) &
+      v(197) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(186) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) &
+      v(198) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(187) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) &
+      v(199) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
     end block
-    n = 187
+    n = 199
   end subroutine expected_layout
 end module abi_expect

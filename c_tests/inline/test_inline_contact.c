@@ -4,7 +4,7 @@
  * FMA contraction forced on (-O3 -march=native -ffp-contract=fast).
  *
  *  - specs: random models of every normal law (Hertz, power law incl. p = 1, 3/2, 2, linear,
- *    viscoelastic, DMT), damping, criterion, tangential (none, linear, Mindlin), rolling (none,
+ *    viscoelastic, DMT), damping, criterion, tangential (none, linear, Mindlin, rescaled Mindlin), rolling (none,
  *    constant, EPSD with given k_r or Ai's rule), twisting (none, SDS), rigid body 2 (E = inf),
  *    and random invalid ones (NaN = unset, inf, negative, out-of-range, bad selector, bad
  *    version): the same status, and on DC_OK the same model bytes;
@@ -17,7 +17,7 @@
  *    the test also requires that sliding, sticking, rolling-limit and separation steps occurred;
  *  - the fast entry dc_contact_force_checked_inline (model checked once by
  *    dc_contact_model_check_inline) along the same trajectories and bad inputs: same bits;
- *  - the shaped entry dc_contact_force_shaped_inline along the same trajectories: 108 shapes
+ *  - the shaped entry dc_contact_force_shaped_inline along the same trajectories: 144 shapes
  *    with their codes as compile-time constants (as the plugins instantiate it), the others as
  *    run-time codes: same statuses and bits; dc_contact_model_shape_inline accepts a model's own
  *    shape only;
@@ -73,7 +73,7 @@ static void random_spec(dc_contact_spec *s, int bad) {
         s->visco_A = uni() < 0.2 ? 0.0 : logu(-9, -5);
     }
     s->work_of_adhesion = uni() < 0.2 ? 0.0 : logu(-3, 1);
-    s->tangential = pick(3);
+    s->tangential = pick(4);
     s->mu = uni() < 0.1 ? 0.0 : 1.2 * uni();
     s->k_t = logu(3, 8);
     s->e_t = uni() < 0.3 ? 1.0 : logu(-2, 0);
@@ -95,7 +95,7 @@ static void random_spec(dc_contact_spec *s, int bad) {
     const int which = pick(25);
     if (which < 19) *f[which] = vals[pick(8)];
     else if (which == 19) s->normal = pick(2) ? 0 : 6;
-    else if (which == 20) s->tangential = 3;
+    else if (which == 20) s->tangential = 4;
     else if (which == 21) s->rolling = -1;
     else if (which == 22) s->twisting = 2;
     else if (which == 23) s->criterion = 2;
@@ -111,14 +111,14 @@ static int same_result(const dc_contact_result *a, const dc_contact_result *b) {
  * Hertz damped, Hertz damped clamped and general p clamped, every tangential, rolling, twisting
  * and carry code. Other kernels: the shape passed as run-time values. Counts constant calls. */
 static long n_shaped_const = 0, n_shaped_runtime = 0;
-/* steps per constant shape: index kernel (0-2) * 36 + tangential * 12 + rolling * 4 +
+/* steps per constant shape: index kernel (0-2) * 48 + tangential * 12 + rolling * 4 +
  * twisting * 2 + carry (the model's own codes, all in range for a valid model) */
-static long shape_hits[108];
+static long shape_hits[144];
 static int shape_index(const dc_contact_model *m) {
     const int k = m->normal.kernel == DC_KERNEL_HERTZ_DAMPED           ? 0
                   : m->normal.kernel == DC_KERNEL_HERTZ_DAMPED_CLAMPED ? 1
                                                                        : 2;
-    return k * 36 + m->tangential * 12 + m->rolling * 4 + m->twisting * 2 + m->carry;
+    return k * 48 + m->tangential * 12 + m->rolling * 4 + m->twisting * 2 + m->carry;
 }
 #define SH_C(K, T, R, TW)                                                                          \
     n_shaped_const++;                                                                              \
@@ -144,7 +144,8 @@ static int shape_index(const dc_contact_model *m) {
     switch (m->tangential) {                                                                       \
     case DC_TANGENTIAL_NONE: SH_R(K, DC_TANGENTIAL_NONE)                                           \
     case DC_TANGENTIAL_LINEAR: SH_R(K, DC_TANGENTIAL_LINEAR)                                       \
-    default: SH_R(K, DC_TANGENTIAL_MINDLIN)                                                        \
+    case DC_TANGENTIAL_MINDLIN: SH_R(K, DC_TANGENTIAL_MINDLIN)                                     \
+    default: SH_R(K, DC_TANGENTIAL_MINDLIN_RESCALE)                                                \
     }
 static int32_t shaped(const dc_contact_model *m, const dc_contact_state *s, double dt, double *h,
                       dc_contact_result *o, dc_contact_checks *ck) {
@@ -165,7 +166,7 @@ static void shape_check(const dc_contact_model *m) {
     if (dc_contact_model_shape_inline(m, k, t, r, tw, c) != DC_OK) fail("shape of its own model", 0);
     const int32_t other[5][5] = {{k == DC_KERNEL_HERTZ_DAMPED ? DC_KERNEL_HERTZ_DAMPED_CLAMPED
                                                               : DC_KERNEL_HERTZ_DAMPED, t, r, tw, c},
-                                 {k, (t + 1) % 3, r, tw, c},
+                                 {k, (t + 1) % 4, r, tw, c},
                                  {k, t, (r + 1) % 3, tw, c},
                                  {k, t, r, 1 - tw, c},
                                  {k, t, r, tw, 1 - c}};
@@ -823,8 +824,8 @@ int main(int argc, char **argv) {
     printf("test_inline_contact[%s]: step-aware: %ld trajectories, %ld steps (%ld contact onsets, "
            "%ld end corrections)\n", LANG, stepped, n_step_steps, n_step_onsets, n_step_ends);
     int shapes_hit = 0;
-    for (int i = 0; i < 108; i++) shapes_hit += shape_hits[i] > 0;
-    printf("test_inline_contact[%s]: shaped entry: %ld steps with a constant shape (%d of the 108 "
+    for (int i = 0; i < 144; i++) shapes_hit += shape_hits[i] > 0;
+    printf("test_inline_contact[%s]: shaped entry: %ld steps with a constant shape (%d of the 144 "
            "shapes), %ld with a run-time one\n", LANG, n_shaped_const, shapes_hit, n_shaped_runtime);
     printf("test_inline_contact[%s]: deferred entries: %ld steps (%ld with an error status), the "
            "history not finite %ld, results out of range %ld; %ld steps not bit-identical (only "
@@ -841,7 +842,7 @@ int main(int argc, char **argv) {
           n_shaped_const * 10 > n_shaped_runtime && n_shaped_runtime > 1000 &&
           n_deferred * 2 > seen[0] && n_deferred_bad[0] > 0 && n_deferred_bad[1] > 0 &&
           /* every constant shape in the long runs (10^7 steps; shorter runs reach fewer) */
-          shapes_hit >= (total >= 10000000L ? 108 : total >= 2000000L ? 60 : 20)))
+          shapes_hit >= (total >= 10000000L ? 136 : total >= 2000000L ? 60 : 20)))
         fail("coverage of regimes", 0);
     printf("test_inline_contact[%s]: %ld passed, %ld failed\n", LANG, n_pass, n_fail);
     return n_fail ? 1 : 0;

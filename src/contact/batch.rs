@@ -16,9 +16,10 @@
 use super::evaluate::{check_model, check_state};
 use super::kinematics::{ContactState, Kin, harmonic};
 use super::model::{ContactModel, HISTORY_MAX, select};
-use super::tangential::{TangentialLaw, step};
+use super::tangential::TangentialStage;
 use super::tangential_linear::Linear;
 use super::tangential_mindlin::Mindlin;
+use super::tangential_mindlin_rescale::MindlinRescale;
 use super::vec3::{
     V3, add, all_finite, all_positive, bits_finite, cross, dot, finite_bits, no_nan, normal_vector,
     scale, sub,
@@ -246,7 +247,7 @@ fn put(c: &mut [f64], v: V3) {
 
 /// Pass 2 for one tangential law: adds F_t to the force, writes the torques of F_t, updates ξ.
 #[inline(never)]
-fn tangential_pass<T: TangentialLaw>(
+fn tangential_pass<T: TangentialStage>(
     m: &ContactModel,
     b: &BatchIn<'_>,
     dt: f64,
@@ -270,12 +271,10 @@ fn tangential_pass<T: TangentialLaw>(
         }
         let k = Kin::of(&s);
         let frame = Kin::frame(&s, v3(h.get(0..3).unwrap_or(&[])), dt, m.carry);
-        let Some(xs) = h.get_mut(at..at + 3) else {
+        let Some(rec) = h.get_mut(at..) else {
             continue;
         };
-        let mut xi = v3(xs);
-        let r = step::<T>(m, &k, f, dt, &frame, &mut xi);
-        put(xs, xi);
+        let r = T::run(m, &k, f, dt, &frame, rec);
         *fv = add(*fv, r.ft);
         let nft = cross(k.n, r.ft);
         *t1 = scale(-k.a1, nft);
@@ -512,6 +511,7 @@ fn compute(
     match m.tangential {
         select::TANGENTIAL_LINEAR => tangential_pass::<Linear>(m, inp, dt, out),
         select::TANGENTIAL_MINDLIN => tangential_pass::<Mindlin>(m, inp, dt, out),
+        select::TANGENTIAL_MINDLIN_RESCALE => tangential_pass::<MindlinRescale>(m, inp, dt, out),
         _ => {}
     }
     match m.rolling {

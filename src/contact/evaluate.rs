@@ -2,11 +2,13 @@
 //! twisting. Each stage picks its monomorphised law once per call (a jump), so a contact pays
 //! only for the stages its model switches on.
 
+use super::energy::{ContactEnergy, ledger};
 use super::kinematics::{ContactState, Kin};
 use super::model::{ContactModel, HISTORY_MAX, select};
-use super::tangential::{TangentialOut, step};
+use super::tangential::{TangentialOut, TangentialStage};
 use super::tangential_linear::Linear;
 use super::tangential_mindlin::Mindlin;
+use super::tangential_mindlin_rescale::MindlinRescale;
 use super::vec3::{V3, add, all_finite, cross, none_negative, normal_vector, scale, sub};
 use super::{rolling_constant, rolling_epsd, step_exact, twisting_sds};
 use crate::Error;
@@ -72,7 +74,10 @@ pub(crate) fn check_model_parts(
     needs(kernel).ok_or(Error::ContactModelInvalid)?;
     let codes_ok = matches!(
         tangential,
-        select::TANGENTIAL_NONE | select::TANGENTIAL_LINEAR | select::TANGENTIAL_MINDLIN
+        select::TANGENTIAL_NONE
+            | select::TANGENTIAL_LINEAR
+            | select::TANGENTIAL_MINDLIN
+            | select::TANGENTIAL_MINDLIN_RESCALE
     ) && matches!(
         rolling,
         select::ROLLING_NONE | select::ROLLING_CONSTANT | select::ROLLING_EPSD
@@ -179,16 +184,16 @@ pub(crate) fn evaluate(
     out.force = normal_vector(f, k.n);
     let (mut t1, mut t2) = ([0.0; 3], [0.0; 3]);
     if let (Some(at), Some(frame)) = (m.layout.tangential, &frame) {
-        let mut xi = get3(h, at);
+        let rec = h.get_mut(at..).unwrap_or(&mut []);
         let t = match m.tangential {
-            select::TANGENTIAL_LINEAR => step::<Linear>(m, &k, f, dt, frame, &mut xi),
-            select::TANGENTIAL_MINDLIN => step::<Mindlin>(m, &k, f, dt, frame, &mut xi),
+            select::TANGENTIAL_LINEAR => Linear::run(m, &k, f, dt, frame, rec),
+            select::TANGENTIAL_MINDLIN => Mindlin::run(m, &k, f, dt, frame, rec),
+            select::TANGENTIAL_MINDLIN_RESCALE => MindlinRescale::run(m, &k, f, dt, frame, rec),
             _ => TangentialOut {
                 ft: [0.0; 3],
                 sliding: false,
             },
         };
-        put3(h, at, xi);
         out.ft = t.ft;
         out.sliding = t.sliding;
         out.force = add(out.force, t.ft);
@@ -253,6 +258,18 @@ pub fn contact_force(
     contact_force_checked_model(m, s, dt, history)
 }
 
+/// [`contact_force`] and the energy ledger of the step ([`super::energy`]): what the dashpots
+/// and slips removed, and the elastic energy left in the springs.
+pub fn contact_force_energy(
+    m: &ContactModel,
+    s: &ContactState,
+    dt: f64,
+    history: &mut [f64],
+) -> Result<(ContactForce, ContactEnergy), Error> {
+    check_model(m)?;
+    checked_step::<true>(m, s, dt, history)
+}
+
 /// [`contact_force`] for a model that has passed [`check_model`] (or, at the C boundary,
 /// [`check_model_parts`] on the fields it was built from): every other check is made.
 #[inline(always)]
@@ -262,6 +279,28 @@ pub(crate) fn contact_force_checked_model(
     dt: f64,
     history: &mut [f64],
 ) -> Result<ContactForce, Error> {
+    checked_step::<false>(m, s, dt, history).map(|(f, _)| f)
+}
+
+/// [`contact_force_energy`] for a model that has passed the model checks (as
+/// [`contact_force_checked_model`]).
+pub(crate) fn contact_force_energy_checked_model(
+    m: &ContactModel,
+    s: &ContactState,
+    dt: f64,
+    history: &mut [f64],
+) -> Result<(ContactForce, ContactEnergy), Error> {
+    checked_step::<true>(m, s, dt, history)
+}
+
+/// The checked step; `ENERGY`: also the ledger (else a zero one, not computed).
+#[inline(always)]
+fn checked_step<const ENERGY: bool>(
+    m: &ContactModel,
+    s: &ContactState,
+    dt: f64,
+    history: &mut [f64],
+) -> Result<(ContactForce, ContactEnergy), Error> {
     let len = m.layout.len;
     let hist = history.get_mut(..len).ok_or(Error::BufferTooShort)?;
     if !dt.is_finite() {
@@ -278,18 +317,24 @@ pub(crate) fn contact_force_checked_model(
     if !all_finite(&h) {
         return Err(Error::NotFinite);
     }
+    let old = h;
     let out = evaluate(m, s, dt, &mut h);
+    let energy = if ENERGY {
+        ledger(m, s, dt, &old, &h, &out)
+    } else {
+        ContactEnergy::default()
+    };
     let [f1, f2, f3] = out.force;
     let [g1, g2, g3] = out.ft;
     let [t1, t2, t3] = out.torque1;
     let [u1, u2, u3] = out.torque2;
     let outs = [out.fn_, f1, f2, f3, g1, g2, g3, t1, t2, t3, u1, u2, u3];
-    let ok = all_finite(&outs) & all_finite(&h);
+    let ok = all_finite(&outs) & all_finite(&h) & (!ENERGY || all_finite(&energy.values()));
     if !ok {
         return Err(Error::ResultRange);
     }
     if let Some(src) = h.get(..len) {
         hist.copy_from_slice(src);
     }
-    Ok(out)
+    Ok((out, energy))
 }

@@ -14,6 +14,10 @@ pub mod select {
     pub const TANGENTIAL_LINEAR: i32 = 1;
     /// Mindlin no-slip spring k_t = 8 G* a, a = √(R* δ), dashpot, Coulomb limit.
     pub const TANGENTIAL_MINDLIN: i32 = 2;
+    /// Mindlin spring in incremental force form, its force history rescaled by a/a_old when the
+    /// contact radius shrinks (Thornton et al. 2013, eq. 18b; LAMMPS `mindlin_rescale/force`):
+    /// creates no energy. History: the force (3) and the contact radius of the last step (1).
+    pub const TANGENTIAL_MINDLIN_RESCALE: i32 = 3;
     /// No rolling resistance.
     pub const ROLLING_NONE: i32 = 0;
     /// Constant directional torque μ_r R* |Fn| opposing the rolling angular velocity.
@@ -32,12 +36,13 @@ pub mod select {
     pub const CARRY_PROJECT: i32 = 1;
 }
 
-/// Doubles per contact of the largest model: normal of the last step (3), tangential spring (3),
-/// rolling spring torque (3), twisting spring torque (1), step-aware damping state (1).
+/// Doubles per contact of the largest model: normal of the last step (3), tangential spring (3,
+/// and 1 more, the contact radius of the last step, for `TANGENTIAL_MINDLIN_RESCALE`), rolling
+/// spring torque (3), twisting spring torque (1), step-aware damping state (1).
 /// (C: `DC_CONTACT_HISTORY_MAX`.)
 ///
 /// cbindgen:ignore
-pub const HISTORY_MAX: usize = 11;
+pub const HISTORY_MAX: usize = 12;
 
 /// Where each sub-model keeps its state in the caller's history array (offsets in doubles).
 /// Only the parts a model uses are present, so a model's history is as short as it can be.
@@ -45,7 +50,8 @@ pub const HISTORY_MAX: usize = 11;
 pub struct Layout {
     /// Total doubles per contact (0 for a normal-only model).
     pub len: usize,
-    /// Offset of the tangential spring ξ [m] (3 doubles), if any.
+    /// Offset of the tangential spring, if any: ξ [m] (3 doubles), or for
+    /// `TANGENTIAL_MINDLIN_RESCALE` the spring force [N] (3) and the last contact radius [m] (1).
     pub tangential: Option<usize>,
     /// Offset of the rolling spring torque [N m] (3 doubles), if any.
     pub rolling: Option<usize>,
@@ -71,7 +77,7 @@ impl Layout {
                 at
             })
         };
-        let t = take(has_t, 3);
+        let t = take(has_t, tangential_len(tangential));
         let r = take(has_r, 3);
         let tw = take(has_tw, 1);
         Layout {
@@ -101,6 +107,16 @@ impl Layout {
     #[inline(always)]
     pub fn has_normal(&self) -> bool {
         self.tangential.is_some() || self.rolling.is_some() || self.twisting.is_some()
+    }
+}
+
+/// Doubles of the tangential spring's record: 4 for `TANGENTIAL_MINDLIN_RESCALE` (force and the
+/// last contact radius), else 3.
+pub(crate) fn tangential_len(tangential: i32) -> usize {
+    if tangential == select::TANGENTIAL_MINDLIN_RESCALE {
+        4
+    } else {
+        3
     }
 }
 

@@ -244,7 +244,9 @@ pub fn contact_model(s: &ContactSpec) -> Result<ContactModel, Error> {
     }
     match s.tangential {
         select::TANGENTIAL_NONE => {}
-        select::TANGENTIAL_LINEAR | select::TANGENTIAL_MINDLIN => {
+        select::TANGENTIAL_LINEAR
+        | select::TANGENTIAL_MINDLIN
+        | select::TANGENTIAL_MINDLIN_RESCALE => {
             m.mu = non_negative(s.mu)?;
             m.zeta_t = zeta_from_e_t(set(s.e_t)?)?;
             m.kt = if s.tangential == select::TANGENTIAL_LINEAR {

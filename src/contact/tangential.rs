@@ -59,6 +59,45 @@ pub(crate) struct TangentialOut {
     pub sliding: bool,
 }
 
+/// A tangential stage on its history record (the history from the stage's layout offset on; it
+/// reads and writes its own first [`super::model::tangential_len`] doubles). Every
+/// [`TangentialLaw`] is one (the displacement spring ξ of [`step`]);
+/// [`super::tangential_mindlin_rescale`] stores a force and a radius instead.
+pub(crate) trait TangentialStage {
+    /// One step: the tangential force on body 1; `h` updated in place.
+    fn run(
+        m: &ContactModel,
+        k: &Kin,
+        f_normal: f64,
+        dt: f64,
+        frame: &FrameStep,
+        h: &mut [f64],
+    ) -> TangentialOut;
+}
+
+impl<T: TangentialLaw> TangentialStage for T {
+    #[inline(always)]
+    fn run(
+        m: &ContactModel,
+        k: &Kin,
+        f_normal: f64,
+        dt: f64,
+        frame: &FrameStep,
+        h: &mut [f64],
+    ) -> TangentialOut {
+        let Some([x, y, z]) = h.get_mut(0..3) else {
+            return TangentialOut {
+                ft: [0.0; 3],
+                sliding: false,
+            };
+        };
+        let mut xi = [*x, *y, *z];
+        let r = step::<T>(m, k, f_normal, dt, frame, &mut xi);
+        [*x, *y, *z] = xi;
+        r
+    }
+}
+
 /// One tangential step of law `T`; `xi` is the stored spring, updated in place.
 #[inline(always)]
 pub(crate) fn step<T: TangentialLaw>(

@@ -3,7 +3,10 @@
 use super::status::*;
 use super::{dc_status, guard, read_in, write_result};
 use crate::contact::batch::{BatchIn, BatchOut, contact_force_batch, contact_force_batch_fused};
-use crate::contact::evaluate::{check_model_parts, contact_force_checked_model};
+use crate::contact::energy::ContactEnergy;
+use crate::contact::evaluate::{
+    check_model_parts, contact_force_checked_model, contact_force_energy_checked_model,
+};
 use crate::contact::model::{HISTORY_MAX, Layout, select};
 use crate::contact::spec::{ContactSpec, contact_model, damping, normal};
 use crate::contact::step_exact::{StepExact, set_step};
@@ -18,7 +21,7 @@ use super::force::dc_pair;
 pub const DC_CONTACT_SPEC_VERSION: u32 = 1;
 /// Doubles of history per contact for the largest contact model
 /// (dc_contact_history_len gives the exact, usually smaller, figure of one model).
-pub const DC_CONTACT_HISTORY_MAX: usize = 11;
+pub const DC_CONTACT_HISTORY_MAX: usize = 12;
 
 /// Normal law: Hertz from E, nu of both bodies, k = (4/3) E* sqrt(R*) per contact.
 pub const DC_NORMAL_HERTZ: i32 = 1;
@@ -41,7 +44,14 @@ pub const DC_TANGENTIAL_NONE: i32 = 0;
 /// Tangential: Cundall-Strack linear history spring k_t, dashpot from e_t, Coulomb limit.
 pub const DC_TANGENTIAL_LINEAR: i32 = 1;
 /// Tangential: Mindlin k_t = 8 G* a, a = sqrt(R* d), dashpot from e_t, Coulomb limit.
+/// Kept as LAMMPS `mindlin` has it (total form k_t(d) xi); it creates energy when the contact
+/// grows (up to +0.27 % of the kinetic energy in an elastic oblique impact, docs/force.md):
+/// prefer DC_TANGENTIAL_MINDLIN_RESCALE.
 pub const DC_TANGENTIAL_MINDLIN: i32 = 2;
+/// Tangential: Mindlin k_t = 8 G* a in incremental force form, the force history rescaled by
+/// a/a_old when the contact shrinks (Thornton et al. 2013; LAMMPS `mindlin_rescale/force`),
+/// dashpot from e_t, Coulomb limit: creates no energy. 4 doubles of tangential history.
+pub const DC_TANGENTIAL_MINDLIN_RESCALE: i32 = 3;
 /// Rolling resistance: none.
 pub const DC_ROLLING_NONE: i32 = 0;
 /// Rolling resistance: constant torque mu_r R* |Fn| opposing the rolling angular velocity.
@@ -72,6 +82,7 @@ const _: () = assert!(
         && DC_TANGENTIAL_NONE == select::TANGENTIAL_NONE
         && DC_TANGENTIAL_LINEAR == select::TANGENTIAL_LINEAR
         && DC_TANGENTIAL_MINDLIN == select::TANGENTIAL_MINDLIN
+        && DC_TANGENTIAL_MINDLIN_RESCALE == select::TANGENTIAL_MINDLIN_RESCALE
         && DC_ROLLING_NONE == select::ROLLING_NONE
         && DC_ROLLING_CONSTANT == select::ROLLING_CONSTANT
         && DC_ROLLING_EPSD == select::ROLLING_EPSD
@@ -210,7 +221,7 @@ pub struct dc_contact_model {
     pub normal: dc_pair,
     /// Friction coefficient mu.
     pub mu: f64,
-    /// k_t [N/m] (linear) or 8 G* [Pa] (Mindlin, k_t = 8 G* sqrt(R* d)).
+    /// k_t [N/m] (linear) or 8 G* [Pa] (both Mindlin laws, k_t = 8 G* sqrt(R* d)).
     pub kt: f64,
     /// Tangential damping ratio zeta_t from e_t.
     pub zeta_t: f64,
@@ -423,6 +434,62 @@ impl From<ContactForce> for dc_contact_result {
     }
 }
 
+/// The energy ledger of one contact step [J] (dc_contact_force_energy): what the dashpots and
+/// the slips removed during the step, and the elastic energy left in the history springs, so
+/// that a host can check that nothing is created: over a whole contact (springs empty and
+/// overlap zero at both ends) the kinetic energy change is -(sum of `dissipated`) to the
+/// integrator's error. Spring energies are |S|^2/(2k) of the stored force or torque S; the work
+/// of a spring step is the trapezoid of its force before and after over the increment; the
+/// energy a law creates is not counted (DC_TANGENTIAL_MINDLIN's gain, EPSD rolling under Ai's
+/// stiffness rule), so it shows up as a gain. Definitions: docs/force.md.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[allow(non_camel_case_types)]
+pub struct dc_contact_energy {
+    /// Everything removed this step: the sum of the damping and slip terms.
+    pub dissipated: f64,
+    /// Work of the normal dashpot, (F_n - F_el) vn dt.
+    pub normal_damping: f64,
+    /// Work of the tangential dashpot, c_t |v_t|^2 dt.
+    pub tangential_damping: f64,
+    /// Work of the tangential slip (and, DC_TANGENTIAL_MINDLIN_RESCALE, the loss of its force
+    /// history when the contact radius changes; when the contact ends, the energy its reset
+    /// spring held).
+    pub tangential_slip: f64,
+    /// Elastic energy left in the tangential spring.
+    pub tangential_elastic: f64,
+    /// Work of the EPSD rolling dashpot.
+    pub rolling_damping: f64,
+    /// Work of the rolling slip (EPSD at its limit, or the constant rolling torque).
+    pub rolling_slip: f64,
+    /// Elastic energy left in the EPSD rolling spring.
+    pub rolling_elastic: f64,
+    /// Work of the twisting dashpot.
+    pub twisting_damping: f64,
+    /// Work of the twisting slip.
+    pub twisting_slip: f64,
+    /// Elastic energy left in the twisting spring.
+    pub twisting_elastic: f64,
+}
+
+impl From<ContactEnergy> for dc_contact_energy {
+    fn from(e: ContactEnergy) -> Self {
+        dc_contact_energy {
+            dissipated: e.dissipated,
+            normal_damping: e.normal_damping,
+            tangential_damping: e.tangential_damping,
+            tangential_slip: e.tangential_slip,
+            tangential_elastic: e.tangential_elastic,
+            rolling_damping: e.rolling_damping,
+            rolling_slip: e.rolling_slip,
+            rolling_elastic: e.rolling_elastic,
+            twisting_damping: e.twisting_damping,
+            twisting_slip: e.twisting_slip,
+            twisting_elastic: e.twisting_elastic,
+        }
+    }
+}
+
 /// Fills a dc_contact_spec with its version, size and defaults: no normal law yet (you must
 /// set `normal`), DC_DAMPING_NONE, DC_END_FORCE, no tangential/rolling/twisting, every
 /// parameter unset (NaN) except e_t = 1, k_r = 0, eta_r = eta_tw = 0, inertia_factor = 0.4.
@@ -592,7 +659,8 @@ pub unsafe extern "C" fn dc_contact_model_set_step(
 
 /// The number of doubles of history one contact of this model needs (0 for a normal-only or
 /// constant-rolling model; at most DC_CONTACT_HISTORY_MAX). Layout (for inspection only):
-/// normal of the last step (3), tangential spring [m] (3), rolling spring torque [N m] (3),
+/// normal of the last step (3), tangential spring [m] (3; DC_TANGENTIAL_MINDLIN_RESCALE: its
+/// force [N] (3) and the last contact radius [m] (1)), rolling spring torque [N m] (3),
 /// twisting spring torque [N m] (1), each present only if its sub-model is.
 ///
 /// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID.
@@ -629,11 +697,39 @@ unsafe fn force_common(
     history_len: usize,
     out: *mut dc_contact_result,
 ) -> i32 {
+    // SAFETY: forwarded caller contract; no ledger.
+    unsafe {
+        force_common_with::<false>(
+            model,
+            state,
+            dt,
+            history,
+            history_len,
+            out,
+            core::ptr::null_mut(),
+        )
+    }
+}
+
+/// [`force_common`], and with `ENERGY` the ledger written to `energy` (NULL checked).
+///
+/// # Safety
+/// As dc_contact_force_energy (`energy` only read when `ENERGY`).
+#[inline(always)]
+unsafe fn force_common_with<const ENERGY: bool>(
+    model: *const dc_contact_model,
+    state: ContactState,
+    dt: f64,
+    history: *mut f64,
+    history_len: usize,
+    out: *mut dc_contact_result,
+    energy: *mut dc_contact_energy,
+) -> i32 {
     // SAFETY: null checked; any bit pattern is a valid value.
     let Some(m) = (unsafe { model.as_ref() }) else {
         return DC_ERR_NULL_POINTER;
     };
-    if out.is_null() {
+    if out.is_null() || (ENERGY && energy.is_null()) {
         return DC_ERR_NULL_POINTER;
     }
     let cm = match model_of(m) {
@@ -650,17 +746,30 @@ unsafe fn force_common(
     if need > 0 && !history.is_aligned() {
         return DC_ERR_BUFFER_LAYOUT;
     }
-    let body = || {
-        let mut empty = [0.0f64; 0];
-        let hist: &mut [f64] = if need > 0 {
+    let hist = || -> &mut [f64] {
+        if need > 0 {
             // SAFETY: non-null, aligned, valid for history_len >= need doubles (caller
             // contract); nothing else refers to it during the call.
             unsafe { core::slice::from_raw_parts_mut(history, need) }
         } else {
-            &mut empty
-        };
+            &mut []
+        }
+    };
+    if ENERGY {
+        return guard(|| {
+            // cm passed the model checks in model_of.
+            let (r, e) = contact_force_energy_checked_model(&cm, &state, dt, hist())?;
+            // SAFETY: both non-null (checked above); writable per the caller contract.
+            unsafe {
+                out.write_unaligned(r.into());
+                energy.write_unaligned(e.into());
+            }
+            Ok(())
+        });
+    }
+    let body = || {
         // cm passed the model checks in model_of.
-        contact_force_checked_model(&cm, &state, dt, hist).map(dc_contact_result::from)
+        contact_force_checked_model(&cm, &state, dt, hist()).map(dc_contact_result::from)
     };
     // SAFETY: forwarded caller contract on out (non-null).
     unsafe { write_result(out, body) }
@@ -706,6 +815,44 @@ pub unsafe extern "C" fn dc_contact_force(
     };
     // SAFETY: forwarded caller contract.
     unsafe { force_common(model, ContactState::from(s), dt, history, history_len, out) }
+}
+
+/// dc_contact_force with the energy ledger of the step (dc_contact_energy): the same force,
+/// torques, history and statuses bit for bit, and what the step dissipated and left stored in
+/// the springs. Allocation-free like dc_contact_force; it costs a second pass over the stages.
+///
+/// @param energy  receives the ledger on success (with `out`); untouched on error.
+/// @return as dc_contact_force; DC_ERR_NULL_POINTER also for `energy` NULL; DC_ERR_RESULT_RANGE
+///         also for a ledger value that is not finite.
+///
+/// # Safety
+/// As dc_contact_force; `energy` NULL or writable for one dc_contact_energy.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_contact_force_energy(
+    model: *const dc_contact_model,
+    state: *const dc_contact_state,
+    dt: f64,
+    history: *mut f64,
+    history_len: usize,
+    out: *mut dc_contact_result,
+    energy: *mut dc_contact_energy,
+) -> i32 {
+    // SAFETY: null checked; any bit pattern of dc_contact_state is a valid value.
+    let Some(s) = (unsafe { state.as_ref() }) else {
+        return DC_ERR_NULL_POINTER;
+    };
+    // SAFETY: forwarded caller contract.
+    unsafe {
+        force_common_with::<true>(
+            model,
+            ContactState::from(s),
+            dt,
+            history,
+            history_len,
+            out,
+            energy,
+        )
+    }
 }
 
 /// dc_contact_force for two spheres given by their centres: n = (x1 - x2)/|x1 - x2| and
