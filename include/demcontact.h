@@ -20,11 +20,6 @@
 #include <stddef.h>
 
 /**
- * The largest h the correction is designed for (t_H/10); larger h use R(1/10).
- */
-#define H_MAX 0.1
-
-/**
  * LIGGGHTS `pair_style gran model hooke`; value = `coefficientRestitution` to type.
  */
 #define DC_BUILTIN_LIGGGHTS_HOOKE 1

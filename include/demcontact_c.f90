@@ -10,7 +10,6 @@ module demcontact_c
   implicit none
   private :: ieee_value, ieee_quiet_nan
 
-  real(c_double), parameter :: H_MAX = 0.1_c_double
   integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HOOKE = 1
   integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HERTZ = 2
   integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_COEFF_RESTITUTION = 3

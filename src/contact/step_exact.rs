@@ -29,6 +29,8 @@ pub(crate) const FIT_N: [f64; 16] = [
 /// Onset phases of the phase mean that [`calibrate`] solves.
 pub(crate) const PHASES: usize = 64;
 /// The largest h the correction is designed for (t_H/10); larger h use R(1/10).
+///
+/// cbindgen:ignore
 pub const H_MAX: f64 = 0.1;
 /// R is kept within these bounds (the fit is not designed beyond its nodes).
 const R_MIN: f64 = 0.25;
