@@ -369,34 +369,48 @@ pub fn set_step(m: &ContactModel, dt: f64, integrator: i32) -> Result<ContactMod
     })
 }
 
-/// The step-aware normal force of one contact in contact (δ > 0) of a step-aware model;
-/// `slot` is its history double.
+/// The step-aware normal force of one contact in contact (δ > 0) of a step-aware model, from
+/// its overlap, overlap rate, R* and m* (as [`Kin`] has them); `slot` is its history double.
 #[inline(always)]
 pub(crate) fn contact_normal(m: &ContactModel, k: &Kin, dt: f64, slot: &mut f64) -> f64 {
+    contact_normal_of(m, k.d, k.vn, k.r_eff, k.m_eff, dt, slot)
+}
+
+/// [`contact_normal`] from the four numbers it reads.
+#[inline(always)]
+pub(crate) fn contact_normal_of(
+    m: &ContactModel,
+    d: f64,
+    vn: f64,
+    r_eff: f64,
+    m_eff: f64,
+    dt: f64,
+    slot: &mut f64,
+) -> f64 {
     let pair = &m.normal;
     let kernel = unclamped(pair.kernel);
     let x = StepIn {
-        d: k.d,
-        v: k.vn,
-        m: k.m_eff,
+        d,
+        v: vn,
+        m: m_eff,
         dt,
         beta: 0.5 * (pair.p - 1.0),
         criterion: pair.criterion,
     };
     let r_new = |v: f64| {
         let kc = if pair.model == MODEL_HERTZ {
-            pair.consts.k * k.r_eff.sqrt()
+            pair.consts.k * r_eff.sqrt()
         } else {
             pair.consts.k
         };
-        r_of_h(&m.step.coef, h_of(m.step.scale, pair.p, k.m_eff, kc, v))
+        r_of_h(&m.step.coef, h_of(m.step.scale, pair.p, m_eff, kc, v))
     };
     let raw = |r: f64, v: f64| {
         let c = Consts {
             c: pair.consts.c * r,
             ..pair.consts
         };
-        normal_force_raw(kernel, c, k.d, v, k.r_eff, k.m_eff)
+        normal_force_raw(kernel, c, d, v, r_eff, m_eff)
     };
     normal_force(x, slot, r_new, raw)
 }
