@@ -281,13 +281,16 @@ void PairDemcontact::compute(int eflag, int vflag)
         int *cache = H ? &pslot[2 * (size_t)pofs[ii]] : nullptr;
         for (int jj = 0; jj < list->numneigh[i]; jj++) {
             const int j = jlist[jj] & NEIGHMASK;
+            // the distance test first, on i - j: most list pairs do not touch (no ID loads for them)
+            const double dxi = x[i][0] - x[j][0], dyi = x[i][1] - x[j][1], dzi = x[i][2] - x[j][2];
+            const double rsq = dxi * dxi + dyi * dyi + dzi * dzi;
+            const double radsum = radius[i] + radius[j];
+            if (rsq >= radsum * radsum) continue;
             // body 1 = smaller atom ID, so both owners of a cross-boundary contact agree bitwise
+            // (x[b] - x[a] is exactly -(x[a] - x[b]), and rsq, radsum are symmetric)
             const bool iFirst = tag[i] < tag[j];
             const int a = iFirst ? i : j, b = iFirst ? j : i;
-            const double dx = x[a][0] - x[b][0], dy = x[a][1] - x[b][1], dz = x[a][2] - x[b][2];
-            const double rsq = dx * dx + dy * dy + dz * dz;
-            const double radsum = radius[a] + radius[b];
-            if (rsq >= radsum * radsum) continue;
+            const double dx = iFirst ? dxi : -dxi, dy = iFirst ? dyi : -dyi, dz = iFirst ? dzi : -dzi;
             const double r = std::sqrt(rsq), rinv = 1.0 / r;
             State s;
             s.n[0] = dx * rinv;
