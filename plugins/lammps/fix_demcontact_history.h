@@ -7,9 +7,10 @@
  *  - every owned atom keeps up to `maxp` slots: the partner's atom ID (tag), a stamp (the tick of
  *    the last force evaluation that found the two in contact) and `nh` doubles of history;
  *  - a contact's history is kept by BOTH atoms, identical copies: the pair style always evaluates a
- *    contact with body 1 = the atom of smaller ID, and a half neighbour list with newton off, so a
- *    contact across a processor boundary is evaluated by both owners with the same (ghost-exact)
- *    inputs and each updates its own atom's copy; a contact of two owned atoms is evaluated once
+ *    contact with body 1 = the atom of smaller ID; with a newton-off list a contact across a
+ *    processor boundary is evaluated by both owners with the same (ghost-exact) inputs and each
+ *    updates its own atom's copy; with a newton-on list (the default) by one, and send_ghosts()
+ *    brings the other owner's copy up to date at every exchange; a contact of two owned atoms is evaluated once
  *    and updates the list owner's copy only: the partner's copy (stamp and history) is brought up
  *    to date lazily by sync(), before anything reads or moves the per-atom store (exchange, sort,
  *    restart, insertion, the pair style's next slot mapping), not at every step;
