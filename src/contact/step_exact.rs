@@ -189,9 +189,14 @@ pub(crate) fn h_of(scale: f64, p: f64, m: f64, k: f64, v: f64) -> f64 {
 /// The phase-mean realised e of one collision (m = k = v0 = 1, F = δ^p + α R δ^β δ', velocity
 /// Verlet in the LAMMPS order through [`normal_force`]) at step dt = t_H/n.
 fn mean_e(p: f64, alpha: f64, criterion: EndCriterion, n: f64, r: f64) -> f64 {
+    phases_e(p, alpha, criterion, n, r, 0.0).0
+}
+
+/// The phase mean of the realised e and the largest |e_j − e_n| over the phases j.
+fn phases_e(p: f64, alpha: f64, criterion: EndCriterion, n: f64, r: f64, e_n: f64) -> (f64, f64) {
     let beta = (p - 1.0) / 2.0;
     let dt = t_h_prefactor(p) / n;
-    let mut sum = 0.0;
+    let (mut sum, mut worst) = (0.0, 0.0f64);
     for j in 0..PHASES {
         let mut d = -(j as f64) / PHASES as f64 * dt;
         let (mut v, mut acc, mut slot, mut touched) = (1.0f64, 0.0f64, 0.0f64, false);
@@ -228,8 +233,9 @@ fn mean_e(p: f64, alpha: f64, criterion: EndCriterion, n: f64, r: f64) -> f64 {
             }
         }
         sum += e;
+        worst = worst.max((e - e_n).abs());
     }
-    sum / PHASES as f64
+    (sum / PHASES as f64, worst)
 }
 
 /// R with phase-mean e = target at dt = t_H/n, on the branch through R → 1; None when the
@@ -413,6 +419,69 @@ pub(crate) fn contact_normal_of(
         normal_force_raw(kernel, c, d, v, r_eff, m_eff)
     };
     normal_force(x, slot, r_new, raw)
+}
+
+/// The largest step [s] at which the step-aware model realises e within relative tolerance `tol`
+/// at every contact-onset phase (velocity Verlet, LAMMPS order): the step-aware counterpart of
+/// [`crate::timestep::dt_for_accuracy`], same arguments (ω0 = √(k/m)). Found on the steps
+/// t_H/N (N ≥ 10: the correction is designed up to t_H/10, which is returned when it passes),
+/// N growing by 1.25× to the first passing step, then 6 bisections in ln N between the last
+/// failing and the first passing N, aiming at 0.9 tol; the returned step passed at all 64
+/// phases. An undamped law (e = 1) has nothing to correct: the plain answer.
+/// [`Error::StepUnreachable`] when no step down to t_H/8192 meets `tol`.
+pub fn dt_for_accuracy(
+    p: f64,
+    e: f64,
+    criterion: EndCriterion,
+    v0: f64,
+    omega0: f64,
+    tol: f64,
+) -> Result<f64, Error> {
+    if !(p.is_finite() && e.is_finite() && v0.is_finite() && omega0.is_finite() && tol.is_finite())
+    {
+        return Err(Error::NotFinite);
+    }
+    crate::powerlaw::transform::check_exponent(p)?;
+    if !(e > 0.0 && e <= 1.0) {
+        return Err(Error::RestitutionRange);
+    }
+    if !(v0 > 0.0 && omega0 > 0.0 && tol > 0.0) {
+        return Err(Error::NotPositive);
+    }
+    let alpha = crate::powerlaw::alpha_from_e(e, p, criterion)?;
+    if !(alpha > 0.0) {
+        return crate::timestep::dt_for_accuracy(p, e, criterion, v0, omega0, tol);
+    }
+    let coef = calibrate(p, alpha, criterion, e).ok_or(Error::StepUnreachable)?;
+    let passes = |n: f64| {
+        let (_, worst) = phases_e(p, alpha, criterion, n, r_of_h(&coef, 1.0 / n), e);
+        worst <= 0.9 * tol * e
+    };
+    let (mut fail, mut ok) = (f64::NAN, 10.0);
+    while !passes(ok) {
+        fail = ok;
+        ok *= 1.25;
+        if ok > 8192.0 {
+            return Err(Error::StepUnreachable);
+        }
+    }
+    if fail.is_finite() {
+        for _ in 0..6 {
+            let mid = (fail * ok).sqrt();
+            if passes(mid) {
+                ok = mid;
+            } else {
+                fail = mid;
+            }
+        }
+    }
+    // t_H = prefactor · (v0/ω0)^(2/(p+1)) / v0, in logs (the ratio alone may overflow).
+    let ln_th = t_h_prefactor(p).ln() + 2.0 / (p + 1.0) * (v0.ln() - omega0.ln()) - v0.ln();
+    let dt = (ln_th - ok.ln()).exp();
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(Error::ResultRange);
+    }
+    Ok(dt)
 }
 
 #[cfg(test)]
