@@ -176,3 +176,41 @@ fn enduring_contacts_keep_their_static_overlaps() {
         }
     }
 }
+
+#[test]
+fn dt_for_accuracy_step_aware_is_larger_and_holds() {
+    use demcontact::EndCriterion;
+    use demcontact::contact::step_exact::dt_for_accuracy as dt_step;
+    use demcontact::timestep::dt_for_accuracy as dt_plain;
+    // Hertz sphere on a wall: F = k δ^1.5, ω0 = √(k/m); impact speed 1 m/s.
+    let (k, p) = (4.0 / 3.0 * (1e8 / 0.91) * 2.0e-3f64.sqrt(), 1.5);
+    let (m_, v0) = (2.0e-3, 1.0);
+    let omega0 = (k / m_).sqrt();
+    for (crit, code) in [(EndCriterion::Overlap, 0), (EndCriterion::Force, 1)] {
+        for (e, tol) in [(0.1, 0.015), (0.5, 0.005), (0.9, 0.002)] {
+            let ds = dt_step(p, e, crit, v0, omega0, tol).unwrap();
+            let dp = dt_plain(p, e, crit, v0, omega0, tol).unwrap();
+            let th = t_h(Law::Hertz, v0);
+            // Independently: the library's contact at ds, 64 phases, must meet tol; at 2 ds
+            // (unless capped at t_H/10) some phase must miss it.
+            let plain = contact_model(&spec(Law::Hertz, e, code)).unwrap();
+            let at = |dt: f64| {
+                let stepped = set_step(&plain, dt, 0).unwrap();
+                stat(&stepped, Law::Hertz, e, v0, th / dt, true).worst
+            };
+            let w1 = at(ds);
+            println!(
+                "crit {code} e {e} tol {tol}: step-aware dt = t_H/{:.1}, plain t_H/{:.1} ({:.1}x); worst at dt {:.2e}",
+                th / ds,
+                th / dp,
+                ds / dp,
+                w1
+            );
+            assert!(w1 <= tol, "{w1} > {tol}");
+            if th / ds > 10.5 {
+                assert!(at(2.0 * ds) > 0.9 * tol, "not the largest step");
+            }
+            assert!(ds >= 2.0 * dp, "step-aware {ds} vs plain {dp}");
+        }
+    }
+}
