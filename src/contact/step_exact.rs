@@ -295,8 +295,9 @@ fn solve_r(p: f64, alpha: f64, criterion: EndCriterion, e: f64, n: f64) -> Optio
 /// least 8 nodes must be reachable (from the smallest h up); otherwise None.
 pub(crate) fn calibrate(p: f64, alpha: f64, criterion: EndCriterion, e: f64) -> Option<[f64; 5]> {
     use nalgebra::{SMatrix, SVector};
-    let mut a = SMatrix::<f64, 16, 5>::zeros();
-    let mut y = SVector::<f64, 16>::zeros();
+    // The normal equations of the least-squares fit, accumulated row by row.
+    let mut ata = SMatrix::<f64, 5, 5>::zeros();
+    let mut aty = SVector::<f64, 5>::zeros();
     let mut rows = 0;
     // From the smallest h up: stop at the first unreachable node.
     for &n in FIT_N.iter().rev() {
@@ -304,22 +305,16 @@ pub(crate) fn calibrate(p: f64, alpha: f64, criterion: EndCriterion, e: f64) -> 
             break;
         };
         let h = 1.0 / n;
-        let mut pw = 1.0;
-        for c in 0..5 {
-            a[(rows, c)] = pw;
-            pw *= h;
-        }
-        y[rows] = (r - 1.0) / h;
+        let v = SVector::<f64, 5>::from([1.0, h, h * h, h * h * h, h * h * h * h]);
+        ata += v * v.transpose();
+        aty += v * ((r - 1.0) / h);
         rows += 1;
     }
     if rows < 8 {
         return None;
     }
-    // Unused rows stay zero (they add nothing to the normal equations).
-    let ata = a.transpose() * a;
-    let aty = a.transpose() * y;
     let sol = ata.cholesky()?.solve(&aty);
-    let c = [sol[0], sol[1], sol[2], sol[3], sol[4]];
+    let c: [f64; 5] = sol.into();
     c.iter().all(|x| x.is_finite()).then_some(c)
 }
 
