@@ -27,7 +27,7 @@ use super::vec3::{
 use super::{rolling_constant, rolling_epsd, step_exact, twisting_sds};
 use crate::Error;
 use crate::force::pair::{Consts, Law, Visit, eval};
-use crate::force::registry::{dispatch, normal_force_raw};
+use crate::force::registry::{dispatch, normal_force_raw, unclamped};
 
 /// Inputs of n contacts.
 #[derive(Clone, Copy, Debug)]
@@ -366,10 +366,26 @@ fn twisting_pass(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_
 }
 
 /// Pass 1 of a step-aware model: the normal force of each contact, the step-aware one
-/// ([`step_exact::contact_normal_of`]) in contact, the law's own force otherwise (as the scalar
-/// path computes them).
+/// ([`step_exact::contact_normal_with`] with the law's monomorphised kernel) in contact, the
+/// law's own force otherwise (as the scalar path computes them, bit for bit).
+struct StepPass<'a, 'b, 'c> {
+    m: &'b ContactModel,
+    inp: &'b BatchIn<'a>,
+    dt: f64,
+    o: &'b mut BatchOut<'c>,
+    at: usize,
+}
+
+impl Visit for StepPass<'_, '_, '_> {
+    type Out = ();
+    #[inline(always)]
+    fn visit<L: Law, const CLAMP: bool>(self) {
+        step_pass::<L>(self.m, self.inp, self.dt, self.o, self.at);
+    }
+}
+
 #[inline(never)]
-fn step_pass(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_>, at: usize) {
+fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_>, at: usize) {
     let pair = &m.normal;
     let it = b
         .normal
@@ -384,7 +400,11 @@ fn step_pass(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_>, a
         let vn = -dot(sub(v1, v2), n);
         let (r, mm) = (harmonic(r1, r2), harmonic(m1, m2));
         let f = match h.get_mut(at) {
-            Some(slot) if d > 0.0 => step_exact::contact_normal_of(m, d, vn, r, mm, dt, slot),
+            Some(slot) if d > 0.0 => {
+                step_exact::contact_normal_with(m, d, vn, r, mm, dt, slot, |c, d, v, r, mm| {
+                    eval::<L, false>(&c, d, v, r, mm)
+                })
+            }
             _ => normal_force_raw(pair.kernel, pair.consts, d, vn, r, mm),
         };
         *fo = f;
@@ -496,7 +516,17 @@ fn compute(
 ) -> Result<(), Error> {
     let pair = &m.normal;
     if let Some(at) = m.layout.step {
-        step_pass(m, inp, dt, out, at);
+        dispatch(
+            unclamped(pair.kernel),
+            StepPass {
+                m,
+                inp,
+                dt,
+                o: out,
+                at,
+            },
+        )
+        .ok_or(Error::ContactModelInvalid)?;
     } else {
         dispatch(
             pair.kernel,

@@ -390,6 +390,27 @@ pub(crate) fn contact_normal_of(
 ) -> f64 {
     let pair = &m.normal;
     let kernel = unclamped(pair.kernel);
+    contact_normal_with(m, d, vn, r_eff, m_eff, dt, slot, |c, d, v, r, mm| {
+        normal_force_raw(kernel, c, d, v, r, mm)
+    })
+}
+
+/// [`contact_normal_of`] with the law's unclamped force given (`law(consts, d, v, R*, m*)`):
+/// the batch passes its monomorphised kernel, the scalar path the registry's dispatch (the same
+/// arithmetic, the same bits).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn contact_normal_with(
+    m: &ContactModel,
+    d: f64,
+    vn: f64,
+    r_eff: f64,
+    m_eff: f64,
+    dt: f64,
+    slot: &mut f64,
+    law: impl Fn(Consts, f64, f64, f64, f64) -> f64,
+) -> f64 {
+    let pair = &m.normal;
     let x = StepIn {
         d,
         v: vn,
@@ -411,7 +432,7 @@ pub(crate) fn contact_normal_of(
             c: pair.consts.c * r,
             ..pair.consts
         };
-        normal_force_raw(kernel, c, d, v, r_eff, m_eff)
+        law(c, d, v, r_eff, m_eff)
     };
     normal_force(x, slot, r_new, raw)
 }
