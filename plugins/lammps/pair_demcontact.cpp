@@ -22,7 +22,7 @@
  * by LAMMPS' reverse communication); the contact history is kept by both atoms, the other owner's
  * copy brought up to date at every exchange (fix_demcontact_history.h, send_ghosts()). The
  * newton-on list is built over half the bin stencil: half the distance checks of a newton-off list
- * (issue 33's profile of in.pour.flatwall: the list build was the largest gap to pair granular).
+ * (on LAMMPS' in.pour.flatwall the list build was the largest gap to pair granular).
  * Newton off: a contact between an owned and a ghost atom is evaluated by both owners, each adding
  * the force to its own atom only, and each updating its own copy of the contact history. The
  * contact is always evaluated with body 1 = the atom of smaller ID, so both evaluations are
