@@ -54,10 +54,20 @@ impl StepExact {
     }
 }
 
-/// x^β for 0 ≤ β ≤ 1 (x^0 = 1 exactly; [`pow_dd`] needs β > 0).
+/// x^β for 0 ≤ β ≤ 1 (x^0 = 1 exactly; [`pow_dd`] needs β > 0). Hertz (β = 1/4) and p = 2
+/// (β = 1/2) by square roots: correctly rounded steps, a few times cheaper than a power (the
+/// onset and end corrections take five or six of these).
 #[inline(always)]
 fn pow_b(x: f64, beta: f64) -> f64 {
-    if beta > 0.0 { pow_dd(x, beta) } else { 1.0 }
+    if beta == 0.25 {
+        x.sqrt().sqrt()
+    } else if beta == 0.5 {
+        x.sqrt()
+    } else if beta > 0.0 {
+        pow_dd(x, beta)
+    } else {
+        1.0
+    }
 }
 
 /// The Hurwitz zeta function ζ(−β, x) for 0 ≤ β ≤ 1, x ≥ 1: Euler–Maclaurin after 4 terms with
