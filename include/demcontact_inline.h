@@ -106,6 +106,23 @@
 #define DCI_M(a, b) __dmul_rn((a), (b))
 #elif defined(__clang__)
 #define DCI_M(a, b) ((a) * (b))
+#elif defined(__GNUC__) && !defined(__NVCC__) && defined(__x86_64__)
+/* An empty asm that takes the product in an SSE register: GCC cannot fuse what it cannot see.
+ * (__builtin_assoc_barrier did not stop GCC 12 from fusing DCI_M products with the sums of
+ * dci_cross/dci_add/dci_sub once a large shaped entry was inlined: ctest inline_contact_fma.) */
+#define DCI_M(a, b)                                                                              \
+    __extension__({                                                                              \
+        double dci_m_ = (a) * (b);                                                               \
+        __asm__("" : "+x"(dci_m_));                                                              \
+        dci_m_;                                                                                  \
+    })
+#elif defined(__GNUC__) && !defined(__NVCC__) && defined(__aarch64__)
+#define DCI_M(a, b)                                                                              \
+    __extension__({                                                                              \
+        double dci_m_ = (a) * (b);                                                               \
+        __asm__("" : "+w"(dci_m_));                                                              \
+        dci_m_;                                                                                  \
+    })
 #elif defined(__GNUC__) && __GNUC__ >= 12 && !defined(__NVCC__)
 #define DCI_M(a, b) __builtin_assoc_barrier((a) * (b))
 #else
