@@ -142,7 +142,8 @@ def main():
         H.run(pre + [exe, "-in", "in.lmp", "-log", "log.lammps"], d, env)
     d = os.path.join(workdir, "restarted")
     os.makedirs(d, exist_ok=True)
-    lines = ["processors * 1 1", "read_restart %s" % os.path.join(workdir, "first", "state.restart")] + common(a.plugin, False, a.wall) + \
+    lines = ["processors * 1 1", "read_restart %s" % os.path.join(workdir, "first", "state.restart")] + \
+        common(a.plugin, False, a.wall) + \
         ["run %d" % steps2]
     open(os.path.join(d, "in.lmp"), "w").write("\n".join(lines) + "\n")
     H.run(pre_read + [exe, "-in", "in.lmp", "-log", "log.lammps"], d, env)
@@ -166,7 +167,8 @@ def main():
     ranks = ("%d rank(s)" % a.np) if np_read == a.np else ("written on %d rank(s), read on %d" % (a.np, np_read))
     # The read really ran on M ranks (`processors * 1 1`: LAMMPS prints "M by 1 by 1 MPI processor grid").
     grid_ok = ("%d by 1 by 1 MPI processor grid" % np_read) in log
-    print("LAMMPS restart (wall: %s), %s: fixes reset from the restart file: %s" % (a.wall, ranks, ", ".join(reset) or "none"))
+    print("LAMMPS restart (wall: %s), %s: fixes reset from the restart file: %s"
+          % (a.wall, ranks, ", ".join(reset) or "none"))
     print("at the restart (step %d): pair F_t,z on A = %.6g, wall F_t,x on C = %.6g (f_t = %g; |F_t + f_t|/f_t = %.2g, "
           "must be <= %g)" % (STEPS1, fa, fc, FT, load, LOADED))
     print("after the restart, %d dumped steps: max |F_t(restarted) - F_t(uninterrupted)| / f_t: pair %.3g, wall %.3g "
