@@ -67,8 +67,10 @@ EXAMPLES = {
         pair=["pair_coeff * * hertz/material 1e5 0.2 0.3 tangential mindlin NULL 1.0 0.5",
               "pair_coeff 2 2 hertz/material 1e5 0.1 0.3 tangential mindlin NULL 1.0 0.5 rolling sds NULL 0 0.1"],
         wall="hertz/material 1e5 0.1 0.3 tangential mindlin NULL 1.0 0.5",
-        # the bed's centre of mass across the turning drum (x) after the turn: its tilt
-        obs="xcm(all,x)", obs_name="bed centre x_cm in the turning drum", kept="lastrun", floor=0.05,
+        # the bed's centre of mass across the turning drum (x, from the drum's axis): the rotation
+        # drags the bed up the wall
+        obs="xcm(all,x)-${xc}", obs_name="bed centre's offset x_cm - x_c in the turning drum", kept="lastrun",
+        floor=0.05,
         short={"run             3000": "run             1000"},
         # LAMMPS since 2023 refuses the deck's type-2 line ("Cannot use tsuji model with a cohesive
         # normal model, jkr"): the builtin reference runs it with JKR's default damping
@@ -262,8 +264,9 @@ def check_example(name, a, exe, mpirun, env, workdir):
     ratios = {n: min(loops[("demcontact", n)]) / min(loops[("builtin", n)]) for n in nps}
     print("%s: loop time demcontact / builtin (minimum of %d alternating runs): %s" % (
         name, a.reps, ", ".join("%d rank%s %.2f" % (n, "s" if n > 1 else "", ratios[n]) for n in nps)))
-    row = "| %s | %d | %.4g / %.4g (tol %.2g) | %s |" % (
-        name, n_ref, om, bm, tol, " / ".join("%.2f" % ratios[n] for n in nps))
+    row = "| %s | %d | %s | %.4g / %.4g (tol %.2g)%s | %s |" % (
+        name, n_ref, ex["obs_name"], om, bm, tol, "" if within else " FAIL",
+        " / ".join("%.2f" % ratios[n] for n in nps))
     return ok, row
 
 
@@ -289,17 +292,18 @@ def main():
     for name in names:
         if name not in EXAMPLES:
             ap.error("--example: unknown example '%s' (%s)" % (name, ", ".join(sorted(EXAMPLES))))
-    ok, rows = True, []
+    failed, rows = [], []
     for name in names:
         good, row = check_example(name, a, exe, mpirun, env, workdir)
-        ok &= good
-        rows.append(row or "| %s | FAIL | | |" % name)
+        if not good:
+            failed.append(name)
+        rows.append(row or "| %s | FAIL | | | |" % name)
     if a.table:
-        print("| example | atoms kept | observable demcontact / builtin | loop time ratio 1 / %d ranks |" % a.np)
-        print("|---|---|---|---|")
+        print("| example | atoms kept | observable | demcontact / builtin | loop time ratio 1 / %d ranks |" % a.np)
+        print("|---|---|---|---|---|")
         print("\n".join(rows))
-    if not ok:
-        raise SystemExit("FAIL: %s" % ", ".join(names))
+    if failed:
+        raise SystemExit("FAIL: %s" % ", ".join(failed))
     print("ok: %s run to completion with demcontact, serial and %d ranks" % (", ".join(names), a.np))
 
 
