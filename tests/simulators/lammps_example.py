@@ -237,6 +237,8 @@ def check_example(name, a, exe, mpirun, env, workdir):
         print("%-10s np=%d: step %s, atoms %s kept %d, %s = %.6g, finite %s, lost %s, completed %s, loop %.2f s"
               % (label, np_, last.get("Step"), last.get("Atoms"), kept(r, ex["kept"]) if r["rows"] else -1,
                  ex["obs"], r["obs"], r["finite"], r["lost"], r["done"], r["loop"]))
+        print("%-10s np=%d: last thermo row: %s" % (label, np_, " ".join(
+            "%s %s" % (k, v) for k, v in last.items() if k not in ("Step", "CPU"))))
         if not good:
             print("FAIL %s %s np=%d: did not run to completion cleanly (see %s)" % (name, label, np_, workdir))
         ok &= good
