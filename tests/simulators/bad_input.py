@@ -72,6 +72,22 @@ LAMMPS_CASES = [
     ("unknown carry", "", FULL + " carry spin", None, "carry 'spin'", SPEC_MODEL),
     ("carry without value", "", FULL + " carry", None, "missing value for carry", None),
     ("wall unknown carry", "", FULL, FULL + " carry projected zplane -0.01 NULL", "carry 'projected'", SPEC_MODEL),
+    # fix demcontact/wall/region (wall arguments after "region:"; the deck defines region wallreg)
+    ("region wall: unknown region", "", LAMMPS_GOOD, "region:hertz/material 5e6 0.5 0.3 region nosuch",
+     "region nosuch does not exist", None),
+    ("region wall: no region keyword", "", LAMMPS_GOOD, "region:hertz/material 5e6 0.5 0.3",
+     "missing 'region region-ID'", None),
+    ("region wall: region ID missing", "", LAMMPS_GOOD, "region:hertz/material 5e6 0.5 0.3 region",
+     "missing 'region region-ID'", None),
+    ("region wall: extra argument", "", LAMMPS_GOOD, "region:hertz/material 5e6 0.5 0.3 region wallreg 7",
+     "unexpected argument '7'", None),
+    ("region wall: mu < 0", "", FULL, "region:hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.0 -0.2 "
+     "region wallreg", "mu = -0.2", NEGATIVE),
+    ("region wall: e > 1", "", LAMMPS_GOOD, "region:hertz/material 5e6 1.2 0.3 region wallreg", "e = 1.2", RESTITUTION),
+    ("region wall: E < 0", "", LAMMPS_GOOD, "region:hertz/material -1 0.5 0.3 region wallreg", "E = -1", NOT_POSITIVE),
+    ("region wall: nu > 0.5", "", LAMMPS_GOOD, "region:hertz/material 5e6 0.5 0.7 region wallreg", "nu = 0.7", POISSON),
+    ("region wall: unknown keyword", "", LAMMPS_GOOD, "region:hertz/material 5e6 0.5 0.3 sticky region wallreg",
+     "'sticky'", None),
 ]
 
 
@@ -83,7 +99,10 @@ def lammps_deck(plugin, style, coeff, wall):
          "create_atoms 1 single 0 0 0 units box", "create_atoms 1 single 0.00199 0 0 units box",
          "set group all diameter 0.002 density 2500", "velocity all set 0.1 0 0",
          "fix integr all nve/sphere"]
-    if wall:
+    if wall and wall.startswith("region:"):  # a region wall: the box's own faces
+        L += ["region wallreg block -0.01 0.01 -0.01 0.01 -0.01 0.01 side in units box",
+              "fix w all demcontact/wall/region " + wall[len("region:"):]]
+    elif wall:
         L.append("fix w all demcontact/wall " + wall)
     L += ["timestep 1e-7", "thermo 100", "thermo_style custom step ke", "run 100"]
     return "\n".join(L) + "\n"
@@ -177,6 +196,9 @@ def main():
         cases = [(lab, lammps_deck(a.plugin, st, co, wa), bad, code) for lab, st, co, wa, bad, code in LAMMPS_CASES]
         # (both carry values accepted)
         control = lammps_deck(a.plugin, "", FULL + " carry project", FULL + " carry rotate zplane -0.01 NULL")
+        # the region wall's control: the same deck with a good region wall runs to the end
+        cases.insert(0, ("control: region wall (good input)", lammps_deck(
+            a.plugin, "", FULL, "region:" + FULL + " region wallreg"), None, None))
         cmd = [exe, "-in", "in.deck", "-log", "none"]
     else:
         exe, env = H.liggghts_cmd(a.plugin)

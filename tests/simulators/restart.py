@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
 """LAMMPS write_restart / read_restart keep demcontact's contact histories (pair and wall).
 
-  restart.py --plugin demcontactplugin.so [--lmp lmp] [--np N] [--np-read M] [--workdir DIR]
+  restart.py --plugin demcontactplugin.so [--lmp lmp] [--np N] [--np-read M] [--wall region] [--workdir DIR]
 
 Three spheres (R = 1 mm, rho = 2500, E = 5e6, nu = 0.3, e = 0.5, mu = 0.5, e_t = 0.5; pair model
 with Mindlin tangential and EPSD rolling, so the history has all its parts), no gravity:
 A and B touch along n = (1, 1, 0)/sqrt 2 across the plane x = 0 (on 2 ranks, `processors * 1 1`,
 the contact is owned by both ranks), pressed together by F_n = 1e-3 N and sheared along z by
 f_t = 1e-4 N = 0.2 mu F_n (fix addforce) so they stick; C sits on the wall z = 0 (fix
-demcontact/wall), pressed on it by F_n and sheared along x by f_t. Rotation is not integrated
+demcontact/wall; with --wall region, fix demcontact/wall/region on `region plane 0 0 0 0 0 1`,
+defined again after read_restart), pressed on it by F_n and sheared along x by f_t. Rotation is not integrated
 (fix nve). At rest the tangential springs carry exactly -f_t.
 
 Runs: (U) uninterrupted, STEPS1 + STEPS2 steps; (R1) STEPS1 steps then write_restart; (R2) a new
@@ -54,7 +55,12 @@ def positions():
     return (c, c, z), (-c, -c, z), (-0.006, 0.0, R - d_cw)
 
 
-def common(plugin, with_atoms):
+WALL = {"plane": "fix floor all demcontact/wall {model} zplane 0 NULL",
+        "region": "region floorreg plane 0 0 0 0 0 1 side in units box\n"
+                  "fix floor all demcontact/wall/region {model} region floorreg"}
+
+
+def common(plugin, with_atoms, wall="plane"):
     a, b, c = positions()
     s = FN / math.sqrt(2)
     model = "hertz/material %g %g %g tangential mindlin NULL %g %g rolling sds NULL 0 %g" % (E, REST, NU, E_T, MU, MU_R)
@@ -71,7 +77,7 @@ def common(plugin, with_atoms):
         L += ["comm_modify vel yes"]
     L += ["plugin load %s" % os.path.abspath(plugin), "pair_style demcontact", "pair_coeff * * " + model,
           "neighbor 0.0005 bin", "neigh_modify delay 0",
-          "fix floor all demcontact/wall %s zplane 0 NULL" % model,
+          WALL[wall].format(model=model),
           "fix la A addforce %.17g %.17g %.17g" % (-s, -s, FT), "fix lb B addforce %.17g %.17g %.17g" % (s, s, -FT),
           "fix lc C addforce %.17g 0 %.17g" % (FT, -FN),
           "fix integr all nve", "timestep %g" % DT,
@@ -108,6 +114,8 @@ def main():
     ap.add_argument("--np-read", type=int, help="ranks of the run that reads the restart (default: --np)")
     ap.add_argument("--steps2", type=int, default=STEPS2,
                     help="steps after the restart (default %d; fewer where the reading run oversubscribes the cores)" % STEPS2)
+    ap.add_argument("--wall", choices=sorted(WALL), default="plane",
+                    help="the wall of sphere C: fix demcontact/wall zplane or fix demcontact/wall/region")
     ap.add_argument("--workdir")
     a = ap.parse_args()
     import lammps_runs
@@ -124,8 +132,8 @@ def main():
     pre_read = H.mpi_prefix(np_read, mpirun)
     workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_restart_"))
     runs = {
-        "uninterrupted": common(a.plugin, True) + ["run %d" % (STEPS1 + steps2)],
-        "first": common(a.plugin, True) + ["run %d" % STEPS1, "write_restart state.restart"],
+        "uninterrupted": common(a.plugin, True, a.wall) + ["run %d" % (STEPS1 + steps2)],
+        "first": common(a.plugin, True, a.wall) + ["run %d" % STEPS1, "write_restart state.restart"],
     }
     for name, lines in runs.items():
         d = os.path.join(workdir, name)
@@ -134,7 +142,8 @@ def main():
         H.run(pre + [exe, "-in", "in.lmp", "-log", "log.lammps"], d, env)
     d = os.path.join(workdir, "restarted")
     os.makedirs(d, exist_ok=True)
-    lines = ["processors * 1 1", "read_restart %s" % os.path.join(workdir, "first", "state.restart")] + common(a.plugin, False) + \
+    lines = ["processors * 1 1", "read_restart %s" % os.path.join(workdir, "first", "state.restart")] + \
+        common(a.plugin, False, a.wall) + \
         ["run %d" % steps2]
     open(os.path.join(d, "in.lmp"), "w").write("\n".join(lines) + "\n")
     H.run(pre_read + [exe, "-in", "in.lmp", "-log", "log.lammps"], d, env)
@@ -158,7 +167,8 @@ def main():
     ranks = ("%d rank(s)" % a.np) if np_read == a.np else ("written on %d rank(s), read on %d" % (a.np, np_read))
     # The read really ran on M ranks (`processors * 1 1`: LAMMPS prints "M by 1 by 1 MPI processor grid").
     grid_ok = ("%d by 1 by 1 MPI processor grid" % np_read) in log
-    print("LAMMPS restart, %s: fixes reset from the restart file: %s" % (ranks, ", ".join(reset) or "none"))
+    print("LAMMPS restart (wall: %s), %s: fixes reset from the restart file: %s"
+          % (a.wall, ranks, ", ".join(reset) or "none"))
     print("at the restart (step %d): pair F_t,z on A = %.6g, wall F_t,x on C = %.6g (f_t = %g; |F_t + f_t|/f_t = %.2g, "
           "must be <= %g)" % (STEPS1, fa, fc, FT, load, LOADED))
     print("after the restart, %d dumped steps: max |F_t(restarted) - F_t(uninterrupted)| / f_t: pair %.3g, wall %.3g "
