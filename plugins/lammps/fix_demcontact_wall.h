@@ -13,6 +13,10 @@
  * a plane pair lo/hi), migrates with the atom and is written to restart files: define the fix
  * again with the same ID after read_restart and the histories are restored (a restart written with
  * another history length restores none, with a warning).
+ *
+ * step_exact (as in pair_coeff): the model is made step-aware for update->dt when the fix is
+ * defined (which fixes its history length), again at every run's init and in reset_dt() (fix
+ * dt/reset, timestep during a run).
  */
 #ifndef DEMCONTACT_LAMMPS_FIX_WALL_H
 #define DEMCONTACT_LAMMPS_FIX_WALL_H
@@ -44,8 +48,10 @@ public:
         if (w == narg) error->all(FLERR, "fix demcontact/wall: missing wall style (xplane, yplane, zplane, zcylinder)");
         Coeff c;
         parse_coeff(lmp, error, fmt::format("fix {} demcontact/wall", id), w - 3, arg + 3, false, c);
-        const int32_t s = make_model(c, c, c, model);
-        if (s != DC_OK) error->all(FLERR, "fix {} demcontact/wall: {}", id, dc_status_str(s));
+        const int32_t s = make_model(c, c, c, model, update->dt);
+        if (s != DC_OK)
+            error->all(FLERR, "fix {} demcontact/wall: {}{}", id,
+                       c.step_exact ? fmt::format("step_exact at timestep {}: ", update->dt) : "", dc_status_str(s));
         const std::string ws = arg[w];
         if (ws == "zcylinder") {
             if (w + 2 != narg) error->all(FLERR, "fix demcontact/wall: zcylinder R");
@@ -91,7 +97,10 @@ public:
     {
         if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
             error->all(FLERR, "fix demcontact/wall requires atom_style sphere");
+        apply_dt();
     }
+
+    void reset_dt() override { apply_dt(); }
 
     void setup(int vflag) override { post_force(vflag); }
 
@@ -233,6 +242,14 @@ public:
     int maxsize_restart() override { return 4 + 2 * nh; }
 
 private:
+    /* step_exact: the model follows update->dt (no-op otherwise; the history length is unchanged). */
+    void apply_dt()
+    {
+        const int32_t s = set_model_dt(model, update->dt);
+        if (s != DC_OK)
+            error->all(FLERR, "fix {} demcontact/wall: step_exact at timestep {} rejected by demcontact: {}", id,
+                       update->dt, dc_status_str(s));
+    }
     static bool is_wallstyle(const char *a)
     {
         return !std::strcmp(a, "xplane") || !std::strcmp(a, "yplane") || !std::strcmp(a, "zplane") ||
