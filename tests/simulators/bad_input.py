@@ -26,7 +26,10 @@ import harness as H  # noqa: E402
 NOT_POSITIVE, NEGATIVE, RESTITUTION, EXPONENT, SPEC_MODEL = 6105, 6106, 6103, 6104, 6123
 POISSON = 6114
 NOT_FINITE, RESULT_RANGE = 6102, 6108
+STEP_UNSUPPORTED, STEP_UNREACHABLE = 6136, 6137
 FULL = "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.0 0.5 rolling sds NULL 0 0.1"
+FULL_RESCALE = FULL.replace("mindlin", "mindlin_rescale")
+VISCO = "hertz/material 5e6 0.5 0.3 damping viscoelastic 1 0.001 2500"
 
 
 def status_texts(plugin):
@@ -72,6 +75,21 @@ LAMMPS_CASES = [
     ("unknown carry", "", FULL + " carry spin", None, "carry 'spin'", SPEC_MODEL),
     ("carry without value", "", FULL + " carry", None, "missing value for carry", None),
     ("wall unknown carry", "", FULL, FULL + " carry projected zplane -0.01 NULL", "carry 'projected'", SPEC_MODEL),
+    # step_exact (dc_contact_model_set_step): only the Hertz law with restitution damping has a
+    # step-aware form; a restitution the explicit step cannot realise is rejected
+    ("step_exact viscoelastic", "", VISCO + " step_exact", None, "step_exact rejected by demcontact",
+     STEP_UNSUPPORTED),
+    ("wall step_exact viscoelastic", "", LAMMPS_GOOD, VISCO + " step_exact zplane -0.01 NULL",
+     "step_exact rejected by demcontact", STEP_UNSUPPORTED),
+    ("step_exact e unreachable", "", "hertz/material 5e6 0.001 0.3 limit_damping step_exact", None,
+     "step_exact rejected by demcontact", STEP_UNREACHABLE),
+    ("step_exact power law", "", "powerlaw/material 5e6 0.5 0.3 2 step_exact", None,
+     "step_exact needs the Hertz exponent 1.5 (got 2)", None),
+    ("step_exact with a value", "", LAMMPS_GOOD + " step_exact on", None, "unknown keyword 'on'", None),
+    ("mindlin_rescale mu < 0", "", "hertz/material 5e6 0.5 0.3 tangential mindlin_rescale NULL 1.0 -0.5", None,
+     "mu = -0.5", NEGATIVE),
+    ("mindlin_rescale k_t given", "", "hertz/material 5e6 0.5 0.3 tangential mindlin_rescale 1e6 1.0 0.5", None,
+     "write 'tangential mindlin_rescale NULL e_t mu'", None),
 ]
 
 
@@ -175,8 +193,9 @@ def main():
         exe = lammps_runs.find_lmp(a.lmp)
         env = H.mpi_env()
         cases = [(lab, lammps_deck(a.plugin, st, co, wa), bad, code) for lab, st, co, wa, bad, code in LAMMPS_CASES]
-        # (both carry values accepted)
-        control = lammps_deck(a.plugin, "", FULL + " carry project", FULL + " carry rotate zplane -0.01 NULL")
+        # (both carry values, both Mindlin laws and step_exact accepted)
+        control = lammps_deck(a.plugin, "", FULL + " carry project step_exact",
+                              FULL_RESCALE + " carry rotate step_exact zplane -0.01 NULL")
         cmd = [exe, "-in", "in.deck", "-log", "none"]
     else:
         exe, env = H.liggghts_cmd(a.plugin)

@@ -36,6 +36,7 @@ import harness as H  # noqa: E402
 R, RHO, E, NU, V = 1e-3, 2500.0, 1e7, 0.3, 1.0
 SPACING = 4 * R  # between the collisions of one run
 GEOMETRIES = ("pair", "wall")
+DT_RESET_FACTOR = 3.0
 CRITERIA = ("overlap", "force")
 VARIANTS = ("plain", "step_exact")
 
@@ -85,7 +86,7 @@ def box(cols):
 
 
 # ------------------------------------------------------------------ LAMMPS
-def lammps_deck(plugin, geom, crit, variant, targets, dt, steps, cols, np_):
+def lammps_deck(plugin, geom, crit, variant, targets, dt, steps, cols, np_, dt_reset=False):
     def coeff(e):
         c = "hertz/material %.17g %.17g %.17g" % (E, e, NU)
         if crit == "force":
@@ -108,7 +109,14 @@ def lammps_deck(plugin, geom, crit, variant, targets, dt, steps, cols, np_):
     if geom == "wall":
         for t, e in enumerate(targets, start=1):
             L += ["group g%d type %d" % (t, t), "fix w%d g%d demcontact/wall %s zplane 0 NULL" % (t, t, coeff(e))]
-    L += ["fix integr all nve/sphere", "timestep %.17g" % dt, "thermo %d" % steps, "run %d" % steps,
+    if dt_reset:
+        # the styles' init sees DT_RESET_FACTOR dt; fix dt/reset (at most dt; Xmax = 1 m: always
+        # that bound) sets dt in its setup, after that init: the models must follow (reset_dt)
+        L += ["timestep %.17g" % (DT_RESET_FACTOR * dt),
+              "fix dtr all dt/reset 1 %.17g %.17g 1.0 units box" % (0.5 * dt, dt)]
+    else:
+        L.append("timestep %.17g" % dt)
+    L += ["fix integr all nve/sphere", "thermo_style custom step dt time", "thermo 1", "run %d" % steps,
           "write_dump all custom final.dump id type vx vy vz modify format float %.17g"]
     return "\n".join(L) + "\n"
 
@@ -121,7 +129,7 @@ def run_lammps(a, geom, crit, variant, targets, workdir):
     d = os.path.join(workdir, "%s_%s_%s" % (geom, crit, variant))
     os.makedirs(d, exist_ok=True)
     open(os.path.join(d, "in.step"), "w").write(lammps_deck(a.plugin, geom, crit, variant, targets, dt, steps, cols,
-                                                            a.np))
+                                                            a.np, a.dt_reset))
     pre = H.mpi_prefix(a.np, os.path.join(os.path.dirname(exe), "mpirun"))
     H.run(pre + [exe, "-in", "in.step", "-log", "log.lammps"], d, H.mpi_env())
     return realised(geom, cols, H.read_last_dump(os.path.join(d, "final.dump")))
@@ -148,7 +156,7 @@ def liggghts_deck(geom, crit, variant, targets, dt, steps, cols):
     L += atoms_lines(geom, cols, "create_atoms %d single %.17g %.17g %.17g units box")
     if geom == "wall":
         L.append("fix w all wall/gran %s primitive type 1 zplane 0.0" % model)
-    L += ["fix integr all nve/sphere", "thermo %d" % steps, "run %d" % steps,
+    L += ["fix integr all nve/sphere", "thermo_style custom step dt time", "thermo 1", "run %d" % steps,
           "dump fin all custom 1 final.dump id type vx vy vz",
           "dump_modify fin format \"%d %d %.17g %.17g %.17g\"", "run 0"]
     return "\n".join(L) + "\n"
@@ -191,7 +199,11 @@ def main():
     ap.add_argument("--geometries", default=",".join(GEOMETRIES))
     ap.add_argument("--criteria", default=",".join(CRITERIA))
     ap.add_argument("--check", type=float, help="relative tolerance on the step-aware means")
+    ap.add_argument("--dt-reset", action="store_true",
+                    help="LAMMPS: timestep %g dt, fix dt/reset sets dt after the styles' init" % DT_RESET_FACTOR)
     a = ap.parse_args()
+    if a.dt_reset and a.sim != "lammps":
+        ap.error("--dt-reset: LAMMPS only")
     if a.np not in (1, 2):
         ap.error("--np must be 1 or 2 (got %d)" % a.np)
     if a.phases < 1:
@@ -211,8 +223,9 @@ def main():
     workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_step_exact_"))
     os.makedirs(workdir, exist_ok=True)
     runner = run_lammps if a.sim == "lammps" else run_liggghts
-    print("## %s, %d MPI rank%s: realised e at dt = t_H/%g, %d contact-onset phases" %
-          (a.sim, a.np, "s" if a.np > 1 else "", a.steps_per_contact, a.phases))
+    print("## %s, %d MPI rank%s: realised e at dt = t_H/%g, %d contact-onset phases%s" %
+          (a.sim, a.np, "s" if a.np > 1 else "", a.steps_per_contact, a.phases,
+           ", dt set by fix dt/reset from timestep %g dt" % DT_RESET_FACTOR if a.dt_reset else ""))
     print()
     print("| collision | criterion | e_n | plain: mean e | plain: mean err | plain: worst phase | "
           "step_exact: mean e | step_exact: mean err | step_exact: worst phase |")
