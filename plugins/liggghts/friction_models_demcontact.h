@@ -46,6 +46,12 @@
  * spheres separate (surfacesClose). The combined model uses the tangential and the rolling block
  * as one: they are registered one after the other (checked), and its history (the contact normal
  * is shared, so shorter than the two blocks) must fit in them (checked).
+ *
+ * stepExact on (a setting of model demcontact): every model here is made step-aware too
+ * (dc_contact_model_set_step at LIGGGHTS' dt, again when dt changes), so that the Coulomb limit
+ * sees the normal force the normal model applies. Its one more history double: inside the two
+ * blocks for the combined model; for a sub-model alone, the normal model's "dc_step_full", which
+ * must follow this block (checked).
  */
 #ifndef DEMCONTACT_LIGGGHTS_FRICTION_MODELS_H
 #define DEMCONTACT_LIGGGHTS_FRICTION_MODELS_H
@@ -126,6 +132,9 @@ public:
         specs.assign(np, dc_contact_spec());
         models.assign(np, dc_contact_model());
         eval_nh = nh;
+        step_slot_missing = false;
+        step_normal = normal->step_exact ? normal : NULL;
+        step_dt = lmp->update->dt;
         passive = false;
         full_force = false;
         for (int i = 1; i <= ntypes; i++)
@@ -145,7 +154,17 @@ public:
                 }
                 int32_t st = dc_contact_model_init(&s, &models[i * (ntypes + 1) + j]);
                 if (st == DC_OK) st = dc_contact_model_set_carry(&models[i * (ntypes + 1) + j], carry());
+                if (st == DC_OK && normal->step_exact) st = normal->set_step(models[i * (ntypes + 1) + j], lmp->update->dt);
                 if (st == DC_OK) st = dc_contact_model_check_inline(&models[i * (ntypes + 1) + j]); // fast entry
+                size_t len = 0;
+                if (st == DC_OK) st = dc_contact_history_len(&models[i * (ntypes + 1) + j], &len);
+                // stepExact: one more double, the normal model's "dc_step_full" right after this block
+                // (not so for the tangential block when rolling_friction demcontact follows it: then
+                // combine_into's model, which fits in the two blocks, is the one evaluated)
+                if (st == DC_OK && static_cast<int>(len) > nh &&
+                    (static_cast<int>(len) > nh + 1 || normal->step_offset != offset + nh || len > MAX_NH))
+                    step_slot_missing = true;
+                if (st == DC_OK) eval_nh = std::max(eval_nh, static_cast<int>(len));
                 if (st != DC_OK) {
                     char msg[400];
                     if (rolling)
@@ -238,6 +257,7 @@ public:
                 size_t len = 0;
                 int32_t st = dc_contact_model_init(&s, &m);
                 if (st == DC_OK) st = dc_contact_model_set_carry(&m, t.carry()); // one setting for both classes
+                if (st == DC_OK && t.step_normal) st = t.step_normal->set_step(m, lmp->update->dt);
                 if (st == DC_OK) st = dc_contact_history_len(&m, &len);
                 if (st == DC_OK) st = dc_contact_model_check_inline(&m); // for the fast entry
                 if (st != DC_OK || static_cast<int>(len) > t.nh + nh || len > MAX_NH) {
@@ -252,6 +272,7 @@ public:
                 len_max = std::max(len_max, len);
             }
         t.eval_nh = static_cast<int>(len_max);
+        t.step_slot_missing = false;
         t.choose_eval();
         passive = true;
         // the combined model's normal force is the normal model's (same law and calibration,
@@ -267,6 +288,7 @@ public:
     void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
         if (passive) return; // evaluated with the tangential sub-model's combined model
+        if (step_normal && (lmp->update->dt != step_dt || step_slot_missing)) follow_dt();
         (this->*(in_pass ? body_per_pass : body))(sidata, i_forces, j_forces);
     }
 
@@ -460,6 +482,21 @@ public:
         lmp->error->one(FLERR, msg);
     }
 
+    /* stepExact: dt changed during the run (not at an init): the models follow it. */
+    __attribute__((noinline)) void follow_dt()
+    {
+        if (step_slot_missing) // not met by the combinations registered (normal_model_demcontact.cpp)
+            lmp->error->one(FLERR, "demcontact: stepExact: the step slot does not follow this sub-model's history "
+                                   "block (another model registered history in between)");
+        const double dt = lmp->update->dt;
+        for (int i = 1; i <= ntypes; i++)
+            for (int j = 1; j <= ntypes; j++) {
+                const int32_t s = step_normal->set_step(models[i * (ntypes + 1) + j], dt);
+                if (s != DC_OK) step_normal->step_error(dt, s, false);
+            }
+        step_dt = dt;
+    }
+
     void close(SurfacesCloseData &scdata)
     {
         if (!scdata.contact_history) return;
@@ -479,6 +516,9 @@ public:
     bool full_force = false; // tangential with the combined model: applies the normal force too
     int nh = 0, offset = 0, ntypes = 0;
     int eval_nh = 0; // history doubles of the evaluated model (nh, or tangential + rolling combined)
+    const NormalModel<DEMCONTACT> *step_normal = NULL; // stepExact on: its normal model (set_step)
+    double step_dt = 0.0;                              // the dt the models are set for
+    bool step_slot_missing = false; // stepExact: this sub-model alone would have no step slot
     Body body = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic, false>; // choose_eval
     Body body_per_pass = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic, true>; // in a pass
     std::vector<dc_contact_spec> specs;

@@ -139,10 +139,11 @@ def run_lammps(a, geom, crit, variant, targets, workdir):
 def liggghts_deck(geom, crit, variant, targets, dt, steps, cols):
     n = len(targets)
     model = "model demcontact tangential no_history"
+    settings = ""
     if crit == "force":
-        model += " limitForce on"
+        settings += " limitForce on"
     if variant == "step_exact":
-        model += " stepExact on"
+        settings += " stepExact on"
     rest = " ".join("%.17g" % math.sqrt(a * b) for a in targets for b in targets)
     L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
          "communicate single vel yes", "units si", box(cols), "create_box %d box" % n,
@@ -152,10 +153,14 @@ def liggghts_deck(geom, crit, variant, targets, dt, steps, cols):
          "fix m3 all property/global coefficientRestitution peratomtypepair %d %s" % (n, rest),
          "fix m4 all property/global coefficientFriction peratomtypepair %d %s" % (n, " ".join("0" for _ in
                                                                                                range(n * n))),
-         "pair_style gran " + model, "pair_coeff * *", "timestep %.17g" % dt]
+         "pair_style gran " + model + settings, "pair_coeff * *", "timestep %.17g" % dt]
     L += atoms_lines(geom, cols, "create_atoms %d single %.17g %.17g %.17g units box")
     if geom == "wall":
-        L.append("fix w all wall/gran %s primitive type 1 zplane 0.0" % model)
+        # one wall per atom type, of that type (its e with the wall: coefficientRestitution t-t);
+        # a wall takes its model settings after the wall
+        for t in range(1, n + 1):
+            L += ["group g%d type %d" % (t, t),
+                  "fix w%d g%d wall/gran %s primitive type %d zplane 0.0%s" % (t, t, model, t, settings)]
     L += ["fix integr all nve/sphere", "thermo_style custom step dt time", "thermo 1", "run %d" % steps,
           "dump fin all custom 1 final.dump id type vx vy vz",
           "dump_modify fin format \"%d %d %.17g %.17g %.17g\"", "run 0"]
