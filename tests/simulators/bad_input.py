@@ -137,6 +137,19 @@ LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
      "Unknown surface model", None),
     ("surface demcontact, builtin tangential",
      dict(model="model demcontact tangential history surface demcontact"), "Unknown surface model", None),
+    # stepExact on (dc_contact_model_set_step): Hertz with restitution damping only; a restitution the
+    # explicit step cannot realise is rejected
+    ("stepExact viscoelastic", dict(extra="viscoelastic on rRef 0.001 densityRef 2500 stepExact on"),
+     "stepExact (types 1-1, coefficientRestitution = 0.5, timestep 1e-07) rejected by demcontact", STEP_UNSUPPORTED),
+    ("wall stepExact viscoelastic", dict(wall="viscoelastic on rRef 0.001 densityRef 2500 stepExact on"),
+     "stepExact (types 1-1, coefficientRestitution = 0.5, timestep 1e-07) rejected by demcontact", STEP_UNSUPPORTED),
+    ("stepExact exponent 2", dict(model="model demcontact tangential history", extra="exponent 2 stepExact on"),
+     "exponent (stepExact needs 1.5) of type 1 = 2", STEP_UNSUPPORTED),
+    ("stepExact e unreachable", dict(e="0.001", extra="limitForce on stepExact on"),
+     "stepExact (types 1-1, coefficientRestitution = 0.001, timestep 1e-07) rejected by demcontact",
+     STEP_UNREACHABLE),
+    ("stepExact not on/off", dict(extra="stepExact yes"), "'stepExact' argument: "
+     "unknown option or wrong keyword order: 'yes'", None),
     # bad values met during the run, in the pair loop's deferred checks (friction_models_demcontact.h):
     # an atom's velocity not finite (the per-pass check of the atoms' arrays, naming the atom and
     # value); finite values whose contact results are not (heavy atoms sliding fast: the damped
@@ -200,7 +213,8 @@ def main():
     else:
         exe, env = H.liggghts_cmd(a.plugin)
         cases = [(lab, liggghts_deck(dict(LIGGGHTS_GOOD, **ov)), bad, code) for lab, ov, bad, code in LIGGGHTS_CASES]
-        control = liggghts_deck(dict(LIGGGHTS_GOOD, extra="projectionCarry on", wall="projectionCarry off",
+        control = liggghts_deck(dict(LIGGGHTS_GOOD, extra="projectionCarry on stepExact on",
+                                     wall="projectionCarry off stepExact on",
                                      model=LIGGGHTS_GOOD["model"] + " surface demcontact"))
         cmd = [exe, "-in", "in.deck", "-log", "none"]
     failures = 0

@@ -136,9 +136,9 @@ def run_lammps(a, geom, crit, variant, targets, workdir):
 
 
 # ------------------------------------------------------------------ LIGGGHTS
-def liggghts_deck(geom, crit, variant, targets, dt, steps, cols):
+def liggghts_deck(geom, crit, variant, targets, dt, steps, cols, submodels, np_):
     n = len(targets)
-    model = "model demcontact tangential no_history"
+    model = "model demcontact " + submodels
     settings = ""
     if crit == "force":
         settings += " limitForce on"
@@ -146,13 +146,18 @@ def liggghts_deck(geom, crit, variant, targets, dt, steps, cols):
         settings += " stepExact on"
     rest = " ".join("%.17g" % math.sqrt(a * b) for a in targets for b in targets)
     L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
-         "communicate single vel yes", "units si", box(cols), "create_box %d box" % n,
+         "communicate single vel yes", "units si"]
+    if np_ == 2:
+        L.append("processors 2 1 1")  # the pair contacts (at x = 0) straddle the two ranks
+    L += [box(cols), "create_box %d box" % n,
          "neighbor 0.0002 bin", "neigh_modify delay 0",
          "fix m1 all property/global youngsModulus peratomtype " + " ".join("%.17g" % E for _ in targets),
          "fix m2 all property/global poissonsRatio peratomtype " + " ".join("%.17g" % NU for _ in targets),
          "fix m3 all property/global coefficientRestitution peratomtypepair %d %s" % (n, rest),
          "fix m4 all property/global coefficientFriction peratomtypepair %d %s" % (n, " ".join("0" for _ in
                                                                                                range(n * n))),
+         "fix m5 all property/global coefficientRollingFriction peratomtypepair %d %s" % (
+             n, " ".join("0" for _ in range(n * n))),
          "pair_style gran " + model + settings, "pair_coeff * *", "timestep %.17g" % dt]
     L += atoms_lines(geom, cols, "create_atoms %d single %.17g %.17g %.17g units box")
     if geom == "wall":
@@ -173,7 +178,8 @@ def run_liggghts(a, geom, crit, variant, targets, workdir):
     cols = collisions(geom, targets, gaps)
     d = os.path.join(workdir, "%s_%s_%s" % (geom, crit, variant))
     os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.step"), "w").write(liggghts_deck(geom, crit, variant, targets, dt, steps, cols))
+    open(os.path.join(d, "in.step"), "w").write(liggghts_deck(geom, crit, variant, targets, dt, steps, cols,
+                                                              a.liggghts_submodels, a.np))
     H.run(H.mpi_prefix(a.np) + [exe, "-in", "in.step", "-log", "log.liggghts"], d, env)
     return realised(geom, cols, H.read_last_dump(os.path.join(d, "final.dump")))
 
@@ -204,6 +210,9 @@ def main():
     ap.add_argument("--geometries", default=",".join(GEOMETRIES))
     ap.add_argument("--criteria", default=",".join(CRITERIA))
     ap.add_argument("--check", type=float, help="relative tolerance on the step-aware means")
+    ap.add_argument("--liggghts-submodels", default="tangential no_history",
+                    help="LIGGGHTS: the sub-models after 'model demcontact' (e.g. 'tangential demcontact "
+                         "rolling_friction demcontact')")
     ap.add_argument("--dt-reset", action="store_true",
                     help="LAMMPS: timestep %g dt, fix dt/reset sets dt after the styles' init" % DT_RESET_FACTOR)
     a = ap.parse_args()
@@ -228,8 +237,9 @@ def main():
     workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_step_exact_"))
     os.makedirs(workdir, exist_ok=True)
     runner = run_lammps if a.sim == "lammps" else run_liggghts
-    print("## %s, %d MPI rank%s: realised e at dt = t_H/%g, %d contact-onset phases%s" %
-          (a.sim, a.np, "s" if a.np > 1 else "", a.steps_per_contact, a.phases,
+    print("## %s%s, %d MPI rank%s: realised e at dt = t_H/%g, %d contact-onset phases%s" %
+          (a.sim, " (model demcontact %s)" % a.liggghts_submodels if a.sim == "liggghts" else "",
+           a.np, "s" if a.np > 1 else "", a.steps_per_contact, a.phases,
            ", dt set by fix dt/reset from timestep %g dt" % DT_RESET_FACTOR if a.dt_reset else ""))
     print()
     print("| collision | criterion | e_n | plain: mean e | plain: mean err | plain: worst phase | "
