@@ -19,10 +19,10 @@
  * docs/timestep.md). Hertz (exponent 1.5) with coefficientRestitution only (viscoelastic on:
  * rejected, naming stepExact). The normal force is then demcontact's full contact with no
  * sub-model (dc_contact_force_checked_inline, normal part r.f_n), whose history double
- * ("dc_step") is registered in postSettings; a second one ("dc_step_full") follows it for the
- * step-aware full model of `tangential demcontact` (friction_models_demcontact.h), so that its
- * Coulomb limit sees the same step-aware normal force. The step follows update->dt: set at each
- * run's init (connectToProperties) and again at the first contact after dt changed.
+ * ("dc_step") is registered in postSettings; `tangential demcontact`'s full model is step-aware
+ * too, its own step slot in its block (friction_models_demcontact.h), so that its Coulomb limit
+ * sees the same step-aware normal force. The step follows update->dt: set at each run's init
+ * (connectToProperties) and again at the first contact after dt changed.
  *
  * Registration: LIGGGHTS selects a compiled template instance by a hash of the model ids
  * (normal | tangential << 6 | ...). A static initializer adds the name "demcontact" to the contact
@@ -90,12 +90,7 @@ public:
     void postSettings(IContactHistorySetup *hsetup, ContactModelBase *)
     {
         demcontact_normals()[owner] = this;
-        if (step_exact) {
-            // after every sub-model's constructor-registered block: "dc_step_full" (the slot of
-            // tangential demcontact's full model, right after its own block), then "dc_step" (ours)
-            step_offset = hsetup->add_history_value("dc_step_full", "0");
-            hsetup->add_history_value("dc_step", "0");
-        }
+        if (step_exact) step_offset = hsetup->add_history_value("dc_step", "0");
     }
     ~NormalModel()
     {
@@ -222,10 +217,8 @@ public:
     void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)
     {
         if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
-        if (step_offset >= 0 && scdata.contact_history) { // a new contact starts from zero
+        if (step_offset >= 0 && scdata.contact_history) // a new contact starts from zero
             scdata.contact_history[step_offset] = 0.0;
-            scdata.contact_history[step_offset + 1] = 0.0;
-        }
     }
 
     /* stepExact on: the dt the step-aware models were set for; follows update->dt (error: the
@@ -245,7 +238,7 @@ public:
         error->one(FLERR, msg);
     }
     bool step_exact = false;
-    int step_offset = -1; // history index of "dc_step_full" ("dc_step": the next one); -1: off
+    int step_offset = -1; // history index of "dc_step"; -1: off
     void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
@@ -279,7 +272,7 @@ private:
         s.r2 = inf;
         s.m1 = meff;
         s.m2 = inf;
-        double *slot = &sidata.contact_history[step_offset + 1], copy;
+        double *slot = &sidata.contact_history[step_offset], copy;
         if (!(sidata.computeflag && sidata.shearupdate)) { // evaluate without advancing the history
             copy = *slot;
             slot = &copy;

@@ -8,7 +8,8 @@ integrated in the hosts' velocity-Verlet order).
              [--step-exact] [--rescale] [--steps-per-contact N]
 
 --step-exact: the plugins' step_exact / stepExact on, the reference's dc_contact_model_set_step;
---rescale: tangential mindlin_rescale (LAMMPS only), the reference's DC_TANGENTIAL_MINDLIN_RESCALE.
+--rescale: LAMMPS' tangential mindlin_rescale, LIGGGHTS' tangentialRescale on; the reference's
+DC_TANGENTIAL_MINDLIN_RESCALE.
 
 Conditions: alumina sphere R = 2.5 mm, rho = 4000 kg/m^3, E = 380 GPa, nu = 0.23, onto a flat wall of
 the same material, impact speed 3.9 m/s at 5..85 degrees from the wall normal, normal restitution
@@ -83,11 +84,13 @@ def lammps_deck(plugin, dt, steps, step_exact=False, rescale=False):
     return "\n".join(L) + "\n"
 
 
-def liggghts_deck(dt, steps, step_exact=False):
+def liggghts_deck(dt, steps, step_exact=False, rescale=False):
     model = "model demcontact tangential demcontact"
     settings = "tangentialRestitution %.17g" % E_T  # walls take their settings after the wall
     if step_exact:
         settings += " stepExact on"
+    if rescale:
+        settings += " tangentialRescale on"
     L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
          "communicate single vel yes", "units si",
          "region box block -0.01 0.01 -0.01 %g -0.001 0.01 units box" % (len(ANGLES) * SPACING),
@@ -113,12 +116,11 @@ def main():
     ap.add_argument("--lmp")
     ap.add_argument("--workdir")
     ap.add_argument("--step-exact", action="store_true")
-    ap.add_argument("--rescale", action="store_true", help="tangential mindlin_rescale (LAMMPS)")
+    ap.add_argument("--rescale", action="store_true",
+                    help="LAMMPS: tangential mindlin_rescale; LIGGGHTS: tangentialRescale on")
     ap.add_argument("--steps-per-contact", type=float, default=500.0,
                     help="dt = the shortest contact duration / this (default 500)")
     a = ap.parse_args()
-    if a.rescale and a.sim != "lammps":
-        ap.error("--rescale: LAMMPS only (the LIGGGHTS plugin has no MINDLIN_RESCALE option)")
     if not a.steps_per_contact > 1:
         ap.error("--steps-per-contact must be > 1 (got %g)" % a.steps_per_contact)
     flags = (["--step-exact"] if a.step_exact else []) + (["--rescale"] if a.rescale else [])
@@ -132,7 +134,7 @@ def main():
         deck = lammps_deck(a.plugin, dt, steps, a.step_exact, a.rescale)
     else:
         exe, env = H.liggghts_cmd(a.plugin)
-        deck = liggghts_deck(dt, steps, a.step_exact)
+        deck = liggghts_deck(dt, steps, a.step_exact, a.rescale)
     open(os.path.join(workdir, "in.oblique"), "w").write(deck)
     H.run([exe, "-in", "in.oblique", "-log", "log.oblique"], workdir, env)
     final = H.read_last_dump(os.path.join(workdir, "final.dump"))
