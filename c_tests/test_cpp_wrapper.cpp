@@ -184,8 +184,80 @@ int main(int argc, char** argv) {
             bad = 99;
             CHECK(dc::contact_force_batch_fused(model, b, 1e-8, bad) == dc::status::ok && bad == 99);
         }
+        // Step-aware damping (a damped model with the rescaled Mindlin law): the same model as
+        // the C call, one more double of history; the argument unchanged; the statuses through
+        // the exception and the noexcept form.
+        {
+            ::dc_contact_spec sp = spec;
+            sp.damping = DC_DAMPING_RESTITUTION;
+            sp.e_n = 0.5;
+            sp.tangential = DC_TANGENTIAL_MINDLIN_RESCALE;
+            const ::dc_contact_model dm = dc::contact_model_init(sp);
+            ::dc_contact_model c = dm;
+            CHECK(::dc_contact_model_set_step(&c, 2e-7, DC_INTEGRATOR_VELOCITY_VERLET) == DC_OK);
+            ::dc_contact_model s = dc::set_step(dm, 2e-7);
+            CHECK(std::memcmp(&s, &c, sizeof c) == 0);
+            CHECK(dc::contact_history_len(s) == dc::contact_history_len(dm) + 1);
+            ::dc_contact_model e = dm;
+            c = dm;
+            CHECK(::dc_contact_model_set_step(&c, 2e-7, DC_INTEGRATOR_SYMPLECTIC_EULER) == DC_OK);
+            CHECK(dc::set_step(dm, 2e-7, dc::integrator::symplectic_euler, e) == dc::status::ok);
+            CHECK(std::memcmp(&e, &c, sizeof c) == 0);
+            ::dc_contact_model bad = dm;
+            CHECK(dc::set_step(dm, -1.0, dc::integrator::velocity_verlet, bad) == dc::status::not_positive);
+            CHECK(std::memcmp(&bad, &dm, sizeof dm) == 0);
+            CHECK(dc::set_step(dm, 2e-7, static_cast<dc::integrator>(7), bad) == dc::status::integrator);
+            bool threw = false;
+            try {
+                dc::set_step(dm, NAN);
+            } catch (const dc::error& err) {
+                threw = err.code() == dc::status::not_finite;
+            }
+            CHECK(threw);
+            // The energy ledger: the same force and history as contact_force, and the C ledger.
+            ::dc_contact_state ws = st;
+            std::vector<double> ha(dc::contact_history_len(s), 0.0), hb(ha.size(), 0.0), hc(ha.size(), 0.0);
+            ::dc_contact_result rc{};
+            ::dc_contact_energy ec{};
+            CHECK(::dc_contact_force_energy(&s, &ws, 2e-7, hc.data(), hc.size(), &rc, &ec) == DC_OK);
+            dc::contact_step cs = dc::contact_force_energy(s, ws, 2e-7, dc::span<double>(ha));
+            ::dc_contact_result rf = dc::contact_force(s, ws, 2e-7, dc::span<double>(hb));
+            CHECK(std::memcmp(&cs.result, &rc, sizeof rc) == 0 && std::memcmp(&cs.energy, &ec, sizeof ec) == 0);
+            CHECK(std::memcmp(&rf, &rc, sizeof rc) == 0 && ha == hb && ha == hc);
+            CHECK(cs.energy.dissipated >= 0.0);
+        }
         spec.mu = NAN;
         CHECK(dc::contact_model_init(spec, model) == dc::status::spec_unset);
+    }
+
+    // The planner: the C result bit for bit, the member at fault on an error.
+    {
+        ::dc_plan_input in = dc::plan_input();
+        in.youngs = 7e10;
+        in.poisson = 0.22;
+        in.density = 2500;
+        in.restitution = 0.5;
+        in.radius_min = 1e-3;
+        in.radius_max = 2e-3;
+        in.v_max = 2;
+        in.depth = 0.5;
+        in.overlap_tol = 0.01;
+        in.e_tol = 0.01;
+        ::dc_plan_result c{};
+        CHECK(::dc_plan(&in, &c, nullptr) == DC_OK);
+        ::dc_plan_result r = dc::plan(in);
+        CHECK(std::memcmp(&r, &c, sizeof c) == 0 && r.youngs_soft > 0.0 && r.dt > 0.0);
+        in.radius_max = 5e-4;
+        std::int32_t field = -1;
+        ::dc_plan_result untouched{};
+        CHECK(dc::plan(in, untouched, field) == dc::status::plan_range && field == DC_PLAN_FIELD_RADIUS_MAX);
+        bool threw = false;
+        try {
+            dc::plan(in);
+        } catch (const dc::error& err) {
+            threw = err.code() == dc::status::plan_range;
+        }
+        CHECK(threw);
     }
 
     // span view over a vector.

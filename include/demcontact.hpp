@@ -6,6 +6,8 @@
 //    `demcontact::f(args..., T& out)` that returns the status (generated, in
 //    demcontact_generated.hpp, from the C header by `cargo test --test bindings`);
 //  * `span`-like views for batched kernels (C++17, no <span> needed);
+//  * hand-written here: the contact-model helpers (contact_spec, set_step, contact_force,
+//    contact_force_energy, the batches) and the planner (plan_input, plan);
 //  * no RAII types: the library owns nothing that would need releasing.
 #pragma once
 
@@ -139,6 +141,33 @@ inline ::dc_contact_spec contact_spec() {
     return s;
 }
 
+/// The host's time integrator for set_step (DC_INTEGRATOR_*).
+enum class integrator : std::int32_t {
+    velocity_verlet = DC_INTEGRATOR_VELOCITY_VERLET,
+    symplectic_euler = DC_INTEGRATOR_SYMPLECTIC_EULER,
+};
+
+/// `model` made to realise its target e_n at the host's step `dt` in `integ`
+/// (dc_contact_model_set_step), returned as a new model; the argument is unchanged. Its history
+/// is one double longer (contact_history_len). Throws demcontact::error (not_finite,
+/// not_positive, integrator, step_unsupported, step_unreachable, contact_model_invalid).
+inline ::dc_contact_model set_step(const ::dc_contact_model& model, double dt,
+                                   integrator integ = integrator::velocity_verlet) {
+    ::dc_contact_model m = model;
+    detail::check(::dc_contact_model_set_step(&m, dt, static_cast<std::int32_t>(integ)));
+    return m;
+}
+
+/// noexcept form of set_step: returns the status; `out` written only on status::ok (it may be
+/// `model` itself).
+inline status set_step(const ::dc_contact_model& model, double dt, integrator integ,
+                       ::dc_contact_model& out) noexcept {
+    ::dc_contact_model m = model;
+    const status s = static_cast<status>(::dc_contact_model_set_step(&m, dt, static_cast<std::int32_t>(integ)));
+    if (s == status::ok) out = m;
+    return s;
+}
+
 /// Doubles of history one contact of `model` needs (dc_contact_history_len). Throws on error.
 inline std::size_t contact_history_len(const ::dc_contact_model& model) {
     std::size_t n = 0;
@@ -161,6 +190,32 @@ inline status contact_force(const ::dc_contact_model& model, const ::dc_contact_
     return static_cast<status>(::dc_contact_force(&model, &state, dt, history.data(), history.size(), &out));
 }
 
+/// One contact's force and its energy ledger (contact_force_energy).
+struct contact_step {
+    ::dc_contact_result result;
+    ::dc_contact_energy energy;
+};
+
+/// dc_contact_force with the energy ledger of the step (dc_contact_force_energy): the same force
+/// and history update bit for bit. Throws demcontact::error on a non-OK status (history then
+/// untouched).
+inline contact_step contact_force_energy(const ::dc_contact_model& model, const ::dc_contact_state& state, double dt,
+                                         span<double> history) {
+    contact_step r{};
+    detail::check(
+        ::dc_contact_force_energy(&model, &state, dt, history.data(), history.size(), &r.result, &r.energy));
+    return r;
+}
+
+/// noexcept form of contact_force_energy: returns the status; `out`, `energy` written only on
+/// status::ok.
+inline status contact_force_energy(const ::dc_contact_model& model, const ::dc_contact_state& state, double dt,
+                                   span<double> history, ::dc_contact_result& out,
+                                   ::dc_contact_energy& energy) noexcept {
+    return static_cast<status>(
+        ::dc_contact_force_energy(&model, &state, dt, history.data(), history.size(), &out, &energy));
+}
+
 /// n contacts (dc_contact_force_batch). Throws demcontact::error on a non-OK status; nothing
 /// is written then, except on result_range (a result overflowed): the overflowing contacts'
 /// outputs are NaN and their history kept, every other contact is computed.
@@ -176,6 +231,32 @@ inline void contact_force_batch_checked(const ::dc_contact_model& model, const :
 inline status contact_force_batch_fused(const ::dc_contact_model& model, const ::dc_contact_batch& batch, double dt,
                                         std::size_t& first_bad) noexcept {
     return static_cast<status>(::dc_contact_force_batch_fused(&model, &batch, dt, &first_bad));
+}
+
+}  // namespace demcontact
+
+namespace demcontact {
+
+/// A dc_plan_input filled by dc_plan_input_init (version, size, defaults; the required members
+/// NaN): set the members by name, then call plan(input).
+inline ::dc_plan_input plan_input() {
+    ::dc_plan_input i{};
+    detail::check(::dc_plan_input_init(&i));
+    return i;
+}
+
+/// The scene planner (dc_plan, docs/plan.md). Throws demcontact::error on a non-OK status; the
+/// noexcept form below also says which member is at fault.
+inline ::dc_plan_result plan(const ::dc_plan_input& input) {
+    ::dc_plan_result r{};
+    detail::check(::dc_plan(&input, &r, nullptr));
+    return r;
+}
+
+/// noexcept form of plan: returns the status; `out` written only on status::ok, `field` (a
+/// DC_PLAN_FIELD_*) only on an error.
+inline status plan(const ::dc_plan_input& input, ::dc_plan_result& out, std::int32_t& field) noexcept {
+    return static_cast<status>(::dc_plan(&input, &out, &field));
 }
 
 }  // namespace demcontact

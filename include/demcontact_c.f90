@@ -10,7 +10,6 @@ module demcontact_c
   implicit none
   private :: ieee_value, ieee_quiet_nan
 
-  real(c_double), parameter :: H_MAX = 0.1_c_double
   integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HOOKE = 1
   integer(c_int32_t), parameter :: DC_BUILTIN_LIGGGHTS_HERTZ = 2
   integer(c_int32_t), parameter :: DC_BUILTIN_LAMMPS_COEFF_RESTITUTION = 3
@@ -781,6 +780,18 @@ module demcontact_c
       real(c_double), intent(out) :: dt_out
       integer(c_int32_t) :: dc_dt_for_accuracy
     end function dc_dt_for_accuracy
+    function dc_dt_for_accuracy_step_aware(p, e, criterion, v0, omega0, tol, dt_out) bind(c, &
+        name='dc_dt_for_accuracy_step_aware')
+      import
+      real(c_double), value, intent(in) :: p
+      real(c_double), value, intent(in) :: e
+      integer(c_int32_t), value, intent(in) :: criterion
+      real(c_double), value, intent(in) :: v0
+      real(c_double), value, intent(in) :: omega0
+      real(c_double), value, intent(in) :: tol
+      real(c_double), intent(out) :: dt_out
+      integer(c_int32_t) :: dc_dt_for_accuracy_step_aware
+    end function dc_dt_for_accuracy_step_aware
     function dc_dt_crit(p, v0, omega0, dt_out) bind(c, name='dc_dt_crit')
       import
       real(c_double), value, intent(in) :: p
@@ -1257,6 +1268,23 @@ contains
     if (present(stat)) stat = s
     if (s /= DC_OK) dt_out = ieee_value(dt_out, ieee_quiet_nan)
   end subroutine dt_for_accuracy
+
+  !> Elemental form of dc_dt_for_accuracy_step_aware: on error `dt_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine dt_for_accuracy_step_aware(p, e, criterion, v0, omega0, tol, dt_out, &
+      stat)
+    real(c_double), intent(in) :: p
+    real(c_double), intent(in) :: e
+    integer(c_int32_t), intent(in) :: criterion
+    real(c_double), intent(in) :: v0
+    real(c_double), intent(in) :: omega0
+    real(c_double), intent(in) :: tol
+    real(c_double), intent(out) :: dt_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_dt_for_accuracy_step_aware(p, e, criterion, v0, omega0, tol, dt_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) dt_out = ieee_value(dt_out, ieee_quiet_nan)
+  end subroutine dt_for_accuracy_step_aware
 
   !> Elemental form of dc_dt_crit: on error `dt_out` is NaN (numeric) and `stat` the status.
   impure elemental subroutine dt_crit(p, v0, omega0, dt_out, stat)

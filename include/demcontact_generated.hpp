@@ -348,6 +348,17 @@ inline status dt_for_accuracy(double p, double e, criterion criterion_, double v
     return static_cast<status>(::dc_dt_for_accuracy(p, e, static_cast<std::int32_t>(criterion_), v0, omega0, tol, &out));
 }
 
+/// dc_dt_for_accuracy_step_aware: throws demcontact::error on a non-OK status.
+inline double dt_for_accuracy_step_aware(double p, double e, criterion criterion_, double v0, double omega0, double tol) {
+    double out{};
+    detail::check(::dc_dt_for_accuracy_step_aware(p, e, static_cast<std::int32_t>(criterion_), v0, omega0, tol, &out));
+    return out;
+}
+/// dc_dt_for_accuracy_step_aware: returns the status; `out` is written only on status::ok.
+inline status dt_for_accuracy_step_aware(double p, double e, criterion criterion_, double v0, double omega0, double tol, double& out) noexcept {
+    return static_cast<status>(::dc_dt_for_accuracy_step_aware(p, e, static_cast<std::int32_t>(criterion_), v0, omega0, tol, &out));
+}
+
 /// dc_dt_crit: throws demcontact::error on a non-OK status.
 inline double dt_crit(double p, double v0, double omega0) {
     double out{};

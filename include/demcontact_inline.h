@@ -1256,8 +1256,10 @@ DCI_ALWAYS_INLINE_FN int dci_step_fields_ok(const dc_contact_model *m) {
 
 /* ---- step-aware normal damping (src/contact/step_exact.rs; same operations, same bits) */
 
-/* x^b, 0 <= b <= 1 (pow_b) */
+/* x^b, 0 <= b <= 1 (pow_b: square roots for b = 1/4 and 1/2) */
 DCI_ALWAYS_INLINE_FN double dci_pow_b(double x, double b) {
+    if (b == 0.25) return sqrt(sqrt(x));
+    if (b == 0.5) return sqrt(x);
     return b > 0.0 ? dc_pow_inline(x, b) : 1.0;
 }
 

@@ -690,3 +690,235 @@ fn plan_bad_input() {
         assert!(o.stdout.is_empty());
     }
 }
+
+/// Elastic Hertz contact duration at impact speed v for F = k δ^{3/2}, mass m: RK4 on
+/// m δ'' = −k δ^{3/2} from δ = 0, δ' = v, the return through δ = 0 interpolated (independent of
+/// the library's closed forms).
+fn t_hertz_rk4(k: f64, m: f64, v: f64) -> f64 {
+    let dmax = (5.0 * m * v * v / (4.0 * k)).powf(0.4);
+    let h = 4.0 * dmax / v / 20000.0;
+    let acc = |d: f64| -k * d.max(0.0).powf(1.5) / m;
+    let (mut d, mut u, mut t) = (0.0f64, v, 0.0);
+    loop {
+        let (k1d, k1u) = (u, acc(d));
+        let (k2d, k2u) = (u + 0.5 * h * k1u, acc(d + 0.5 * h * k1d));
+        let (k3d, k3u) = (u + 0.5 * h * k2u, acc(d + 0.5 * h * k2d));
+        let (k4d, k4u) = (u + h * k3u, acc(d + h * k3d));
+        let dn = d + h / 6.0 * (k1d + 2.0 * k2d + 2.0 * k3d + k4d);
+        let un = u + h / 6.0 * (k1u + 2.0 * k2u + 2.0 * k3u + k4u);
+        if t > 0.0 && dn <= 0.0 {
+            return t + h * d / (d - dn);
+        }
+        (d, u, t) = (dn, un, t + h);
+    }
+}
+
+/// Realised e of a sphere–wall collision, velocity Verlet in the LAMMPS order, with this test's
+/// own force m δ'' = −k δ^{3/2} − α √(m k) δ^{1/4} δ' (clamped at 0 for the force end), the
+/// first step at a gap of j/64 of one step's travel.
+fn own_verlet_e(k: f64, m: f64, alpha: f64, clamp: bool, v0: f64, dt: f64, j: usize) -> f64 {
+    let mut d = -(j as f64) / 64.0 * v0 * dt;
+    let (mut v, mut acc, mut touched) = (-v0, 0.0, false);
+    for _ in 0..1_000_000 {
+        let vh = v + 0.5 * dt * acc;
+        d -= dt * vh;
+        touched |= d > 0.0;
+        let f = if d > 0.0 {
+            let f = k * d.powf(1.5) + alpha * (m * k).sqrt() * d.powf(0.25) * (-vh);
+            if clamp { f.max(0.0) } else { f }
+        } else {
+            0.0
+        };
+        acc = f / m;
+        v = vh + 0.5 * dt * acc;
+        if touched && d <= 0.0 {
+            return v / v0;
+        }
+    }
+    panic!("no separation");
+}
+
+#[test]
+fn contact_at_step_plain_and_step_aware() {
+    // A soft sphere on a wall of the same material, e = 0.1: k = 4/3 E* √R1 with
+    // E* = E/(2(1 − ν²)), m = ρ 4/3 π R1³.
+    let (e_mod, nu, rho, r1, v0, e): (f64, f64, f64, f64, f64, f64) =
+        (1e8, 0.3, 2500.0, 2e-3, 1.0, 0.1);
+    let k = 4.0 / 3.0 * e_mod / (2.0 * (1.0 - nu * nu)) * r1.sqrt();
+    let m = rho * 4.0 / 3.0 * std::f64::consts::PI * r1 * r1 * r1;
+    let t_h = t_hertz_rk4(k, m, v0);
+    for (crit, clamp) in [("force", true), ("overlap", false)] {
+        for div in [20.0, 10.5] {
+            let dt = format!("{:e}", t_h / div);
+            let args = [
+                "contact",
+                "--E1",
+                "1e8",
+                "--nu1",
+                "0.3",
+                "--rho1",
+                "2500",
+                "--R1",
+                "2e-3",
+                "--v",
+                "1",
+                "--e",
+                "0.1",
+                "--wall",
+                "--criterion",
+                crit,
+                "--dt",
+                &dt,
+                "--step-aware",
+            ];
+            let o = run(&args);
+            assert_eq!(
+                o.status.code(),
+                Some(0),
+                "{}",
+                String::from_utf8_lossy(&o.stderr)
+            );
+            let text = String::from_utf8(o.stdout).unwrap();
+            assert!(
+                text.contains("e realised at dt")
+                    && text.contains("plain")
+                    && text.contains("step-aware"),
+                "{text}"
+            );
+            assert!(!text.contains("note: dt >"), "{text}");
+            let mut a = args.to_vec();
+            a.push("--json");
+            let j = json_of(&run(&a));
+            let s = &j["at_step"];
+            let dt: f64 = dt.parse().unwrap();
+            assert_eq!(s["dt"].as_f64().unwrap(), dt);
+            assert_eq!(s["integrator"], "verlet");
+            assert_eq!(s["within_calibration"], true);
+            // The CLI's elastic duration against this test's RK4.
+            let th = s["t_hertz"].as_f64().unwrap();
+            assert!((th / t_h - 1.0).abs() < 1e-6, "{th} vs {t_h}");
+            // Plain: each onset phase against this test's own Verlet loop.
+            let alpha = j["alpha"].as_f64().unwrap();
+            let phases = s["plain"]["phases"].as_array().unwrap();
+            assert_eq!(phases.len(), 64);
+            for (jj, p) in phases.iter().enumerate() {
+                let mine = own_verlet_e(k, m, alpha, clamp, v0, dt, jj);
+                let cli = p.as_f64().unwrap();
+                assert!(
+                    (cli / mine - 1.0).abs() < 1e-9,
+                    "{crit} t_H/{div} phase {jj}: {cli} vs {mine}"
+                );
+            }
+            // docs/timestep.md: plain ~10-30 % low at these steps; step-aware mean within 0.2 %.
+            let plain = s["plain"]["mean"].as_f64().unwrap();
+            let aware = s["step_aware"]["mean"].as_f64().unwrap();
+            assert!(plain / e - 1.0 < -0.05, "{crit} t_H/{div}: plain {plain}");
+            assert!(
+                (aware / e - 1.0).abs() < 2e-3,
+                "{crit} t_H/{div}: step-aware {aware}"
+            );
+        }
+    }
+    // Symplectic Euler between two spheres: step-aware again within 0.2 % at t_H/20 (two equal
+    // spheres: k = 4/3 E* √(R/2), m* = m/2).
+    let k2 = 4.0 / 3.0 * e_mod / (2.0 * (1.0 - nu * nu)) * (r1 / 2.0).sqrt();
+    let dt = format!("{:e}", t_hertz_rk4(k2, m / 2.0, v0) / 20.0);
+    let j = json_of(&run(&[
+        "contact",
+        "--E1",
+        "1e8",
+        "--nu1",
+        "0.3",
+        "--rho1",
+        "2500",
+        "--R1",
+        "2e-3",
+        "--v",
+        "1",
+        "--e",
+        "0.1",
+        "--dt",
+        &dt,
+        "--step-aware",
+        "--integrator",
+        "euler",
+        "--json",
+    ]));
+    assert_eq!(j["at_step"]["integrator"], "euler");
+    let aware = j["at_step"]["step_aware"]["mean"].as_f64().unwrap();
+    assert!((aware / e - 1.0).abs() < 2e-3, "euler step-aware {aware}");
+    assert!(j["at_step"]["plain"]["mean"].as_f64().unwrap() / e - 1.0 < -0.05);
+}
+
+#[test]
+fn contact_at_step_options_and_bad_input() {
+    let base = [
+        "contact", "--E1", "1e8", "--nu1", "0.3", "--rho1", "2500", "--R1", "2e-3", "--v", "1",
+        "--e", "0.5", "--wall",
+    ];
+    let with = |extra: &[&str]| {
+        let mut a = base.to_vec();
+        a.extend_from_slice(extra);
+        run(&a)
+    };
+    // Without --dt: no step figures (null in JSON); without --step-aware: plain only.
+    assert!(json_of(&with(&["--json"]))["at_step"].is_null());
+    let j = json_of(&with(&["--dt", "1e-5", "--json"]));
+    assert!(j["at_step"]["step_aware"].is_null() && j["at_step"]["plain"]["mean"].is_f64());
+    let text = String::from_utf8(with(&["--dt", "1e-5"]).stdout).unwrap();
+    assert!(
+        text.contains("plain") && !text.contains("step-aware"),
+        "{text}"
+    );
+    // A step beyond the calibrated range is run, with a note.
+    let text = String::from_utf8(with(&["--dt", "1e-4", "--step-aware"]).stdout).unwrap();
+    assert!(text.contains("note: dt > t_Hertz/10"), "{text}");
+    // --step-aware and --integrator need --dt; unknown integrator: clap (exit 2).
+    assert_eq!(with(&["--step-aware"]).status.code(), Some(2));
+    assert_eq!(with(&["--integrator", "euler"]).status.code(), Some(2));
+    assert_eq!(
+        with(&["--dt", "1e-5", "--integrator", "rk4"]).status.code(),
+        Some(2)
+    );
+    // Bad --dt values: the library's statuses, naming the flag and value (exit 1).
+    for (dt, status) in [("-1e-5", 6105), ("0", 6105), ("nan", 6102), ("inf", 6102)] {
+        let o = with(&["--dt", dt, "--json"]);
+        assert_eq!(o.status.code(), Some(1), "{dt}");
+        assert_eq!(
+            json_of(&o)["error"]["status"].as_i64(),
+            Some(status),
+            "{dt}"
+        );
+        assert!(String::from_utf8_lossy(&o.stderr).contains("--dt "), "{dt}");
+    }
+    // A step so small that the simulation would take long: refused as a usage error.
+    let o = with(&["--dt", "1e-12", "--json"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(json_of(&o)["error"]["kind"], "usage");
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--dt 1e-12"));
+    // The step-aware form is refused where the library refuses it: strong damping under the
+    // force end (DC_ERR_STEP_UNREACHABLE), named with the flags; nothing on stdout but the error.
+    let o = run(&[
+        "contact",
+        "--E1",
+        "1e8",
+        "--nu1",
+        "0.3",
+        "--rho1",
+        "2500",
+        "--R1",
+        "2e-3",
+        "--v",
+        "1",
+        "--e",
+        "0.005",
+        "--wall",
+        "--dt",
+        "1e-5",
+        "--step-aware",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(json_of(&o)["error"]["status"].as_i64(), Some(6137));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--dt 1e-5 --step-aware"));
+}

@@ -57,6 +57,7 @@ fn all_models() -> Vec<dc_contact_model> {
         DC_TANGENTIAL_NONE,
         DC_TANGENTIAL_LINEAR,
         DC_TANGENTIAL_MINDLIN,
+        DC_TANGENTIAL_MINDLIN_RESCALE,
     ] {
         for r in [DC_ROLLING_NONE, DC_ROLLING_CONSTANT, DC_ROLLING_EPSD] {
             for tw in [DC_TWISTING_NONE, DC_TWISTING_SDS] {
@@ -236,7 +237,10 @@ fn history_len_per_model_and_invalid_models() {
         let want = match (m.tangential, m.rolling, m.twisting) {
             (0, 0 | 1, 0) => 0,
             (t, r, tw) => {
-                3 + 3 * usize::from(t != 0) + 3 * usize::from(r == 2) + usize::from(tw != 0)
+                3 + 3 * usize::from(t != 0)
+                    + usize::from(t == DC_TANGENTIAL_MINDLIN_RESCALE)
+                    + 3 * usize::from(r == 2)
+                    + usize::from(tw != 0)
             }
         };
         assert_eq!(len(&m), (DC_OK, want));
@@ -462,16 +466,52 @@ fn force_statuses_leave_outputs_and_history_untouched() {
     h[4] = f64::NAN;
     let mut r = sentinel_res();
     assert_eq!(
-        unsafe { dc_contact_force(&m, &good, 1e-7, h.as_mut_ptr(), 10, &mut r) },
+        unsafe {
+            dc_contact_force(
+                &m,
+                &good,
+                1e-7,
+                h.as_mut_ptr(),
+                DC_CONTACT_HISTORY_MAX,
+                &mut r,
+            )
+        },
         DC_ERR_NOT_FINITE
     );
     // NULLs.
     let mut h = hist0;
     let null_cases = [
-        unsafe { dc_contact_force(std::ptr::null(), &good, 1e-7, h.as_mut_ptr(), 10, &mut r) },
-        unsafe { dc_contact_force(&m, std::ptr::null(), 1e-7, h.as_mut_ptr(), 10, &mut r) },
+        unsafe {
+            dc_contact_force(
+                std::ptr::null(),
+                &good,
+                1e-7,
+                h.as_mut_ptr(),
+                DC_CONTACT_HISTORY_MAX,
+                &mut r,
+            )
+        },
+        unsafe {
+            dc_contact_force(
+                &m,
+                std::ptr::null(),
+                1e-7,
+                h.as_mut_ptr(),
+                DC_CONTACT_HISTORY_MAX,
+                &mut r,
+            )
+        },
         unsafe { dc_contact_force(&m, &good, 1e-7, std::ptr::null_mut(), 10, &mut r) },
-        unsafe { dc_contact_force(&m, &good, 1e-7, h.as_mut_ptr(), 10, std::ptr::null_mut()) },
+        unsafe {
+            dc_contact_force(
+                &m,
+                &good,
+                1e-7,
+                h.as_mut_ptr(),
+                DC_CONTACT_HISTORY_MAX,
+                std::ptr::null_mut(),
+            )
+        },
     ];
     assert_eq!(null_cases, [DC_ERR_NULL_POINTER; 4]);
     // Misaligned history.
@@ -493,7 +533,16 @@ fn separation_resets_history_and_gives_zero() {
         let mut r = sentinel_res();
         for _ in 0..3 {
             assert_eq!(
-                unsafe { dc_contact_force(&m, &st, 1e-6, h.as_mut_ptr(), 10, &mut r) },
+                unsafe {
+                    dc_contact_force(
+                        &m,
+                        &st,
+                        1e-6,
+                        h.as_mut_ptr(),
+                        DC_CONTACT_HISTORY_MAX,
+                        &mut r,
+                    )
+                },
                 DC_OK
             );
         }
@@ -502,7 +551,16 @@ fn separation_resets_history_and_gives_zero() {
         }
         st.overlap = -1e-9;
         assert_eq!(
-            unsafe { dc_contact_force(&m, &st, 1e-6, h.as_mut_ptr(), 10, &mut r) },
+            unsafe {
+                dc_contact_force(
+                    &m,
+                    &st,
+                    1e-6,
+                    h.as_mut_ptr(),
+                    DC_CONTACT_HISTORY_MAX,
+                    &mut r,
+                )
+            },
             DC_OK
         );
         assert_eq!(r, ZERO_RESULT);
@@ -582,8 +640,18 @@ fn batch_equals_scalar_bit_for_bit() {
     let st = states();
     let nc = st.len();
     let a = soa(&st);
-    let stride = 11;
+    let stride = DC_CONTACT_HISTORY_MAX + 1;
+    // Every model, and each damped one also step-aware (dc_contact_model_set_step).
+    let mut models = all_models();
     for m in all_models() {
+        let mut s = m;
+        if m.normal.alpha > 0.0 {
+            assert_eq!(unsafe { dc_contact_model_set_step(&mut s, 2e-6, 0) }, DC_OK);
+            assert_eq!(s.history_len, m.history_len + 1);
+            models.push(s);
+        }
+    }
+    for m in models {
         // Scalar reference over 4 steps (history evolving).
         let mut hs = vec![[0.0f64; DC_CONTACT_HISTORY_MAX]; nc];
         let mut hb = vec![0.0f64; nc * stride];
@@ -592,7 +660,7 @@ fn batch_equals_scalar_bit_for_bit() {
             for (i, s) in st.iter().enumerate() {
                 let mut r = sentinel_res();
                 assert_eq!(
-                    unsafe { dc_contact_force(&m, s, 1e-6, hs[i].as_mut_ptr(), 10, &mut r) },
+                    unsafe { dc_contact_force(&m, s, 1e-6, hs[i].as_mut_ptr(), stride, &mut r) },
                     DC_OK
                 );
                 want.push(r);
@@ -639,7 +707,7 @@ fn batch_equals_scalar_bit_for_bit() {
                         "history {i} {k}"
                     );
                 }
-                assert_eq!(hb[i * stride + 10], 0.0, "stride padding touched");
+                assert_eq!(hb[i * stride + stride - 1], 0.0, "stride padding touched");
             }
         }
     }
@@ -777,7 +845,16 @@ fn spheres_helper_equals_state_form() {
                        st: &dc_contact_state,
                        h: &mut [f64; 10],
                        r: &mut dc_contact_result| unsafe {
-            dc_contact_force_spheres(&m, a, b, st, 1e-6, h.as_mut_ptr(), 10, r)
+            dc_contact_force_spheres(
+                &m,
+                a,
+                b,
+                st,
+                1e-6,
+                h.as_mut_ptr(),
+                DC_CONTACT_HISTORY_MAX,
+                r,
+            )
         };
         let x1: [f64; 3] = [0.1, 0.2, 0.3];
         let x2 = [0.1 + 2.9e-3 * 0.6, 0.2 - 2.9e-3 * 0.8, 0.3];
@@ -794,7 +871,16 @@ fn spheres_helper_equals_state_form() {
         st.overlap = st.r1 + st.r2 - dist;
         assert!(st.overlap > 0.0);
         assert_eq!(
-            unsafe { dc_contact_force(&m, &st, 1e-6, h2.as_mut_ptr(), 10, &mut r2) },
+            unsafe {
+                dc_contact_force(
+                    &m,
+                    &st,
+                    1e-6,
+                    h2.as_mut_ptr(),
+                    DC_CONTACT_HISTORY_MAX,
+                    &mut r2,
+                )
+            },
             DC_OK
         );
         assert_eq!(r1, r2);

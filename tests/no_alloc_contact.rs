@@ -5,6 +5,7 @@ mod alloc_counter;
 use alloc_counter::{Counting, assert_counter_works, count_allocations};
 use demcontact::ffi::contact::*;
 use demcontact::ffi::status::*;
+use demcontact::ffi::step_accuracy::dc_dt_for_accuracy_step_aware;
 use std::hint::black_box;
 
 #[global_allocator]
@@ -151,4 +152,79 @@ fn contact_exports_do_not_allocate() {
     assert_eq!(n, 0, "contact exports allocated {n} times in {calls} calls");
     assert!(calls > 500);
     println!("no_alloc_contact: {calls} calls, 0 allocations");
+}
+
+#[test]
+fn step_aware_exports_do_not_allocate() {
+    assert_counter_works();
+    let mut calls = 0usize;
+    let n = count_allocations(|| {
+        let mut spec: dc_contact_spec = unsafe { std::mem::zeroed() };
+        let mut model: dc_contact_model = unsafe { std::mem::zeroed() };
+        unsafe {
+            black_box(dc_contact_spec_init(&mut spec));
+            spec.normal = DC_NORMAL_HERTZ;
+            spec.E1 = 7e10;
+            spec.nu1 = 0.3;
+            spec.E2 = 7e10;
+            spec.nu2 = 0.3;
+            spec.damping = DC_DAMPING_RESTITUTION;
+            spec.e_n = 0.3;
+            spec.tangential = DC_TANGENTIAL_MINDLIN;
+            spec.mu = 0.3;
+            assert_eq!(dc_contact_model_init(&spec, &mut model), DC_OK);
+            for dt in [1e-7, 0.0, f64::NAN, 2e-7] {
+                black_box(dc_contact_model_set_step(&mut model, dt, 0));
+                calls += 1;
+            }
+            black_box(dc_contact_model_set_step(&mut model, 1e-7, 7));
+            let st = dc_contact_state {
+                n: [0.0, 1.0, 0.0],
+                overlap: 1e-7,
+                v1: [0.1, -0.2, 0.0],
+                v2: [0.0; 3],
+                w1: [1.0, 2.0, 3.0],
+                w2: [0.0; 3],
+                r1: 1e-3,
+                r2: f64::INFINITY,
+                m1: 1e-5,
+                m2: f64::INFINITY,
+            };
+            let mut res: dc_contact_result = std::mem::zeroed();
+            let mut h = [0.0; DC_CONTACT_HISTORY_MAX];
+            for _ in 0..3 {
+                black_box(dc_contact_force(
+                    &model,
+                    &st,
+                    1e-7,
+                    h.as_mut_ptr(),
+                    h.len(),
+                    &mut res,
+                ));
+                calls += 1;
+            }
+            let mut dt = 0.0;
+            black_box(dc_dt_for_accuracy_step_aware(
+                1.5,
+                0.5,
+                DC_END_FORCE,
+                1.0,
+                1e3,
+                0.01,
+                &mut dt,
+            ));
+            black_box(dc_dt_for_accuracy_step_aware(
+                1.5,
+                2.0,
+                DC_END_FORCE,
+                1.0,
+                1e3,
+                0.01,
+                &mut dt,
+            ));
+            calls += 2;
+        }
+    });
+    assert!(calls >= 9);
+    assert_eq!(n, 0, "step-aware exports allocated {n} times");
 }

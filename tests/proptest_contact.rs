@@ -119,7 +119,7 @@ fn choice_valid() -> impl Strategy<Value = Choice> {
         1i32..5,
         0i32..2,
         0i32..2,
-        0i32..3,
+        0i32..4,
         0i32..3,
         0i32..2,
         0i32..2,
@@ -218,8 +218,14 @@ proptest! {
     }
 
     #[test]
-    fn limits_hold_and_batch_equals_scalar(c in choice_valid(), mu in 0.0f64..2.0, e in 0.05f64..1.0, sts in prop::collection::vec(state_valid(), 1..6), steps in 1usize..6) {
-        let m = model_valid(c, mu, e);
+    fn limits_hold_and_batch_equals_scalar(c in choice_valid(), mu in 0.0f64..2.0, e in 0.05f64..1.0, sts in prop::collection::vec(state_valid(), 1..6), steps in 1usize..6, step_aware in prop::bool::weighted(0.1)) {
+        let mut m = model_valid(c, mu, e);
+        if step_aware {
+            // Step-aware where the law has the form (else refused with the model untouched).
+            let m0 = m;
+            let s = unsafe { dc_contact_model_set_step(&mut m, 1e-7, DC_INTEGRATOR_VELOCITY_VERLET) };
+            prop_assert!(s == DC_OK || bytes(&m) == bytes(&m0), "refused set_step touched the model");
+        }
         let nc = sts.len();
         let stride = DC_CONTACT_HISTORY_MAX;
         let mut hs = vec![0.0f64; nc * stride];
@@ -267,6 +273,35 @@ proptest! {
                 prop_assert_eq!(sb, DC_OK);
             }
             prop_assert!(hs.iter().zip(&hb).all(|(a, b)| a.to_bits() == b.to_bits()));
+        }
+    }
+
+    /// set_step with any dt and integrator on a step-aware model: accepted exactly for a finite
+    /// dt > 0 and a known integrator (the calibration kept), otherwise refused with the model
+    /// untouched and a documented status.
+    #[test]
+    fn set_step_any_bits(dt in any_f64(), integrator in -2i32..4, crit in 0i32..2) {
+        static MODELS: std::sync::OnceLock<[dc_contact_model; 2]> = std::sync::OnceLock::new();
+        let base = MODELS.get_or_init(|| {
+            [0, 1].map(|crit| {
+                let c = Choice { normal: DC_NORMAL_HERTZ, damping: DC_DAMPING_RESTITUTION, criterion: crit, tangential: DC_TANGENTIAL_MINDLIN, rolling: DC_ROLLING_EPSD, twisting: DC_TWISTING_SDS, carry: DC_CARRY_ROTATE };
+                let mut m = model_valid(c, 0.5, 0.4);
+                assert_eq!(unsafe { dc_contact_model_set_step(&mut m, 1e-7, 0) }, DC_OK);
+                m
+            })
+        })[crit as usize];
+        let mut m = base;
+        let s = unsafe { dc_contact_model_set_step(&mut m, dt, integrator) };
+        prop_assert!(known(s));
+        let valid = dt.is_finite() && dt > 0.0 && (integrator == 0 || integrator == 1);
+        if valid {
+            prop_assert_eq!(s, DC_OK);
+            prop_assert_eq!(m.history_len, base.history_len);
+            prop_assert!(m.reserved[0] > 0.0);
+            prop_assert!(m.reserved[1..].iter().zip(&base.reserved[1..]).all(|(a, b)| a.to_bits() == b.to_bits()));
+        } else {
+            prop_assert!(s != DC_OK);
+            prop_assert!(bytes(&m) == bytes(&base), "refused set_step touched the model");
         }
     }
 

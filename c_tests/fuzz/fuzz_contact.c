@@ -2,9 +2,10 @@
  * (and the frame carry of the model it gives); 1: one contact with a fuzzed state, dt and
  * history; 2: the spheres helper with fuzzed centres; 3: the batch of 2 contacts (checked or
  * fused) with fuzzed arrays, history stride and NULL masks; 4: arbitrary bytes as a
- * dc_contact_model. Inputs are 40 raw doubles (zero-padded), their first bytes also read as
- * selectors. */
-#define FUZZ_CASES 5
+ * dc_contact_model; 5: dc_contact_model_set_step with a fuzzed dt and integrator on a
+ * step-aware model (cases 1-3 also run the step-aware model when d[8] is odd). Inputs are 40
+ * raw doubles (zero-padded), their first bytes also read as selectors. */
+#define FUZZ_CASES 6
 #include "fuzz_common.h"
 
 /* A model with every stage switched on (history length 10), from valid parameters. */
@@ -19,6 +20,22 @@ static int full_model(dc_contact_model *m, int32_t crit) {
     s.rolling = DC_ROLLING_EPSD, s.mu_r = 0.1, s.eta_r = 0.3;
     s.twisting = DC_TWISTING_SDS, s.mu_tw = 1e-5, s.k_tw = 1e-4;
     return dc_contact_model_init(&s, m) == DC_OK;
+}
+
+/* full_model made step-aware (dt 1e-7, velocity Verlet): calibrated once per criterion (a few
+ * milliseconds), then copied; dc_contact_model_set_step on a step-aware model reuses its
+ * calibration, so the fuzzed calls below stay cheap. */
+static int step_model(dc_contact_model *m, int32_t crit) {
+    static dc_contact_model cache[2];
+    static int ready[2];
+    const int i = crit ? 1 : 0;
+    if (!ready[i]) {
+        if (!full_model(&cache[i], crit)) return 0;
+        if (dc_contact_model_set_step(&cache[i], 1e-7, DC_INTEGRATOR_VELOCITY_VERLET) != DC_OK) return 0;
+        ready[i] = 1;
+    }
+    *m = cache[i];
+    return 1;
 }
 
 static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t n) {
@@ -70,7 +87,7 @@ static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t
     }
     case 1: /* one contact, fuzzed state, dt, history */
     case 2: /* the spheres helper, fuzzed centres */
-        if (!full_model(&m, d[0] & 1)) abort();
+        if (!((d[8] & 1) ? step_model(&m, d[0] & 1) : full_model(&m, d[0] & 1))) abort();
         if ((d[7] & 1) && dc_contact_model_set_carry(&m, DC_CARRY_PROJECT) != DC_OK) abort();
         if (which == 1)
             s = dc_contact_force(&m, &st, y[30], (d[1] & 1) ? h : NULL, (size_t)(d[2] % 12), &r);
@@ -84,7 +101,7 @@ static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t
         break;
     case 3: { /* batch of 2 contacts: fuzzed arrays (aliasing the fuzzed doubles), NULL mask;
                 * checked or fused (d[6] & 1) */
-        if (!full_model(&m, d[0] & 1)) abort();
+        if (!((d[8] & 1) ? step_model(&m, d[0] & 1) : full_model(&m, d[0] & 1))) abort();
         if ((d[7] & 1) && dc_contact_model_set_carry(&m, DC_CARRY_PROJECT) != DC_OK) abort();
         /* history: 2 contacts at a stride of up to 11 doubles */
         double out[2 + 6 + 6 + 6], out0[20], hb[22];
@@ -133,6 +150,23 @@ static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t
         } else {
             if (s != DC_OK && (memcmp(out, out0, sizeof out) != 0 || memcmp(hb, hb0, sizeof hb) != 0)) abort();
             if (s == DC_OK && !all_finite(out, 20)) abort();
+        }
+        break;
+    }
+    case 5: { /* set_step: any dt and integrator; accepted (finite dt > 0, integrator 0 or 1:
+               * the calibration kept, the scale dt/T_p) or refused with the model untouched */
+        if (!step_model(&m, d[0] & 1)) abort();
+        dc_contact_model ms = m;
+        const double dt = y[30];
+        const int32_t integ = sel[5] % 4 - 1;
+        s = dc_contact_model_set_step(&ms, dt, integ);
+        if (!known(s)) abort();
+        if (s == DC_OK) {
+            if (!(isfinite(dt) && dt > 0.0) || (integ != 0 && integ != 1) || ms.history_len != m.history_len ||
+                !(ms.reserved[0] > 0.0) || memcmp(&ms.reserved[1], &m.reserved[1], 5 * sizeof(double)) != 0)
+                abort();
+        } else if (memcmp(&ms, &m, sizeof m) != 0) {
+            abort();
         }
         break;
     }

@@ -7,9 +7,10 @@
  *  - every owned atom keeps up to `maxp` slots: the partner's atom ID (tag), a stamp (the tick of
  *    the last force evaluation that found the two in contact) and `nh` doubles of history;
  *  - a contact's history is kept by BOTH atoms, identical copies: the pair style always evaluates a
- *    contact with body 1 = the atom of smaller ID, and a half neighbour list with newton off, so a
- *    contact across a processor boundary is evaluated by both owners with the same (ghost-exact)
- *    inputs and each updates its own atom's copy; a contact of two owned atoms is evaluated once
+ *    contact with body 1 = the atom of smaller ID; with a newton-off list a contact across a
+ *    processor boundary is evaluated by both owners with the same (ghost-exact) inputs and each
+ *    updates its own atom's copy; with a newton-on list (the default) by one, and send_ghosts()
+ *    brings the other owner's copy up to date at every exchange; a contact of two owned atoms is evaluated once
  *    and updates the list owner's copy only: the partner's copy (stamp and history) is brought up
  *    to date lazily by sync(), before anything reads or moves the per-atom store (exchange, sort,
  *    restart, insertion, the pair style's next slot mapping), not at every step;
@@ -41,6 +42,8 @@
 #include "error.h"
 #include "fix.h"
 #include "memory.h"
+#include "output.h"
+#include "update.h"
 
 #include <cstring>
 #include <vector>
@@ -61,6 +64,7 @@ public:
         create_attribute = 1;
         restart_peratom = 1;
         maxexchange = 1 + maxp * (2 + nh);
+        comm_reverse = 2 + maxp * (2 + nh); // send_ghosts(): count, ghost tag, records
         atom->add_callback(Atom::GROW);
         atom->add_callback(Atom::RESTART);
         grow_arrays(atom->nmax);
@@ -75,11 +79,19 @@ public:
         memory->destroy(rec);
     }
 
-    int setmask() override { return FixConst::PRE_EXCHANGE; }
+    int setmask() override { return FixConst::PRE_EXCHANGE | FixConst::END_OF_STEP; }
     // (the hooks below sync too; these make the store current at every exchange step and run end)
-    void pre_exchange() override { sync(); }
+    void pre_exchange() override { sync(); send_ghosts(); }
     void setup_pre_exchange() override { sync(); }
-    void post_run() override { sync(); }
+    void post_run() override { sync(); send_ghosts(); }
+    // a restart file is written after this step's force evaluation: owners' copies current first
+    void end_of_step() override
+    {
+        if (output->next_restart == update->ntimestep) {
+            sync();
+            send_ghosts();
+        }
+    }
 
     void grow_arrays(int nmax) override
     {
@@ -218,8 +230,27 @@ public:
     /* The owned-owned contacts of the current slot mapping whose partner copy sync() maintains:
        (i, slot of i, j, slot of j), i the list owner. Set by the pair style at its slot mapping
        (which calls sync() first) and when it creates slots; valid while the store's atom indices
-       do not change (generation), and every change calls sync() first. */
-    void set_partner_pairs_mapped() { opairs.clear(); opairs_generation = generation; dirty = false; }
+       do not change (generation), and every change calls sync() first.
+       With a newton-on list (newton = true) the contacts of an owned atom i with a ghost j are
+       evaluated once, by i's owner: add_ghost_pair(i, si, j, tag of j) records them; sync()
+       gathers their current records per ghost (ghost indices from nlocal0 = atom->nlocal of the
+       mapping, so atoms inserted at nlocal later do not matter) and send_ghosts(), at every
+       exchange step, before a restart file and at the end of a run, sends them to the ghosts'
+       owners (LAMMPS' reverse communication, as its fix neigh/history does), which overwrite
+       their own copies. */
+    void set_partner_pairs_mapped(int nlocal0, int nghost0)
+    {
+        if (gpending)
+            error->one(FLERR, "fix demcontact/history: internal error: ghost contact histories not sent before the "
+                              "slot mapping");
+        opairs.clear();
+        gpairs.clear();
+        gtags.clear();
+        opairs_generation = generation;
+        dirty = false;
+        gbase = nlocal0;
+        gbuf.resize(nghost0);
+    }
     void add_partner_pair(int i, int si, int j, int sj)
     {
         opairs.push_back(i);
@@ -227,9 +258,17 @@ public:
         opairs.push_back(j);
         opairs.push_back(sj);
     }
+    void add_ghost_pair(int i, int si, int g, tagint gtag)
+    {
+        gpairs.push_back(i);
+        gpairs.push_back(si);
+        gpairs.push_back(g);
+        gtags.push_back(gtag);
+    }
     // A force evaluation advanced list owners' copies: the partner copies are behind.
     void mark_dirty() { dirty = true; }
-    // Copy the list owner's stamp and history into its owned partner's slot, for every pair.
+    /* Copy the list owner's stamp and history into its owned partner's slot, for every pair;
+       gather the current records of the ghost pairs for send_ghosts(). */
     void sync()
     {
         if (!dirty) return;
@@ -242,7 +281,87 @@ public:
             double *b = slot(opairs[q + 2], opairs[q + 3]);
             for (int k = 1; k < stride(); k++) b[k] = a[k]; // stamp and history; b keeps its partner
         }
+        const size_t ng = gtags.size();
+        if (ng) {
+            for (auto &v : gbuf) v.clear();
+            const tagint *tag = atom->tag;
+            for (size_t q = 0; q < ng; q++) {
+                const int i = gpairs[3 * q], si = gpairs[3 * q + 1], g = gpairs[3 * q + 2];
+                if (stamp(i, si) != tick) continue; // an ended contact: its history restarts anyway
+                std::vector<double> &v = gbuf[g - gbase];
+                if (v.empty()) v.push_back(ubuf(gtags[q]).d);
+                if ((int)((v.size() - 1) / stride()) >= maxp)
+                    error->one(FLERR, "pair demcontact: atom {} has more than {} contacts (raise pair_style "
+                                      "demcontact maxpartner)", gtags[q], maxp);
+                v.push_back(ubuf(tag[i]).d);
+                const double *a = slot(i, si);
+                for (int k = 1; k < stride(); k++) v.push_back(a[k]);
+            }
+            gpending = true;
+        }
         dirty = false;
+    }
+
+    /* Collective (every rank at the same step): the gathered ghost records to their owners. */
+    void send_ghosts()
+    {
+        if (!newton) return;
+        comm->reverse_comm(this);
+        gpending = false;
+        for (auto &v : gbuf) v.clear();
+    }
+
+    // per ghost: count of records, then (ghost tag, count x (partner, stamp, history)) if count > 0
+    int pack_reverse_comm(int n, int first, double *buf) override
+    {
+        int m = 0;
+        for (int g = first; g < first + n; g++) {
+            const int q = g - gbase;
+            if (!gpending || q < 0 || q >= (int)gbuf.size() || gbuf[q].empty()) {
+                buf[m++] = 0.0;
+                continue;
+            }
+            const std::vector<double> &v = gbuf[q];
+            buf[m++] = (double)((v.size() - 1) / stride());
+            std::memcpy(buf + m, v.data(), sizeof(double) * v.size());
+            m += (int)v.size();
+        }
+        return m;
+    }
+
+    void unpack_reverse_comm(int n, int *list, double *buf) override
+    {
+        int m = 0;
+        const int st = stride();
+        for (int k = 0; k < n; k++) {
+            const int j = list[k];
+            const int c = static_cast<int>(buf[m++]);
+            if (c == 0) continue;
+            const tagint gt = (tagint)ubuf(buf[m++]).i;
+            const double *r = buf + m;
+            m += c * st;
+            if (j >= gbase) { // a ghost here too (several hops): pass the records on
+                const int q = j - gbase;
+                if (q >= (int)gbuf.size()) gbuf.resize(q + 1);
+                std::vector<double> &v = gbuf[q];
+                if (v.empty()) v.push_back(ubuf(gt).d);
+                v.insert(v.end(), r, r + c * st);
+                gpending = true;
+                continue;
+            }
+            if (atom->tag[j] != gt)
+                error->one(FLERR, "fix demcontact/history: internal error: the owned atoms moved before the ghost "
+                                  "contact histories were sent (atom {} received {}'s)", atom->tag[j], gt);
+            for (int q = 0; q < c; q++) {
+                const double *rec = r + q * st;
+                const tagint p = (tagint)ubuf(rec[0]).i;
+                int s = find(j, p);
+                if (s < 0) s = add(j, p);
+                double *b = slot(j, s);
+                if ((bigint)ubuf(rec[1]).i < stamp(j, s)) continue; // keep a newer copy
+                for (int e = 1; e < st; e++) b[e] = rec[e];
+            }
+        }
     }
 
     // Keep only the current slots of owned atoms 0..nlocal-1 (order kept).
@@ -268,6 +387,12 @@ public:
     std::vector<int> opairs;         // 4 per owned-owned contact: i, si, j, sj (see sync())
     bigint opairs_generation = -1;   // the store's generation they index
     bool dirty = false;              // list owners' copies advanced since the last sync()
+    bool newton = false;             // newton-on list: ghost pairs evaluated once (send_ghosts())
+    std::vector<int> gpairs;         // 3 per owned-ghost contact: i, si, ghost index
+    std::vector<tagint> gtags;       // the ghost's atom ID, one per gpairs triple
+    int gbase = 0;                   // atom->nlocal at the slot mapping: ghost g is gbuf[g - gbase]
+    std::vector<std::vector<double> > gbuf; // per ghost: its tag, then records (partner, stamp, history)
+    bool gpending = false;           // gathered ghost records not yet sent
 };
 
 } // namespace demcontact_lammps

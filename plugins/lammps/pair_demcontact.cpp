@@ -17,10 +17,16 @@
  * `init` AND the particles that fix pour / fix deposit will insert later (their extract("radius")),
  * so a pour into an empty box gets the right neighbour cutoff; radii may differ per atom.
  *
- * Neighbour list: half, size, newton off whatever the global setting. A contact between an owned
- * and a ghost atom is evaluated by both owners, each adding the force to its own atom only (no
- * reverse communication), and each updating its own copy of the contact history. The contact is
- * always evaluated with body 1 = the atom of smaller ID, so both evaluations are bitwise equal.
+ * Neighbour list: half, size, with the global newton setting. Newton on (LAMMPS' default): each
+ * contact is evaluated once, its force and torques added to both atoms (a ghost's reach its owner
+ * by LAMMPS' reverse communication); the contact history is kept by both atoms, the other owner's
+ * copy brought up to date at every exchange (fix_demcontact_history.h, send_ghosts()). The
+ * newton-on list is built over half the bin stencil: half the distance checks of a newton-off list
+ * (on LAMMPS' in.pour.flatwall the list build was the largest gap to pair granular).
+ * Newton off: a contact between an owned and a ghost atom is evaluated by both owners, each adding
+ * the force to its own atom only, and each updating its own copy of the contact history. The
+ * contact is always evaluated with body 1 = the atom of smaller ID, so both evaluations are
+ * bitwise equal.
  *
  * step_exact: every step_exact model is made step-aware for update->dt when it is built (each
  * run's init_style) and again in reset_dt(), which LAMMPS calls when dt changes during a run (fix
@@ -109,7 +115,10 @@ void PairDemcontact::init_style()
     if (comm->ghost_velocity == 0)
         error->all(FLERR, "pair_style demcontact requires ghost velocities (comm_modify vel yes)");
     if (!atom->tag_enable) error->all(FLERR, "pair_style demcontact requires atom IDs");
-    neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_NEWTON_OFF);
+    // newton on (LAMMPS' default): each contact once, the ghost's force and torque summed into its
+    // owner by LAMMPS' reverse communication; newton off: by both owners (see the top of this file)
+    newton = force->newton_pair != 0;
+    neighbor->add_request(this, NeighConst::REQ_SIZE | (newton ? NeighConst::REQ_NEWTON_ON : NeighConst::REQ_NEWTON_OFF));
 
     build_models();
     if (nh > 32) error->all(FLERR, "pair demcontact: history of {} doubles exceeds 32", nh);
@@ -126,6 +135,7 @@ void PairDemcontact::init_style()
             h = dynamic_cast<FixDemcontactHistory *>(
                 modify->add_fix(fmt::format("DEMCONTACT_HISTORY all demcontact/history {} {}", nh, maxpartner)));
         if (!h) error->all(FLERR, "pair demcontact: could not create its fix demcontact/history");
+        h->newton = newton;
         history = h;
     } else {
         history = nullptr;
@@ -236,7 +246,7 @@ void PairDemcontact::map_slots()
     FixDemcontactHistory &H = *history;
     H.sync(); // partner copies current before compact() reads their stamps (indices: the old mapping)
     H.compact(nlocal);
-    H.set_partner_pairs_mapped();
+    H.set_partner_pairs_mapped(nlocal, atom->nghost);
     const int inum = list->inum;
     pofs.resize(inum + 1);
     pofs[0] = 0;
@@ -258,6 +268,7 @@ void PairDemcontact::map_slots()
             c[2 * jj] = si;
             c[2 * jj + 1] = sj;
             if (si >= 0 && sj >= 0) H.add_partner_pair(i, si, j, sj);
+            if (newton && si >= 0 && j >= nlocal) H.add_ghost_pair(i, si, j, tag[j]);
         }
     }
     mapped_ncalls = neighbor->ncalls;
@@ -297,13 +308,16 @@ void PairDemcontact::compute(int eflag, int vflag)
         int *cache = H ? &pslot[2 * (size_t)pofs[ii]] : nullptr;
         for (int jj = 0; jj < list->numneigh[i]; jj++) {
             const int j = jlist[jj] & NEIGHMASK;
+            // the distance test first, on i - j: most list pairs do not touch (no ID loads for them)
+            const double dxi = x[i][0] - x[j][0], dyi = x[i][1] - x[j][1], dzi = x[i][2] - x[j][2];
+            const double rsq = dxi * dxi + dyi * dyi + dzi * dzi;
+            const double radsum = radius[i] + radius[j];
+            if (rsq >= radsum * radsum) continue;
             // body 1 = smaller atom ID, so both owners of a cross-boundary contact agree bitwise
+            // (x[b] - x[a] is exactly -(x[a] - x[b]), and rsq, radsum are symmetric)
             const bool iFirst = tag[i] < tag[j];
             const int a = iFirst ? i : j, b = iFirst ? j : i;
-            const double dx = x[a][0] - x[b][0], dy = x[a][1] - x[b][1], dz = x[a][2] - x[b][2];
-            const double rsq = dx * dx + dy * dy + dz * dz;
-            const double radsum = radius[a] + radius[b];
-            if (rsq >= radsum * radsum) continue;
+            const double dx = iFirst ? dxi : -dxi, dy = iFirst ? dyi : -dyi, dz = iFirst ? dzi : -dzi;
             const double r = std::sqrt(rsq), rinv = 1.0 / r;
             State s;
             s.n[0] = dx * rinv;
@@ -328,7 +342,10 @@ void PairDemcontact::compute(int eflag, int vflag)
                 sj = cache[2 * jj + 1];
                 if (advance) {
                     const bool fresh = si < 0 || (sj < 0 && j < nlocal);
-                    if (si < 0) si = cache[2 * jj] = H->add(i, tag[j]);
+                    if (si < 0) {
+                        si = cache[2 * jj] = H->add(i, tag[j]);
+                        if (newton && j >= nlocal) H->add_ghost_pair(i, si, j, tag[j]);
+                    }
                     if (sj < 0 && j < nlocal) sj = cache[2 * jj + 1] = H->add(j, tag[i]);
                     if (fresh && sj >= 0) H->add_partner_pair(i, si, j, sj);
                 }
@@ -356,21 +373,23 @@ void PairDemcontact::compute(int eflag, int vflag)
             const int32_t st = contact_eval(models[type[a] * N + type[b]], s, dt, h, out);
             if (st != DC_OK)
                 error->one(FLERR, "pair demcontact: atoms {} {}: {}", tag[a], tag[b], dc_status_str(st));
-            // forces and torques to owned atoms only (the other owner adds its share)
-            if (a < nlocal) {
+            // newton on: forces and torques to both (a ghost's go to its owner by reverse
+            // communication); newton off: to owned atoms only (the other owner adds its share)
+            if (newton || a < nlocal) {
                 for (int k = 0; k < 3; k++) {
                     f[a][k] += out.force[k];
                     torque[a][k] += out.torque1[k];
                 }
             }
-            if (b < nlocal) {
+            if (newton || b < nlocal) {
                 for (int k = 0; k < 3; k++) {
                     f[b][k] -= out.force[k];
                     torque[b][k] += out.torque2[k];
                 }
             }
             if (evflag)
-                ev_tally_xyz(a, b, nlocal, 0, 0.0, 0.0, out.force[0], out.force[1], out.force[2], dx, dy, dz);
+                ev_tally_xyz(a, b, nlocal, newton ? 1 : 0, 0.0, 0.0, out.force[0], out.force[1], out.force[2], dx,
+                             dy, dz);
         }
     }
 }

@@ -31,6 +31,7 @@ private:
     void map_slots();
 
     bool clamp = false;
+    bool newton = true; // newton-on neighbour list (force->newton_pair), else newton off
     int maxpartner = 32;
     int nh = 0;
     Coeff *coeffs = nullptr; // (ntypes+1)^2, [i*(ntypes+1)+j], i <= j given or mixed

@@ -33,9 +33,12 @@ from ._native import (
     ContactSpec,
     contact_force,
     contact_force_batch,
+    contact_force_energy,
     contact_force_spheres,
     contact_history_len,
     contact_model_init,
+    contact_model_set_step,
+    plan,
     contact_spec_init,
     builtin_for_lammps_release as _builtin_for_lammps_release,
     builtin_realised_e,
@@ -84,7 +87,7 @@ from ._native import (
     viscoelastic_k_gamma,
     viscoelastic_speed_for_e,
 )
-from ._types import ContactBatchResult, ContactResult, EnergyPartition, FitResult, Trajectory
+from ._types import ContactBatchResult, ContactEnergy, ContactResult, EnergyPartition, FitResult, Trajectory
 
 
 class Criterion(_enum.IntEnum):
@@ -129,11 +132,25 @@ class Damping(_enum.IntEnum):
 
 
 class Tangential(_enum.IntEnum):
-    """Tangential law (C: DC_TANGENTIAL_*): Cundall-Strack k_t spring or Mindlin 8 G* a, Coulomb cap."""
+    """Tangential law (C: DC_TANGENTIAL_*): Cundall-Strack k_t spring or Mindlin 8 G* a, Coulomb cap.
+
+    MINDLIN keeps LAMMPS ``mindlin``'s total form, which creates energy when the contact grows;
+    MINDLIN_RESCALE (incremental force, rescaled when the contact shrinks: LAMMPS
+    ``mindlin_rescale/force``) creates none and is the one to prefer.
+    """
 
     NONE = _native.TANGENTIAL_NONE
     LINEAR = _native.TANGENTIAL_LINEAR
     MINDLIN = _native.TANGENTIAL_MINDLIN
+    MINDLIN_RESCALE = _native.TANGENTIAL_MINDLIN_RESCALE
+
+
+class Integrator(_enum.IntEnum):
+    """The host's time integrator for ContactModel.set_step (C: DC_INTEGRATOR_*): velocity Verlet
+    in the LAMMPS/LIGGGHTS order, or symplectic Euler (one map: the same correction)."""
+
+    VELOCITY_VERLET = _native.INTEGRATOR_VELOCITY_VERLET
+    SYMPLECTIC_EULER = _native.INTEGRATOR_SYMPLECTIC_EULER
 
 
 class Rolling(_enum.IntEnum):
@@ -234,18 +251,23 @@ __all__ = [
     "Rolling",
     "Twisting",
     "Carry",
+    "Integrator",
     "CONTACT_HISTORY_MAX",
     "CONTACT_SPEC_VERSION",
     "ContactSpec",
     "ContactModel",
     "ContactResult",
     "ContactBatchResult",
+    "ContactEnergy",
     "contact_spec_init",
     "contact_model_init",
+    "contact_model_set_step",
     "contact_history_len",
     "contact_force",
+    "contact_force_energy",
     "contact_force_spheres",
     "contact_force_batch",
+    "plan",
     "alpha_from_e",
     "e_from_alpha",
     "max_overlap",

@@ -3,7 +3,7 @@
 # numpy ufuncs: all-scalar calls return float, otherwise an ndarray of the broadcast shape.
 
 import enum
-from typing import List, NamedTuple, Optional, Sequence, Union, final
+from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -38,18 +38,23 @@ __all__ += [
     "Rolling",
     "Twisting",
     "Carry",
+    "Integrator",
     "CONTACT_HISTORY_MAX",
     "CONTACT_SPEC_VERSION",
     "ContactSpec",
     "ContactModel",
     "ContactResult",
     "ContactBatchResult",
+    "ContactEnergy",
     "contact_spec_init",
     "contact_model_init",
+    "contact_model_set_step",
     "contact_history_len",
     "contact_force",
+    "contact_force_energy",
     "contact_force_spheres",
     "contact_force_batch",
+    "plan",
     "alpha_from_e",
     "e_from_alpha",
     "max_overlap",
@@ -138,6 +143,7 @@ class Tangential(enum.IntEnum):
     NONE = 0
     LINEAR = 1
     MINDLIN = 2
+    MINDLIN_RESCALE = 3
 
 class Rolling(enum.IntEnum):
     NONE = 0
@@ -151,6 +157,10 @@ class Twisting(enum.IntEnum):
 class Carry(enum.IntEnum):
     ROTATE = 0
     PROJECT = 1
+
+class Integrator(enum.IntEnum):
+    VELOCITY_VERLET = 0
+    SYMPLECTIC_EULER = 1
 
 CONTACT_HISTORY_MAX: int
 CONTACT_SPEC_VERSION: int
@@ -204,6 +214,11 @@ class Status(enum.IntEnum):
     ERR_FIT_TOO_FEW = 6132
     ERR_FIT_DEGENERATE = 6133
     ERR_BUILTIN_VERSION = 6134
+    ERR_INTEGRATOR = 6135
+    ERR_STEP_UNSUPPORTED = 6136
+    ERR_STEP_UNREACHABLE = 6137
+    ERR_PLAN_RANGE = 6140
+    ERR_PLAN_INFEASIBLE = 6141
     ERR_INTERNAL = 6199
 
 class EnergyPartition(NamedTuple):
@@ -378,6 +393,19 @@ class ContactBatchResult(NamedTuple):
     torque1: _F64
     torque2: _F64
 
+class ContactEnergy(NamedTuple):
+    dissipated: float
+    normal_damping: float
+    tangential_damping: float
+    tangential_slip: float
+    tangential_elastic: float
+    rolling_damping: float
+    rolling_slip: float
+    rolling_elastic: float
+    twisting_damping: float
+    twisting_slip: float
+    twisting_elastic: float
+
 @final
 class ContactSpec:
     def __new__(
@@ -498,11 +526,30 @@ class ContactModel:
     def k_tw(self) -> float: ...
     @property
     def eta_tw(self) -> float: ...
+    @property
+    def step_aware(self) -> bool: ...
+    def set_step(self, dt: _Real, integrator: Union[_Code, str, None] = None) -> ContactModel: ...
     def to_bytes(self) -> bytes: ...
 
 def contact_spec_init() -> ContactSpec: ...
 def contact_model_init(spec: ContactSpec) -> ContactModel: ...
+def contact_model_set_step(model: ContactModel, dt: _Real, integrator: Union[_Code, str, None] = None) -> ContactModel: ...
 def contact_history_len(model: ContactModel) -> int: ...
+def contact_force_energy(
+    model: ContactModel,
+    n: _Vec3,
+    overlap: _Real,
+    v1: _Vec3,
+    v2: _Vec3,
+    w1: _Vec3,
+    w2: _Vec3,
+    r1: _Real,
+    r2: _Real,
+    m1: _Real,
+    m2: _Real,
+    dt: _Real,
+    history: Optional[_F64] = None,
+) -> tuple[ContactResult, ContactEnergy]: ...
 def contact_force(
     model: ContactModel,
     n: _Vec3,
@@ -550,3 +597,31 @@ def contact_force_batch(
     *,
     out: Optional[tuple[_F64, _F64, _F64, _F64]] = None,
 ) -> ContactBatchResult: ...
+
+# scene planner
+def plan(
+    *,
+    youngs: _Real,
+    poisson: _Real,
+    density: _Real,
+    restitution: _Real,
+    radius_min: _Real,
+    radius_max: _Real,
+    v_max: _Real,
+    depth: _Real,
+    overlap_tol: _Real,
+    e_tol: _Real,
+    gravity: Optional[_Real] = None,
+    pressure: Optional[_Real] = None,
+    solid_fraction: Optional[_Real] = None,
+    coordination: Optional[_Real] = None,
+    load_factor: Optional[_Real] = None,
+    friction: Optional[_Real] = None,
+    rolling_friction: Optional[_Real] = None,
+    static_tol: Optional[_Real] = None,
+    duration_tol: Optional[_Real] = None,
+    criterion: Optional[_Code] = None,
+    walls: Union[bool, int, None] = None,
+    stability_fraction: Optional[_Real] = None,
+    conventional_divisor: Optional[_Real] = None,
+) -> Dict[str, Any]: ...

@@ -142,6 +142,39 @@ class BuiltinVersionError(InputError):
     status = 6134
 
 
+class IntegratorError(InputError):
+    """An integrator other than Integrator.VELOCITY_VERLET or Integrator.SYMPLECTIC_EULER (6135)."""
+
+    status = 6135
+
+
+class StepUnsupportedError(InputError):
+    """ContactModel.set_step on a normal law with no step-aware form (viscoelastic, DMT; 6136)."""
+
+    status = 6136
+
+
+class StepUnreachableError(InputError):
+    """The host's explicit step cannot realise this e_n with the step-aware damping (strong
+    damping, e_n well below 0.1, at steps near t_H/10; 6137)."""
+
+    status = 6137
+
+
+class PlanRangeError(InputError):
+    """A plan() input outside its documented range (radius_max < radius_min, a tolerance >= 1,
+    ...; 6140). The exception's ``field`` names the input."""
+
+    status = 6140
+
+
+class PlanInfeasibleError(InputError):
+    """plan(): no Young's modulus meets the tolerances, the real material itself misses the one
+    named by the exception's ``field`` (6141)."""
+
+    status = 6141
+
+
 class NotUnitError(InputError):
     """A contact normal that is not a unit vector (| |n|^2 - 1 | > 1e-6, 6126)."""
 
@@ -230,6 +263,11 @@ STATUS_CLASSES: Dict[int, Type[DemcontactError]] = {
         FitTooFewError,
         FitDegenerateError,
         BuiltinVersionError,
+        IntegratorError,
+        StepUnsupportedError,
+        StepUnreachableError,
+        PlanRangeError,
+        PlanInfeasibleError,
         NotUnitError,
         SpecModelError,
         SpecUnsetError,
@@ -275,6 +313,11 @@ __all__ = [
     "FitTooFewError",
     "FitDegenerateError",
     "BuiltinVersionError",
+    "IntegratorError",
+    "StepUnsupportedError",
+    "StepUnreachableError",
+    "PlanRangeError",
+    "PlanInfeasibleError",
     "NotUnitError",
     "SpecModelError",
     "SpecUnsetError",

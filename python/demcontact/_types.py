@@ -80,3 +80,23 @@ class ContactBatchResult(NamedTuple):
     force: np.ndarray
     torque1: np.ndarray
     torque2: np.ndarray
+
+
+class ContactEnergy(NamedTuple):
+    """The energy ledger of one contact step [J] (C: dc_contact_energy, from
+    contact_force_energy): what the dashpots and slips removed during the step (``dissipated`` is
+    their sum) and the elastic energy left in the history springs. Energy a law creates
+    (Tangential.MINDLIN's gain) is not counted, so it shows up as a gain. Definitions:
+    docs/force.md."""
+
+    dissipated: float
+    normal_damping: float
+    tangential_damping: float
+    tangential_slip: float
+    tangential_elastic: float
+    rolling_damping: float
+    rolling_slip: float
+    rolling_elastic: float
+    twisting_damping: float
+    twisting_slip: float
+    twisting_elastic: float

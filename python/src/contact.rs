@@ -9,8 +9,9 @@
 
 use demcontact::ffi as c;
 use demcontact::ffi::contact::{
-    dc_contact_batch, dc_contact_force, dc_contact_force_batch, dc_contact_force_spheres,
-    dc_contact_history_len, dc_contact_model, dc_contact_model_init, dc_contact_model_set_carry,
+    dc_contact_batch, dc_contact_energy, dc_contact_force, dc_contact_force_batch,
+    dc_contact_force_energy, dc_contact_force_spheres, dc_contact_history_len, dc_contact_model,
+    dc_contact_model_init, dc_contact_model_set_carry, dc_contact_model_set_step,
     dc_contact_result, dc_contact_spec, dc_contact_spec_init, dc_contact_state,
 };
 use numpy::{
@@ -35,6 +36,16 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(contact_force, m)?)?;
     m.add_function(wrap_pyfunction!(contact_force_spheres, m)?)?;
     m.add_function(wrap_pyfunction!(contact_force_batch, m)?)?;
+    m.add_function(wrap_pyfunction!(contact_force_energy, m)?)?;
+    m.add_function(wrap_pyfunction!(contact_model_set_step, m)?)?;
+    m.add(
+        "INTEGRATOR_VELOCITY_VERLET",
+        c::status::DC_INTEGRATOR_VELOCITY_VERLET,
+    )?;
+    m.add(
+        "INTEGRATOR_SYMPLECTIC_EULER",
+        c::status::DC_INTEGRATOR_SYMPLECTIC_EULER,
+    )?;
     use c::contact::*;
     m.add("CONTACT_SPEC_VERSION", DC_CONTACT_SPEC_VERSION)?;
     m.add("CONTACT_HISTORY_MAX", DC_CONTACT_HISTORY_MAX)?;
@@ -49,6 +60,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
         ("TANGENTIAL_NONE", DC_TANGENTIAL_NONE),
         ("TANGENTIAL_LINEAR", DC_TANGENTIAL_LINEAR),
         ("TANGENTIAL_MINDLIN", DC_TANGENTIAL_MINDLIN),
+        ("TANGENTIAL_MINDLIN_RESCALE", DC_TANGENTIAL_MINDLIN_RESCALE),
         ("ROLLING_NONE", DC_ROLLING_NONE),
         ("ROLLING_CONSTANT", DC_ROLLING_CONSTANT),
         ("ROLLING_EPSD", DC_ROLLING_EPSD),
@@ -301,6 +313,27 @@ impl ContactModel {
     fn eta_tw(&self) -> f64 {
         self.raw.eta_tw
     }
+    /// True once set_step made the model step-aware (C: reserved[0] != 0).
+    #[getter]
+    fn step_aware(&self) -> bool {
+        self.raw.reserved[0].to_bits() != 0
+    }
+    /// This model made to realise its target e_n at the host's step `dt` [s] in the host's
+    /// `integrator` (C: dc_contact_model_set_step): Integrator.VELOCITY_VERLET (default; also
+    /// the string "velocity_verlet") or Integrator.SYMPLECTIC_EULER ("symplectic_euler"). Returns
+    /// a new ContactModel (this one is immutable); its history_len is one double longer. An
+    /// undamped normal law (e_n = 1) comes back unchanged. Raises NotFiniteError or
+    /// NotPositiveError (dt), IntegratorError (unknown integrator), StepUnsupportedError
+    /// (viscoelastic or DMT normal law), StepUnreachableError (the explicit step cannot realise
+    /// e_n: strong damping at a large step). Call it again with the base model when dt changes.
+    #[pyo3(signature = (dt, integrator = None))]
+    fn set_step(
+        slf: &Bound<'_, Self>,
+        dt: &Bound<'_, PyAny>,
+        integrator: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<ContactModel> {
+        model_set_step("set_step", slf, dt, integrator)
+    }
     /// The C struct's bytes (sizeof(dc_contact_model)), to hand the model to C code.
     fn to_bytes<'py>(&self, py: Python<'py>) -> Bound<'py, pyo3::types::PyBytes> {
         let p = (&self.raw as *const dc_contact_model).cast::<u8>();
@@ -312,14 +345,19 @@ impl ContactModel {
 
     fn __repr__(&self) -> String {
         format!(
-            "ContactModel(tangential={}, rolling={}, twisting={}, history_len={}, mu={:?}, kt={:?}, zeta_t={:?})",
+            "ContactModel(tangential={}, rolling={}, twisting={}, history_len={}, mu={:?}, kt={:?}, zeta_t={:?}{})",
             enum_name("tangential", self.raw.tangential),
             enum_name("rolling", self.raw.rolling),
             enum_name("twisting", self.raw.twisting),
             self.history_len,
             self.raw.mu,
             self.raw.kt,
-            self.raw.zeta_t
+            self.raw.zeta_t,
+            if self.step_aware() {
+                ", step_aware=True"
+            } else {
+                ""
+            }
         )
     }
 }
@@ -359,6 +397,78 @@ fn model_init(py: Python<'_>, spec: &ContactSpec) -> PyResult<ContactModel> {
 #[pyfunction]
 pub fn contact_model_init(py: Python<'_>, spec: &Bound<'_, ContactSpec>) -> PyResult<ContactModel> {
     model_init(py, spec.get())
+}
+
+/// The integrator code of `integrator`: None (velocity Verlet), an Integrator member or int
+/// (passed on: the library refuses unknown codes), or its name as a string.
+fn integrator_code(
+    py: Python<'_>,
+    function: &str,
+    obj: Option<&Bound<'_, PyAny>>,
+) -> PyResult<i32> {
+    use c::status::{DC_INTEGRATOR_SYMPLECTIC_EULER, DC_INTEGRATOR_VELOCITY_VERLET};
+    let Some(o) = obj.filter(|o| !o.is_none()) else {
+        return Ok(DC_INTEGRATOR_VELOCITY_VERLET);
+    };
+    if let Ok(name) = o.extract::<String>() {
+        return match name.as_str() {
+            "velocity_verlet" => Ok(DC_INTEGRATOR_VELOCITY_VERLET),
+            "symplectic_euler" => Ok(DC_INTEGRATOR_SYMPLECTIC_EULER),
+            _ => Err(status_error(
+                py,
+                c::status::DC_ERR_INTEGRATOR,
+                function,
+                &format!(
+                    "(integrator={name:?}: expected \"velocity_verlet\", \"symplectic_euler\" or an Integrator member)"
+                ),
+            )),
+        };
+    }
+    code(function, "integrator", o)
+}
+
+fn model_set_step(
+    function: &str,
+    model: &Bound<'_, ContactModel>,
+    dt: &Bound<'_, PyAny>,
+    integrator: Option<&Bound<'_, PyAny>>,
+) -> PyResult<ContactModel> {
+    let py = model.py();
+    let dt = real(function, "dt", dt)?;
+    let integ = integrator_code(py, function, integrator)?;
+    let mut raw = model.get().raw;
+    // SAFETY: live local, written by value on DC_OK only.
+    let s = unsafe { dc_contact_model_set_step(&mut raw, dt, integ) };
+    if s != c::status::DC_OK {
+        return Err(status_error(
+            py,
+            s,
+            function,
+            &format!("(dt={dt:?}, integrator={integ})"),
+        ));
+    }
+    let mut len = 0usize;
+    // SAFETY: live locals.
+    let s = unsafe { dc_contact_history_len(&raw, &mut len) };
+    if s != c::status::DC_OK {
+        return Err(status_error(py, s, "contact_history_len", ""));
+    }
+    Ok(ContactModel {
+        raw,
+        history_len: len,
+    })
+}
+
+/// `model` made step-aware at `dt` (C: dc_contact_model_set_step); the same as
+/// model.set_step(dt, integrator).
+#[pyfunction]
+#[pyo3(signature = (model, dt, integrator = None))]
+pub fn contact_model_set_step(
+    model: &Bound<'_, ContactModel>,
+    dt: &Bound<'_, PyAny>,
+    integrator: Option<&Bound<'_, PyAny>>,
+) -> PyResult<ContactModel> {
+    model_set_step("contact_model_set_step", model, dt, integrator)
 }
 
 /// Doubles of history one contact of `model` needs (C: dc_contact_history_len).
@@ -511,6 +621,7 @@ fn history_arg<'py>(
 /// The named-tuple classes of demcontact._types, looked up once.
 static CONTACT_RESULT: PyOnceLock<Py<PyType>> = PyOnceLock::new();
 static CONTACT_BATCH_RESULT: PyOnceLock<Py<PyType>> = PyOnceLock::new();
+static CONTACT_ENERGY: PyOnceLock<Py<PyType>> = PyOnceLock::new();
 
 fn result_tuple<'py>(py: Python<'py>, r: &dc_contact_result) -> PyResult<Bound<'py, PyAny>> {
     CONTACT_RESULT
@@ -655,6 +766,70 @@ pub fn contact_force_spheres<'py>(
             )
         },
     )
+}
+
+/// contact_force with the energy ledger of the step (C: dc_contact_force_energy): the same
+/// force, torques, history update and errors bit for bit, and a ContactEnergy [J] of what the
+/// step's dashpots and slips dissipated and what the history springs hold after it. Returns
+/// (ContactResult, ContactEnergy). Over a whole contact the kinetic energy lost is the sum of
+/// `dissipated` to the integrator's error (docs/force.md has the definitions).
+#[pyfunction]
+#[pyo3(signature = (model, n, overlap, v1, v2, w1, w2, r1, r2, m1, m2, dt, history=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn contact_force_energy<'py>(
+    model: &Bound<'py, ContactModel>,
+    n: &Bound<'py, PyAny>,
+    overlap: &Bound<'py, PyAny>,
+    v1: &Bound<'py, PyAny>,
+    v2: &Bound<'py, PyAny>,
+    w1: &Bound<'py, PyAny>,
+    w2: &Bound<'py, PyAny>,
+    r1: &Bound<'py, PyAny>,
+    r2: &Bound<'py, PyAny>,
+    m1: &Bound<'py, PyAny>,
+    m2: &Bound<'py, PyAny>,
+    dt: &Bound<'py, PyAny>,
+    history: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyTuple>> {
+    const F: &str = "contact_force_energy";
+    let py = model.py();
+    let state = state_of(F, Some(n), Some(overlap), v1, v2, w1, w2, r1, r2, m1, m2)?;
+    let dt = real(F, "dt", dt)?;
+    let mut energy = std::mem::MaybeUninit::<dc_contact_energy>::uninit();
+    let eptr = energy.as_mut_ptr();
+    let result = one_contact(
+        F,
+        model,
+        history,
+        |m, hp, hl, out| {
+            // SAFETY: as contact_force; `eptr` points to the live local `energy`.
+            unsafe { dc_contact_force_energy(m, &state, dt, hp, hl, out, eptr) }
+        },
+        |hl| {
+            format!(
+                "with {}, dt={dt:?}, history of {hl} doubles",
+                describe_state(&state)
+            )
+        },
+    )?;
+    // SAFETY: one_contact returned Ok, so the export returned DC_OK and wrote the ledger.
+    let e = unsafe { energy.assume_init() };
+    let ledger = CONTACT_ENERGY
+        .import(py, "demcontact._types", "ContactEnergy")?
+        .call1((
+            e.dissipated,
+            e.normal_damping,
+            e.tangential_damping,
+            e.tangential_slip,
+            e.tangential_elastic,
+            e.rolling_damping,
+            e.rolling_slip,
+            e.rolling_elastic,
+            e.twisting_damping,
+            e.twisting_slip,
+            e.twisting_elastic,
+        ))?;
+    PyTuple::new(py, [result, ledger])
 }
 
 /// What contact_force and contact_force_spheres share: the history borrowed for writing (NULL

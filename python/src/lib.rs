@@ -13,6 +13,7 @@ mod contact;
 mod error;
 mod force;
 mod functions;
+mod plan;
 mod powerlaw;
 mod vectorize;
 
@@ -74,6 +75,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     }
     m.add_class::<force::Pair>()?;
     contact::register(m)?;
+    plan::register(m)?;
     m.add_class::<powerlaw::DurationPlan>()?;
 
     // Constants straight from the core, so the Python enums cannot drift from the C header.

@@ -56,6 +56,17 @@ force = fn("contact_force", [C.POINTER(Model), C.POINTER(State), D, PD, C.c_size
 force_spheres = fn("contact_force_spheres", [C.POINTER(Model), PD, PD, C.POINTER(State), D, PD, C.c_size_t, C.POINTER(Result)])
 force_batch = fn("contact_force_batch", [C.POINTER(Model), C.POINTER(Batch), D])
 set_carry = fn("contact_model_set_carry", [C.POINTER(Model), I32])
+set_step = fn("contact_model_set_step", [C.POINTER(Model), D, I32])
+
+
+class Energy(C.Structure):
+    _fields_ = [(f, D) for f in [
+        "dissipated", "normal_damping", "tangential_damping", "tangential_slip", "tangential_elastic",
+        "rolling_damping", "rolling_slip", "rolling_elastic", "twisting_damping", "twisting_slip", "twisting_elastic",
+    ]]
+
+
+force_energy = fn("contact_force_energy", [C.POINTER(Model), C.POINTER(State), D, PD, C.c_size_t, C.POINTER(Result), C.POINTER(Energy)])
 
 
 def c_spec(**fields) -> Spec:
@@ -68,13 +79,17 @@ def c_spec(**fields) -> Spec:
 
 def c_model(**fields):
     """(status, Model or None) of dc_contact_model_init on a spec with these fields, then
-    dc_contact_model_set_carry with `carry` (not a C spec field) when given."""
+    dc_contact_model_set_carry with `carry` (not a C spec field) when given, then
+    dc_contact_model_set_step with `step` = (dt, integrator) when given."""
     carry = fields.pop("carry", None)
+    step = fields.pop("step", None)
     s = c_spec(**fields)
     m = Model()
     st = model_init(C.byref(s), C.byref(m))
     if st == 0 and carry is not None:
         st = set_carry(C.byref(m), int(carry))
+    if st == 0 and step is not None:
+        st = set_step(C.byref(m), float(step[0]), int(step[1]))
     return st, (m if st == 0 else None)
 
 

@@ -21,6 +21,8 @@ from cabi import Pair as CPair
 INF = math.inf
 F, O = dc.Criterion.FORCE, dc.Criterion.OVERLAP
 
+DT_STEP = 2e-7  # the host step of the step-aware specs below
+
 # Specs exercising every sub-model (as keyword dicts usable by both ContactSpec and c_spec).
 HERTZ_FULL = dict(
     normal=dc.Normal.HERTZ, damping=dc.Damping.RESTITUTION, e_n=0.8, E1=7e10, nu1=0.3, E2=2e11, nu2=0.28,
@@ -38,11 +40,21 @@ SPECS = {
     "powerlaw_linear_epsd_project": dict(normal=dc.Normal.POWERLAW, p=1.7, k_n=3e7, damping=dc.Damping.RESTITUTION, e_n=0.3, tangential=dc.Tangential.LINEAR, k_t=5e3, mu=0.2, rolling=dc.Rolling.EPSD, mu_r=0.1, k_r=1e-3, carry=dc.Carry.PROJECT),
     "hertz_normal_only": dict(normal=dc.Normal.HERTZ, damping=dc.Damping.RESTITUTION, e_n=0.5, E1=7e10, nu1=0.3, E2=7e10, nu2=0.3),
     "linear_constant_rolling_only": dict(normal=dc.Normal.LINEAR, k_n=1e4, rolling=dc.Rolling.CONSTANT, mu_r=0.1),
+    # The rescaled Mindlin law, and step-aware models (dc_contact_model_set_step: `step` =
+    # (dt, integrator), applied after contact_model_init by both sides).
+    "hertz_full_rescale": dict(HERTZ_FULL, tangential=dc.Tangential.MINDLIN_RESCALE),
+    "hertz_wall_rescale_step": dict(normal=dc.Normal.HERTZ, damping=dc.Damping.RESTITUTION, e_n=0.3, E1=3.8e11, nu1=0.23, E2=INF, nu2=0.23, tangential=dc.Tangential.MINDLIN_RESCALE, mu=0.092, step=(DT_STEP, dc.Integrator.VELOCITY_VERLET)),
+    "hertz_full_step_euler": dict(HERTZ_FULL, step=(DT_STEP, dc.Integrator.SYMPLECTIC_EULER)),
+    "linear_overlap_step": dict(normal=dc.Normal.LINEAR, k_n=1e4, damping=dc.Damping.RESTITUTION, e_n=0.5, criterion=O, tangential=dc.Tangential.LINEAR, k_t=8e3, e_t=0.4, mu=0.5, step=(DT_STEP, dc.Integrator.VELOCITY_VERLET)),
+    "powerlaw_normal_only_step": dict(normal=dc.Normal.POWERLAW, p=1.7, k_n=3e7, damping=dc.Damping.RESTITUTION, e_n=0.3, step=(DT_STEP, dc.Integrator.VELOCITY_VERLET)),
 }
 
 
 def model(name):
-    return dc.contact_model_init(dc.ContactSpec(**SPECS[name]))
+    kw = dict(SPECS[name])
+    step = kw.pop("step", None)
+    m = dc.contact_model_init(dc.ContactSpec(**kw))
+    return m if step is None else m.set_step(*step)
 
 
 def c_model(name):
@@ -85,11 +97,12 @@ def test_every_c_spec_field_is_a_keyword_and_attribute():
 def test_enums_match_header_constants():
     assert [int(x) for x in dc.Normal] == [1, 2, 3, 4, 5]
     assert [int(x) for x in dc.Damping] == [0, 1]
-    assert [int(x) for x in dc.Tangential] == [0, 1, 2]
+    assert [int(x) for x in dc.Tangential] == [0, 1, 2, 3]
     assert [int(x) for x in dc.Rolling] == [0, 1, 2]
     assert [int(x) for x in dc.Twisting] == [0, 1]
     assert [int(x) for x in dc.Carry] == [0, 1]
-    assert dc.CONTACT_HISTORY_MAX == 10
+    assert [int(x) for x in dc.Integrator] == [0, 1]
+    assert dc.CONTACT_HISTORY_MAX == 12
 
 
 @pytest.mark.parametrize("name", sorted(SPECS))
@@ -101,6 +114,7 @@ def test_models_equal_c(name):
         assert bits(getattr(m, f)) == bits(getattr(cm, f)), f
     assert (m.tangential, m.rolling, m.twisting, m.carry) == (cm.tangential, cm.rolling, cm.twisting, cm.carry)
     assert m.carry == SPECS[name].get("carry", dc.Carry.ROTATE)
+    assert m.step_aware == ("step" in SPECS[name])
     p = m.normal
     for f in ("p", "stiffness", "alpha", "damping_a", "e", "k", "c", "h"):
         assert bits(getattr(p, f)) == bits(getattr(cm.normal, f)), f
@@ -111,7 +125,7 @@ SEL = {  # valid codes, then invalid ones
     "normal": ([1, 2, 3, 4, 5], [0, 6, -1]),
     "damping": ([0, 1], [2, -1]),
     "criterion": ([0, 1], [2, -1]),
-    "tangential": ([0, 1, 2], [3]),
+    "tangential": ([0, 1, 2, 3], [4]),
     "rolling": ([0, 1, 2], [3]),
     "twisting": ([0, 1], [2]),
 }
@@ -661,3 +675,144 @@ def test_reprs_name_the_sub_models():
     # by the spec, refused by contact_model_init) prints as its number.
     r = repr(dc.ContactSpec(tangential=7))
     assert "tangential=7" in r and "normal=0" in r, r
+
+
+# ---- step-aware damping (dc_contact_model_set_step) --------------------------------------------
+
+
+def test_set_step_equals_c_statuses_and_bytes():
+    bases = ["hertz_full", "hertz_wall_mindlin", "linear_linear_constant", "powerlaw_linear_epsd", "viscoelastic_mindlin",
+             "dmt_mindlin", "hertz_normal_only", "linear_constant_rolling_only", "hertz_full_rescale"]
+    seen = set()
+    for name in bases:
+        for dt in (1e-7, 3e-6, 1e-3, 0.0, -1e-6, math.nan, INF):
+            for integ in (0, 1, 2, -1):
+                kw = dict(SPECS[name], step=(dt, integ))
+                st, cm = cc.c_model(**kw)
+                seen.add(st)
+                if st == 0:
+                    m = model(name).set_step(dt, integ)
+                    assert m.to_bytes() == bytes(cm), (name, dt, integ)
+                    assert m.history_len == cm.history_len == dc.contact_history_len(m)
+                    # the function form and the names give the same model
+                    word = {0: "velocity_verlet", 1: "symplectic_euler"}[integ]
+                    assert dc.contact_model_set_step(model(name), dt, word).to_bytes() == bytes(cm)
+                else:
+                    with pytest.raises(dc.DemcontactError) as ei:
+                        model(name).set_step(dt, integ)
+                    assert ei.value.code == st and type(ei.value) is dc.STATUS_CLASSES[st], (name, dt, integ)
+                    assert "set_step" in str(ei.value) and f"integrator={integ}" in str(ei.value)
+    # every status of set_step occurs (OK, dt NaN/inf, dt <= 0, integrator, unsupported law)
+    assert {0, 6102, 6105, 6135, 6136} <= seen, seen
+
+
+def test_set_step_classes_defaults_and_immutability():
+    base = model("hertz_wall_mindlin")
+    m = base.set_step(1e-6)
+    assert m.to_bytes() == base.set_step(1e-6, dc.Integrator.VELOCITY_VERLET).to_bytes()
+    assert m.history_len == base.history_len + 1 and m.step_aware and not base.step_aware
+    assert "step_aware=True" in repr(m) and "step_aware" not in repr(base)
+    # an undamped normal law has nothing to correct: the model comes back unchanged
+    el = dc.ContactSpec(normal=dc.Normal.HERTZ, E1=7e10, nu1=0.3, E2=INF, nu2=0.3).model()
+    assert el.set_step(1e-6).to_bytes() == el.to_bytes()
+    with pytest.raises(dc.IntegratorError, match="rk4"):
+        base.set_step(1e-6, "rk4")
+    with pytest.raises(dc.StepUnsupportedError):
+        model("viscoelastic_mindlin").set_step(1e-6)
+    with pytest.raises(TypeError, match="dt"):
+        base.set_step("1e-6")
+    assert issubclass(dc.StepUnreachableError, dc.InputError) and dc.StepUnreachableError.status == 6137
+    assert dc.Status.ERR_STEP_UNREACHABLE == 6137 and dc.Status.ERR_INTEGRATOR == 6135
+    assert dc.STATUS_CLASSES[6136] is dc.StepUnsupportedError
+
+
+def test_set_step_unreachable_matches_c():
+    # Strong damping at a large step: the explicit step cannot realise e_n.
+    for e in (1e-3, 1e-2, 0.05):
+        for dt in (1e-5, 1e-4):
+            kw = dict(normal=dc.Normal.LINEAR, k_n=1e4, damping=dc.Damping.RESTITUTION, e_n=e, step=(dt, 0))
+            st, _ = cc.c_model(**kw)
+            if st == 6137:
+                with pytest.raises(dc.StepUnreachableError):
+                    dc.ContactSpec(**{k: v for k, v in kw.items() if k != "step"}).model().set_step(dt)
+                return
+    pytest.fail("no StepUnreachable case found among the tried ones")
+
+
+def wall_collision_e(m, v0, dt, phase, mass=2e-3, radius=2e-3):
+    """Realised e of one sphere-wall collision, velocity Verlet in the LAMMPS order through
+    contact_force, the first step at a gap of `phase` (0..1) of one step's travel."""
+    h = np.zeros(max(m.history_len, 1))
+    d, v, acc, touched = -phase * v0 * dt, -v0, 0.0, False
+    for _ in range(100000):
+        vh = v + 0.5 * dt * acc
+        d -= dt * vh
+        touched |= d > 0
+        r = dc.contact_force(m, [0.0, 0.0, 1.0], d, [0.0, 0.0, vh], [0.0] * 3, [0.0] * 3, [0.0] * 3, radius, INF, mass, INF, dt,
+                             h if m.history_len else None)
+        acc = r.force[2] / mass
+        v = vh + 0.5 * dt * acc
+        if touched and d <= 0:
+            return v / v0
+    raise AssertionError("no separation")
+
+
+def test_step_aware_model_realises_e_at_the_step():
+    # docs/timestep.md: at dt = t_H/20 and e_n = 0.1 the plain dashpot realises e ~16 % low; the
+    # step-aware one within 0.2 % on the mean over onset phases. t_H here is the elastic Hertz
+    # duration 2 (5m/(4k))^(2/5) v^(-1/5) (2/5) B(2/5, 1/2) (k = 4/3 E* sqrt(R)).
+    e, v0, mass, radius = 0.1, 1.0, 2e-3, 2e-3
+    spec = dc.ContactSpec(normal=dc.Normal.HERTZ, damping=dc.Damping.RESTITUTION, e_n=e, E1=1e8, nu1=0.3, E2=INF, nu2=0.3)
+    k = 4 / 3 * 1e8 / (1 - 0.09) * math.sqrt(radius)
+    beta = math.gamma(0.4) * math.gamma(0.5) / math.gamma(0.9)
+    t_h = 2 * (5 * mass / (4 * k)) ** 0.4 * v0**-0.2 * 0.4 * beta
+    dt = t_h / 20
+    plain, aware = spec.model(), spec.model().set_step(dt)
+    phases = np.arange(16) / 16
+    e_plain = np.mean([wall_collision_e(plain, v0, dt, ph, mass, radius) for ph in phases])
+    e_aware = np.mean([wall_collision_e(aware, v0, dt, ph, mass, radius) for ph in phases])
+    assert e_plain / e - 1 < -0.05, e_plain
+    assert abs(e_aware / e - 1) < 5e-3, e_aware
+
+
+# ---- energy ledger (dc_contact_force_energy) ---------------------------------------------------
+
+
+@pytest.mark.parametrize("name", ["hertz_full", "hertz_full_rescale", "hertz_wall_rescale_step", "linear_linear_constant", "hertz_normal_only"])
+def test_contact_force_energy_equals_c_and_contact_force(name):
+    m, cm = model(name), c_model(name)
+    L = max(m.history_len, 1)
+    scene = Scene(zlib.crc32(b"energy " + name.encode()), 8)
+    hp, hc, hf = np.zeros((scene.n, L)), np.zeros((scene.n, L)), np.zeros((scene.n, L))
+    dissipated = 0.0
+    for _ in range(100):
+        scene.step()
+        for i in range(scene.n):
+            args = scene.contact(i)
+            r, en = dc.contact_force_energy(m, *args, DT, hp[i] if m.history_len else None)
+            rf = dc.contact_force(m, *args, DT, hf[i] if m.history_len else None)
+            out, ce = cc.Result(), cc.Energy()
+            st = cc.force_energy(C.byref(cm), C.byref(cc.c_state(*args)), DT, cc.ptr(hc[i]), L if m.history_len else 0,
+                                 C.byref(out), C.byref(ce))
+            assert st == 0
+            assert bits(r.force) == bits(out.force) == bits(rf.force) and bits(r.torque1) == bits(out.torque1)
+            assert hp[i].tobytes() == hc[i].tobytes() == hf[i].tobytes()
+            assert isinstance(en, dc.ContactEnergy)
+            for f, _ in cc.Energy._fields_:
+                assert bits(getattr(en, f)) == bits(getattr(ce, f)), f
+            dissipated += en.dissipated
+    assert dissipated > 0
+
+
+def test_contact_force_energy_errors_and_ledger_sum():
+    m = model("hertz_full_rescale")
+    h = np.zeros(m.history_len)
+    with pytest.raises(dc.NotFiniteError, match="contact_force_energy"):
+        dc.contact_force_energy(m, *WALL[:1], math.nan, *WALL[2:], DT, h)
+    assert not h.any()  # untouched on error
+    with pytest.raises(TypeError, match="history"):
+        dc.contact_force_energy(m, *WALL, DT)
+    r, en = dc.contact_force_energy(m, *WALL, DT, h)
+    parts = (en.normal_damping + en.tangential_damping + en.tangential_slip + en.rolling_damping + en.rolling_slip
+             + en.twisting_damping + en.twisting_slip)
+    assert en.dissipated == pytest.approx(parts, rel=1e-15, abs=0)

@@ -27,7 +27,7 @@ use super::vec3::{
 use super::{rolling_constant, rolling_epsd, step_exact, twisting_sds};
 use crate::Error;
 use crate::force::pair::{Consts, Law, Visit, eval};
-use crate::force::registry::{dispatch, normal_force_raw};
+use crate::force::registry::{dispatch, normal_force_raw, unclamped};
 
 /// Inputs of n contacts.
 #[derive(Clone, Copy, Debug)]
@@ -365,22 +365,50 @@ fn twisting_pass(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_
     }
 }
 
-/// Pass 1b of a step-aware model: the normal force of each contact in contact replaced by the
-/// step-aware one ([`step_exact::contact_normal`], as the scalar path computes it).
+/// Pass 1 of a step-aware model: the normal force of each contact, the step-aware one
+/// ([`step_exact::contact_normal_with`] with the law's monomorphised kernel) in contact, the
+/// law's own force otherwise (as the scalar path computes them, bit for bit).
+struct StepPass<'a, 'b, 'c> {
+    m: &'b ContactModel,
+    inp: &'b BatchIn<'a>,
+    dt: f64,
+    o: &'b mut BatchOut<'c>,
+    at: usize,
+}
+
+impl Visit for StepPass<'_, '_, '_> {
+    type Out = ();
+    #[inline(always)]
+    fn visit<L: Law, const CLAMP: bool>(self) {
+        step_pass::<L>(self.m, self.inp, self.dt, self.o, self.at);
+    }
+}
+
 #[inline(never)]
-fn step_pass(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_>, at: usize) {
-    let it = states(b)
+fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_>, at: usize) {
+    let pair = &m.normal;
+    let it = b
+        .normal
+        .iter()
+        .zip(b.overlap)
+        .zip(b.v1.iter().zip(b.v2))
+        .zip(b.r1.iter().zip(b.r2).zip(b.m1.iter().zip(b.m2)))
         .zip(o.f_n.iter_mut().zip(o.force.iter_mut()))
         .zip(o.history.chunks_exact_mut(o.stride));
-    for ((s, (fo, fv)), h) in it {
-        if !(s.overlap > 0.0) {
-            continue;
-        }
-        let Some(slot) = h.get_mut(at) else { continue };
-        let k = Kin::of(&s);
-        let f = step_exact::contact_normal(m, &k, dt, slot);
+    for (((((&n, &d), (&v1, &v2)), ((&r1, &r2), (&m1, &m2))), (fo, fv)), h) in it {
+        // As Kin::of (same operations, same bits).
+        let vn = -dot(sub(v1, v2), n);
+        let (r, mm) = (harmonic(r1, r2), harmonic(m1, m2));
+        let f = match h.get_mut(at) {
+            Some(slot) if d > 0.0 => {
+                step_exact::contact_normal_with(m, d, vn, r, mm, dt, slot, |c, d, v, r, mm| {
+                    eval::<L, false>(&c, d, v, r, mm)
+                })
+            }
+            _ => normal_force_raw(pair.kernel, pair.consts, d, vn, r, mm),
+        };
         *fo = f;
-        *fv = normal_vector(f, k.n);
+        *fv = normal_vector(f, n);
     }
 }
 
@@ -487,18 +515,29 @@ fn compute(
     out: &mut BatchOut<'_>,
 ) -> Result<(), Error> {
     let pair = &m.normal;
-    dispatch(
-        pair.kernel,
-        NormalPass {
-            c: pair.consts,
-            inp,
-            f_n: out.f_n,
-            force: out.force,
-        },
-    )
-    .ok_or(Error::ContactModelInvalid)?;
     if let Some(at) = m.layout.step {
-        step_pass(m, inp, dt, out, at);
+        dispatch(
+            unclamped(pair.kernel),
+            StepPass {
+                m,
+                inp,
+                dt,
+                o: out,
+                at,
+            },
+        )
+        .ok_or(Error::ContactModelInvalid)?;
+    } else {
+        dispatch(
+            pair.kernel,
+            NormalPass {
+                c: pair.consts,
+                inp,
+                f_n: out.f_n,
+                force: out.force,
+            },
+        )
+        .ok_or(Error::ContactModelInvalid)?;
     }
     {
         for t in [out.torque1.as_deref_mut(), out.torque2.as_deref_mut()]

@@ -29,6 +29,8 @@ pub(crate) const FIT_N: [f64; 16] = [
 /// Onset phases of the phase mean that [`calibrate`] solves.
 pub(crate) const PHASES: usize = 64;
 /// The largest h the correction is designed for (t_H/10); larger h use R(1/10).
+///
+/// cbindgen:ignore
 pub const H_MAX: f64 = 0.1;
 /// R is kept within these bounds (the fit is not designed beyond its nodes).
 const R_MIN: f64 = 0.25;
@@ -52,10 +54,20 @@ impl StepExact {
     }
 }
 
-/// x^β for 0 ≤ β ≤ 1 (x^0 = 1 exactly; [`pow_dd`] needs β > 0).
+/// x^β for 0 ≤ β ≤ 1 (x^0 = 1 exactly; [`pow_dd`] needs β > 0). Hertz (β = 1/4) and p = 2
+/// (β = 1/2) by square roots: correctly rounded steps, a few times cheaper than a power (the
+/// onset and end corrections take five or six of these).
 #[inline(always)]
 fn pow_b(x: f64, beta: f64) -> f64 {
-    if beta > 0.0 { pow_dd(x, beta) } else { 1.0 }
+    if beta == 0.25 {
+        x.sqrt().sqrt()
+    } else if beta == 0.5 {
+        x.sqrt()
+    } else if beta > 0.0 {
+        pow_dd(x, beta)
+    } else {
+        1.0
+    }
 }
 
 /// The Hurwitz zeta function ζ(−β, x) for 0 ≤ β ≤ 1, x ≥ 1: Euler–Maclaurin after 4 terms with
@@ -187,9 +199,14 @@ pub(crate) fn h_of(scale: f64, p: f64, m: f64, k: f64, v: f64) -> f64 {
 /// The phase-mean realised e of one collision (m = k = v0 = 1, F = δ^p + α R δ^β δ', velocity
 /// Verlet in the LAMMPS order through [`normal_force`]) at step dt = t_H/n.
 fn mean_e(p: f64, alpha: f64, criterion: EndCriterion, n: f64, r: f64) -> f64 {
+    phases_e(p, alpha, criterion, n, r, 0.0).0
+}
+
+/// The phase mean of the realised e and the largest |e_j − e_n| over the phases j.
+fn phases_e(p: f64, alpha: f64, criterion: EndCriterion, n: f64, r: f64, e_n: f64) -> (f64, f64) {
     let beta = (p - 1.0) / 2.0;
     let dt = t_h_prefactor(p) / n;
-    let mut sum = 0.0;
+    let (mut sum, mut worst) = (0.0, 0.0f64);
     for j in 0..PHASES {
         let mut d = -(j as f64) / PHASES as f64 * dt;
         let (mut v, mut acc, mut slot, mut touched) = (1.0f64, 0.0f64, 0.0f64, false);
@@ -226,8 +243,9 @@ fn mean_e(p: f64, alpha: f64, criterion: EndCriterion, n: f64, r: f64) -> f64 {
             }
         }
         sum += e;
+        worst = worst.max((e - e_n).abs());
     }
-    sum / PHASES as f64
+    (sum / PHASES as f64, worst)
 }
 
 /// R with phase-mean e = target at dt = t_H/n, on the branch through R → 1; None when the
@@ -287,8 +305,9 @@ fn solve_r(p: f64, alpha: f64, criterion: EndCriterion, e: f64, n: f64) -> Optio
 /// least 8 nodes must be reachable (from the smallest h up); otherwise None.
 pub(crate) fn calibrate(p: f64, alpha: f64, criterion: EndCriterion, e: f64) -> Option<[f64; 5]> {
     use nalgebra::{SMatrix, SVector};
-    let mut a = SMatrix::<f64, 16, 5>::zeros();
-    let mut y = SVector::<f64, 16>::zeros();
+    // The normal equations of the least-squares fit, accumulated row by row.
+    let mut ata = SMatrix::<f64, 5, 5>::zeros();
+    let mut aty = SVector::<f64, 5>::zeros();
     let mut rows = 0;
     // From the smallest h up: stop at the first unreachable node.
     for &n in FIT_N.iter().rev() {
@@ -296,22 +315,16 @@ pub(crate) fn calibrate(p: f64, alpha: f64, criterion: EndCriterion, e: f64) -> 
             break;
         };
         let h = 1.0 / n;
-        let mut pw = 1.0;
-        for c in 0..5 {
-            a[(rows, c)] = pw;
-            pw *= h;
-        }
-        y[rows] = (r - 1.0) / h;
+        let v = SVector::<f64, 5>::from([1.0, h, h * h, h * h * h, h * h * h * h]);
+        ata += v * v.transpose();
+        aty += v * ((r - 1.0) / h);
         rows += 1;
     }
     if rows < 8 {
         return None;
     }
-    // Unused rows stay zero (they add nothing to the normal equations).
-    let ata = a.transpose() * a;
-    let aty = a.transpose() * y;
     let sol = ata.cholesky()?.solve(&aty);
-    let c = [sol[0], sol[1], sol[2], sol[3], sol[4]];
+    let c: [f64; 5] = sol.into();
     c.iter().all(|x| x.is_finite()).then_some(c)
 }
 
@@ -367,36 +380,134 @@ pub fn set_step(m: &ContactModel, dt: f64, integrator: i32) -> Result<ContactMod
     })
 }
 
-/// The step-aware normal force of one contact in contact (δ > 0) of a step-aware model;
-/// `slot` is its history double.
+/// The step-aware normal force of one contact in contact (δ > 0) of a step-aware model, from
+/// its overlap, overlap rate, R* and m* (as [`Kin`] has them); `slot` is its history double.
 #[inline(always)]
 pub(crate) fn contact_normal(m: &ContactModel, k: &Kin, dt: f64, slot: &mut f64) -> f64 {
+    contact_normal_of(m, k.d, k.vn, k.r_eff, k.m_eff, dt, slot)
+}
+
+/// [`contact_normal`] from the four numbers it reads.
+#[inline(always)]
+pub(crate) fn contact_normal_of(
+    m: &ContactModel,
+    d: f64,
+    vn: f64,
+    r_eff: f64,
+    m_eff: f64,
+    dt: f64,
+    slot: &mut f64,
+) -> f64 {
     let pair = &m.normal;
     let kernel = unclamped(pair.kernel);
+    contact_normal_with(m, d, vn, r_eff, m_eff, dt, slot, |c, d, v, r, mm| {
+        normal_force_raw(kernel, c, d, v, r, mm)
+    })
+}
+
+/// [`contact_normal_of`] with the law's unclamped force given (`law(consts, d, v, R*, m*)`):
+/// the batch passes its monomorphised kernel, the scalar path the registry's dispatch (the same
+/// arithmetic, the same bits).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn contact_normal_with(
+    m: &ContactModel,
+    d: f64,
+    vn: f64,
+    r_eff: f64,
+    m_eff: f64,
+    dt: f64,
+    slot: &mut f64,
+    law: impl Fn(Consts, f64, f64, f64, f64) -> f64,
+) -> f64 {
+    let pair = &m.normal;
     let x = StepIn {
-        d: k.d,
-        v: k.vn,
-        m: k.m_eff,
+        d,
+        v: vn,
+        m: m_eff,
         dt,
         beta: 0.5 * (pair.p - 1.0),
         criterion: pair.criterion,
     };
     let r_new = |v: f64| {
         let kc = if pair.model == MODEL_HERTZ {
-            pair.consts.k * k.r_eff.sqrt()
+            pair.consts.k * r_eff.sqrt()
         } else {
             pair.consts.k
         };
-        r_of_h(&m.step.coef, h_of(m.step.scale, pair.p, k.m_eff, kc, v))
+        r_of_h(&m.step.coef, h_of(m.step.scale, pair.p, m_eff, kc, v))
     };
     let raw = |r: f64, v: f64| {
         let c = Consts {
             c: pair.consts.c * r,
             ..pair.consts
         };
-        normal_force_raw(kernel, c, k.d, v, k.r_eff, k.m_eff)
+        law(c, d, v, r_eff, m_eff)
     };
     normal_force(x, slot, r_new, raw)
+}
+
+/// The largest step [s] at which the step-aware model realises e within relative tolerance `tol`
+/// at every contact-onset phase (velocity Verlet, LAMMPS order): the step-aware counterpart of
+/// [`crate::timestep::dt_for_accuracy`], same arguments (ω0 = √(k/m)). Found on the steps
+/// t_H/N (N ≥ 10: the correction is designed up to t_H/10, which is returned when it passes),
+/// N growing by 1.25× to the first passing step, then 6 bisections in ln N between the last
+/// failing and the first passing N, aiming at 0.9 tol; the returned step passed at all 64
+/// phases. An undamped law (e = 1) has nothing to correct: the plain answer.
+/// [`Error::StepUnreachable`] when no step down to t_H/8192 meets `tol`.
+pub fn dt_for_accuracy(
+    p: f64,
+    e: f64,
+    criterion: EndCriterion,
+    v0: f64,
+    omega0: f64,
+    tol: f64,
+) -> Result<f64, Error> {
+    if !(p.is_finite() && e.is_finite() && v0.is_finite() && omega0.is_finite() && tol.is_finite())
+    {
+        return Err(Error::NotFinite);
+    }
+    crate::powerlaw::transform::check_exponent(p)?;
+    if !(e > 0.0 && e <= 1.0) {
+        return Err(Error::RestitutionRange);
+    }
+    if !(v0 > 0.0 && omega0 > 0.0 && tol > 0.0) {
+        return Err(Error::NotPositive);
+    }
+    let alpha = crate::powerlaw::alpha_from_e(e, p, criterion)?;
+    if !(alpha > 0.0) {
+        return crate::timestep::dt_for_accuracy(p, e, criterion, v0, omega0, tol);
+    }
+    let coef = calibrate(p, alpha, criterion, e).ok_or(Error::StepUnreachable)?;
+    let passes = |n: f64| {
+        let (_, worst) = phases_e(p, alpha, criterion, n, r_of_h(&coef, 1.0 / n), e);
+        worst <= 0.9 * tol * e
+    };
+    let (mut fail, mut ok) = (f64::NAN, 10.0);
+    while !passes(ok) {
+        fail = ok;
+        ok *= 1.25;
+        if ok > 8192.0 {
+            return Err(Error::StepUnreachable);
+        }
+    }
+    if fail.is_finite() {
+        for _ in 0..6 {
+            let mid = (fail * ok).sqrt();
+            if passes(mid) {
+                ok = mid;
+            } else {
+                fail = mid;
+            }
+        }
+    }
+    // t_H = prefactor · (v0/ω0)^(2/(p+1)) / v0, in logs (the ratio alone may overflow).
+    let ln_th = t_h_prefactor(p).ln() + 2.0 / (p + 1.0) * (v0.ln() - omega0.ln()) - v0.ln();
+    let dt = (ln_th - ok.ln()).exp();
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(Error::ResultRange);
+    }
+    Ok(dt)
 }
 
 #[cfg(test)]

@@ -1,11 +1,16 @@
-//! `demcontact contact`: one Hertz collision from material data.
+//! `demcontact contact`: one Hertz collision from material data; with `--dt`, the same
+//! collision simulated at the host's step (the library's contact model, 64 onset phases) and the
+//! restitution it realises, plain and (`--step-aware`) with dc_contact_model_set_step.
 
 use crate::output::{Failure, Output, num};
 use crate::refused;
 use clap::ValueEnum;
+use demcontact::contact::spec::{damping, normal};
+use demcontact::contact::step_exact::{H_MAX, integrator, set_step};
+use demcontact::contact::{ContactModel, ContactSpec, ContactState, contact_force, contact_model};
 use demcontact::powerlaw::{self, Contact};
 use demcontact::{EndCriterion, material, timestep};
-use serde_json::json;
+use serde_json::{Value, json};
 use std::fmt::Write;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -15,6 +20,22 @@ pub enum Crit {
     /// The force may turn attractive; the contact ends at zero overlap.
     Overlap,
 }
+
+/// The host's integrator for `--dt`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Integ {
+    /// Velocity Verlet in the LAMMPS/LIGGGHTS order (the force from the new position and the
+    /// half-step velocity).
+    Verlet,
+    /// Symplectic Euler: the force from (x, v), then v, then x.
+    Euler,
+}
+
+/// Contact-onset phases of the `--dt` collisions (the first contact step at a gap of j/64 of one
+/// step's travel, j = 0..63), as dc_plan and docs/timestep.md.
+const PHASES: usize = 64;
+/// Largest t_H/dt `--dt` accepts: 64 collisions of that many steps stay under a second.
+const MAX_STEPS_PER_CONTACT: f64 = 1e5;
 
 /// Quadrature level for durations (DC_LEVEL_MAX: ~1e-12 relative).
 const LEVEL: u32 = 4;
@@ -63,6 +84,17 @@ pub struct Args {
     /// Relative accuracy of the realised e for the time step.
     #[arg(long, default_value_t = 1e-3)]
     tol: f64,
+    /// The host's time step [s]: simulate the collision at this step (the library's contact
+    /// model, 64 contact-onset phases) and print the restitution it realises.
+    #[arg(long)]
+    dt: Option<f64>,
+    /// With --dt: also simulate with the step-aware damping (dc_contact_model_set_step), which
+    /// realises the target e at that step.
+    #[arg(long = "step-aware", requires = "dt")]
+    step_aware: bool,
+    /// With --dt: the host's integrator.
+    #[arg(long, value_enum, default_value = "verlet", requires = "dt")]
+    integrator: Integ,
     /// Print one JSON object instead of text.
     #[arg(long)]
     pub json: bool,
@@ -150,6 +182,16 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
         Crit::Force => "force end (clamped)",
         Crit::Overlap => "overlap end",
     };
+    let stepped = match a.dt {
+        Some(h) => {
+            let elastic =
+                Contact::new(p, 0.0, a.v, omega0).map_err(|e| refused("collision (--v)", e))?;
+            let t_h = powerlaw::contact_duration(&elastic, EndCriterion::Overlap, LEVEL)
+                .map_err(|e| refused("elastic contact duration", e))?;
+            Some(at_step(a, crit, m1, t_h, h)?)
+        }
+        None => None,
+    };
     let mut text = String::new();
     let _ = writeln!(
         text,
@@ -191,6 +233,39 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
         "  dt for |Δe/e| <= {}    {dt:.6e} s  (velocity Verlet, any contact phase)",
         a.tol
     );
+    if let Some(st) = &stepped {
+        let _ = writeln!(
+            text,
+            "  e realised at dt = {:.6e} s ({}, dt = t_Hertz/{:.2}, {PHASES} onset phases):",
+            st.dt,
+            match a.integrator {
+                Integ::Verlet => "velocity Verlet",
+                Integ::Euler => "symplectic Euler",
+            },
+            st.t_hertz / st.dt
+        );
+        let mut row = |name: &str, r: &Realised| {
+            let _ = writeln!(
+                text,
+                "    {name:<11} mean {:.6}  range {:.6} .. {:.6}  (mean {:+.3} % from target)",
+                r.mean,
+                r.min,
+                r.max,
+                100.0 * (r.mean / a.e - 1.0)
+            );
+        };
+        row("plain", &st.plain);
+        if let Some(r) = &st.step_aware {
+            row("step-aware", r);
+        }
+        if st.dt > H_MAX * st.t_hertz {
+            let _ = writeln!(
+                text,
+                "    note: dt > t_Hertz/{}: beyond the step-aware calibration (docs/timestep.md)",
+                1.0 / H_MAX
+            );
+        }
+    }
     let json = json!({
         "command": "contact",
         "criterion": format!("{:?}", a.criterion).to_lowercase(),
@@ -203,6 +278,192 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
         "duration_overlap_end": tau_overlap.map_or(serde_json::Value::Null, num),
         "duration_force_end": num(tau_force),
         "dt_tol": num(a.tol), "dt": num(dt),
+        "at_step": stepped.as_ref().map_or(Value::Null, |st| json!({
+            "dt": num(st.dt),
+            "integrator": format!("{:?}", a.integrator).to_lowercase(),
+            "t_hertz": num(st.t_hertz),
+            "dt_over_t_hertz": num(st.dt / st.t_hertz),
+            "within_calibration": st.dt <= H_MAX * st.t_hertz,
+            "phases": PHASES,
+            "plain": st.plain.json(),
+            "step_aware": st.step_aware.as_ref().map_or(Value::Null, Realised::json),
+        })),
     });
     Ok(Output { text, json })
+}
+
+/// Realised restitution over the onset phases.
+struct Realised {
+    mean: f64,
+    min: f64,
+    max: f64,
+    /// One per phase, j = 0..PHASES.
+    phases: Vec<f64>,
+}
+
+impl Realised {
+    fn json(&self) -> Value {
+        json!({
+            "mean": num(self.mean), "min": num(self.min), "max": num(self.max),
+            "phases": self.phases.iter().map(|&x| num(x)).collect::<Vec<_>>(),
+        })
+    }
+}
+
+/// The `--dt` figures.
+struct AtStep {
+    dt: f64,
+    t_hertz: f64,
+    plain: Realised,
+    step_aware: Option<Realised>,
+}
+
+/// The collision of `a` at the host's step `h` through the library's contact model (Hertz,
+/// restitution damping for `crit`): plain, and step-aware with `--step-aware`.
+fn at_step(a: &Args, crit: EndCriterion, m1: f64, t_h: f64, h: f64) -> Result<AtStep, Failure> {
+    let flag = format!("--dt {h:e}");
+    if !h.is_finite() {
+        return Err(refused(&flag, demcontact::Error::NotFinite));
+    }
+    if !(h > 0.0) {
+        return Err(refused(&flag, demcontact::Error::NotPositive));
+    }
+    if t_h / h > MAX_STEPS_PER_CONTACT {
+        return Err(Failure::usage(format!(
+            "{flag}: t_Hertz/dt = {:.3e} steps per contact, more than {MAX_STEPS_PER_CONTACT:e}: \
+             use a larger --dt (t_Hertz = {t_h:.6e} s)",
+            t_h / h
+        )));
+    }
+    let (e2, nu2) = (a.E2.unwrap_or(a.E1), a.nu2.unwrap_or(a.nu1));
+    let spec = ContactSpec {
+        normal: normal::HERTZ,
+        damping: damping::RESTITUTION,
+        criterion: crit.code(),
+        e1: a.E1,
+        nu1: a.nu1,
+        e2,
+        nu2,
+        e_n: a.e,
+        ..ContactSpec::default()
+    };
+    let model = contact_model(&spec)
+        .map_err(|e| refused("contact model from --E1 --nu1 --E2 --nu2 --e", e))?;
+    let (r2, m2) = if a.wall {
+        (f64::INFINITY, f64::INFINITY)
+    } else {
+        let (rho2, r2) = (a.rho2.unwrap_or(a.rho1), a.R2.unwrap_or(a.R1));
+        (r2, rho2 * 4.0 / 3.0 * std::f64::consts::PI * r2 * r2 * r2)
+    };
+    let verlet = a.integrator == Integ::Verlet;
+    let bodies = Bodies {
+        r1: a.R1,
+        m1,
+        r2,
+        m2,
+    };
+    // Steps allowed per collision: ten elastic durations and some (the damped contact lasts
+    // less than the elastic one; the approach takes one step).
+    let cap = (10.0 * t_h / h) as usize + 1000;
+    let realise = |m: &ContactModel| -> Result<Realised, Failure> {
+        let mut phases = Vec::with_capacity(PHASES);
+        for j in 0..PHASES {
+            let e = collide(m, &bodies, a.v, h, j, verlet, cap).map_err(|e| refused(&flag, e))?;
+            phases.push(e);
+        }
+        let mean = phases.iter().sum::<f64>() / PHASES as f64;
+        let min = phases.iter().copied().fold(f64::INFINITY, f64::min);
+        let max = phases.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Ok(Realised {
+            mean,
+            min,
+            max,
+            phases,
+        })
+    };
+    let plain = realise(&model)?;
+    let step_aware = if a.step_aware {
+        let code = if verlet {
+            integrator::VELOCITY_VERLET
+        } else {
+            integrator::SYMPLECTIC_EULER
+        };
+        let stepped =
+            set_step(&model, h, code).map_err(|e| refused(&format!("{flag} --step-aware"), e))?;
+        Some(realise(&stepped)?)
+    } else {
+        None
+    };
+    Ok(AtStep {
+        dt: h,
+        t_hertz: t_h,
+        plain,
+        step_aware,
+    })
+}
+
+/// Body 1 (radius, mass) against body 2 (a sphere, or a wall: both infinite).
+struct Bodies {
+    r1: f64,
+    m1: f64,
+    r2: f64,
+    m2: f64,
+}
+
+/// Realised e of one head-on collision at onset phase j: body 1 approaches body 2 (at rest)
+/// at speed v along the normal, the first step starting at a gap of j/PHASES of one step's
+/// travel; the integrator advances both bodies with the force of `contact_force` (the model's
+/// history carried), until the overlap is back to zero. e = separation speed / v.
+fn collide(
+    m: &ContactModel,
+    b: &Bodies,
+    v: f64,
+    h: f64,
+    j: usize,
+    verlet: bool,
+    cap: usize,
+) -> Result<f64, demcontact::Error> {
+    let mut hist = [0.0; demcontact::contact::HISTORY_MAX];
+    let len = m.layout.len.min(hist.len());
+    let mut d = -(j as f64) / PHASES as f64 * v * h;
+    // Velocities along the normal (from body 2 to body 1): body 1 moves towards body 2.
+    let (mut u1, mut u2) = (-v, 0.0);
+    let (mut a1, mut a2) = (0.0, 0.0);
+    let mut touched = false;
+    let mut force = |d: f64, u1: f64, u2: f64| -> Result<f64, demcontact::Error> {
+        let s = ContactState {
+            n: [0.0, 0.0, 1.0],
+            overlap: d,
+            v1: [0.0, 0.0, u1],
+            v2: [0.0, 0.0, u2],
+            w1: [0.0; 3],
+            w2: [0.0; 3],
+            r1: b.r1,
+            r2: b.r2,
+            m1: b.m1,
+            m2: b.m2,
+        };
+        let hs = hist.get_mut(..len).unwrap_or_default();
+        Ok(contact_force(m, &s, h, hs)?.force[2])
+    };
+    for _ in 0..cap {
+        if verlet {
+            let (h1, h2) = (u1 + 0.5 * h * a1, u2 + 0.5 * h * a2);
+            d -= h * (h1 - h2);
+            touched |= d > 0.0;
+            let f = force(d, h1, h2)?;
+            (a1, a2) = (f / b.m1, -f / b.m2);
+            (u1, u2) = (h1 + 0.5 * h * a1, h2 + 0.5 * h * a2);
+        } else {
+            let f = force(d, u1, u2)?;
+            u1 += h * f / b.m1;
+            u2 -= h * f / b.m2;
+            d -= h * (u1 - u2);
+            touched |= d > 0.0;
+        }
+        if touched && d <= 0.0 {
+            return Ok((u1 - u2) / v);
+        }
+    }
+    Err(demcontact::Error::NoEvent)
 }

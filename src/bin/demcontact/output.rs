@@ -24,6 +24,8 @@ pub enum Kind {
     },
     /// Output file not written (exit 4).
     Output { file: String },
+    /// A value the command line may not take although it parses (exit 2, as clap's errors).
+    Usage,
 }
 
 /// A failure: message and kind.
@@ -66,9 +68,17 @@ impl Failure {
         }
     }
 
+    pub fn usage(message: String) -> Self {
+        Self {
+            message,
+            kind: Kind::Usage,
+        }
+    }
+
     pub fn exit_code(&self) -> u8 {
         match self.kind {
             Kind::Refused(_) => 1,
+            Kind::Usage => 2,
             Kind::Input { .. } => 3,
             Kind::Output { .. } => 4,
         }
@@ -85,6 +95,7 @@ impl Failure {
                 json!({ "file": file, "line": line, "column": column }),
             ),
             Kind::Output { file } => ("output", json!({ "file": file })),
+            Kind::Usage => ("usage", json!({})),
         };
         let mut err = serde_json::Map::new();
         err.insert("message".into(), json!(self.message));

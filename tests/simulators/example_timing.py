@@ -1,0 +1,155 @@
+#!/usr/bin/env python3
+"""Loop time of LAMMPS's own granular example examples/granular/in.pour.flatwall (Debian package
+lammps-examples) without rolling resistance, demcontact against the builtin `pair_style granular`
+with the same parameters (issue 33's speed measure):
+
+  example_timing.py --plugin demcontactplugin.so [--before LABEL=old.so ...] [--np 2] [--reps 3]
+                    [--steps N] [--workdir DIR] [--lmp lmp] [--deck in.pour.flatwall]
+
+Decks (only the pair and wall lines of the example change; printed):
+  granular            pair_style granular; pair_coeff * * hertz/material 1000.0 0.5 0.3 tangential
+                      mindlin NULL 1.0 0.5 (the example's type-1 E, nu, mu; its damping coefficient
+                      0.5, LAMMPS' default viscoelastic damping); the wall line unchanged
+                      (hertz/material 1e5 1e3 0.3 tangential mindlin NULL 1.0 0.5 zplane 0 NULL)
+  demcontact          pair_style demcontact; pair_coeff * * hertz/material 1000.0 0.5 0.3 tangential
+                      mindlin NULL 1.0 0.5 (restitution e = 0.5, tangential e_t = 1, mu = 0.5; the
+                      default carry); fix demcontact/wall hertz/material 1e5 0.5 0.3 tangential
+                      mindlin NULL 1.0 0.5 zplane 0 NULL
+  demcontact_project  the same with `carry project` on the pair and wall lines
+  LABEL               (--before) an older plugin with the demcontact decks, both carries
+
+The models run alternately (granular, demcontact, demcontact_project, [LABEL, LABEL_project],
+granular, ...), each --reps times for each rank count (1, and --np when > 1); the minimum is
+kept. Printed per model: loop time ("Loop time"), pair, neighbour and modify time (LAMMPS' task
+timing breakdown, average over ranks), neighbour-list builds, atoms at the end, and the loop ratio
+to the builtin. Exit 77 when LAMMPS or the deck is not installed.
+"""
+import argparse
+import os
+import re
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import harness as H  # noqa: E402
+
+DECK = "/usr/share/lammps/examples/granular/in.pour.flatwall"
+PAIR = "hertz/material 1000.0 0.5 0.3 tangential mindlin NULL 1.0 0.5"
+WALL = "hertz/material 1e5 0.5 0.3 tangential mindlin NULL 1.0 0.5"
+
+
+def decks(text, plugin, carry, steps):
+    """(builtin deck, our deck) of the example: only the pair and wall lines (and `run` with
+    --steps) changed."""
+    b, o = [], []
+    extra = " carry %s" % carry if carry else ""
+    for line in text.splitlines():
+        f = line.split()
+        if f[:1] == ["pair_style"]:
+            b.append(line)
+            o.append("plugin load %s\npair_style demcontact" % os.path.abspath(plugin))
+        elif f[:1] == ["pair_coeff"]:
+            if not any(l.startswith("pair_coeff * *") for l in b):
+                b.append("pair_coeff * * " + PAIR)
+                o.append("pair_coeff * * " + PAIR + extra)
+        elif len(f) > 4 and f[0] == "fix" and f[3] == "wall/gran":
+            m = re.search(r"\b(xplane|yplane|zplane|zcylinder)\b.*$", line)
+            b.append(line)
+            o.append("fix %s %s demcontact/wall %s%s %s" % (f[1], f[2], WALL, extra, m.group(0)))
+        elif f[:1] == ["run"] and steps:
+            b.append("run %d" % steps)
+            o.append("run %d" % steps)
+        else:
+            b.append(line)
+            o.append(line)
+    return "\n".join(b) + "\n", "\n".join(o) + "\n"
+
+
+def times(log):
+    t = open(log).read()
+    loop = float(re.search(r"Loop time of ([0-9.eE+-]+) on", t).group(1))
+    sec = {}
+    for name in ("Pair", "Neigh", "Modify"):
+        m = re.search(r"^%s\s*\|\s*[0-9.eE+-]+\s*\|\s*([0-9.eE+-]+)" % name, t, re.M)
+        if not m:
+            raise SystemExit("example_timing: no %s time in %s" % (name, log))
+        sec[name] = float(m.group(1))
+    builds = int(re.search(r"Neighbor list builds = (\d+)", t).group(1))
+    atoms = int(re.search(r"for \d+ steps with (\d+) atoms", t).group(1))
+    return loop, sec["Pair"], sec["Neigh"], sec["Modify"], builds, atoms
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--plugin", required=True)
+    ap.add_argument("--before", action="append", default=[],
+                    help="an older build of the plugin (LABEL=PATH), timed in the same alternation; repeatable")
+    ap.add_argument("--np", type=int, default=1)
+    ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--steps", type=int, default=0, help="run length (default: the deck's own, 5000)")
+    ap.add_argument("--workdir")
+    ap.add_argument("--lmp")
+    ap.add_argument("--deck", default=DECK)
+    a = ap.parse_args()
+    if a.reps < 1 or a.steps < 0 or a.np < 1:
+        raise SystemExit("example_timing: --reps and --np must be >= 1, --steps >= 0")
+    import lammps_runs
+    exe = lammps_runs.find_lmp(a.lmp)
+    if not os.path.exists(a.deck):
+        print("SKIPPED: example_timing (%s missing: apt-get install lammps-examples)" % a.deck)
+        raise SystemExit(H.SKIP)
+    mpirun = os.path.join(os.path.dirname(exe), "mpirun")
+    env = H.mpi_env()
+    d = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_example_timing_"))
+    os.makedirs(d, exist_ok=True)
+    text = open(a.deck).read()
+    plugins = [("demcontact", a.plugin)]
+    for b in a.before:
+        lab, sep, p = b.partition("=")
+        if not sep or not lab or lab in ("granular", "demcontact", "demcontact_project") \
+                or lab in [q[0] for q in plugins]:
+            raise SystemExit("example_timing: --before wants LABEL=PATH with a new label, got %r" % b)
+        plugins.append((lab, p))
+    models = []
+    builtin, _ = decks(text, a.plugin, None, a.steps)
+    models.append(("granular", builtin))
+    for lab, p in plugins:
+        if not os.path.exists(p):
+            raise SystemExit("example_timing: no plugin %s" % p)
+        models.append((lab, decks(text, p, None, a.steps)[1]))
+        models.append((lab + "_project", decks(text, p, "project", a.steps)[1]))
+    for lab, deck in models:
+        open(os.path.join(d, "in.%s" % lab), "w").write(deck)
+    print("Decks in %s; lines changed against %s:" % (d, a.deck))
+    for lab, deck in models[:3]:
+        old = set(text.splitlines())
+        print("  %s: %s" % (lab, " | ".join(l for l in deck.splitlines() if l not in old)))
+    nps = [1] + ([a.np] if a.np > 1 else [])
+    best = {}
+    load0 = open("/proc/loadavg").read().split()[:3]
+    for np_ in nps:
+        for r in range(a.reps):
+            for lab, _ in models:
+                log = "log.%s.np%d.%d" % (lab, np_, r)
+                H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.%s" % lab, "-log", log], d, env)
+                t = times(os.path.join(d, log))
+                b = best.get((lab, np_))
+                best[(lab, np_)] = t if b is None else tuple(min(x, y) for x, y in zip(b[:4], t[:4])) + t[4:]
+    load1 = open("/proc/loadavg").read().split()[:3]
+    print()
+    print("## in.pour.flatwall without rolling, %s steps, minimum of %d alternating runs "
+          "(load average at the start: %s; at the end: %s)"
+          % (a.steps or "the deck's", a.reps, " ".join(load0), " ".join(load1)))
+    print()
+    print("| model | ranks | loop [s] | pair [s] | neigh [s] | modify [s] | builds | atoms | loop ratio |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for np_ in nps:
+        ref = best[("granular", np_)][0]
+        for lab, _ in models:
+            b = best[(lab, np_)]
+            print("| %s | %d | %.3f | %.3f | %.3f | %.3f | %d | %d | %.3f |"
+                  % (lab, np_, b[0], b[1], b[2], b[3], b[4], b[5], b[0] / ref))
+
+
+if __name__ == "__main__":
+    main()
