@@ -109,13 +109,7 @@ def lammps_deck(plugin, geom, crit, variant, targets, dt, steps, cols, np_, dt_r
     if geom == "wall":
         for t, e in enumerate(targets, start=1):
             L += ["group g%d type %d" % (t, t), "fix w%d g%d demcontact/wall %s zplane 0 NULL" % (t, t, coeff(e))]
-    if dt_reset:
-        # the styles' init sees DT_RESET_FACTOR dt; fix dt/reset (at most dt; Xmax = 1 m: always
-        # that bound) sets dt in its setup, after that init: the models must follow (reset_dt)
-        L += ["timestep %.17g" % (DT_RESET_FACTOR * dt),
-              "fix dtr all dt/reset 1 %.17g %.17g 1.0 units box" % (0.5 * dt, dt)]
-    else:
-        L.append("timestep %.17g" % dt)
+    L += dt_lines(dt, dt_reset)
     L += ["fix integr all nve/sphere", "thermo_style custom step dt time", "thermo 1", "run %d" % steps,
           "write_dump all custom final.dump id type vx vy vz modify format float %.17g"]
     return "\n".join(L) + "\n"
@@ -136,7 +130,17 @@ def run_lammps(a, geom, crit, variant, targets, workdir):
 
 
 # ------------------------------------------------------------------ LIGGGHTS
-def liggghts_deck(geom, crit, variant, targets, dt, steps, cols, submodels, np_):
+def dt_lines(dt, dt_reset):
+    """timestep (and --dt-reset's fix dt/reset), the same in both codes"""
+    if not dt_reset:
+        return ["timestep %.17g" % dt]
+    # the styles' init sees DT_RESET_FACTOR dt; fix dt/reset (at most dt; Xmax = 1 m: always that
+    # bound) sets dt in its setup, after that init: the models must follow (LAMMPS: reset_dt;
+    # LIGGGHTS: at the first contact after the change)
+    return ["timestep %.17g" % (DT_RESET_FACTOR * dt), "fix dtr all dt/reset 1 %.17g %.17g 1.0 units box" % (0.5 * dt, dt)]
+
+
+def liggghts_deck(geom, crit, variant, targets, dt, steps, cols, submodels, np_, dt_reset=False):
     n = len(targets)
     model = "model demcontact " + submodels
     settings = ""
@@ -158,7 +162,7 @@ def liggghts_deck(geom, crit, variant, targets, dt, steps, cols, submodels, np_)
                                                                                                range(n * n))),
          "fix m5 all property/global coefficientRollingFriction peratomtypepair %d %s" % (
              n, " ".join("0" for _ in range(n * n))),
-         "pair_style gran " + model + settings, "pair_coeff * *", "timestep %.17g" % dt]
+         "pair_style gran " + model + settings, "pair_coeff * *"] + dt_lines(dt, dt_reset)
     L += atoms_lines(geom, cols, "create_atoms %d single %.17g %.17g %.17g units box")
     if geom == "wall":
         # one wall per atom type, of that type (its e with the wall: coefficientRestitution t-t);
@@ -179,7 +183,7 @@ def run_liggghts(a, geom, crit, variant, targets, workdir):
     d = os.path.join(workdir, "%s_%s_%s" % (geom, crit, variant))
     os.makedirs(d, exist_ok=True)
     open(os.path.join(d, "in.step"), "w").write(liggghts_deck(geom, crit, variant, targets, dt, steps, cols,
-                                                              a.liggghts_submodels, a.np))
+                                                              a.liggghts_submodels, a.np, a.dt_reset))
     H.run(H.mpi_prefix(a.np) + [exe, "-in", "in.step", "-log", "log.liggghts"], d, env)
     return realised(geom, cols, H.read_last_dump(os.path.join(d, "final.dump")))
 
@@ -214,10 +218,8 @@ def main():
                     help="LIGGGHTS: the sub-models after 'model demcontact' (e.g. 'tangential demcontact "
                          "rolling_friction demcontact')")
     ap.add_argument("--dt-reset", action="store_true",
-                    help="LAMMPS: timestep %g dt, fix dt/reset sets dt after the styles' init" % DT_RESET_FACTOR)
+                    help="timestep %g dt, fix dt/reset sets dt after the styles' init" % DT_RESET_FACTOR)
     a = ap.parse_args()
-    if a.dt_reset and a.sim != "lammps":
-        ap.error("--dt-reset: LAMMPS only")
     if a.np not in (1, 2):
         ap.error("--np must be 1 or 2 (got %d)" % a.np)
     if a.phases < 1:
