@@ -5,7 +5,7 @@
 #![allow(dead_code)]
 
 use demcontact::contact::spec::{damping, normal};
-use demcontact::contact::{ContactModel, ContactSpec, ContactState, contact_force, contact_model};
+use demcontact::contact::{ContactModel, ContactSpec, ContactState, contact_force};
 
 /// Contact-onset phases per case.
 pub const PHASES: usize = 64;

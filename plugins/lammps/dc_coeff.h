@@ -19,6 +19,10 @@
  *                                      alpha then comes from the force-zero calibration
  *   tangential mindlin NULL e_t mu     Mindlin k_t = 8 G* a from E, nu; tangential restitution e_t
  *                                      in the sticking regime (1: undamped), Coulomb limit mu
+ *   tangential mindlin_rescale NULL e_t mu
+ *                                      the same with the spring force rescaled when the contact
+ *                                      radius changes (DC_TANGENTIAL_MINDLIN_RESCALE: no energy
+ *                                      gained on unloading; docs/force.md)
  *   tangential linear_history k_t e_t mu    fixed k_t [force/length]
  *   rolling sds k_r eta_r mu_r         elastic-plastic spring-dashpot (EPSD), limit mu_r R* Fn;
  *                                      k_r = NULL or 0: Ai et al.'s rule from the normal stiffness
@@ -31,14 +35,22 @@
  *                                      the new tangent plane and rescaled to the old length, as
  *                                      pair_style granular's mindlin/sds; cheaper, not objective
  *                                      about the normal). No effect without a history spring.
+ *   step_exact                         realise e at the run's time step, not only in the continuous
+ *                                      contact (dc_contact_model_set_step with LAMMPS' dt and
+ *                                      velocity Verlet, DC_INTEGRATOR_VELOCITY_VERLET; docs/timestep.md):
+ *                                      one more double of history per contact. Hertz with damping
+ *                                      restitution only (viscoelastic: rejected, naming step_exact).
+ *                                      The styles set the step at every run's init and again when
+ *                                      LAMMPS changes dt during a run (fix dt/reset, timestep: reset_dt).
  *
- * With any tangential/rolling/twisting keyword the contact is demcontact's full contact
- * (dc_contact_model_init / dc_contact_force, per-contact history); without, the normal law alone
- * (dc_pair / dc_normal_force, no history). The full contact needs the Hertz exponent 1.5.
+ * With any tangential/rolling/twisting keyword or step_exact the contact is demcontact's full
+ * contact (dc_contact_model_init / dc_contact_force, per-contact history); without, the normal law
+ * alone (dc_pair / dc_normal_force, no history). The full contact needs the Hertz exponent 1.5.
  *
  * Mixing (pair_coeff I J not given, I != J): each body keeps its own type's E and nu (combined
  * exactly into E*); e, A, e_t, mu, k_t, mu_r, k_r, eta_r, mu_tw, k_tw, eta_tw are the geometric
- * means of the two types' values; the exponent, the sub-model choices and the carry must agree.
+ * means of the two types' values; the exponent, the sub-model choices, the carry and step_exact must
+ * agree.
  */
 #ifndef DEMCONTACT_LAMMPS_COEFF_H
 #define DEMCONTACT_LAMMPS_COEFF_H
@@ -73,9 +85,11 @@ struct Coeff {
     int tangential = DC_TANGENTIAL_NONE, rolling = DC_ROLLING_NONE, twisting = DC_TWISTING_NONE;
     double mu = 0, k_t = NAN, e_t = 1, mu_r = 0, k_r = 0, eta_r = 0, mu_tw = 0, k_tw = NAN, eta_tw = 0;
     int carry = DC_CARRY_ROTATE; // frame carry of the history springs (keyword carry)
+    bool step_exact = false;     // keyword step_exact: dc_contact_model_set_step at the run's dt
     bool full() const
     {
-        return tangential != DC_TANGENTIAL_NONE || rolling != DC_ROLLING_NONE || twisting != DC_TWISTING_NONE;
+        return tangential != DC_TANGENTIAL_NONE || rolling != DC_ROLLING_NONE || twisting != DC_TWISTING_NONE ||
+               step_exact;
     }
 };
 
@@ -184,15 +198,17 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
             }
         } else if (k == "tangential") {
             const std::string law = i + 1 < narg ? arg[i + 1] : "";
-            if (law == "mindlin") {
-                c.tangential = DC_TANGENTIAL_MINDLIN;
+            if (law == "mindlin" || law == "mindlin_rescale") {
+                c.tangential = law == "mindlin" ? DC_TANGENTIAL_MINDLIN : DC_TANGENTIAL_MINDLIN_RESCALE;
                 if (i + 2 >= narg || std::strcmp(arg[i + 2], "NULL") != 0)
-                    error->all(FLERR, "{}: tangential mindlin takes k_t from E and nu: write 'tangential mindlin NULL e_t mu'", what);
+                    error->all(FLERR, "{}: tangential {} takes k_t from E and nu: write 'tangential {} NULL e_t mu'",
+                               what, law, law);
             } else if (law == "linear_history") {
                 c.tangential = DC_TANGENTIAL_LINEAR;
                 c.k_t = num(i + 2, "k_t");
             } else {
-                error->all(FLERR, "{}: unknown tangential model '{}' (mindlin or linear_history)", what, law);
+                error->all(FLERR, "{}: unknown tangential model '{}' (mindlin, mindlin_rescale or linear_history)",
+                           what, law);
             }
             c.e_t = num(i + 3, "e_t");
             c.mu = num(i + 4, "mu");
@@ -229,6 +245,9 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
                 error->all(FLERR, "{}: carry '{}' rejected by demcontact: {} (carry rotate or carry project)", what,
                            v, dc_status_str(DC_ERR_SPEC_MODEL));
             i += 2;
+        } else if (k == "step_exact") {
+            c.step_exact = true;
+            i += 1;
         } else {
             error->all(FLERR, "{}: unknown keyword '{}'", what, k);
         }
@@ -257,6 +276,7 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
         s = viscoelastic_A(c, c.clamp, &c.A);
         if (s != DC_OK) reject("e (viscoelastic calibration)", c.e, s);
     }
+    if (c.step_exact && c.p != 1.5) error->all(FLERR, "{}: step_exact needs the Hertz exponent 1.5 (got {})", what, c.p);
     if (c.full()) {
         if (c.p != 1.5) error->all(FLERR, "{}: tangential/rolling/twisting need the Hertz exponent 1.5 (got {})", what, c.p);
         // the library validates the whole spec; on failure, name the first parameter that fails
@@ -268,6 +288,13 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
             s = dc_contact_model_set_carry(&cm, c.carry);
             if (s != DC_OK)
                 error->all(FLERR, "{}: carry {} rejected by demcontact: {}", what, c.carry, dc_status_str(s));
+            // what the styles' init will ask with the run's dt: whether this model has a
+            // step-aware form at all (its answer does not depend on dt, any dt > 0 asks it)
+            if (c.step_exact) {
+                s = dc_contact_model_set_step(&cm, 1.0, DC_INTEGRATOR_VELOCITY_VERLET);
+                if (s != DC_OK)
+                    error->all(FLERR, "{}: step_exact rejected by demcontact: {}", what, dc_status_str(s));
+            }
         }
         if (s != DC_OK) {
             Coeff ok = c;
@@ -301,6 +328,7 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
    contact (dc_contact_model, history of nh doubles per contact). */
 struct Model {
     bool full = false;
+    bool step_exact = false; // step-aware (dc_contact_model_set_step): set_dt at every dt change
     int nh = 0;
     dc_pair pair{};
     dc_contact_model cm{};
@@ -309,17 +337,24 @@ struct Model {
     demcontact_shaped::Eval eval = &demcontact_shaped::eval_fn<demcontact_shaped::Generic>;
 };
 
-/* Build the model of a contact between materials a (body 1) and b (body 2), per-pair values from m. */
-inline int32_t make_model(const Coeff &a, const Coeff &b, const Coeff &m, Model &out)
+/* Build the model of a contact between materials a (body 1) and b (body 2), per-pair values from m;
+   dt: the run's time step, for step_exact (dc_contact_model_set_step, which also sets the history
+   length: one more double). */
+inline int32_t make_model(const Coeff &a, const Coeff &b, const Coeff &m, Model &out, double dt)
 {
     const bool clamp = a.clamp || b.clamp;
     out.full = m.full();
+    out.step_exact = m.step_exact;
     if (out.full) {
         dc_contact_spec sp = full_spec(a, b, m);
         int32_t s = dc_contact_model_init(&sp, &out.cm);
         if (s != DC_OK) return s;
         s = dc_contact_model_set_carry(&out.cm, m.carry); // keyword carry (default rotate)
         if (s != DC_OK) return s;
+        if (m.step_exact) {
+            s = dc_contact_model_set_step(&out.cm, dt, DC_INTEGRATOR_VELOCITY_VERLET);
+            if (s != DC_OK) return s;
+        }
         size_t len = 0;
         s = dc_contact_history_len(&out.cm, &len);
         out.nh = static_cast<int>(len);
@@ -334,6 +369,17 @@ inline int32_t make_model(const Coeff &a, const Coeff &b, const Coeff &m, Model 
     if (m.damping == DAMP_VISCOELASTIC)
         return dc_pair_viscoelastic(a.E, a.nu, b.E, b.nu, m.A, clamp ? DC_END_FORCE : DC_END_OVERLAP, &out.pair);
     return demcontact_sim::contact_setup(a.E, a.nu, b.E, b.nu, m.e, a.p, clamp, &out.pair);
+}
+
+/* A step_exact model made step-aware for a new time step dt (LAMMPS changed it: a run's init, fix
+   dt/reset, timestep); no-op for the others. The history length and the model's shape do not
+   change (the calibration is kept: cheap). On error the model is unchanged. */
+inline int32_t set_model_dt(Model &m, double dt)
+{
+    if (!m.step_exact) return DC_OK;
+    const int32_t s = dc_contact_model_set_step(&m.cm, dt, DC_INTEGRATOR_VELOCITY_VERLET);
+    if (s != DC_OK) return s;
+    return dc_contact_model_check_inline(&m.cm);
 }
 
 /* One contact's kinematics (demcontact's dc_contact_state): n points from body 2 to body 1; a wall

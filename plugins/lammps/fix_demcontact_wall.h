@@ -14,6 +14,10 @@
  * again with the same ID after read_restart and the histories are restored (a restart written with
  * another history length restores none, with a warning). Model, history storage and the contact's
  * evaluation: fix_demcontact_wall_base.h (shared with fix demcontact/wall/region).
+ *
+ * step_exact (as in pair_coeff): the model is made step-aware for update->dt when the fix is
+ * defined (which fixes its history length), again at every run's init and in reset_dt() (fix
+ * dt/reset, timestep during a run): fix_demcontact_wall_base.h, for both wall fixes.
  */
 #ifndef DEMCONTACT_LAMMPS_FIX_WALL_H
 #define DEMCONTACT_LAMMPS_FIX_WALL_H

@@ -54,7 +54,11 @@ public:
     {
         if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
             error->all(FLERR, "fix {} {} requires atom_style sphere", id, style);
+        apply_dt();
     }
+
+    /* fix dt/reset, or timestep between runs: a step_exact model follows the new dt. */
+    void reset_dt() override { apply_dt(); }
 
     void setup(int vflag) override { post_force(vflag); }
 
@@ -125,6 +129,15 @@ public:
     double memory_usage() override { return (double)atom->nmax * nslot * (sizeof(int) + sizeof(double) * nh); }
 
 protected:
+    /* step_exact: the model follows update->dt (no-op otherwise; the history length is unchanged). */
+    void apply_dt()
+    {
+        const int32_t s = set_model_dt(model, update->dt);
+        if (s != DC_OK)
+            error->all(FLERR, "fix {} {}: step_exact at timestep {} rejected by demcontact: {}", id, style,
+                       update->dt, dc_status_str(s));
+    }
+
     /* The wall's contact model from arg[0..narg) (what = "fix ID style" for messages), and per-atom
        history storage of `slots` slots when the model has a history. */
     void setup_model(int narg, char **arg, int slots)
@@ -132,8 +145,10 @@ protected:
         const std::string what = fmt::format("fix {} {}", id, style);
         Coeff c;
         parse_coeff(lmp, error, what, narg, arg, false, c);
-        const int32_t s = make_model(c, c, c, model);
-        if (s != DC_OK) error->all(FLERR, "{}: {}", what, dc_status_str(s));
+        const int32_t s = make_model(c, c, c, model, update->dt);
+        if (s != DC_OK)
+            error->all(FLERR, "{}: {}{}", what,
+                       c.step_exact ? fmt::format("step_exact at timestep {}: ", update->dt) : "", dc_status_str(s));
         nh = model.nh;
         if (nh > 32) error->all(FLERR, "{}: history of {} doubles exceeds 32", what, nh);
         if (nh > 0) {

@@ -4,9 +4,9 @@
  *   plugin load demcontactplugin.so
  *   pair_style demcontact [limit_damping] [maxpartner N]
  *   pair_coeff I J hertz/material E e nu [damping restitution | damping viscoelastic v_ref r_ref rho_ref] [limit_damping]
- *                  [tangential mindlin NULL e_t mu | tangential linear_history k_t e_t mu]
+ *                  [tangential mindlin|mindlin_rescale NULL e_t mu | tangential linear_history k_t e_t mu]
  *                  [rolling sds k_r|NULL eta_r mu_r | rolling constant mu_r] [twisting sds k_tw eta_tw mu_tw]
- *                  [carry rotate|project]
+ *                  [carry rotate|project] [step_exact]
  *   pair_coeff I J powerlaw/material E e nu p [...]
  *   pair_coeff I J E nu e [exponent p]                       (original positional form)
  *
@@ -27,6 +27,12 @@
  * the force to its own atom only, and each updating its own copy of the contact history. The
  * contact is always evaluated with body 1 = the atom of smaller ID, so both evaluations are
  * bitwise equal.
+ *
+ * step_exact: every step_exact model is made step-aware for update->dt when it is built (each
+ * run's init_style) and again in reset_dt(), which LAMMPS calls when dt changes during a run (fix
+ * dt/reset; `timestep` once a run has happened). Its extra history double counts in nh, the
+ * largest history over all type pairs, fixed at init_style before the run's first neighbour build
+ * (the size of fix demcontact/history; dt changes leave it unchanged).
  */
 #include "pair_demcontact.h"
 
@@ -168,9 +174,10 @@ void PairDemcontact::build_models()
                 a = &coeffs[i * N + i];
                 b = &coeffs[j * N + j];
                 if (a->p != b->p || a->damping != b->damping || a->tangential != b->tangential ||
-                    a->rolling != b->rolling || a->twisting != b->twisting || a->carry != b->carry)
-                    error->all(FLERR, "pair_style demcontact: types {} and {} differ in exponent, sub-models or carry: "
-                                      "give pair_coeff {} {} explicitly", i, j, i, j);
+                    a->rolling != b->rolling || a->twisting != b->twisting || a->carry != b->carry ||
+                    a->step_exact != b->step_exact)
+                    error->all(FLERR, "pair_style demcontact: types {} and {} differ in exponent, sub-models, carry or "
+                                      "step_exact: give pair_coeff {} {} explicitly", i, j, i, j);
                 const Coeff A = *a, B = *b;
                 m = A;
                 auto gm = [](double x, double y) { return std::sqrt(x * y); };
@@ -190,24 +197,44 @@ void PairDemcontact::build_models()
             }
             for (int order = 0; order < 2; order++) {
                 const int s1 = order ? j : i, s2 = order ? i : j;
-                const int32_t s = make_model(order ? *b : *a, order ? *a : *b, m, models[s1 * N + s2]);
+                const int32_t s = make_model(order ? *b : *a, order ? *a : *b, m, models[s1 * N + s2], update->dt);
                 if (s != DC_OK)
-                    error->all(FLERR, "pair_style demcontact: types {} {} (e = {}): {}", s1, s2, m.e, dc_status_str(s));
+                    error->all(FLERR, "pair_style demcontact: types {} {} (e = {}{}): {}", s1, s2, m.e,
+                               m.step_exact ? fmt::format(", step_exact at timestep {}", update->dt) : "",
+                               dc_status_str(s));
                 nh = std::max(nh, models[s1 * N + s2].nh);
             }
         }
     if (comm->me == 0) {
         const Model &m11 = models[N + 1];
         utils::logmesg(lmp, "pair demcontact: {}{} {}, limit_damping {}, alpha(1,1) = {:.15g}, A(1,1) = {:.6g} s, "
-                            "history {} doubles per contact\n",
+                            "step_exact {}, history {} doubles per contact\n",
                        m11.full ? "full contact" : "normal only",
                        m11.full ? (m11.cm.carry == DC_CARRY_PROJECT ? " (carry project)" : " (carry rotate)") : "",
                        m11.pair.model == DC_MODEL_VISCOELASTIC ? "viscoelastic" : "restitution",
-                       m11.pair.clamp ? "on" : "off", m11.pair.alpha, m11.pair.damping_a, nh);
+                       m11.pair.clamp ? "on" : "off", m11.pair.alpha, m11.pair.damping_a,
+                       m11.step_exact ? fmt::format("on (dt = {:.6g})", update->dt) : "off", nh);
     }
 }
 
 double PairDemcontact::init_one(int i, int j) { return onerad[i] + onerad[j]; }
+
+/* LAMMPS changed update->dt during a run (fix dt/reset; `timestep` after a run): the step_exact
+   models follow it (the next run's init_style rebuilds them anyway). */
+void PairDemcontact::reset_dt()
+{
+    if (!allocated || !models) return;
+    const int N = n1(), n = atom->ntypes;
+    for (int i = 1; i <= n; i++)
+        for (int j = 1; j <= n; j++) {
+            Model &m = models[i * N + j];
+            if (!m.step_exact) continue;
+            const int32_t s = set_model_dt(m, update->dt);
+            if (s != DC_OK)
+                error->all(FLERR, "pair_style demcontact: types {} {}: step_exact at the new timestep {} rejected by "
+                                  "demcontact: {}", i, j, update->dt, dc_status_str(s));
+        }
+}
 
 /* Cache every neighbour-list pair's history slots (owner i's, and owner j's when j is owned):
    called when the list was rebuilt or the per-atom store changed outside the force loop. Drops

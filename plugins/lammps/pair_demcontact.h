@@ -21,6 +21,7 @@ public:
     void coeff(int narg, char **arg) override;
     void init_style() override;
     double init_one(int i, int j) override;
+    void reset_dt() override;
     void compute(int eflag, int vflag) override;
 
 private:

@@ -4,7 +4,7 @@
  *
  *   pair_style gran model demcontact tangential demcontact [rolling_friction demcontact [surface demcontact]]
  *              [tangentialRestitution e_t] [rollingStiffness k_r] [rollingDamping eta_r] [rollingConstant on]
- *              [projectionCarry on|off]
+ *              [projectionCarry on|off] [tangentialRescale on|off]
  *   (surface demcontact: LIGGGHTS' relative velocities, unread by the combined evaluation, not
  *   computed; surface_model_demcontact.h)
  *   fix ID all wall/gran model demcontact tangential demcontact rolling_friction demcontact primitive ...
@@ -46,6 +46,14 @@
  * spheres separate (surfacesClose). The combined model uses the tangential and the rolling block
  * as one: they are registered one after the other (checked), and its history (the contact normal
  * is shared, so shorter than the two blocks) must fit in them (checked).
+ *
+ * stepExact on (a setting of model demcontact): every model here is made step-aware too
+ * (dc_contact_model_set_step at LIGGGHTS' dt, again when dt changes), so that the Coulomb limit
+ * sees the normal force the normal model applies (its own step slot, the normal model's). Its one
+ * more history double is in the tangential block, registered with the block's length known
+ * (postSettings). tangentialRescale on (a setting of tangential demcontact):
+ * DC_TANGENTIAL_MINDLIN_RESCALE instead of DC_TANGENTIAL_MINDLIN (the spring force rescaled when
+ * the contact radius changes: no energy gained on unloading; docs/force.md); a longer history.
  */
 #ifndef DEMCONTACT_LIGGGHTS_FRICTION_MODELS_H
 #define DEMCONTACT_LIGGGHTS_FRICTION_MODELS_H
@@ -75,30 +83,44 @@ static const int DEMCONTACT_ROLLING = 42;
 /* The machinery both sub-models share. */
 class DemcontactSubModel {
 public:
-    DemcontactSubModel(LAMMPS *lmp_, IContactHistorySetup *hsetup, ContactModelBase *c, bool rolling_)
+    DemcontactSubModel(LAMMPS *lmp_, IContactHistorySetup *, ContactModelBase *c, bool rolling_)
         : lmp(lmp_), owner(c), rolling(rolling_)
     {
-        // history length of this sub-model alone (a placeholder model of the same kind)
+        if (!rolling) tangentials()[owner] = this;
+    }
+
+    /* Register this sub-model's history block (postSettings: the settings are known by then, and
+       the normal model's postSettings, which runs first, has said whether it is step-aware): the
+       length of a placeholder model of the same kind (tangentialRescale: DC_TANGENTIAL_MINDLIN_RESCALE;
+       stepExact: made step-aware, one more double). The tangential block, then the rolling block,
+       one after the other (LIGGGHTS' order of postSettings). */
+    void register_history(IContactHistorySetup *hsetup, const NormalModel<DEMCONTACT> *normal)
+    {
         dc_contact_spec s;
         dc_contact_spec_init(&s);
         s.normal = DC_NORMAL_HERTZ;
-        s.damping = DC_DAMPING_NONE;
+        s.damping = DC_DAMPING_RESTITUTION;
+        s.e_n = 0.5;
         s.E1 = s.E2 = 1e7;
         s.nu1 = s.nu2 = 0.3;
         s.mu = 0.5;
         s.mu_r = 0.1;
         if (rolling) s.rolling = DC_ROLLING_EPSD;
-        else s.tangential = DC_TANGENTIAL_MINDLIN;
+        else s.tangential = rescale ? DC_TANGENTIAL_MINDLIN_RESCALE : DC_TANGENTIAL_MINDLIN;
         dc_contact_model m;
         size_t len = 0;
-        if (dc_contact_model_init(&s, &m) == DC_OK) dc_contact_history_len(&m, &len);
+        int32_t st = dc_contact_model_init(&s, &m);
+        // the rolling block alone is never evaluated with a step (rolling_friction demcontact comes
+        // with tangential demcontact: combine_into's model, which fits in the two blocks)
+        if (st == DC_OK && !rolling && normal && normal->step_exact)
+            st = dc_contact_model_set_step(&m, 1.0, DC_INTEGRATOR_VELOCITY_VERLET);
+        if (st == DC_OK) st = dc_contact_history_len(&m, &len);
         nh = static_cast<int>(len);
         const char *base = rolling ? "dc_roll" : "dc_tang";
         for (int k = 0; k < nh; k++) {
             const int off = hsetup->add_history_value(std::string(base) + std::to_string(k), "0");
             if (k == 0) offset = off;
         }
-        if (!rolling) tangentials()[owner] = this;
     }
     ~DemcontactSubModel()
     {
@@ -126,6 +148,9 @@ public:
         specs.assign(np, dc_contact_spec());
         models.assign(np, dc_contact_model());
         eval_nh = nh;
+        step_slot_missing = false;
+        step_normal = normal->step_exact ? normal : NULL;
+        step_dt = lmp->update->dt;
         passive = false;
         full_force = false;
         for (int i = 1; i <= ntypes; i++)
@@ -139,13 +164,20 @@ public:
                     s.k_r = k_r;
                     s.eta_r = eta_r;
                 } else {
-                    s.tangential = DC_TANGENTIAL_MINDLIN;
+                    s.tangential = rescale ? DC_TANGENTIAL_MINDLIN_RESCALE : DC_TANGENTIAL_MINDLIN;
                     s.mu = coeff[i][j];
                     s.e_t = e_t;
                 }
                 int32_t st = dc_contact_model_init(&s, &models[i * (ntypes + 1) + j]);
                 if (st == DC_OK) st = dc_contact_model_set_carry(&models[i * (ntypes + 1) + j], carry());
+                if (st == DC_OK && normal->step_exact) st = normal->set_step(models[i * (ntypes + 1) + j], lmp->update->dt);
                 if (st == DC_OK) st = dc_contact_model_check_inline(&models[i * (ntypes + 1) + j]); // fast entry
+                size_t len = 0;
+                if (st == DC_OK) st = dc_contact_history_len(&models[i * (ntypes + 1) + j], &len);
+                // the rolling block has no step slot: rolling_friction demcontact is evaluated by
+                // combine_into's model, which fits in the two blocks
+                if (st == DC_OK && static_cast<int>(len) > nh) step_slot_missing = true;
+                if (st == DC_OK && !step_slot_missing) eval_nh = std::max(eval_nh, static_cast<int>(len));
                 if (st != DC_OK) {
                     char msg[400];
                     if (rolling)
@@ -238,6 +270,7 @@ public:
                 size_t len = 0;
                 int32_t st = dc_contact_model_init(&s, &m);
                 if (st == DC_OK) st = dc_contact_model_set_carry(&m, t.carry()); // one setting for both classes
+                if (st == DC_OK && t.step_normal) st = t.step_normal->set_step(m, lmp->update->dt);
                 if (st == DC_OK) st = dc_contact_history_len(&m, &len);
                 if (st == DC_OK) st = dc_contact_model_check_inline(&m); // for the fast entry
                 if (st != DC_OK || static_cast<int>(len) > t.nh + nh || len > MAX_NH) {
@@ -252,6 +285,7 @@ public:
                 len_max = std::max(len_max, len);
             }
         t.eval_nh = static_cast<int>(len_max);
+        t.step_slot_missing = false;
         t.choose_eval();
         passive = true;
         // the combined model's normal force is the normal model's (same law and calibration,
@@ -267,6 +301,7 @@ public:
     void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
         if (passive) return; // evaluated with the tangential sub-model's combined model
+        if (step_normal && (lmp->update->dt != step_dt || step_slot_missing)) follow_dt();
         (this->*(in_pass ? body_per_pass : body))(sidata, i_forces, j_forces);
     }
 
@@ -460,6 +495,20 @@ public:
         lmp->error->one(FLERR, msg);
     }
 
+    /* stepExact: dt changed during the run (not at an init): the models follow it. */
+    __attribute__((noinline)) void follow_dt()
+    {
+        if (step_slot_missing) // not met by the combinations registered (normal_model_demcontact.cpp)
+            lmp->error->one(FLERR, "demcontact: stepExact: this sub-model's history block has no step slot");
+        const double dt = lmp->update->dt;
+        for (int i = 1; i <= ntypes; i++)
+            for (int j = 1; j <= ntypes; j++) {
+                const int32_t s = step_normal->set_step(models[i * (ntypes + 1) + j], dt);
+                if (s != DC_OK) step_normal->step_error(dt, s, false);
+            }
+        step_dt = dt;
+    }
+
     void close(SurfacesCloseData &scdata)
     {
         if (!scdata.contact_history) return;
@@ -479,6 +528,10 @@ public:
     bool full_force = false; // tangential with the combined model: applies the normal force too
     int nh = 0, offset = 0, ntypes = 0;
     int eval_nh = 0; // history doubles of the evaluated model (nh, or tangential + rolling combined)
+    const NormalModel<DEMCONTACT> *step_normal = NULL; // stepExact on: its normal model (set_step)
+    double step_dt = 0.0;                              // the dt the models are set for
+    bool step_slot_missing = false; // stepExact: this sub-model alone would have no step slot
+    bool rescale = false; // setting tangentialRescale: DC_TANGENTIAL_MINDLIN_RESCALE
     Body body = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic, false>; // choose_eval
     Body body_per_pass = &DemcontactSubModel::intersect_with<demcontact_shaped::Generic, true>; // in a pass
     std::vector<dc_contact_spec> specs;
@@ -495,8 +548,14 @@ public:
     {
         settings.registerDoubleSetting("tangentialRestitution", e_t, 1.0);
         settings.registerOnOff("projectionCarry", sub.project, false);
+        settings.registerOnOff("tangentialRescale", sub.rescale, false);
     }
-    void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+    void postSettings(IContactHistorySetup *hsetup, ContactModelBase *)
+    {
+        const auto &normals = NormalModel<DEMCONTACT>::demcontact_normals();
+        auto it = normals.find(sub.owner);
+        sub.register_history(hsetup, it == normals.end() ? NULL : it->second);
+    }
     void connectToProperties(PropertyRegistry &registry)
     {
         registry.registerProperty("coeffFrict", &MODEL_PARAMS::createCoeffFrict, false);
@@ -538,7 +597,7 @@ public:
         settings.registerOnOff("rollingConstant", constant, false);
         settings.registerOnOff("projectionCarry", sub.project, false);
     }
-    void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+    void postSettings(IContactHistorySetup *hsetup, ContactModelBase *) { sub.register_history(hsetup, NULL); }
     void connectToProperties(PropertyRegistry &registry)
     {
         registry.registerProperty("coeffRollFrict", &MODEL_PARAMS::createCoeffRollFrict, false);

@@ -2,8 +2,8 @@
  * LIGGGHTS 3.8 normal contact model "demcontact", compiled against the installed LIGGGHTS headers
  * (Debian libliggghts-dev) and loaded into the stock `liggghts` executable with LD_PRELOAD:
  *
- *   pair_style gran model demcontact tangential history [limitForce on] [exponent 1.5]
- *   fix wall wall/gran model demcontact tangential history primitive type 1 zplane 0.0
+ *   pair_style gran model demcontact tangential history [limitForce on] [exponent 1.5] [stepExact on]
+ *   fix wall wall/gran model demcontact tangential history primitive type 1 zplane 0.0 [stepExact on]
  *
  * Force: F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn (power-law Tsuji) from demcontact's dc_pair
  * and dc_normal_force_inline (header-only, see ../common/tsuji_force.h): at the default p = 1.5 a dc_pair_hertz of the two
@@ -13,6 +13,16 @@
  * the target in both cases.
  * The tangential stiffness/damping handed to the tangential model are exactly those of the
  * builtin `model hertz`, so `tangential history` behaves identically.
+ *
+ * stepExact on: the restitution realised at the run's time step, not only in the continuous
+ * contact (dc_contact_model_set_step with LIGGGHTS' dt, velocity Verlet: DC_INTEGRATOR_VELOCITY_VERLET;
+ * docs/timestep.md). Hertz (exponent 1.5) with coefficientRestitution only (viscoelastic on:
+ * rejected, naming stepExact). The normal force is then demcontact's full contact with no
+ * sub-model (dc_contact_force_checked_inline, normal part r.f_n), whose history double
+ * ("dc_step") is registered in postSettings; `tangential demcontact`'s full model is step-aware
+ * too, its own step slot in its block (friction_models_demcontact.h), so that its Coulomb limit
+ * sees the same step-aware normal force. The step follows update->dt: set at each run's init
+ * (connectToProperties) and again at the first contact after dt changed.
  *
  * Registration: LIGGGHTS selects a compiled template instance by a hash of the model ids
  * (normal | tangential << 6 | ...). A static initializer adds the name "demcontact" to the contact
@@ -36,11 +46,13 @@
 #include "update.h"
 
 #include <demcontact.h>
+#include <demcontact_inline.h>
 #include "tsuji_force.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -70,10 +82,16 @@ public:
         settings.registerDoubleSetting("vRef", v_ref, 1.0);
         settings.registerDoubleSetting("rRef", r_ref, 0.0);
         settings.registerDoubleSetting("densityRef", rho_ref, 0.0);
+        // stepExact on: dc_contact_model_set_step at LIGGGHTS' dt (see the top of this file)
+        settings.registerOnOff("stepExact", step_exact, false);
     }
 
     // The tangential/rolling models of the same contact model find this normal model here.
-    void postSettings(IContactHistorySetup *, ContactModelBase *) { demcontact_normals()[owner] = this; }
+    void postSettings(IContactHistorySetup *hsetup, ContactModelBase *)
+    {
+        demcontact_normals()[owner] = this;
+        if (step_exact) step_offset = hsetup->add_history_value("dc_step", "0");
+    }
     ~NormalModel()
     {
         if (demcontact_normals().count(owner) && demcontact_normals()[owner] == this) demcontact_normals().erase(owner);
@@ -158,7 +176,8 @@ public:
 
         // LIGGGHTS' vn is negative while approaching; demcontact's is positive while compressing.
         // (units si/cgs: nktv2p = 1, as the builtin models assume for the force itself.)
-        const double Fn = demcontact_sim::contact_force(pair, deltan, -sidata.vn, reff, meff);
+        const double Fn = step_exact ? step_force(sidata, reff, meff)
+                                     : demcontact_sim::contact_force(pair, deltan, -sidata.vn, reff, meff);
 
         // What the tangential model reads: identical to the builtin `model hertz`.
         const double sqrtval = std::sqrt(reff * deltan);
@@ -198,11 +217,78 @@ public:
     void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)
     {
         if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
+        if (step_offset >= 0 && scdata.contact_history) // a new contact starts from zero
+            scdata.contact_history[step_offset] = 0.0;
     }
+
+    /* stepExact on: the dt the step-aware models were set for; follows update->dt (error: the
+       run ends naming stepExact and demcontact's status). full: a full contact model of the same
+       contact model (friction_models_demcontact.h) set the same way. */
+    int32_t set_step(dc_contact_model &m, double dt) const
+    {
+        const int32_t s = dc_contact_model_set_step(&m, dt, DC_INTEGRATOR_VELOCITY_VERLET);
+        return s == DC_OK ? dc_contact_model_check_inline(&m) : s;
+    }
+    void step_error(double dt, int32_t s, bool all) const
+    {
+        char msg[320];
+        std::snprintf(msg, sizeof msg, "model demcontact: stepExact at timestep %g rejected by demcontact: %s", dt,
+                      dc_status_str(s));
+        if (all) error->all(FLERR, msg);
+        error->one(FLERR, msg);
+    }
+    bool step_exact = false;
+    int step_offset = -1; // history index of "dc_step"; -1: off
     void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
+    /* The step-aware normal force of one contact (stepExact on): demcontact's full contact with no
+       sub-model, on a state with the same overlap, normal speed, r_eff and m_eff (body 2 with
+       infinite radius and mass, at rest: r_eff, m_eff exact), its slot "dc_step" in LIGGGHTS'
+       contact history, advanced only when LIGGGHTS says so (computeflag && shearupdate). */
+    double step_force(SurfacesIntersectData &sidata, double reff, double meff)
+    {
+        const double dt = update->dt;
+        if (dt != step_dt) { // dt changed during the run (not at an init): follow it
+            for (dc_contact_model &m : step_models) {
+                if (m.magic == 0) continue; // type 0 rows (unused)
+                const int32_t s = set_step(m, dt);
+                if (s != DC_OK) step_error(dt, s, false);
+            }
+            step_dt = dt;
+        }
+        const double inf = std::numeric_limits<double>::infinity();
+        const double vn = -sidata.vn;
+        dc_contact_state s;
+        for (int k = 0; k < 3; k++) {
+            s.n[k] = sidata.en[k];
+            s.v1[k] = 0.0;
+            s.v2[k] = vn * sidata.en[k];
+            s.w1[k] = s.w2[k] = 0.0;
+        }
+        s.overlap = sidata.deltan;
+        s.r1 = reff;
+        s.r2 = inf;
+        s.m1 = meff;
+        s.m2 = inf;
+        double *slot = &sidata.contact_history[step_offset], copy;
+        if (!(sidata.computeflag && sidata.shearupdate)) { // evaluate without advancing the history
+            copy = *slot;
+            slot = &copy;
+        }
+        dc_contact_result r;
+        const int32_t st =
+            dc_contact_force_checked_inline(&step_models[sidata.itype * (ntypes + 1) + sidata.jtype], &s, dt, slot, &r);
+        if (st != DC_OK) {
+            char msg[200];
+            std::snprintf(msg, sizeof msg, "model demcontact (stepExact): atom %ld: %s", (long)atom->tag[sidata.i],
+                          dc_status_str(st));
+            error->one(FLERR, msg);
+        }
+        return r.f_n;
+    }
+
     // One calibrated dc_pair for every type pair, once (calibration costs ~0.2 us per pair).
     void reject(const char *what, int t, double value, int32_t status)
     {
@@ -274,15 +360,37 @@ private:
                     error->all(FLERR, msg);
                 }
             }
+        if (step_exact) { // the step-aware normal-only models, at this run's dt
+            if (exponent != 1.5) reject("exponent (stepExact needs 1.5)", 1, exponent, DC_ERR_STEP_UNSUPPORTED);
+            step_models.assign((n + 1) * (n + 1), dc_contact_model());
+            for (int i = 1; i <= n; i++)
+                for (int j = 1; j <= n; j++) {
+                    dc_contact_spec sp;
+                    full_spec(i, j, sp);
+                    dc_contact_model &m = step_models[i * (n + 1) + j];
+                    int32_t s = dc_contact_model_init(&sp, &m);
+                    if (s == DC_OK) s = set_step(m, update->dt);
+                    if (s != DC_OK) {
+                        char msg[320];
+                        std::snprintf(msg, sizeof msg,
+                                      "model demcontact: stepExact (types %d-%d, coefficientRestitution = %g, timestep "
+                                      "%g) rejected by demcontact: %s",
+                                      i, j, coeffRest[i][j], update->dt, dc_status_str(s));
+                        error->all(FLERR, msg);
+                    }
+                }
+            step_dt = update->dt;
+        }
         static bool reported = false; // one line per process, not one per wall/pair instance
         if (comm->me == 0 && !reported) {
             reported = true;
             char msg[256];
             std::snprintf(msg, sizeof msg,
-                          "model demcontact: %s, exponent %g, limitForce %s, alpha(1,1) = %.15g, A(1,1) = %.6g s (%s)\n",
+                          "model demcontact: %s, exponent %g, limitForce %s, alpha(1,1) = %.15g, A(1,1) = %.6g s (%s), "
+                          "stepExact %s\n",
                           viscoelastic ? "viscoelastic" : "restitution", exponent, limitForce ? "on" : "off",
                           pairs[(n + 1) + 1].alpha, pairs[(n + 1) + 1].damping_a,
-                          limitForce ? "DC_END_FORCE" : "DC_END_OVERLAP");
+                          limitForce ? "DC_END_FORCE" : "DC_END_OVERLAP", step_exact ? "on" : "off");
             if (screen) std::fputs(msg, screen);
             if (logfile) std::fputs(msg, logfile);
         }
@@ -297,6 +405,8 @@ private:
     double exponent, v_ref = 1.0, r_ref = 0.0, rho_ref = 0.0;
     int ntypes;
     std::vector<dc_pair> pairs;
+    std::vector<dc_contact_model> step_models; // stepExact on: per type pair, set for step_dt
+    double step_dt = 0.0;
 
 public:
     // the tangential class's combined model applies this model's normal force (set at each init)

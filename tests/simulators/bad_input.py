@@ -26,7 +26,10 @@ import harness as H  # noqa: E402
 NOT_POSITIVE, NEGATIVE, RESTITUTION, EXPONENT, SPEC_MODEL = 6105, 6106, 6103, 6104, 6123
 POISSON = 6114
 NOT_FINITE, RESULT_RANGE = 6102, 6108
+STEP_UNSUPPORTED, STEP_UNREACHABLE = 6136, 6137
 FULL = "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 1.0 0.5 rolling sds NULL 0 0.1"
+FULL_RESCALE = FULL.replace("mindlin", "mindlin_rescale")
+VISCO = "hertz/material 5e6 0.5 0.3 damping viscoelastic 1 0.001 2500"
 
 
 def status_texts(plugin):
@@ -88,6 +91,21 @@ LAMMPS_CASES = [
     ("region wall: nu > 0.5", "", LAMMPS_GOOD, "region:hertz/material 5e6 0.5 0.7 region wallreg", "nu = 0.7", POISSON),
     ("region wall: unknown keyword", "", LAMMPS_GOOD, "region:hertz/material 5e6 0.5 0.3 sticky region wallreg",
      "'sticky'", None),
+    # step_exact (dc_contact_model_set_step): only the Hertz law with restitution damping has a
+    # step-aware form; a restitution the explicit step cannot realise is rejected
+    ("step_exact viscoelastic", "", VISCO + " step_exact", None, "step_exact rejected by demcontact",
+     STEP_UNSUPPORTED),
+    ("wall step_exact viscoelastic", "", LAMMPS_GOOD, VISCO + " step_exact zplane -0.01 NULL",
+     "step_exact rejected by demcontact", STEP_UNSUPPORTED),
+    ("step_exact e unreachable", "", "hertz/material 5e6 0.001 0.3 limit_damping step_exact", None,
+     "step_exact rejected by demcontact", STEP_UNREACHABLE),
+    ("step_exact power law", "", "powerlaw/material 5e6 0.5 0.3 2 step_exact", None,
+     "step_exact needs the Hertz exponent 1.5 (got 2)", None),
+    ("step_exact with a value", "", LAMMPS_GOOD + " step_exact on", None, "unknown keyword 'on'", None),
+    ("mindlin_rescale mu < 0", "", "hertz/material 5e6 0.5 0.3 tangential mindlin_rescale NULL 1.0 -0.5", None,
+     "mu = -0.5", NEGATIVE),
+    ("mindlin_rescale k_t given", "", "hertz/material 5e6 0.5 0.3 tangential mindlin_rescale 1e6 1.0 0.5", None,
+     "write 'tangential mindlin_rescale NULL e_t mu'", None),
 ]
 
 
@@ -138,6 +156,19 @@ LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
      "Unknown surface model", None),
     ("surface demcontact, builtin tangential",
      dict(model="model demcontact tangential history surface demcontact"), "Unknown surface model", None),
+    # stepExact on (dc_contact_model_set_step): Hertz with restitution damping only; a restitution the
+    # explicit step cannot realise is rejected
+    ("stepExact viscoelastic", dict(extra="viscoelastic on rRef 0.001 densityRef 2500 stepExact on"),
+     "stepExact (types 1-1, coefficientRestitution = 0.5, timestep 1e-07) rejected by demcontact", STEP_UNSUPPORTED),
+    ("wall stepExact viscoelastic", dict(wall="viscoelastic on rRef 0.001 densityRef 2500 stepExact on"),
+     "stepExact (types 1-1, coefficientRestitution = 0.5, timestep 1e-07) rejected by demcontact", STEP_UNSUPPORTED),
+    ("stepExact exponent 2", dict(model="model demcontact tangential history", extra="exponent 2 stepExact on"),
+     "exponent (stepExact needs 1.5) of type 1 = 2", STEP_UNSUPPORTED),
+    ("stepExact e unreachable", dict(e="0.001", extra="limitForce on stepExact on"),
+     "stepExact (types 1-1, coefficientRestitution = 0.001, timestep 1e-07) rejected by demcontact",
+     STEP_UNREACHABLE),
+    ("stepExact not on/off", dict(extra="stepExact yes"), "'stepExact' argument: "
+     "unknown option or wrong keyword order: 'yes'", None),
     # bad values met during the run, in the pair loop's deferred checks (friction_models_demcontact.h):
     # an atom's velocity not finite (the per-pass check of the atoms' arrays, naming the atom and
     # value); finite values whose contact results are not (heavy atoms sliding fast: the damped
@@ -194,8 +225,9 @@ def main():
         exe = lammps_runs.find_lmp(a.lmp)
         env = H.mpi_env()
         cases = [(lab, lammps_deck(a.plugin, st, co, wa), bad, code) for lab, st, co, wa, bad, code in LAMMPS_CASES]
-        # (both carry values accepted)
-        control = lammps_deck(a.plugin, "", FULL + " carry project", FULL + " carry rotate zplane -0.01 NULL")
+        # (both carry values, both Mindlin laws and step_exact accepted)
+        control = lammps_deck(a.plugin, "", FULL + " carry project step_exact",
+                              FULL_RESCALE + " carry rotate step_exact zplane -0.01 NULL")
         # the region wall's control: the same deck with a good region wall runs to the end
         cases.insert(0, ("control: region wall (good input)", lammps_deck(
             a.plugin, "", FULL, "region:" + FULL + " region wallreg"), None, None))
@@ -203,7 +235,8 @@ def main():
     else:
         exe, env = H.liggghts_cmd(a.plugin)
         cases = [(lab, liggghts_deck(dict(LIGGGHTS_GOOD, **ov)), bad, code) for lab, ov, bad, code in LIGGGHTS_CASES]
-        control = liggghts_deck(dict(LIGGGHTS_GOOD, extra="projectionCarry on", wall="projectionCarry off",
+        control = liggghts_deck(dict(LIGGGHTS_GOOD, extra="projectionCarry on stepExact on",
+                                     wall="projectionCarry off stepExact on",
                                      model=LIGGGHTS_GOOD["model"] + " surface demcontact"))
         cmd = [exe, "-in", "in.deck", "-log", "none"]
     failures = 0

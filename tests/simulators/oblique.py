@@ -5,6 +5,11 @@ integrated in the hosts' velocity-Verlet order).
 
   oblique.py --sim lammps   --plugin demcontactplugin.so --ref oblique_ref [--lmp lmp]
   oblique.py --sim liggghts --plugin libdemcontact_liggghts.so --ref oblique_ref
+             [--step-exact] [--rescale] [--steps-per-contact N]
+
+--step-exact: the plugins' step_exact / stepExact on, the reference's dc_contact_model_set_step;
+--rescale: LAMMPS' tangential mindlin_rescale, LIGGGHTS' tangentialRescale on; the reference's
+DC_TANGENTIAL_MINDLIN_RESCALE.
 
 Conditions: alumina sphere R = 2.5 mm, rho = 4000 kg/m^3, E = 380 GPa, nu = 0.23, onto a flat wall of
 the same material, impact speed 3.9 m/s at 5..85 degrees from the wall normal, normal restitution
@@ -33,18 +38,18 @@ TOL = 0.02
 SPACING = 0.01
 
 
-def timing():
+def timing(spc=500):
     m = RHO * 4.0 / 3.0 * math.pi * R ** 3
     es = E / (2 * (1 - NU * NU))
     vn = [V * math.cos(math.radians(a)) for a in ANGLES]
     tc = [2.87 * (m * m / (R * es * es * v)) ** 0.2 for v in vn]
-    dt = min(tc) / 500
+    dt = min(tc) / spc
     t_end = max(1e-3 * R / v + 1.5 * t for v, t in zip(vn, tc))
     return dt, int(math.ceil(t_end / dt))
 
 
-def reference(ref, dt):
-    out = subprocess.run([ref] + ["%.17g" % x for x in (E, NU, RHO, R, REST, MU, E_T, V, dt)] +
+def reference(ref, dt, flags=()):
+    out = subprocess.run([ref] + list(flags) + ["%.17g" % x for x in (E, NU, RHO, R, REST, MU, E_T, V, dt)] +
                          [str(a) for a in ANGLES], stdout=subprocess.PIPE, text=True, check=True).stdout
     res = {}
     for line in out.splitlines():
@@ -63,8 +68,11 @@ def atoms_lines(create):
     return L
 
 
-def lammps_deck(plugin, dt, steps):
-    c = "hertz/material %.17g %.17g %.17g tangential mindlin NULL %.17g %.17g" % (E, REST, NU, E_T, MU)
+def lammps_deck(plugin, dt, steps, step_exact=False, rescale=False):
+    c = "hertz/material %.17g %.17g %.17g tangential %s NULL %.17g %.17g" % (
+        E, REST, NU, "mindlin_rescale" if rescale else "mindlin", E_T, MU)
+    if step_exact:
+        c += " step_exact"
     L = ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f", "comm_modify vel yes",
          "region box block -0.01 0.01 -0.01 %g -0.001 0.01 units box" % (len(ANGLES) * SPACING),
          "create_box 1 box", "plugin load %s" % os.path.abspath(plugin), "pair_style demcontact",
@@ -76,9 +84,13 @@ def lammps_deck(plugin, dt, steps):
     return "\n".join(L) + "\n"
 
 
-def liggghts_deck(dt, steps):
+def liggghts_deck(dt, steps, step_exact=False, rescale=False):
     model = "model demcontact tangential demcontact"
     settings = "tangentialRestitution %.17g" % E_T  # walls take their settings after the wall
+    if step_exact:
+        settings += " stepExact on"
+    if rescale:
+        settings += " tangentialRescale on"
     L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
          "communicate single vel yes", "units si",
          "region box block -0.01 0.01 -0.01 %g -0.001 0.01 units box" % (len(ANGLES) * SPACING),
@@ -103,24 +115,33 @@ def main():
     ap.add_argument("--ref", required=True)
     ap.add_argument("--lmp")
     ap.add_argument("--workdir")
+    ap.add_argument("--step-exact", action="store_true")
+    ap.add_argument("--rescale", action="store_true",
+                    help="LAMMPS: tangential mindlin_rescale; LIGGGHTS: tangentialRescale on")
+    ap.add_argument("--steps-per-contact", type=float, default=500.0,
+                    help="dt = the shortest contact duration / this (default 500)")
     a = ap.parse_args()
+    if not a.steps_per_contact > 1:
+        ap.error("--steps-per-contact must be > 1 (got %g)" % a.steps_per_contact)
+    flags = (["--step-exact"] if a.step_exact else []) + (["--rescale"] if a.rescale else [])
     workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_oblique_"))
     os.makedirs(workdir, exist_ok=True)
-    dt, steps = timing()
+    dt, steps = timing(a.steps_per_contact)
     if a.sim == "lammps":
         import lammps_runs
         exe = lammps_runs.find_lmp(a.lmp)
         env = H.mpi_env()
-        deck = lammps_deck(a.plugin, dt, steps)
+        deck = lammps_deck(a.plugin, dt, steps, a.step_exact, a.rescale)
     else:
         exe, env = H.liggghts_cmd(a.plugin)
-        deck = liggghts_deck(dt, steps)
+        deck = liggghts_deck(dt, steps, a.step_exact, a.rescale)
     open(os.path.join(workdir, "in.oblique"), "w").write(deck)
     H.run([exe, "-in", "in.oblique", "-log", "log.oblique"], workdir, env)
     final = H.read_last_dump(os.path.join(workdir, "final.dump"))
-    same, conv = reference(a.ref, dt), reference(a.ref, dt / 8)
-    print("## %s: oblique impacts, alumina R = 2.5 mm at %.1f m/s, mu = %g, e = %g (dt = %.3g s)"
-          % (a.sim, V, MU, REST, dt))
+    same, conv = reference(a.ref, dt, flags), reference(a.ref, dt / 8, flags)
+    print("## %s: oblique impacts, alumina R = 2.5 mm at %.1f m/s, mu = %g, e = %g (dt = %.3g s)%s%s"
+          % (a.sim, V, MU, REST, dt, ", step-aware" if a.step_exact else "",
+             ", mindlin_rescale" if a.rescale else ""))
     print()
     print("| angle [deg] | e_t %s | e_t library (same dt) | e_t library (dt/8) | omega_y %s [rad/s] | omega_y library (dt/8) |"
           % (a.sim, a.sim))

@@ -5,8 +5,13 @@
  * half-step velocities, half kick). Prints, per incident angle, the rebound tangential velocity of
  * the contact point over the incident one (tangential restitution) and the rebound spin.
  *
- *   oblique_ref E nu rho R e mu e_t v dt angle...       (angles from the wall normal, degrees)
+ *   oblique_ref [--step-exact] [--rescale] E nu rho R e mu e_t v dt angle...
+ *                                                  (angles from the wall normal, degrees)
  *   -> lines "angle e_t omega_y vz_out/vz_in"
+ *
+ * --step-exact: the model made step-aware for dt (dc_contact_model_set_step, velocity Verlet), as
+ * the plugins' step_exact / stepExact on; --rescale: DC_TANGENTIAL_MINDLIN_RESCALE instead of
+ * DC_TANGENTIAL_MINDLIN.
  *
  * The sphere starts with its surface 1e-3 R above the wall; the run ends when it has left the
  * wall (overlap < 0 after contact) for one more step. Exit 1 with the status text on error.
@@ -24,8 +29,21 @@
 
 int main(int argc, char **argv)
 {
+    int step_exact = 0, rescale = 0;
+    while (argc > 1 && strncmp(argv[1], "--", 2) == 0) {
+        if (strcmp(argv[1], "--step-exact") == 0) {
+            step_exact = 1;
+        } else if (strcmp(argv[1], "--rescale") == 0) {
+            rescale = 1;
+        } else {
+            fprintf(stderr, "oblique_ref: unknown option '%s' (--step-exact, --rescale)\n", argv[1]);
+            return 2;
+        }
+        argv++;
+        argc--;
+    }
     if (argc < 10) {
-        fprintf(stderr, "usage: %s E nu rho R e mu e_t v dt angle...\n", argv[0]);
+        fprintf(stderr, "usage: %s [--step-exact] [--rescale] E nu rho R e mu e_t v dt angle...\n", argv[0]);
         return 2;
     }
     const double E = atof(argv[1]), nu = atof(argv[2]), rho = atof(argv[3]), R = atof(argv[4]);
@@ -39,11 +57,12 @@ int main(int argc, char **argv)
     s.E1 = s.E2 = E;              /* wall of the sphere's material (as fix demcontact/wall) */
     s.nu1 = s.nu2 = nu;
     s.e_n = e;
-    s.tangential = DC_TANGENTIAL_MINDLIN;
+    s.tangential = rescale ? DC_TANGENTIAL_MINDLIN_RESCALE : DC_TANGENTIAL_MINDLIN;
     s.mu = mu;
     s.e_t = e_t;
     dc_contact_model m;
     int32_t st = dc_contact_model_init(&s, &m);
+    if (st == DC_OK && step_exact) st = dc_contact_model_set_step(&m, dt, DC_INTEGRATOR_VELOCITY_VERLET);
     size_t nh = 0;
     if (st == DC_OK) st = dc_contact_history_len(&m, &nh);
     if (st != DC_OK) {
