@@ -300,14 +300,48 @@ fn solve_r(p: f64, alpha: f64, criterion: EndCriterion, e: f64, n: f64) -> Optio
     Some(0.5 * (lo.0 + hi.0))
 }
 
+/// The solution of the 5 × 5 symmetric positive definite system a x = b by Gaussian elimination
+/// without pivoting (the LDLᵀ of Cholesky's method); None for a non-positive pivot.
+fn solve_spd5(mut a: [[f64; 5]; 5], mut b: [f64; 5]) -> Option<[f64; 5]> {
+    for k in 0..5 {
+        let (top, rest) = a.split_at_mut(k + 1);
+        let (bt, br) = b.split_at_mut(k + 1);
+        let pivot_row = top.last()?;
+        let pk = *pivot_row.get(k)?;
+        if !(pk > 0.0) {
+            return None;
+        }
+        let bk = *bt.last()?;
+        for (row, bi) in rest.iter_mut().zip(br.iter_mut()) {
+            let f = *row.get(k)? / pk;
+            for (x, q) in row.iter_mut().zip(pivot_row.iter()) {
+                *x -= f * q;
+            }
+            *bi -= f * bk;
+        }
+    }
+    let mut x = [0.0f64; 5];
+    for k in (0..5).rev() {
+        let row = a.get(k)?;
+        let s: f64 = row
+            .iter()
+            .zip(x.iter())
+            .skip(k + 1)
+            .map(|(r, xi)| r * xi)
+            .sum();
+        let v = (*b.get(k)? - s) / *row.get(k)?;
+        *x.get_mut(k)? = v;
+    }
+    Some(x)
+}
+
 /// The coefficients of R(h) for a Tsuji law of exponent p and damping α (from the target e),
 /// solved on the discrete map at the 16 nodes and fitted by least squares in (R − 1)/h. At
 /// least 8 nodes must be reachable (from the smallest h up); otherwise None.
 pub(crate) fn calibrate(p: f64, alpha: f64, criterion: EndCriterion, e: f64) -> Option<[f64; 5]> {
-    use nalgebra::{SMatrix, SVector};
     // The normal equations of the least-squares fit, accumulated row by row.
-    let mut ata = SMatrix::<f64, 5, 5>::zeros();
-    let mut aty = SVector::<f64, 5>::zeros();
+    let mut ata = [[0.0f64; 5]; 5];
+    let mut aty = [0.0f64; 5];
     let mut rows = 0;
     // From the smallest h up: stop at the first unreachable node.
     for &n in FIT_N.iter().rev() {
@@ -315,16 +349,21 @@ pub(crate) fn calibrate(p: f64, alpha: f64, criterion: EndCriterion, e: f64) -> 
             break;
         };
         let h = 1.0 / n;
-        let v = SVector::<f64, 5>::from([1.0, h, h * h, h * h * h, h * h * h * h]);
-        ata += v * v.transpose();
-        aty += v * ((r - 1.0) / h);
+        let v = [1.0, h, h * h, h * h * h, h * h * h * h];
+        for (row, vi) in ata.iter_mut().zip(v) {
+            for (x, vj) in row.iter_mut().zip(v) {
+                *x += vi * vj;
+            }
+        }
+        for (x, vi) in aty.iter_mut().zip(v) {
+            *x += vi * ((r - 1.0) / h);
+        }
         rows += 1;
     }
     if rows < 8 {
         return None;
     }
-    let sol = ata.cholesky()?.solve(&aty);
-    let c: [f64; 5] = sol.into();
+    let c = solve_spd5(ata, aty)?;
     c.iter().all(|x| x.is_finite()).then_some(c)
 }
 
