@@ -646,7 +646,14 @@ fn batch_equals_scalar_bit_for_bit() {
     for m in all_models() {
         let mut s = m;
         if m.normal.alpha > 0.0 {
-            assert_eq!(unsafe { dc_contact_model_set_step(&mut s, 2e-6, 0) }, DC_OK);
+            if cfg!(miri) {
+                // Under Miri the calibration (about 10^6 force evaluations of safe code) is too
+                // slow: the fields dc_contact_model_set_step writes, with fixed coefficients.
+                s.reserved = [1e-9, -0.5, 0.1, 0.0, 0.0, 0.0];
+                s.history_len += 1;
+            } else {
+                assert_eq!(unsafe { dc_contact_model_set_step(&mut s, 2e-6, 0) }, DC_OK);
+            }
             assert_eq!(s.history_len, m.history_len + 1);
             models.push(s);
         }
