@@ -846,11 +846,11 @@ fn batch_statuses_leave_everything_untouched() {
 #[test]
 fn spheres_helper_equals_state_form() {
     for m in all_models().into_iter().step_by(5) {
-        // dc_contact_force_spheres of this model at dt = 1e-6, with a history of 10 doubles.
+        // dc_contact_force_spheres of this model at dt = 1e-6, with a history of DC_CONTACT_HISTORY_MAX doubles.
         let spheres = |a: *const f64,
                        b: *const f64,
                        st: &dc_contact_state,
-                       h: &mut [f64; 10],
+                       h: &mut [f64; DC_CONTACT_HISTORY_MAX],
                        r: &mut dc_contact_result| unsafe {
             dc_contact_force_spheres(
                 &m,
@@ -868,7 +868,7 @@ fn spheres_helper_equals_state_form() {
         let mut st = states()[0];
         let d = [x1[0] - x2[0], x1[1] - x2[1], x1[2] - x2[2]];
         let dist = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-        let (mut h1, mut h2) = ([0.0; 10], [0.0; 10]);
+        let (mut h1, mut h2) = ([0.0; DC_CONTACT_HISTORY_MAX], [0.0; DC_CONTACT_HISTORY_MAX]);
         let (mut r1, mut r2) = (sentinel_res(), sentinel_res());
         assert_eq!(
             spheres(x1.as_ptr(), x2.as_ptr(), &st, &mut h1, &mut r1),
