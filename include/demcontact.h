@@ -82,7 +82,9 @@
 
 /**
  * Doubles of history per contact for the largest contact model
- * (dc_contact_history_len gives the exact, usually smaller, figure of one model).
+ * (dc_contact_history_len gives the exact, usually smaller, figure of one model). A normal law
+ * with state (DC_NORMAL_ELASTIC_PLASTIC) adds one double; it has no step-aware form, so its
+ * double and the step-aware one never meet and 12 still bounds every model.
  */
 #define DC_CONTACT_HISTORY_MAX 12
 
@@ -112,6 +114,17 @@
  * separation); never clamped: requires DC_END_OVERLAP.
  */
 #define DC_NORMAL_DMT 5
+
+/**
+ * Normal law: elastic-perfectly-plastic (Thornton 1997): Hertz up to the limiting contact
+ * pressure yield_pressure = p_y (yield overlap d_y = (pi p_y/(2 E*))^2 R*), then
+ * F = F_y + pi p_y R* (d - d_y); unloading and reloading along a Hertz curve of enlarged
+ * radius with a residual overlap. One double of history (the largest overlap); no dashpot
+ * (damping must be DC_DAMPING_NONE: the loss is plastic, e(v) from
+ * dc_elastic_plastic_restitution). Contact models only: no dc_pair constructor, no
+ * step-aware form (DC_ERR_STEP_UNSUPPORTED).
+ */
+#define DC_NORMAL_ELASTIC_PLASTIC 6
 
 /**
  * Normal damping: none (e_n = 1).
@@ -218,6 +231,14 @@
  * DC_NORMAL_DMT; there is no dc_pair_* constructor for it).
  */
 #define DC_MODEL_DMT 4
+
+/**
+ * dc_pair.model of an elastic-plastic pair (the normal law of a dc_contact_model built with
+ * DC_NORMAL_ELASTIC_PLASTIC). Its force needs per-contact state (the largest overlap), so it
+ * exists only inside a contact model: there is no dc_pair_* constructor, and every dc_pair
+ * path refuses its kernel (DC_ERR_PAIR_INVALID; NaN from the unchecked dc_normal_force).
+ */
+#define DC_MODEL_ELASTIC_PLASTIC 5
 
 /**
  * Version of dc_plan_input this library reads (dc_plan_input_init sets it).
@@ -732,6 +753,11 @@ typedef struct dc_contact_spec {
      * Work of adhesion w >= 0 [J/m^2] (DC_NORMAL_DMT: pull-off force 2 pi w R*).
      */
     double work_of_adhesion;
+    /**
+     * Limiting contact pressure p_y > 0 [Pa] (DC_NORMAL_ELASTIC_PLASTIC). Appended: a caller
+     * compiled without it passes the shorter size, and reads as unset (NaN).
+     */
+    double yield_pressure;
 } dc_contact_spec;
 
 /**
@@ -1675,6 +1701,45 @@ int32_t dc_alpha_from_e(double e, double p, int32_t criterion, double *alpha_out
 int32_t dc_e_from_alpha(double alpha, double p, int32_t criterion, double *e_out);
 
 /**
+ * Restitution of a head-on impact with the elastic-plastic normal law
+ * (DC_NORMAL_ELASTIC_PLASTIC; Thornton 1997) at impact speed v, from x = v/v_y (v_y from
+ * dc_elastic_plastic_yield_speed): e = 1 for x <= 1 (the contact stays elastic), else with
+ * y = 1/x  e = (6 sqrt(3)/5)^(1/2) (1 - y^2/6)^(1/2) (y/(y + 2 sqrt(6/5 - y^2/5)))^(1/4).
+ * Exact for the law as implemented (checked against an integration of the contact in
+ * tests/elastic_plastic.rs).
+ *
+ * @param x      v/v_y >= 0, finite.
+ * @param e_out  receives e in (0, 1] on success; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_NEGATIVE.
+ *
+ * # Safety
+ * `e_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_elastic_plastic_restitution(double x, double *e_out);
+
+/**
+ * Yield speed v_y [m/s] of the elastic-plastic normal law: the head-on impact speed at which
+ * the contact first yields, 1/2 m* v_y^2 = (8/15) E* sqrt(R*) d_y^(5/2) with
+ * d_y = (pi p_y/(2 E*))^2 R*.
+ *
+ * @param e_star  effective modulus E* [Pa] (dc_effective_modulus), finite > 0.
+ * @param r_eff   effective radius R* [m], finite > 0.
+ * @param m_eff   effective mass m* [kg], finite > 0.
+ * @param p_y     limiting contact pressure [Pa], finite > 0.
+ * @param v_out   receives v_y on success; untouched on error.
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE,
+ *         DC_ERR_RESULT_RANGE.
+ *
+ * # Safety
+ * `v_out` must be NULL or point to writable memory for one double.
+ */
+int32_t dc_elastic_plastic_yield_speed(double e_star,
+                                       double r_eff,
+                                       double m_eff,
+                                       double p_y,
+                                       double *v_out);
+
+/**
  * Fills a dc_contact_spec with its version, size and defaults: no normal law yet (you must
  * set `normal`), DC_DAMPING_NONE, DC_END_FORCE, no tangential/rolling/twisting, every
  * parameter unset (NaN) except e_t = 1, k_r = 0, eta_r = eta_tw = 0, inertia_factor = 0.4.
@@ -1692,8 +1757,10 @@ int32_t dc_contact_spec_init(struct dc_contact_spec *spec);
  * criterion; tangential: from e_t, see docs/force.md).
  *
  * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_SPEC_VERSION (version != DC_CONTACT_SPEC_VERSION or
- *         size != sizeof(dc_contact_spec)), DC_ERR_SPEC_MODEL (unknown selector, viscoelastic with
- *         restitution damping, inertia_factor > 1), DC_ERR_SPEC_UNSET, DC_ERR_CRITERION,
+ *         size neither sizeof(dc_contact_spec) nor the size before yield_pressure was appended,
+ *         whose callers read as leaving it unset), DC_ERR_SPEC_MODEL (unknown selector,
+ *         viscoelastic or elastic-plastic with restitution damping, inertia_factor > 1),
+ *         DC_ERR_SPEC_UNSET, DC_ERR_CRITERION,
  *         DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE, DC_ERR_NEGATIVE, DC_ERR_RESTITUTION_RANGE,
  *         DC_ERR_EXPONENT_RANGE, DC_ERR_RESULT_RANGE. `out` is untouched on error.
  *

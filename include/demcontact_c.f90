@@ -27,6 +27,7 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_NORMAL_LINEAR = 3
   integer(c_int32_t), parameter :: DC_NORMAL_VISCOELASTIC = 4
   integer(c_int32_t), parameter :: DC_NORMAL_DMT = 5
+  integer(c_int32_t), parameter :: DC_NORMAL_ELASTIC_PLASTIC = 6
   integer(c_int32_t), parameter :: DC_DAMPING_NONE = 0
   integer(c_int32_t), parameter :: DC_DAMPING_RESTITUTION = 1
   integer(c_int32_t), parameter :: DC_TANGENTIAL_NONE = 0
@@ -46,6 +47,7 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_MODEL_HERTZ = 2
   integer(c_int32_t), parameter :: DC_MODEL_VISCOELASTIC = 3
   integer(c_int32_t), parameter :: DC_MODEL_DMT = 4
+  integer(c_int32_t), parameter :: DC_MODEL_ELASTIC_PLASTIC = 5
   integer(c_int32_t), parameter :: DC_PLAN_INPUT_VERSION = 1
   integer(c_int32_t), parameter :: DC_PLAN_FIELD_NONE = 0
   integer(c_int32_t), parameter :: DC_PLAN_FIELD_YOUNGS = 1
@@ -153,6 +155,7 @@ module demcontact_c
     real(c_double) :: eta_tw
     real(c_double) :: inertia_factor
     real(c_double) :: work_of_adhesion
+    real(c_double) :: yield_pressure
   end type dc_contact_spec
 
   type, bind(c) :: dc_pair
@@ -419,6 +422,22 @@ module demcontact_c
       real(c_double), intent(out) :: e_out
       integer(c_int32_t) :: dc_e_from_alpha
     end function dc_e_from_alpha
+    function dc_elastic_plastic_restitution(x, e_out) bind(c, name='dc_elastic_plastic_restitution')
+      import
+      real(c_double), value, intent(in) :: x
+      real(c_double), intent(out) :: e_out
+      integer(c_int32_t) :: dc_elastic_plastic_restitution
+    end function dc_elastic_plastic_restitution
+    function dc_elastic_plastic_yield_speed(e_star, r_eff, m_eff, p_y, v_out) bind(c, &
+        name='dc_elastic_plastic_yield_speed')
+      import
+      real(c_double), value, intent(in) :: e_star
+      real(c_double), value, intent(in) :: r_eff
+      real(c_double), value, intent(in) :: m_eff
+      real(c_double), value, intent(in) :: p_y
+      real(c_double), intent(out) :: v_out
+      integer(c_int32_t) :: dc_elastic_plastic_yield_speed
+    end function dc_elastic_plastic_yield_speed
     function dc_contact_spec_init(spec) bind(c, name='dc_contact_spec_init')
       import
       type(dc_contact_spec), intent(inout) :: spec
@@ -1018,6 +1037,31 @@ contains
     if (present(stat)) stat = s
     if (s /= DC_OK) e_out = ieee_value(e_out, ieee_quiet_nan)
   end subroutine e_from_alpha
+
+  !> Elemental form of dc_elastic_plastic_restitution: on error `e_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine elastic_plastic_restitution(x, e_out, stat)
+    real(c_double), intent(in) :: x
+    real(c_double), intent(out) :: e_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_elastic_plastic_restitution(x, e_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) e_out = ieee_value(e_out, ieee_quiet_nan)
+  end subroutine elastic_plastic_restitution
+
+  !> Elemental form of dc_elastic_plastic_yield_speed: on error `v_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine elastic_plastic_yield_speed(e_star, r_eff, m_eff, p_y, v_out, stat)
+    real(c_double), intent(in) :: e_star
+    real(c_double), intent(in) :: r_eff
+    real(c_double), intent(in) :: m_eff
+    real(c_double), intent(in) :: p_y
+    real(c_double), intent(out) :: v_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_elastic_plastic_yield_speed(e_star, r_eff, m_eff, p_y, v_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) v_out = ieee_value(v_out, ieee_quiet_nan)
+  end subroutine elastic_plastic_yield_speed
 
   !> Elemental form of dc_contact_model_init: on error `out` is NaN (numeric) and `stat` the status.
   impure elemental subroutine contact_model_init(spec, out, stat)

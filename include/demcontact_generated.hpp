@@ -135,6 +135,28 @@ inline status e_from_alpha(double alpha, double p, criterion criterion_, double&
     return static_cast<status>(::dc_e_from_alpha(alpha, p, static_cast<std::int32_t>(criterion_), &out));
 }
 
+/// dc_elastic_plastic_restitution: throws demcontact::error on a non-OK status.
+inline double elastic_plastic_restitution(double x) {
+    double out{};
+    detail::check(::dc_elastic_plastic_restitution(x, &out));
+    return out;
+}
+/// dc_elastic_plastic_restitution: returns the status; `out` is written only on status::ok.
+inline status elastic_plastic_restitution(double x, double& out) noexcept {
+    return static_cast<status>(::dc_elastic_plastic_restitution(x, &out));
+}
+
+/// dc_elastic_plastic_yield_speed: throws demcontact::error on a non-OK status.
+inline double elastic_plastic_yield_speed(double e_star, double r_eff, double m_eff, double p_y) {
+    double out{};
+    detail::check(::dc_elastic_plastic_yield_speed(e_star, r_eff, m_eff, p_y, &out));
+    return out;
+}
+/// dc_elastic_plastic_yield_speed: returns the status; `out` is written only on status::ok.
+inline status elastic_plastic_yield_speed(double e_star, double r_eff, double m_eff, double p_y, double& out) noexcept {
+    return static_cast<status>(::dc_elastic_plastic_yield_speed(e_star, r_eff, m_eff, p_y, &out));
+}
+
 /// dc_contact_model_init: throws demcontact::error on a non-OK status.
 inline ::dc_contact_model contact_model_init(const ::dc_contact_spec& spec) {
     ::dc_contact_model out{};

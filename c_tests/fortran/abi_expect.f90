@@ -24,104 +24,106 @@ contains
     v(15) = DC_NORMAL_LINEAR
     v(16) = DC_NORMAL_VISCOELASTIC
     v(17) = DC_NORMAL_DMT
-    v(18) = DC_DAMPING_NONE
-    v(19) = DC_DAMPING_RESTITUTION
-    v(20) = DC_TANGENTIAL_NONE
-    v(21) = DC_TANGENTIAL_LINEAR
-    v(22) = DC_TANGENTIAL_MINDLIN
-    v(23) = DC_TANGENTIAL_MINDLIN_RESCALE
-    v(24) = DC_ROLLING_NONE
-    v(25) = DC_ROLLING_CONSTANT
-    v(26) = DC_ROLLING_EPSD
-    v(27) = DC_TWISTING_NONE
-    v(28) = DC_TWISTING_SDS
-    v(29) = DC_CARRY_ROTATE
-    v(30) = DC_CARRY_PROJECT
-    v(31) = DC_FIT_MODEL_CONSTANT
-    v(32) = DC_FIT_MODEL_VISCOELASTIC
-    v(33) = DC_MODEL_POWERLAW
-    v(34) = DC_MODEL_HERTZ
-    v(35) = DC_MODEL_VISCOELASTIC
-    v(36) = DC_MODEL_DMT
-    v(37) = DC_PLAN_INPUT_VERSION
-    v(38) = DC_PLAN_FIELD_NONE
-    v(39) = DC_PLAN_FIELD_YOUNGS
-    v(40) = DC_PLAN_FIELD_POISSON
-    v(41) = DC_PLAN_FIELD_DENSITY
-    v(42) = DC_PLAN_FIELD_RESTITUTION
-    v(43) = DC_PLAN_FIELD_RADIUS_MIN
-    v(44) = DC_PLAN_FIELD_RADIUS_MAX
-    v(45) = DC_PLAN_FIELD_V_MAX
-    v(46) = DC_PLAN_FIELD_DEPTH
-    v(47) = DC_PLAN_FIELD_GRAVITY
-    v(48) = DC_PLAN_FIELD_PRESSURE
-    v(49) = DC_PLAN_FIELD_SOLID_FRACTION
-    v(50) = DC_PLAN_FIELD_COORDINATION
-    v(51) = DC_PLAN_FIELD_LOAD_FACTOR
-    v(52) = DC_PLAN_FIELD_FRICTION
-    v(53) = DC_PLAN_FIELD_ROLLING_FRICTION
-    v(54) = DC_PLAN_FIELD_OVERLAP_TOL
-    v(55) = DC_PLAN_FIELD_E_TOL
-    v(56) = DC_PLAN_FIELD_STATIC_TOL
-    v(57) = DC_PLAN_FIELD_DURATION_TOL
-    v(58) = DC_PLAN_FIELD_CRITERION
-    v(59) = DC_PLAN_FIELD_STABILITY_FRACTION
-    v(60) = DC_PLAN_FIELD_CONVENTIONAL_DIVISOR
-    v(61) = DC_PLAN_FIELD_WALLS
-    v(62) = DC_PLAN_BINDING_OVERLAP
-    v(63) = DC_PLAN_BINDING_STATIC
-    v(64) = DC_PLAN_BINDING_DURATION
-    v(65) = DC_PLAN_STEP_RESTITUTION
-    v(66) = DC_PLAN_STEP_STABILITY
-    v(67) = DC_PLAN_PAIR_MIN_MIN
-    v(68) = DC_PLAN_PAIR_MIN_MAX
-    v(69) = DC_PLAN_PAIR_MAX_MAX
-    v(70) = DC_PLAN_PAIR_MIN_WALL
-    v(71) = DC_PLAN_PAIR_MAX_WALL
-    v(72) = DC_PLAN_PAIR_MIN_PEAK
-    v(73) = DC_LEVEL_MIN
-    v(74) = DC_LEVEL_MAX
-    v(75) = DC_END_OVERLAP
-    v(76) = DC_END_FORCE
-    v(77) = DC_INTEGRATOR_VELOCITY_VERLET
-    v(78) = DC_INTEGRATOR_SYMPLECTIC_EULER
-    v(79) = DC_DISPATCH_BASELINE
-    v(80) = DC_DISPATCH_AVX2
-    v(81) = DC_DISPATCH_AVX512
-    v(82) = DC_OK
-    v(83) = DC_ERR_NULL_POINTER
-    v(84) = DC_ERR_NOT_FINITE
-    v(85) = DC_ERR_RESTITUTION_RANGE
-    v(86) = DC_ERR_EXPONENT_RANGE
-    v(87) = DC_ERR_NOT_POSITIVE
-    v(88) = DC_ERR_NEGATIVE
-    v(89) = DC_ERR_CRITERION
-    v(90) = DC_ERR_RESULT_RANGE
-    v(91) = DC_ERR_NO_CONVERGENCE
-    v(92) = DC_ERR_BUFFER_TOO_SHORT
-    v(93) = DC_ERR_NO_EVENT
-    v(94) = DC_ERR_LEVEL
-    v(95) = DC_ERR_PLAN
-    v(96) = DC_ERR_POISSON_RANGE
-    v(97) = DC_ERR_PAIR_INVALID
-    v(98) = DC_ERR_BUFFER_LAYOUT
-    v(99) = DC_ERR_SPEC_VERSION
-    v(100) = DC_ERR_SPEC_MODEL
-    v(101) = DC_ERR_SPEC_UNSET
-    v(102) = DC_ERR_CONTACT_MODEL_INVALID
-    v(103) = DC_ERR_NOT_UNIT
-    v(104) = DC_ERR_BUILTIN_MODEL
-    v(105) = DC_ERR_BUILTIN_UNREACHABLE
-    v(106) = DC_ERR_FIT_TOO_FEW
-    v(107) = DC_ERR_FIT_DEGENERATE
-    v(108) = DC_ERR_BUILTIN_VERSION
-    v(109) = DC_ERR_INTEGRATOR
-    v(110) = DC_ERR_STEP_UNSUPPORTED
-    v(111) = DC_ERR_STEP_UNREACHABLE
-    v(112) = DC_ERR_PLAN_RANGE
-    v(113) = DC_ERR_PLAN_INFEASIBLE
-    v(114) = DC_ERR_INTERNAL
-    n = 114
+    v(18) = DC_NORMAL_ELASTIC_PLASTIC
+    v(19) = DC_DAMPING_NONE
+    v(20) = DC_DAMPING_RESTITUTION
+    v(21) = DC_TANGENTIAL_NONE
+    v(22) = DC_TANGENTIAL_LINEAR
+    v(23) = DC_TANGENTIAL_MINDLIN
+    v(24) = DC_TANGENTIAL_MINDLIN_RESCALE
+    v(25) = DC_ROLLING_NONE
+    v(26) = DC_ROLLING_CONSTANT
+    v(27) = DC_ROLLING_EPSD
+    v(28) = DC_TWISTING_NONE
+    v(29) = DC_TWISTING_SDS
+    v(30) = DC_CARRY_ROTATE
+    v(31) = DC_CARRY_PROJECT
+    v(32) = DC_FIT_MODEL_CONSTANT
+    v(33) = DC_FIT_MODEL_VISCOELASTIC
+    v(34) = DC_MODEL_POWERLAW
+    v(35) = DC_MODEL_HERTZ
+    v(36) = DC_MODEL_VISCOELASTIC
+    v(37) = DC_MODEL_DMT
+    v(38) = DC_MODEL_ELASTIC_PLASTIC
+    v(39) = DC_PLAN_INPUT_VERSION
+    v(40) = DC_PLAN_FIELD_NONE
+    v(41) = DC_PLAN_FIELD_YOUNGS
+    v(42) = DC_PLAN_FIELD_POISSON
+    v(43) = DC_PLAN_FIELD_DENSITY
+    v(44) = DC_PLAN_FIELD_RESTITUTION
+    v(45) = DC_PLAN_FIELD_RADIUS_MIN
+    v(46) = DC_PLAN_FIELD_RADIUS_MAX
+    v(47) = DC_PLAN_FIELD_V_MAX
+    v(48) = DC_PLAN_FIELD_DEPTH
+    v(49) = DC_PLAN_FIELD_GRAVITY
+    v(50) = DC_PLAN_FIELD_PRESSURE
+    v(51) = DC_PLAN_FIELD_SOLID_FRACTION
+    v(52) = DC_PLAN_FIELD_COORDINATION
+    v(53) = DC_PLAN_FIELD_LOAD_FACTOR
+    v(54) = DC_PLAN_FIELD_FRICTION
+    v(55) = DC_PLAN_FIELD_ROLLING_FRICTION
+    v(56) = DC_PLAN_FIELD_OVERLAP_TOL
+    v(57) = DC_PLAN_FIELD_E_TOL
+    v(58) = DC_PLAN_FIELD_STATIC_TOL
+    v(59) = DC_PLAN_FIELD_DURATION_TOL
+    v(60) = DC_PLAN_FIELD_CRITERION
+    v(61) = DC_PLAN_FIELD_STABILITY_FRACTION
+    v(62) = DC_PLAN_FIELD_CONVENTIONAL_DIVISOR
+    v(63) = DC_PLAN_FIELD_WALLS
+    v(64) = DC_PLAN_BINDING_OVERLAP
+    v(65) = DC_PLAN_BINDING_STATIC
+    v(66) = DC_PLAN_BINDING_DURATION
+    v(67) = DC_PLAN_STEP_RESTITUTION
+    v(68) = DC_PLAN_STEP_STABILITY
+    v(69) = DC_PLAN_PAIR_MIN_MIN
+    v(70) = DC_PLAN_PAIR_MIN_MAX
+    v(71) = DC_PLAN_PAIR_MAX_MAX
+    v(72) = DC_PLAN_PAIR_MIN_WALL
+    v(73) = DC_PLAN_PAIR_MAX_WALL
+    v(74) = DC_PLAN_PAIR_MIN_PEAK
+    v(75) = DC_LEVEL_MIN
+    v(76) = DC_LEVEL_MAX
+    v(77) = DC_END_OVERLAP
+    v(78) = DC_END_FORCE
+    v(79) = DC_INTEGRATOR_VELOCITY_VERLET
+    v(80) = DC_INTEGRATOR_SYMPLECTIC_EULER
+    v(81) = DC_DISPATCH_BASELINE
+    v(82) = DC_DISPATCH_AVX2
+    v(83) = DC_DISPATCH_AVX512
+    v(84) = DC_OK
+    v(85) = DC_ERR_NULL_POINTER
+    v(86) = DC_ERR_NOT_FINITE
+    v(87) = DC_ERR_RESTITUTION_RANGE
+    v(88) = DC_ERR_EXPONENT_RANGE
+    v(89) = DC_ERR_NOT_POSITIVE
+    v(90) = DC_ERR_NEGATIVE
+    v(91) = DC_ERR_CRITERION
+    v(92) = DC_ERR_RESULT_RANGE
+    v(93) = DC_ERR_NO_CONVERGENCE
+    v(94) = DC_ERR_BUFFER_TOO_SHORT
+    v(95) = DC_ERR_NO_EVENT
+    v(96) = DC_ERR_LEVEL
+    v(97) = DC_ERR_PLAN
+    v(98) = DC_ERR_POISSON_RANGE
+    v(99) = DC_ERR_PAIR_INVALID
+    v(100) = DC_ERR_BUFFER_LAYOUT
+    v(101) = DC_ERR_SPEC_VERSION
+    v(102) = DC_ERR_SPEC_MODEL
+    v(103) = DC_ERR_SPEC_UNSET
+    v(104) = DC_ERR_CONTACT_MODEL_INVALID
+    v(105) = DC_ERR_NOT_UNIT
+    v(106) = DC_ERR_BUILTIN_MODEL
+    v(107) = DC_ERR_BUILTIN_UNREACHABLE
+    v(108) = DC_ERR_FIT_TOO_FEW
+    v(109) = DC_ERR_FIT_DEGENERATE
+    v(110) = DC_ERR_BUILTIN_VERSION
+    v(111) = DC_ERR_INTEGRATOR
+    v(112) = DC_ERR_STEP_UNSUPPORTED
+    v(113) = DC_ERR_STEP_UNREACHABLE
+    v(114) = DC_ERR_PLAN_RANGE
+    v(115) = DC_ERR_PLAN_INFEASIBLE
+    v(116) = DC_ERR_INTERNAL
+    n = 116
   end subroutine expected_consts
 
   subroutine expected_layout(v, n)
@@ -184,371 +186,373 @@ contains
           - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
       v(28) = transfer(c_loc(x_dc_contact_spec%work_of_adhesion), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
+      v(29) = transfer(c_loc(x_dc_contact_spec%yield_pressure), 0_c_intptr_t) &
+          - transfer(c_loc(x_dc_contact_spec), 0_c_intptr_t)
     end block
     block
       type(dc_pair), target :: x_dc_pair
-      v(29) = c_sizeof(x_dc_pair)
-      v(30) = transfer(c_loc(x_dc_pair%model), 0_c_intptr_t) &
+      v(30) = c_sizeof(x_dc_pair)
+      v(31) = transfer(c_loc(x_dc_pair%model), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(31) = transfer(c_loc(x_dc_pair%kernel), 0_c_intptr_t) &
+      v(32) = transfer(c_loc(x_dc_pair%kernel), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(32) = transfer(c_loc(x_dc_pair%criterion), 0_c_intptr_t) &
+      v(33) = transfer(c_loc(x_dc_pair%criterion), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(33) = transfer(c_loc(x_dc_pair%clamp), 0_c_intptr_t) &
+      v(34) = transfer(c_loc(x_dc_pair%clamp), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(34) = transfer(c_loc(x_dc_pair%p), 0_c_intptr_t) &
+      v(35) = transfer(c_loc(x_dc_pair%p), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(35) = transfer(c_loc(x_dc_pair%stiffness), 0_c_intptr_t) &
+      v(36) = transfer(c_loc(x_dc_pair%stiffness), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(36) = transfer(c_loc(x_dc_pair%alpha), 0_c_intptr_t) &
+      v(37) = transfer(c_loc(x_dc_pair%alpha), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(37) = transfer(c_loc(x_dc_pair%damping_a), 0_c_intptr_t) &
+      v(38) = transfer(c_loc(x_dc_pair%damping_a), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(38) = transfer(c_loc(x_dc_pair%e), 0_c_intptr_t) &
+      v(39) = transfer(c_loc(x_dc_pair%e), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(39) = transfer(c_loc(x_dc_pair%k), 0_c_intptr_t) &
+      v(40) = transfer(c_loc(x_dc_pair%k), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(40) = transfer(c_loc(x_dc_pair%c), 0_c_intptr_t) &
+      v(41) = transfer(c_loc(x_dc_pair%c), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
-      v(41) = transfer(c_loc(x_dc_pair%h), 0_c_intptr_t) &
+      v(42) = transfer(c_loc(x_dc_pair%h), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_pair), 0_c_intptr_t)
     end block
     block
       type(dc_contact_model), target :: x_dc_contact_model
-      v(42) = c_sizeof(x_dc_contact_model)
-      v(43) = transfer(c_loc(x_dc_contact_model%magic), 0_c_intptr_t) &
+      v(43) = c_sizeof(x_dc_contact_model)
+      v(44) = transfer(c_loc(x_dc_contact_model%magic), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(44) = transfer(c_loc(x_dc_contact_model%history_len), 0_c_intptr_t) &
+      v(45) = transfer(c_loc(x_dc_contact_model%history_len), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(45) = transfer(c_loc(x_dc_contact_model%tangential), 0_c_intptr_t) &
+      v(46) = transfer(c_loc(x_dc_contact_model%tangential), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(46) = transfer(c_loc(x_dc_contact_model%rolling), 0_c_intptr_t) &
+      v(47) = transfer(c_loc(x_dc_contact_model%rolling), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(47) = transfer(c_loc(x_dc_contact_model%twisting), 0_c_intptr_t) &
+      v(48) = transfer(c_loc(x_dc_contact_model%twisting), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(48) = transfer(c_loc(x_dc_contact_model%carry), 0_c_intptr_t) &
+      v(49) = transfer(c_loc(x_dc_contact_model%carry), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(49) = transfer(c_loc(x_dc_contact_model%normal), 0_c_intptr_t) &
+      v(50) = transfer(c_loc(x_dc_contact_model%normal), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(50) = transfer(c_loc(x_dc_contact_model%mu), 0_c_intptr_t) &
+      v(51) = transfer(c_loc(x_dc_contact_model%mu), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(51) = transfer(c_loc(x_dc_contact_model%kt), 0_c_intptr_t) &
+      v(52) = transfer(c_loc(x_dc_contact_model%kt), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(52) = transfer(c_loc(x_dc_contact_model%zeta_t), 0_c_intptr_t) &
+      v(53) = transfer(c_loc(x_dc_contact_model%zeta_t), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(53) = transfer(c_loc(x_dc_contact_model%kappa), 0_c_intptr_t) &
+      v(54) = transfer(c_loc(x_dc_contact_model%kappa), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(54) = transfer(c_loc(x_dc_contact_model%mu_r), 0_c_intptr_t) &
+      v(55) = transfer(c_loc(x_dc_contact_model%mu_r), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(55) = transfer(c_loc(x_dc_contact_model%k_r), 0_c_intptr_t) &
+      v(56) = transfer(c_loc(x_dc_contact_model%k_r), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(56) = transfer(c_loc(x_dc_contact_model%eta_r), 0_c_intptr_t) &
+      v(57) = transfer(c_loc(x_dc_contact_model%eta_r), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(57) = transfer(c_loc(x_dc_contact_model%mu_tw), 0_c_intptr_t) &
+      v(58) = transfer(c_loc(x_dc_contact_model%mu_tw), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(58) = transfer(c_loc(x_dc_contact_model%k_tw), 0_c_intptr_t) &
+      v(59) = transfer(c_loc(x_dc_contact_model%k_tw), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(59) = transfer(c_loc(x_dc_contact_model%eta_tw), 0_c_intptr_t) &
+      v(60) = transfer(c_loc(x_dc_contact_model%eta_tw), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
-      v(60) = transfer(c_loc(x_dc_contact_model%reserved(1)), 0_c_intptr_t) &
+      v(61) = transfer(c_loc(x_dc_contact_model%reserved(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_model), 0_c_intptr_t)
     end block
     block
       type(dc_contact_state), target :: x_dc_contact_state
-      v(61) = c_sizeof(x_dc_contact_state)
-      v(62) = transfer(c_loc(x_dc_contact_state%n(1)), 0_c_intptr_t) &
+      v(62) = c_sizeof(x_dc_contact_state)
+      v(63) = transfer(c_loc(x_dc_contact_state%n(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(63) = transfer(c_loc(x_dc_contact_state%overlap), 0_c_intptr_t) &
+      v(64) = transfer(c_loc(x_dc_contact_state%overlap), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(64) = transfer(c_loc(x_dc_contact_state%v1(1)), 0_c_intptr_t) &
+      v(65) = transfer(c_loc(x_dc_contact_state%v1(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(65) = transfer(c_loc(x_dc_contact_state%v2(1)), 0_c_intptr_t) &
+      v(66) = transfer(c_loc(x_dc_contact_state%v2(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(66) = transfer(c_loc(x_dc_contact_state%w1(1)), 0_c_intptr_t) &
+      v(67) = transfer(c_loc(x_dc_contact_state%w1(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(67) = transfer(c_loc(x_dc_contact_state%w2(1)), 0_c_intptr_t) &
+      v(68) = transfer(c_loc(x_dc_contact_state%w2(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(68) = transfer(c_loc(x_dc_contact_state%r1), 0_c_intptr_t) &
+      v(69) = transfer(c_loc(x_dc_contact_state%r1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(69) = transfer(c_loc(x_dc_contact_state%r2), 0_c_intptr_t) &
+      v(70) = transfer(c_loc(x_dc_contact_state%r2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(70) = transfer(c_loc(x_dc_contact_state%m1), 0_c_intptr_t) &
+      v(71) = transfer(c_loc(x_dc_contact_state%m1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
-      v(71) = transfer(c_loc(x_dc_contact_state%m2), 0_c_intptr_t) &
+      v(72) = transfer(c_loc(x_dc_contact_state%m2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_state), 0_c_intptr_t)
     end block
     block
       type(dc_contact_result), target :: x_dc_contact_result
-      v(72) = c_sizeof(x_dc_contact_result)
-      v(73) = transfer(c_loc(x_dc_contact_result%force(1)), 0_c_intptr_t) &
+      v(73) = c_sizeof(x_dc_contact_result)
+      v(74) = transfer(c_loc(x_dc_contact_result%force(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
-      v(74) = transfer(c_loc(x_dc_contact_result%torque1(1)), 0_c_intptr_t) &
+      v(75) = transfer(c_loc(x_dc_contact_result%torque1(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
-      v(75) = transfer(c_loc(x_dc_contact_result%torque2(1)), 0_c_intptr_t) &
+      v(76) = transfer(c_loc(x_dc_contact_result%torque2(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
-      v(76) = transfer(c_loc(x_dc_contact_result%f_n), 0_c_intptr_t) &
+      v(77) = transfer(c_loc(x_dc_contact_result%f_n), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
-      v(77) = transfer(c_loc(x_dc_contact_result%ft(1)), 0_c_intptr_t) &
+      v(78) = transfer(c_loc(x_dc_contact_result%ft(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
-      v(78) = transfer(c_loc(x_dc_contact_result%sliding), 0_c_intptr_t) &
+      v(79) = transfer(c_loc(x_dc_contact_result%sliding), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
-      v(79) = transfer(c_loc(x_dc_contact_result%rolling_sliding), 0_c_intptr_t) &
+      v(80) = transfer(c_loc(x_dc_contact_result%rolling_sliding), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_result), 0_c_intptr_t)
     end block
     block
       type(dc_contact_energy), target :: x_dc_contact_energy
-      v(80) = c_sizeof(x_dc_contact_energy)
-      v(81) = transfer(c_loc(x_dc_contact_energy%dissipated), 0_c_intptr_t) &
+      v(81) = c_sizeof(x_dc_contact_energy)
+      v(82) = transfer(c_loc(x_dc_contact_energy%dissipated), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
-      v(82) = transfer(c_loc(x_dc_contact_energy%normal_damping), 0_c_intptr_t) &
+      v(83) = transfer(c_loc(x_dc_contact_energy%normal_damping), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
-      v(83) = transfer(c_loc(x_dc_contact_energy%tangential_damping), 0_c_intptr_t) &
+      v(84) = transfer(c_loc(x_dc_contact_energy%tangential_damping), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
-      v(84) = transfer(c_loc(x_dc_contact_energy%tangential_slip), 0_c_intptr_t) &
+      v(85) = transfer(c_loc(x_dc_contact_energy%tangential_slip), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
-      v(85) = transfer(c_loc(x_dc_contact_energy%tangential_elastic), 0_c_intptr_t) &
+      v(86) = transfer(c_loc(x_dc_contact_energy%tangential_elastic), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
-      v(86) = transfer(c_loc(x_dc_contact_energy%rolling_damping), 0_c_intptr_t) &
+      v(87) = transfer(c_loc(x_dc_contact_energy%rolling_damping), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
-      v(87) = transfer(c_loc(x_dc_contact_energy%rolling_slip), 0_c_intptr_t) &
+      v(88) = transfer(c_loc(x_dc_contact_energy%rolling_slip), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
-      v(88) = transfer(c_loc(x_dc_contact_energy%rolling_elastic), 0_c_intptr_t) &
+      v(89) = transfer(c_loc(x_dc_contact_energy%rolling_elastic), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
-      v(89) = transfer(c_loc(x_dc_contact_energy%twisting_damping), 0_c_intptr_t) &
+      v(90) = transfer(c_loc(x_dc_contact_energy%twisting_damping), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
-      v(90) = transfer(c_loc(x_dc_contact_energy%twisting_slip), 0_c_intptr_t) &
+      v(91) = transfer(c_loc(x_dc_contact_energy%twisting_slip), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
-      v(91) = transfer(c_loc(x_dc_contact_energy%twisting_elastic), 0_c_intptr_t) &
+      v(92) = transfer(c_loc(x_dc_contact_energy%twisting_elastic), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_energy), 0_c_intptr_t)
     end block
     block
       type(dc_contact_batch), target :: x_dc_contact_batch
-      v(92) = c_sizeof(x_dc_contact_batch)
-      v(93) = transfer(c_loc(x_dc_contact_batch%n), 0_c_intptr_t) &
+      v(93) = c_sizeof(x_dc_contact_batch)
+      v(94) = transfer(c_loc(x_dc_contact_batch%n), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(94) = transfer(c_loc(x_dc_contact_batch%history_stride), 0_c_intptr_t) &
+      v(95) = transfer(c_loc(x_dc_contact_batch%history_stride), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(95) = transfer(c_loc(x_dc_contact_batch%normal), 0_c_intptr_t) &
+      v(96) = transfer(c_loc(x_dc_contact_batch%normal), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(96) = transfer(c_loc(x_dc_contact_batch%overlap), 0_c_intptr_t) &
+      v(97) = transfer(c_loc(x_dc_contact_batch%overlap), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(97) = transfer(c_loc(x_dc_contact_batch%v1), 0_c_intptr_t) &
+      v(98) = transfer(c_loc(x_dc_contact_batch%v1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(98) = transfer(c_loc(x_dc_contact_batch%v2), 0_c_intptr_t) &
+      v(99) = transfer(c_loc(x_dc_contact_batch%v2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(99) = transfer(c_loc(x_dc_contact_batch%w1), 0_c_intptr_t) &
+      v(100) = transfer(c_loc(x_dc_contact_batch%w1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(100) = transfer(c_loc(x_dc_contact_batch%w2), 0_c_intptr_t) &
+      v(101) = transfer(c_loc(x_dc_contact_batch%w2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(101) = transfer(c_loc(x_dc_contact_batch%r1), 0_c_intptr_t) &
+      v(102) = transfer(c_loc(x_dc_contact_batch%r1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(102) = transfer(c_loc(x_dc_contact_batch%r2), 0_c_intptr_t) &
+      v(103) = transfer(c_loc(x_dc_contact_batch%r2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(103) = transfer(c_loc(x_dc_contact_batch%m1), 0_c_intptr_t) &
+      v(104) = transfer(c_loc(x_dc_contact_batch%m1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(104) = transfer(c_loc(x_dc_contact_batch%m2), 0_c_intptr_t) &
+      v(105) = transfer(c_loc(x_dc_contact_batch%m2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(105) = transfer(c_loc(x_dc_contact_batch%history), 0_c_intptr_t) &
+      v(106) = transfer(c_loc(x_dc_contact_batch%history), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(106) = transfer(c_loc(x_dc_contact_batch%f_n), 0_c_intptr_t) &
+      v(107) = transfer(c_loc(x_dc_contact_batch%f_n), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(107) = transfer(c_loc(x_dc_contact_batch%force), 0_c_intptr_t) &
+      v(108) = transfer(c_loc(x_dc_contact_batch%force), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(108) = transfer(c_loc(x_dc_contact_batch%torque1), 0_c_intptr_t) &
+      v(109) = transfer(c_loc(x_dc_contact_batch%torque1), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
-      v(109) = transfer(c_loc(x_dc_contact_batch%torque2), 0_c_intptr_t) &
+      v(110) = transfer(c_loc(x_dc_contact_batch%torque2), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_contact_batch), 0_c_intptr_t)
     end block
     block
       type(dc_fit_result), target :: x_dc_fit_result
-      v(110) = c_sizeof(x_dc_fit_result)
-      v(111) = transfer(c_loc(x_dc_fit_result%beta), 0_c_intptr_t) &
+      v(111) = c_sizeof(x_dc_fit_result)
+      v(112) = transfer(c_loc(x_dc_fit_result%beta), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(112) = transfer(c_loc(x_dc_fit_result%beta_se), 0_c_intptr_t) &
+      v(113) = transfer(c_loc(x_dc_fit_result%beta_se), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(113) = transfer(c_loc(x_dc_fit_result%e_const), 0_c_intptr_t) &
+      v(114) = transfer(c_loc(x_dc_fit_result%e_const), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(114) = transfer(c_loc(x_dc_fit_result%e_const_se), 0_c_intptr_t) &
+      v(115) = transfer(c_loc(x_dc_fit_result%e_const_se), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(115) = transfer(c_loc(x_dc_fit_result%chi2_viscoelastic), 0_c_intptr_t) &
+      v(116) = transfer(c_loc(x_dc_fit_result%chi2_viscoelastic), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(116) = transfer(c_loc(x_dc_fit_result%chi2_constant), 0_c_intptr_t) &
+      v(117) = transfer(c_loc(x_dc_fit_result%chi2_constant), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(117) = transfer(c_loc(x_dc_fit_result%max_residual_viscoelastic), 0_c_intptr_t) &
+      v(118) = transfer(c_loc(x_dc_fit_result%max_residual_viscoelastic), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(118) = transfer(c_loc(x_dc_fit_result%max_residual_constant), 0_c_intptr_t) &
+      v(119) = transfer(c_loc(x_dc_fit_result%max_residual_constant), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(119) = transfer(c_loc(x_dc_fit_result%v_min), 0_c_intptr_t) &
+      v(120) = transfer(c_loc(x_dc_fit_result%v_min), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(120) = transfer(c_loc(x_dc_fit_result%v_max), 0_c_intptr_t) &
+      v(121) = transfer(c_loc(x_dc_fit_result%v_max), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(121) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_min), 0_c_intptr_t) &
+      v(122) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_min), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(122) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_max), 0_c_intptr_t) &
+      v(123) = transfer(c_loc(x_dc_fit_result%e_viscoelastic_at_v_max), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(123) = transfer(c_loc(x_dc_fit_result%max_model_deviation), 0_c_intptr_t) &
+      v(124) = transfer(c_loc(x_dc_fit_result%max_model_deviation), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(124) = transfer(c_loc(x_dc_fit_result%model), 0_c_intptr_t) &
+      v(125) = transfer(c_loc(x_dc_fit_result%model), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(125) = transfer(c_loc(x_dc_fit_result%se_from_scatter), 0_c_intptr_t) &
+      v(126) = transfer(c_loc(x_dc_fit_result%se_from_scatter), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(126) = transfer(c_loc(x_dc_fit_result%iterations), 0_c_intptr_t) &
+      v(127) = transfer(c_loc(x_dc_fit_result%iterations), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
-      v(127) = transfer(c_loc(x_dc_fit_result%robust), 0_c_intptr_t) &
+      v(128) = transfer(c_loc(x_dc_fit_result%robust), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_fit_result), 0_c_intptr_t)
     end block
     block
       type(dc_plan_input), target :: x_dc_plan_input
-      v(128) = c_sizeof(x_dc_plan_input)
-      v(129) = transfer(c_loc(x_dc_plan_input%version), 0_c_intptr_t) &
+      v(129) = c_sizeof(x_dc_plan_input)
+      v(130) = transfer(c_loc(x_dc_plan_input%version), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(130) = transfer(c_loc(x_dc_plan_input%size), 0_c_intptr_t) &
+      v(131) = transfer(c_loc(x_dc_plan_input%size), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(131) = transfer(c_loc(x_dc_plan_input%youngs), 0_c_intptr_t) &
+      v(132) = transfer(c_loc(x_dc_plan_input%youngs), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(132) = transfer(c_loc(x_dc_plan_input%poisson), 0_c_intptr_t) &
+      v(133) = transfer(c_loc(x_dc_plan_input%poisson), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(133) = transfer(c_loc(x_dc_plan_input%density), 0_c_intptr_t) &
+      v(134) = transfer(c_loc(x_dc_plan_input%density), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(134) = transfer(c_loc(x_dc_plan_input%restitution), 0_c_intptr_t) &
+      v(135) = transfer(c_loc(x_dc_plan_input%restitution), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(135) = transfer(c_loc(x_dc_plan_input%radius_min), 0_c_intptr_t) &
+      v(136) = transfer(c_loc(x_dc_plan_input%radius_min), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(136) = transfer(c_loc(x_dc_plan_input%radius_max), 0_c_intptr_t) &
+      v(137) = transfer(c_loc(x_dc_plan_input%radius_max), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(137) = transfer(c_loc(x_dc_plan_input%v_max), 0_c_intptr_t) &
+      v(138) = transfer(c_loc(x_dc_plan_input%v_max), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(138) = transfer(c_loc(x_dc_plan_input%depth), 0_c_intptr_t) &
+      v(139) = transfer(c_loc(x_dc_plan_input%depth), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(139) = transfer(c_loc(x_dc_plan_input%gravity), 0_c_intptr_t) &
+      v(140) = transfer(c_loc(x_dc_plan_input%gravity), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(140) = transfer(c_loc(x_dc_plan_input%pressure), 0_c_intptr_t) &
+      v(141) = transfer(c_loc(x_dc_plan_input%pressure), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(141) = transfer(c_loc(x_dc_plan_input%solid_fraction), 0_c_intptr_t) &
+      v(142) = transfer(c_loc(x_dc_plan_input%solid_fraction), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(142) = transfer(c_loc(x_dc_plan_input%coordination), 0_c_intptr_t) &
+      v(143) = transfer(c_loc(x_dc_plan_input%coordination), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(143) = transfer(c_loc(x_dc_plan_input%load_factor), 0_c_intptr_t) &
+      v(144) = transfer(c_loc(x_dc_plan_input%load_factor), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(144) = transfer(c_loc(x_dc_plan_input%friction), 0_c_intptr_t) &
+      v(145) = transfer(c_loc(x_dc_plan_input%friction), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(145) = transfer(c_loc(x_dc_plan_input%rolling_friction), 0_c_intptr_t) &
+      v(146) = transfer(c_loc(x_dc_plan_input%rolling_friction), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(146) = transfer(c_loc(x_dc_plan_input%overlap_tol), 0_c_intptr_t) &
+      v(147) = transfer(c_loc(x_dc_plan_input%overlap_tol), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(147) = transfer(c_loc(x_dc_plan_input%e_tol), 0_c_intptr_t) &
+      v(148) = transfer(c_loc(x_dc_plan_input%e_tol), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(148) = transfer(c_loc(x_dc_plan_input%static_tol), 0_c_intptr_t) &
+      v(149) = transfer(c_loc(x_dc_plan_input%static_tol), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(149) = transfer(c_loc(x_dc_plan_input%duration_tol), 0_c_intptr_t) &
+      v(150) = transfer(c_loc(x_dc_plan_input%duration_tol), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(150) = transfer(c_loc(x_dc_plan_input%criterion), 0_c_intptr_t) &
+      v(151) = transfer(c_loc(x_dc_plan_input%criterion), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(151) = transfer(c_loc(x_dc_plan_input%walls), 0_c_intptr_t) &
+      v(152) = transfer(c_loc(x_dc_plan_input%walls), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(152) = transfer(c_loc(x_dc_plan_input%stability_fraction), 0_c_intptr_t) &
+      v(153) = transfer(c_loc(x_dc_plan_input%stability_fraction), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
-      v(153) = transfer(c_loc(x_dc_plan_input%conventional_divisor), 0_c_intptr_t) &
+      v(154) = transfer(c_loc(x_dc_plan_input%conventional_divisor), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_input), 0_c_intptr_t)
     end block
     block
       type(dc_plan_result), target :: x_dc_plan_result
-      v(154) = c_sizeof(x_dc_plan_result)
-      v(155) = transfer(c_loc(x_dc_plan_result%youngs_soft), 0_c_intptr_t) &
+      v(155) = c_sizeof(x_dc_plan_result)
+      v(156) = transfer(c_loc(x_dc_plan_result%youngs_soft), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(156) = transfer(c_loc(x_dc_plan_result%softening), 0_c_intptr_t) &
+      v(157) = transfer(c_loc(x_dc_plan_result%softening), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(157) = transfer(c_loc(x_dc_plan_result%binding), 0_c_intptr_t) &
+      v(158) = transfer(c_loc(x_dc_plan_result%binding), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(158) = transfer(c_loc(x_dc_plan_result%binding_dt), 0_c_intptr_t) &
+      v(159) = transfer(c_loc(x_dc_plan_result%binding_dt), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(159) = transfer(c_loc(x_dc_plan_result%dt), 0_c_intptr_t) &
+      v(160) = transfer(c_loc(x_dc_plan_result%dt), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(160) = transfer(c_loc(x_dc_plan_result%dt_restitution), 0_c_intptr_t) &
+      v(161) = transfer(c_loc(x_dc_plan_result%dt_restitution), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(161) = transfer(c_loc(x_dc_plan_result%dt_stability), 0_c_intptr_t) &
+      v(162) = transfer(c_loc(x_dc_plan_result%dt_stability), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(162) = transfer(c_loc(x_dc_plan_result%dt_conventional), 0_c_intptr_t) &
+      v(163) = transfer(c_loc(x_dc_plan_result%dt_conventional), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(163) = transfer(c_loc(x_dc_plan_result%speedup), 0_c_intptr_t) &
+      v(164) = transfer(c_loc(x_dc_plan_result%speedup), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(164) = transfer(c_loc(x_dc_plan_result%alpha), 0_c_intptr_t) &
+      v(165) = transfer(c_loc(x_dc_plan_result%alpha), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(165) = transfer(c_loc(x_dc_plan_result%max_overlap_ratio), 0_c_intptr_t) &
+      v(166) = transfer(c_loc(x_dc_plan_result%max_overlap_ratio), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(166) = transfer(c_loc(x_dc_plan_result%max_overlap_ratio_real), 0_c_intptr_t) &
+      v(167) = transfer(c_loc(x_dc_plan_result%max_overlap_ratio_real), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(167) = transfer(c_loc(x_dc_plan_result%static_overlap_ratio), 0_c_intptr_t) &
+      v(168) = transfer(c_loc(x_dc_plan_result%static_overlap_ratio), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(168) = transfer(c_loc(x_dc_plan_result%static_overlap_ratio_real), 0_c_intptr_t) &
+      v(169) = transfer(c_loc(x_dc_plan_result%static_overlap_ratio_real), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(169) = transfer(c_loc(x_dc_plan_result%max_overlap_pair), 0_c_intptr_t) &
+      v(170) = transfer(c_loc(x_dc_plan_result%max_overlap_pair), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(170) = transfer(c_loc(x_dc_plan_result%static_pair), 0_c_intptr_t) &
+      v(171) = transfer(c_loc(x_dc_plan_result%static_pair), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(171) = transfer(c_loc(x_dc_plan_result%stress), 0_c_intptr_t) &
+      v(172) = transfer(c_loc(x_dc_plan_result%stress), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(172) = transfer(c_loc(x_dc_plan_result%static_force), 0_c_intptr_t) &
+      v(173) = transfer(c_loc(x_dc_plan_result%static_force), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(173) = transfer(c_loc(x_dc_plan_result%duration), 0_c_intptr_t) &
+      v(174) = transfer(c_loc(x_dc_plan_result%duration), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(174) = transfer(c_loc(x_dc_plan_result%duration_real), 0_c_intptr_t) &
+      v(175) = transfer(c_loc(x_dc_plan_result%duration_real), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(175) = transfer(c_loc(x_dc_plan_result%duration_change), 0_c_intptr_t) &
+      v(176) = transfer(c_loc(x_dc_plan_result%duration_change), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(176) = transfer(c_loc(x_dc_plan_result%t_hertz), 0_c_intptr_t) &
+      v(177) = transfer(c_loc(x_dc_plan_result%t_hertz), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(177) = transfer(c_loc(x_dc_plan_result%dt_over_t_hertz), 0_c_intptr_t) &
+      v(178) = transfer(c_loc(x_dc_plan_result%dt_over_t_hertz), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(178) = transfer(c_loc(x_dc_plan_result%steps_per_contact), 0_c_intptr_t) &
+      v(179) = transfer(c_loc(x_dc_plan_result%steps_per_contact), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(179) = transfer(c_loc(x_dc_plan_result%e_plain_at_dt), 0_c_intptr_t) &
+      v(180) = transfer(c_loc(x_dc_plan_result%e_plain_at_dt), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(180) = transfer(c_loc(x_dc_plan_result%e_plain_min), 0_c_intptr_t) &
+      v(181) = transfer(c_loc(x_dc_plan_result%e_plain_min), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(181) = transfer(c_loc(x_dc_plan_result%e_plain_max), 0_c_intptr_t) &
+      v(182) = transfer(c_loc(x_dc_plan_result%e_plain_max), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
-      v(182) = transfer(c_loc(x_dc_plan_result%e_plain_mean), 0_c_intptr_t) &
+      v(183) = transfer(c_loc(x_dc_plan_result%e_plain_mean), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_plan_result), 0_c_intptr_t)
     end block
     block
       type(dc_duration_plan), target :: x_dc_duration_plan
-      v(183) = c_sizeof(x_dc_duration_plan)
-      v(184) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) &
+      v(184) = c_sizeof(x_dc_duration_plan)
+      v(185) = transfer(c_loc(x_dc_duration_plan%tag), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(185) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) &
+      v(186) = transfer(c_loc(x_dc_duration_plan%p), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(186) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) &
+      v(187) = transfer(c_loc(x_dc_duration_plan%q), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(187) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) &
+      v(188) = transfer(c_loc(x_dc_duration_plan%amp), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(188) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) &
+      v(189) = transfer(c_loc(x_dc_duration_plan%lgamma_q), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(189) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) &
+      v(190) = transfer(c_loc(x_dc_duration_plan%ln_aq), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(190) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) &
+      v(191) = transfer(c_loc(x_dc_duration_plan%level), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(191) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) &
+      v(192) = transfer(c_loc(x_dc_duration_plan%n), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(192) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) &
+      v(193) = transfer(c_loc(x_dc_duration_plan%nodes(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
-      v(193) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) &
+      v(194) = transfer(c_loc(x_dc_duration_plan%weights(1)), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_duration_plan), 0_c_intptr_t)
     end block
     block
       type(dc_energy), target :: x_dc_energy
-      v(194) = c_sizeof(x_dc_energy)
-      v(195) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) &
+      v(195) = c_sizeof(x_dc_energy)
+      v(196) = transfer(c_loc(x_dc_energy%e), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(196) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) &
+      v(197) = transfer(c_loc(x_dc_energy%loading), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(197) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) &
+      v(198) = transfer(c_loc(x_dc_energy%unloading), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(198) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) &
+      v(199) = transfer(c_loc(x_dc_energy%returned), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
-      v(199) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) &
+      v(200) = transfer(c_loc(x_dc_energy%clamped), 0_c_intptr_t) &
           - transfer(c_loc(x_dc_energy), 0_c_intptr_t)
     end block
-    n = 199
+    n = 200
   end subroutine expected_layout
 end module abi_expect

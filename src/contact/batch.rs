@@ -28,6 +28,7 @@ use super::{rolling_constant, rolling_epsd, step_exact, twisting_sds};
 use crate::Error;
 use crate::force::pair::{Consts, Law, Visit, eval};
 use crate::force::registry::{dispatch, normal_force_raw, unclamped};
+use crate::force::stateful;
 
 /// Inputs of n contacts.
 #[derive(Clone, Copy, Debug)]
@@ -315,6 +316,9 @@ fn rolling_pass<const EPSD: bool>(
             let Some(h) = h else { continue };
             let kn = if m.k_r > 0.0 {
                 0.0
+            } else if m.layout.normal_state.is_some() {
+                // As the scalar path: a law with state is elastic, p F/δ.
+                pair.p * f / k.d
             } else {
                 let fe = normal_force_raw(pair.kernel, pair.consts, k.d, 0.0, k.r_eff, k.m_eff);
                 pair.p * fe / k.d
@@ -412,7 +416,34 @@ fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOu
     }
 }
 
-/// Final pass: the current normal becomes the stored one; separated contacts start afresh.
+/// Pass 1 of a normal law with state ([`stateful`]): its force from, and its update of, the
+/// state slot `at` of each contact's history (as the scalar path computes them, bit for bit).
+#[inline(never)]
+fn stateful_pass(m: &ContactModel, b: &BatchIn<'_>, o: &mut BatchOut<'_>, at: usize) {
+    let pair = &m.normal;
+    let it = b
+        .normal
+        .iter()
+        .zip(b.overlap)
+        .zip(b.v1.iter().zip(b.v2))
+        .zip(b.r1.iter().zip(b.r2).zip(b.m1.iter().zip(b.m2)))
+        .zip(o.f_n.iter_mut().zip(o.force.iter_mut()))
+        .zip(o.history.chunks_exact_mut(o.stride.max(1)));
+    for (((((&n, &d), (&v1, &v2)), ((&r1, &r2), (&m1, &m2))), (fo, fv)), h) in it {
+        // As Kin::of (same operations, same bits).
+        let vn = -dot(sub(v1, v2), n);
+        let (r, mm) = (harmonic(r1, r2), harmonic(m1, m2));
+        let f = match h.get_mut(at) {
+            Some(slot) => stateful::force(pair.kernel, &pair.consts, d, vn, r, mm, slot),
+            None => f64::NAN,
+        };
+        *fo = f;
+        *fv = normal_vector(f, n);
+    }
+}
+
+/// Final pass: the current normal becomes the stored one; separated contacts start afresh
+/// (but for the state of a normal law with state, which its own pass has set).
 fn frame_pass(m: &ContactModel, b: &BatchIn<'_>, o: &mut BatchOut<'_>) {
     let len = m.layout.len;
     if len == 0 {
@@ -430,7 +461,13 @@ fn frame_pass(m: &ContactModel, b: &BatchIn<'_>, o: &mut BatchOut<'_>) {
                 hn.copy_from_slice(&n[..]);
             }
         } else {
+            let keep = m.layout.normal_state.and_then(|at| h.get(at).copied());
             h.fill(0.0);
+            if let (Some(at), Some(x)) = (m.layout.normal_state, keep)
+                && let Some(slot) = h.get_mut(at)
+            {
+                *slot = x;
+            }
         }
     }
 }
@@ -515,7 +552,9 @@ fn compute(
     out: &mut BatchOut<'_>,
 ) -> Result<(), Error> {
     let pair = &m.normal;
-    if let Some(at) = m.layout.step {
+    if let Some(at) = m.layout.normal_state {
+        stateful_pass(m, inp, out, at);
+    } else if let Some(at) = m.layout.step {
         dispatch(
             unclamped(pair.kernel),
             StepPass {
@@ -824,7 +863,7 @@ pub fn contact_force_batch_fused(
     out: &mut BatchOut<'_>,
 ) -> Result<Option<(usize, Error)>, Error> {
     check_call(m, inp, dt, out)?;
-    if !needs_torque(m) && !m.step.on() {
+    if !needs_torque(m) && !m.step.on() && m.layout.normal_state.is_none() {
         return normal_only_fused(m, inp, dt, out);
     }
     let n = inp.overlap.len();

@@ -20,7 +20,11 @@
 //!   damping = c |rate|² dt           (while the dashpot acts),
 //!   elastic = E_new.
 //! The constant rolling torque M has no spring: slip = −M·ω_r dt. The normal dashpot:
-//! (F_n − F_el) vn dt, F_el the normal law's force at vn = 0.
+//! (F_n − F_el) vn dt, F_el the normal law's force at vn = 0. A normal law with state
+//! ([`crate::force::stateful`], e.g. elastic–plastic) reports its own loss of the step as the
+//! normal term (the plastic work, exact from the state before and after); its potential in the
+//! balance is then the elastic energy of its unloading curve
+//! ([`crate::force::elastic_plastic::stored_energy`]).
 //!
 //! Not counted, on purpose: the energy a law creates. `TANGENTIAL_MINDLIN` changes k_t under a
 //! stored ξ (E_before is taken at the current k_t, because the previous one is not stored), so
@@ -45,6 +49,7 @@ use super::tangential_mindlin::Mindlin;
 use super::tangential_mindlin_rescale::contact_radius;
 use super::vec3::{V3, add, dot, norm2, scale};
 use crate::force::registry::normal_force_raw;
+use crate::force::stateful;
 
 /// The ledger of one contact step [J] (the Rust form of `dc_contact_energy`).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -165,12 +170,22 @@ pub(crate) fn ledger(
     let pair = &m.normal;
     let f = out.fn_;
     let touching = s.overlap > 0.0;
-    let fe = if touching {
+    let fe = if touching && m.layout.normal_state.is_none() {
         normal_force_raw(pair.kernel, pair.consts, k.d, 0.0, k.r_eff, k.m_eff)
     } else {
         f
     };
-    e.normal_damping = (f - fe) * k.vn * dt;
+    e.normal_damping = match m.layout.normal_state {
+        // A law with state: its own loss of the step (the plastic work), exact.
+        Some(at) => stateful::dissipated(
+            pair.kernel,
+            &pair.consts,
+            k.r_eff,
+            get1(old, at),
+            get1(new, at),
+        ),
+        None => (f - fe) * k.vn * dt,
+    };
     let frame = Kin::frame(s, get3(old, 0), dt, m.carry);
     if let Some(at) = m.layout.tangential {
         let (k0, s_old, kt, s_c, s_new) = if touching {

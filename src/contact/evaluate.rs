@@ -13,6 +13,7 @@ use super::vec3::{V3, add, all_finite, cross, none_negative, normal_vector, scal
 use super::{rolling_constant, rolling_epsd, step_exact, twisting_sds};
 use crate::Error;
 use crate::force::registry::{needs, normal_force_raw};
+use crate::force::stateful;
 
 /// Forces and torques of one contact.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -71,7 +72,10 @@ pub(crate) fn check_model_parts(
     step: bool,
 ) -> Result<(), Error> {
     let [tangential, rolling, twisting, carry] = sel;
-    needs(kernel).ok_or(Error::ContactModelInvalid)?;
+    let has_state = stateful::has_state(kernel);
+    if needs(kernel).is_none() && !has_state {
+        return Err(Error::ContactModelInvalid);
+    }
     let codes_ok = matches!(
         tangential,
         select::TANGENTIAL_NONE
@@ -86,8 +90,10 @@ pub(crate) fn check_model_parts(
     // Integer reductions instead of a test and a branch per value (this runs on every call).
     let consts_ok = all_finite(consts) & none_negative(consts);
     let [.., kt, _, kappa, _, _, _, _, _, _] = *consts;
-    let layout_ok = layout == super::model::Layout::of_model(tangential, rolling, twisting, step)
-        && layout.len <= HISTORY_MAX;
+    let layout_ok = layout
+        == super::model::Layout::of_model(tangential, rolling, twisting, has_state, step)
+        && layout.len <= HISTORY_MAX
+        && !(has_state && step);
     if !(codes_ok && consts_ok && layout_ok && kappa > 0.0) {
         return Err(Error::ContactModelInvalid);
     }
@@ -150,19 +156,47 @@ pub(crate) fn evaluate(
     let k = Kin::of(s);
     let pair = &m.normal;
     if !(s.overlap > 0.0) {
-        let f = normal_force_raw(pair.kernel, pair.consts, k.d, k.vn, k.r_eff, k.m_eff);
-        // Not touching: the history is reset so that a new contact starts fresh; only an
-        // adhesive normal law still acts (no tangential, rolling or twisting force).
+        // Not touching: the history is reset so that a new contact starts fresh (a normal law
+        // with state keeps what its own force function leaves in its slot); only an adhesive
+        // normal law still acts (no tangential, rolling or twisting force).
+        let (f, kept) = match m.layout.normal_state {
+            Some(at) => {
+                let mut st = h.get(at).copied().unwrap_or(0.0);
+                let f = stateful::force(
+                    pair.kernel,
+                    &pair.consts,
+                    k.d,
+                    k.vn,
+                    k.r_eff,
+                    k.m_eff,
+                    &mut st,
+                );
+                (f, Some((at, st)))
+            }
+            None => (
+                normal_force_raw(pair.kernel, pair.consts, k.d, k.vn, k.r_eff, k.m_eff),
+                None,
+            ),
+        };
         *h = [0.0; HISTORY_MAX];
+        if let Some((at, st)) = kept
+            && let Some(x) = h.get_mut(at)
+        {
+            *x = st;
+        }
         return ContactForce {
             fn_: f,
             force: normal_vector(f, k.n),
             ..ContactForce::default()
         };
     }
-    let f = match m.layout.step.and_then(|at| h.get_mut(at)) {
-        Some(slot) => step_exact::contact_normal(m, &k, dt, slot),
-        None => normal_force_raw(pair.kernel, pair.consts, k.d, k.vn, k.r_eff, k.m_eff),
+    let f = if let Some(slot) = m.layout.normal_state.and_then(|at| h.get_mut(at)) {
+        stateful::force(pair.kernel, &pair.consts, k.d, k.vn, k.r_eff, k.m_eff, slot)
+    } else {
+        match m.layout.step.and_then(|at| h.get_mut(at)) {
+            Some(slot) => step_exact::contact_normal(m, &k, dt, slot),
+            None => normal_force_raw(pair.kernel, pair.consts, k.d, k.vn, k.r_eff, k.m_eff),
+        }
     };
     let mut out = ContactForce {
         fn_: f,
@@ -222,6 +256,10 @@ pub(crate) fn evaluate(
             if let (Some(at), Some(frame)) = (m.layout.rolling, &frame) {
                 let kn = if m.k_r > 0.0 {
                     0.0
+                } else if m.layout.normal_state.is_some() {
+                    // A law with state has no dashpot: its force is elastic; p F/δ as for the
+                    // others (the secant of the branch it is on, scaled as Hertz's tangent).
+                    pair.p * f / k.d
                 } else {
                     // The normal law's elastic tangent stiffness p F_el/δ (vn = 0: no damping).
                     let fe = normal_force_raw(pair.kernel, pair.consts, k.d, 0.0, k.r_eff, k.m_eff);

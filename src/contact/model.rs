@@ -38,7 +38,9 @@ pub mod select {
 
 /// Doubles per contact of the largest model: normal of the last step (3), tangential spring (3,
 /// and 1 more, the contact radius of the last step, for `TANGENTIAL_MINDLIN_RESCALE`), rolling
-/// spring torque (3), twisting spring torque (1), step-aware damping state (1).
+/// spring torque (3), twisting spring torque (1), and one of: the step-aware damping state (1)
+/// or the state of a normal law with state (1; such laws have no step-aware form, so the two
+/// never meet and 12 still bounds every model).
 /// (C: `DC_CONTACT_HISTORY_MAX`.)
 ///
 /// cbindgen:ignore
@@ -57,6 +59,9 @@ pub struct Layout {
     pub rolling: Option<usize>,
     /// Offset of the twisting spring torque [N m] (1 double), if any.
     pub twisting: Option<usize>,
+    /// Offset of the state of a normal law with state (1 double, e.g. δ_max of the
+    /// elastic–plastic law: [`crate::force::stateful`]), if the law has one; after the springs.
+    pub normal_state: Option<usize>,
     /// Offset of the step-aware damping state (1 double: 0 fresh, ±R), if the model is
     /// step-aware ([`super::step_exact`]); always last.
     pub step: Option<usize>,
@@ -85,13 +90,30 @@ impl Layout {
             tangential: t,
             rolling: r,
             twisting: tw,
+            normal_state: None,
             step: None,
         }
     }
 
-    /// The layout of a model with the given selectors, step-aware (`step`) or not.
-    pub fn of_model(tangential: i32, rolling: i32, twisting: i32, step: bool) -> Layout {
+    /// The layout of a model with the given selectors whose normal law has state
+    /// (`normal_state`, [`crate::force::stateful`]) or not, step-aware (`step`) or not.
+    pub fn of_model(
+        tangential: i32,
+        rolling: i32,
+        twisting: i32,
+        normal_state: bool,
+        step: bool,
+    ) -> Layout {
         let l = Layout::of(tangential, rolling, twisting);
+        let l = if normal_state {
+            Layout {
+                len: l.len + 1,
+                normal_state: Some(l.len),
+                ..l
+            }
+        } else {
+            l
+        };
         if step {
             Layout {
                 len: l.len + 1,

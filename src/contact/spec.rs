@@ -5,7 +5,7 @@
 use super::model::{ContactModel, Layout, select};
 use super::tangential::zeta_from_e_t;
 use super::tangential_mindlin::eight_g_star;
-use crate::force::{PairModel, dmt, hertz, powerlaw, viscoelastic};
+use crate::force::{PairModel, dmt, elastic_plastic, hertz, powerlaw, stateful, viscoelastic};
 use crate::{EndCriterion, Error};
 
 /// Normal-law selectors (the C constants `DC_NORMAL_*` equal these).
@@ -22,6 +22,9 @@ pub mod normal {
     pub const VISCOELASTIC: i32 = 4;
     /// Adhesive DMT: Hertz minus 2π w R*, attraction beyond touching ([`crate::force::dmt`]).
     pub const DMT: i32 = 5;
+    /// Elastic–plastic (Thornton 1997): Hertz to the yield pressure p_y, then plastic; one
+    /// double of state ([`crate::force::elastic_plastic`]).
+    pub const ELASTIC_PLASTIC: i32 = 6;
 }
 
 /// Normal-damping selectors (`DC_DAMPING_*`).
@@ -89,6 +92,8 @@ pub struct ContactSpec {
     pub inertia_factor: f64,
     /// Work of adhesion w [J/m²] (DMT).
     pub work_of_adhesion: f64,
+    /// Limiting contact pressure p_y [Pa] (elastic–plastic).
+    pub yield_pressure: f64,
 }
 
 impl Default for ContactSpec {
@@ -124,6 +129,7 @@ impl Default for ContactSpec {
             eta_tw: 0.0,
             inertia_factor: 0.4,
             work_of_adhesion: u,
+            yield_pressure: u,
         }
     }
 }
@@ -208,6 +214,17 @@ fn normal_law(s: &ContactSpec, crit: EndCriterion) -> Result<PairModel, Error> {
             viscoelastic::viscoelastic_from_factor(hertz_factor(s)?, set(s.visco_a)?, crit)
         }
         normal::DMT => dmt::dmt_from_factor(hertz_factor(s)?, set(s.work_of_adhesion)?, e_n, crit),
+        normal::ELASTIC_PLASTIC => {
+            // The plastic work is this law's loss; a restitution target would be ignored.
+            if s.damping != damping::NONE {
+                return Err(Error::SpecModel);
+            }
+            elastic_plastic::elastic_plastic_from_factor(
+                hertz_factor(s)?,
+                set(s.yield_pressure)?,
+                crit,
+            )
+        }
         _ => Err(Error::SpecModel),
     }
 }
@@ -236,7 +253,13 @@ pub fn contact_model(s: &ContactSpec) -> Result<ContactModel, Error> {
         mu_tw: 0.0,
         k_tw: 0.0,
         eta_tw: 0.0,
-        layout: Layout::of(s.tangential, s.rolling, s.twisting),
+        layout: Layout::of_model(
+            s.tangential,
+            s.rolling,
+            s.twisting,
+            stateful::has_state(normal.kernel),
+            false,
+        ),
         step: super::step_exact::StepExact::default(),
     };
     if !matches!(s.carry, select::CARRY_ROTATE | select::CARRY_PROJECT) {

@@ -414,7 +414,7 @@ pub fn set_step(m: &ContactModel, dt: f64, integrator: i32) -> Result<ContactMod
     }
     Ok(ContactModel {
         step: StepExact { scale, coef },
-        layout: Layout::of_model(m.tangential, m.rolling, m.twisting, true),
+        layout: Layout::of_model(m.tangential, m.rolling, m.twisting, false, true),
         ..*m
     })
 }

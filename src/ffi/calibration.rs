@@ -73,3 +73,52 @@ pub unsafe extern "C" fn dc_e_from_alpha(
         })
     }
 }
+
+/// Restitution of a head-on impact with the elastic-plastic normal law
+/// (DC_NORMAL_ELASTIC_PLASTIC; Thornton 1997) at impact speed v, from x = v/v_y (v_y from
+/// dc_elastic_plastic_yield_speed): e = 1 for x <= 1 (the contact stays elastic), else with
+/// y = 1/x  e = (6 sqrt(3)/5)^(1/2) (1 - y^2/6)^(1/2) (y/(y + 2 sqrt(6/5 - y^2/5)))^(1/4).
+/// Exact for the law as implemented (checked against an integration of the contact in
+/// tests/elastic_plastic.rs).
+///
+/// @param x      v/v_y >= 0, finite.
+/// @param e_out  receives e in (0, 1] on success; untouched on error.
+/// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_NEGATIVE.
+///
+/// # Safety
+/// `e_out` must be NULL or point to writable memory for one double.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_elastic_plastic_restitution(x: f64, e_out: *mut f64) -> i32 {
+    // SAFETY: forwarded caller contract on e_out.
+    unsafe { write_result(e_out, || crate::force::elastic_plastic::restitution(x)) }
+}
+
+/// Yield speed v_y [m/s] of the elastic-plastic normal law: the head-on impact speed at which
+/// the contact first yields, 1/2 m* v_y^2 = (8/15) E* sqrt(R*) d_y^(5/2) with
+/// d_y = (pi p_y/(2 E*))^2 R*.
+///
+/// @param e_star  effective modulus E* [Pa] (dc_effective_modulus), finite > 0.
+/// @param r_eff   effective radius R* [m], finite > 0.
+/// @param m_eff   effective mass m* [kg], finite > 0.
+/// @param p_y     limiting contact pressure [Pa], finite > 0.
+/// @param v_out   receives v_y on success; untouched on error.
+/// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE,
+///         DC_ERR_RESULT_RANGE.
+///
+/// # Safety
+/// `v_out` must be NULL or point to writable memory for one double.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_elastic_plastic_yield_speed(
+    e_star: f64,
+    r_eff: f64,
+    m_eff: f64,
+    p_y: f64,
+    v_out: *mut f64,
+) -> i32 {
+    // SAFETY: forwarded caller contract on v_out.
+    unsafe {
+        write_result(v_out, || {
+            crate::force::elastic_plastic::yield_speed(e_star, r_eff, m_eff, p_y)
+        })
+    }
+}

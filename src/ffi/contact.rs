@@ -20,7 +20,9 @@ use super::force::dc_pair;
 /// Version of dc_contact_spec this library reads (dc_contact_spec_init sets it).
 pub const DC_CONTACT_SPEC_VERSION: u32 = 1;
 /// Doubles of history per contact for the largest contact model
-/// (dc_contact_history_len gives the exact, usually smaller, figure of one model).
+/// (dc_contact_history_len gives the exact, usually smaller, figure of one model). A normal law
+/// with state (DC_NORMAL_ELASTIC_PLASTIC) adds one double; it has no step-aware form, so its
+/// double and the step-aware one never meet and 12 still bounds every model.
 pub const DC_CONTACT_HISTORY_MAX: usize = 12;
 
 /// Normal law: Hertz from E, nu of both bodies, k = (4/3) E* sqrt(R*) per contact.
@@ -35,6 +37,14 @@ pub const DC_NORMAL_VISCOELASTIC: i32 = 4;
 /// beyond touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of
 /// separation); never clamped: requires DC_END_OVERLAP.
 pub const DC_NORMAL_DMT: i32 = 5;
+/// Normal law: elastic-perfectly-plastic (Thornton 1997): Hertz up to the limiting contact
+/// pressure yield_pressure = p_y (yield overlap d_y = (pi p_y/(2 E*))^2 R*), then
+/// F = F_y + pi p_y R* (d - d_y); unloading and reloading along a Hertz curve of enlarged
+/// radius with a residual overlap. One double of history (the largest overlap); no dashpot
+/// (damping must be DC_DAMPING_NONE: the loss is plastic, e(v) from
+/// dc_elastic_plastic_restitution). Contact models only: no dc_pair constructor, no
+/// step-aware form (DC_ERR_STEP_UNSUPPORTED).
+pub const DC_NORMAL_ELASTIC_PLASTIC: i32 = 6;
 /// Normal damping: none (e_n = 1).
 pub const DC_DAMPING_NONE: i32 = 0;
 /// Normal damping: alpha calibrated exactly from e_n for the criterion.
@@ -77,6 +87,7 @@ const _: () = assert!(
         && DC_NORMAL_LINEAR == normal::LINEAR
         && DC_NORMAL_VISCOELASTIC == normal::VISCOELASTIC
         && DC_NORMAL_DMT == normal::DMT
+        && DC_NORMAL_ELASTIC_PLASTIC == normal::ELASTIC_PLASTIC
         && DC_DAMPING_NONE == damping::NONE
         && DC_DAMPING_RESTITUTION == damping::RESTITUTION
         && DC_TANGENTIAL_NONE == select::TANGENTIAL_NONE
@@ -161,7 +172,13 @@ pub struct dc_contact_spec {
     pub inertia_factor: f64,
     /// Work of adhesion w >= 0 [J/m^2] (DC_NORMAL_DMT: pull-off force 2 pi w R*).
     pub work_of_adhesion: f64,
+    /// Limiting contact pressure p_y > 0 [Pa] (DC_NORMAL_ELASTIC_PLASTIC). Appended: a caller
+    /// compiled without it passes the shorter size, and reads as unset (NaN).
+    pub yield_pressure: f64,
 }
+
+/// sizeof(dc_contact_spec) before `yield_pressure` was appended (still accepted).
+const SPEC_SIZE_V1_DMT: usize = core::mem::offset_of!(dc_contact_spec, yield_pressure);
 
 impl From<&dc_contact_spec> for ContactSpec {
     fn from(s: &dc_contact_spec) -> Self {
@@ -193,6 +210,7 @@ impl From<&dc_contact_spec> for ContactSpec {
             eta_tw: s.eta_tw,
             inertia_factor: s.inertia_factor,
             work_of_adhesion: s.work_of_adhesion,
+            yield_pressure: s.yield_pressure,
         }
     }
 }
@@ -284,8 +302,14 @@ fn model_of(m: &dc_contact_model) -> Result<ContactModel, Error> {
         coef: [c0, c1, c2, c3, c4],
     };
     let step_on = scale.to_bits() != 0;
-    let layout = Layout::of_model(m.tangential, m.rolling, m.twisting, step_on);
     let p = &m.normal;
+    let layout = Layout::of_model(
+        m.tangential,
+        m.rolling,
+        m.twisting,
+        crate::force::stateful::has_state(p.kernel),
+        step_on,
+    );
     let criterion = match (p.criterion, p.clamp) {
         (0, 0) => EndCriterion::Overlap,
         (1, 1) => EndCriterion::Force,
@@ -501,39 +525,47 @@ impl From<ContactEnergy> for dc_contact_energy {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn dc_contact_spec_init(spec: *mut dc_contact_spec) -> i32 {
     // SAFETY: forwarded caller contract on spec.
-    unsafe {
-        write_result(spec, || {
-            let d = ContactSpec::default();
-            Ok(dc_contact_spec {
-                version: DC_CONTACT_SPEC_VERSION,
-                size: core::mem::size_of::<dc_contact_spec>() as u32,
-                normal: d.normal,
-                damping: d.damping,
-                criterion: d.criterion,
-                tangential: d.tangential,
-                rolling: d.rolling,
-                twisting: d.twisting,
-                E1: d.e1,
-                nu1: d.nu1,
-                E2: d.e2,
-                nu2: d.nu2,
-                p: d.p,
-                k_n: d.k_n,
-                e_n: d.e_n,
-                visco_A: d.visco_a,
-                mu: d.mu,
-                k_t: d.k_t,
-                e_t: d.e_t,
-                mu_r: d.mu_r,
-                k_r: d.k_r,
-                eta_r: d.eta_r,
-                mu_tw: d.mu_tw,
-                k_tw: d.k_tw,
-                eta_tw: d.eta_tw,
-                inertia_factor: d.inertia_factor,
-                work_of_adhesion: d.work_of_adhesion,
-            })
-        })
+    unsafe { write_result(spec, || Ok(dc_contact_spec::from_default())) }
+}
+
+impl dc_contact_spec {
+    /// What dc_contact_spec_init writes.
+    fn from_default() -> dc_contact_spec {
+        {
+            {
+                let d = ContactSpec::default();
+                dc_contact_spec {
+                    version: DC_CONTACT_SPEC_VERSION,
+                    size: core::mem::size_of::<dc_contact_spec>() as u32,
+                    normal: d.normal,
+                    damping: d.damping,
+                    criterion: d.criterion,
+                    tangential: d.tangential,
+                    rolling: d.rolling,
+                    twisting: d.twisting,
+                    E1: d.e1,
+                    nu1: d.nu1,
+                    E2: d.e2,
+                    nu2: d.nu2,
+                    p: d.p,
+                    k_n: d.k_n,
+                    e_n: d.e_n,
+                    visco_A: d.visco_a,
+                    mu: d.mu,
+                    k_t: d.k_t,
+                    e_t: d.e_t,
+                    mu_r: d.mu_r,
+                    k_r: d.k_r,
+                    eta_r: d.eta_r,
+                    mu_tw: d.mu_tw,
+                    k_tw: d.k_tw,
+                    eta_tw: d.eta_tw,
+                    inertia_factor: d.inertia_factor,
+                    work_of_adhesion: d.work_of_adhesion,
+                    yield_pressure: d.yield_pressure,
+                }
+            }
+        }
     }
 }
 
@@ -542,8 +574,10 @@ pub unsafe extern "C" fn dc_contact_spec_init(spec: *mut dc_contact_spec) -> i32
 /// criterion; tangential: from e_t, see docs/force.md).
 ///
 /// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_SPEC_VERSION (version != DC_CONTACT_SPEC_VERSION or
-///         size != sizeof(dc_contact_spec)), DC_ERR_SPEC_MODEL (unknown selector, viscoelastic with
-///         restitution damping, inertia_factor > 1), DC_ERR_SPEC_UNSET, DC_ERR_CRITERION,
+///         size neither sizeof(dc_contact_spec) nor the size before yield_pressure was appended,
+///         whose callers read as leaving it unset), DC_ERR_SPEC_MODEL (unknown selector,
+///         viscoelastic or elastic-plastic with restitution damping, inertia_factor > 1),
+///         DC_ERR_SPEC_UNSET, DC_ERR_CRITERION,
 ///         DC_ERR_NOT_FINITE, DC_ERR_NOT_POSITIVE, DC_ERR_NEGATIVE, DC_ERR_RESTITUTION_RANGE,
 ///         DC_ERR_EXPONENT_RANGE, DC_ERR_RESULT_RANGE. `out` is untouched on error.
 ///
@@ -563,17 +597,29 @@ pub unsafe extern "C" fn dc_contact_model_init(
         let head = spec.cast::<[u32; 2]>().read_unaligned();
         (head[0], head[1])
     };
-    if version != DC_CONTACT_SPEC_VERSION
-        || size as usize != core::mem::size_of::<dc_contact_spec>()
-    {
+    let size = size as usize;
+    let full = core::mem::size_of::<dc_contact_spec>();
+    if version != DC_CONTACT_SPEC_VERSION || !(size == full || size == SPEC_SIZE_V1_DMT) {
         return if out.is_null() {
             DC_ERR_NULL_POINTER
         } else {
             DC_ERR_SPEC_VERSION
         };
     }
-    // SAFETY: the caller declared `size` = our struct size readable.
-    let s = unsafe { spec.read_unaligned() };
+    // The caller's fields (`size` bytes), the ones appended after its version unset (NaN).
+    let mut s = dc_contact_spec {
+        yield_pressure: f64::NAN,
+        ..dc_contact_spec::from_default()
+    };
+    // SAFETY: the caller declared `size` (<= sizeof, checked) bytes readable; `s` is a plain
+    // struct of integers and doubles with no padding, so any bytes form a valid value.
+    unsafe {
+        core::ptr::copy_nonoverlapping(
+            spec.cast::<u8>(),
+            core::ptr::from_mut(&mut s).cast::<u8>(),
+            size,
+        );
+    }
     // SAFETY: forwarded caller contract on out.
     unsafe { write_result(out, || Ok(contact_model(&ContactSpec::from(&s))?.into())) }
 }

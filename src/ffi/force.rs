@@ -19,6 +19,11 @@ pub const DC_MODEL_VISCOELASTIC: i32 = 3;
 /// dc_pair.model of an adhesive DMT pair (the normal law of a dc_contact_model built with
 /// DC_NORMAL_DMT; there is no dc_pair_* constructor for it).
 pub const DC_MODEL_DMT: i32 = 4;
+/// dc_pair.model of an elastic-plastic pair (the normal law of a dc_contact_model built with
+/// DC_NORMAL_ELASTIC_PLASTIC). Its force needs per-contact state (the largest overlap), so it
+/// exists only inside a contact model: there is no dc_pair_* constructor, and every dc_pair
+/// path refuses its kernel (DC_ERR_PAIR_INVALID; NaN from the unchecked dc_normal_force).
+pub const DC_MODEL_ELASTIC_PLASTIC: i32 = 5;
 
 // The C constants are literals (cbindgen cannot resolve paths); they must equal the core's.
 const _: () = assert!(
@@ -26,6 +31,7 @@ const _: () = assert!(
         && DC_MODEL_HERTZ == MODEL_HERTZ
         && DC_MODEL_VISCOELASTIC == MODEL_VISCOELASTIC
         && DC_MODEL_DMT == crate::force::dmt::MODEL_DMT
+        && DC_MODEL_ELASTIC_PLASTIC == crate::force::elastic_plastic::MODEL_ELASTIC_PLASTIC
 );
 
 /// A calibrated contact model for one material pair (type pair): plain data, owned by the

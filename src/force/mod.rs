@@ -19,16 +19,20 @@
 //! * [`viscoelastic`]: Brilliantov et al. viscoelastic Hertz, damping constant A.
 //! * [`dmt`]: adhesive DMT (Hertz minus 2π w R*, attraction beyond touching; added last, by the
 //!   steps of docs/force.md).
+//! * [`stateful`]: normal laws with one double of per-contact state (contact-model only).
+//! * [`elastic_plastic`]: Thornton's elastic–perfectly-plastic law (state δ_max).
 //! * [`batch`]: structure-of-arrays loops.
 //! * [`geometry3d`]: two spheres in 3D → normal force vector (nalgebra).
 
 pub mod batch;
 pub mod dmt;
+pub mod elastic_plastic;
 pub mod geometry3d;
 pub mod hertz;
 pub mod pair;
 pub mod powerlaw;
 pub mod registry;
+pub mod stateful;
 pub mod viscoelastic;
 
 pub use pair::{Consts, PairModel};
