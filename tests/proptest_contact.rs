@@ -116,7 +116,8 @@ struct Choice {
 
 fn choice_valid() -> impl Strategy<Value = Choice> {
     (
-        1i32..5,
+        // 1–4 as they are; 5 stands for the elastic–plastic law (a law with state).
+        1i32..6,
         0i32..2,
         0i32..2,
         0i32..4,
@@ -126,8 +127,12 @@ fn choice_valid() -> impl Strategy<Value = Choice> {
     )
         .prop_map(
             |(normal, damping, criterion, tangential, rolling, twisting, carry)| Choice {
-                normal,
-                damping: if normal == DC_NORMAL_VISCOELASTIC {
+                normal: if normal == 5 {
+                    DC_NORMAL_ELASTIC_PLASTIC
+                } else {
+                    normal
+                },
+                damping: if normal == DC_NORMAL_VISCOELASTIC || normal == 5 {
                     0
                 } else {
                     damping
@@ -158,6 +163,7 @@ fn model_valid(c: Choice, mu: f64, e: f64) -> dc_contact_model {
     s.k_n = 1e7;
     s.e_n = e;
     s.visco_A = 1e-6;
+    s.yield_pressure = 1e9;
     s.mu = mu;
     s.k_t = 1e6;
     s.e_t = e;
