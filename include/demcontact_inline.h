@@ -62,6 +62,7 @@
 
 #include "demcontact.h"
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -155,6 +156,8 @@
 #define DC_KERNEL_VISCO_DAMPED_CLAMPED 17
 #define DC_KERNEL_DMT_ELASTIC 18
 #define DC_KERNEL_DMT_DAMPED 19
+/* A normal law with state (src/force/stateful.rs): contact models only, no dc_pair path. */
+#define DC_KERNEL_ELASTIC_PLASTIC 20
 
 /* ------------------------------------------------------------------ bits of a double */
 
@@ -1226,7 +1229,7 @@ DCI_ALWAYS_INLINE_FN double dci_twisting(const dc_contact_model *m, const dci_ki
  * rolling spring (3, EPSD only), the twisting spring (1), the step-aware damping state (1, after
  * dc_contact_model_set_step). -1: absent. nrm: the normal is stored (Layout::has_normal). */
 typedef struct dci_layout {
-    int len, tangential, rolling, twisting, step, nrm;
+    int len, tangential, rolling, twisting, step, nrm, nstate;
 } dci_layout;
 
 DCI_ALWAYS_INLINE_FN dci_layout dci_layout_of(int32_t tangential, int32_t rolling,
@@ -1243,12 +1246,19 @@ DCI_ALWAYS_INLINE_FN dci_layout dci_layout_of(int32_t tangential, int32_t rollin
     l.twisting = has_tw ? l.len : -1;
     l.len += has_tw ? 1 : 0;
     l.step = -1;
+    l.nstate = -1;
     l.nrm = has_t || has_r || has_tw;
     return l;
 }
 
-/* The layout of model m, step-aware (reserved[0] not +0: src/ffi/contact.rs model_of) or not. */
+/* The layout of model m: the state of a normal law with state after the springs (its kernel:
+ * src/contact/model.rs Layout::of_model), then the step-aware slot (reserved[0] not +0:
+ * src/ffi/contact.rs model_of) if any. */
 DCI_ALWAYS_INLINE_FN dci_layout dci_layout_step(dci_layout l, const dc_contact_model *m) {
+    if (m->normal.kernel == DC_KERNEL_ELASTIC_PLASTIC) {
+        l.nstate = l.len;
+        l.len += 1;
+    }
     if (dci_bits(m->reserved[0]) != 0) {
         l.step = l.len;
         l.len += 1;
@@ -1391,6 +1401,35 @@ DCI_ALWAYS_INLINE_FN double dci_step_normal(const dc_contact_model *m, double d,
 #pragma GCC diagnostic pop
 #endif
 
+/* Elastic-plastic normal force (src/force/elastic_plastic.rs `force`; same operations, same
+ * bits): overlap d, effective radius r, *dmax the largest overlap of the contact so far (its
+ * history slot, updated); out of contact (d <= 0 or NaN) 0, the state reset to 0.
+ * Constants: k = (4/3) E*, c = pi p_y, h = (pi p_y/(2 E*))^2 (yield overlap h r). */
+DCI_ALWAYS_INLINE_FN double dci_elastic_plastic(const dc_pair *p, double d, double r,
+                                                double *dmax) {
+    DCI_NO_CONTRACT
+    const double k = p->k, c = p->c, h = p->h;
+    if (!(d > 0.0)) {
+        *dmax = 0.0;
+        return 0.0;
+    }
+    const double m = d > *dmax ? d : *dmax;
+    *dmax = m;
+    const double dy = h * r;
+    if (m <= dy) return k * sqrt(r * d) * d;
+    const double fy = k * sqrt(r * dy) * dy;
+    if (d >= m) return fy + DCI_M(c * r, d - dy);
+    /* unloading/reloading: F = k sqrt(R_p) (d - d_p)^(3/2), R_p = k a_p^3/F_max,
+     * d_p = d_max - F_max/(k a_p), a_p = sqrt(r d_max) */
+    const double fmax = fy + DCI_M(c * r, m - dy);
+    const double ap = sqrt(r * m);
+    const double rp = k * ap * ap * ap / fmax;
+    const double dp = m - fmax / (k * ap);
+    const double kp = k * sqrt(rp);
+    const double s = d - dp;
+    return s > 0.0 ? kp * sqrt(s) * s : 0.0;
+}
+
 /* A model's selectors: its normal kernel, sub-model codes and frame carry (the fields
  * normal.kernel, tangential, rolling, twisting, carry). The evaluation reads them from here, not
  * from the model, so that a host passing constants gets code for that shape alone. */
@@ -1426,16 +1465,25 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_sh
     const dc_pair *pair = &m->normal;
     /* fe: the force at vn = 0, for Ai's rolling stiffness rule below (same pass, same bits) */
     double fe;
-    double f = dci_normal_force_fe(pair, sh.kernel, k.d, k.vn, k.r_eff, k.m_eff, &fe);
-    if (lay.step >= 0 && s->overlap > 0.0)
-        f = dci_step_normal(m, k.d, k.vn, k.r_eff, k.m_eff, dt, &h[lay.step]);
+    double f;
+    if (lay.nstate >= 0) {
+        /* a law with state: no dashpot, its force is elastic (fe = f) */
+        f = fe = dci_elastic_plastic(pair, k.d, k.r_eff, &h[lay.nstate]);
+    } else {
+        f = dci_normal_force_fe(pair, sh.kernel, k.d, k.vn, k.r_eff, k.m_eff, &fe);
+        if (lay.step >= 0 && s->overlap > 0.0)
+            f = dci_step_normal(m, k.d, k.vn, k.r_eff, k.m_eff, dt, &h[lay.step]);
+    }
     dci_v3 ft = dci_v(0.0, 0.0, 0.0), t1 = dci_v(0.0, 0.0, 0.0), t2 = dci_v(0.0, 0.0, 0.0);
     dci_v3 force;
     int sliding = 0, rolling_sliding = 0;
     out->f_n = f;
     if (!(s->overlap > 0.0)) {
-        /* not touching: history reset, only an adhesive normal law acts */
+        /* not touching: history reset (but for the state a law with state left in its slot),
+         * only an adhesive normal law acts */
+        const double keep = lay.nstate >= 0 ? h[lay.nstate] : 0.0;
         for (int i = 0; i < lay.len; i++) h[i] = 0.0;
+        if (lay.nstate >= 0) h[lay.nstate] = keep;
         force = dci_normal_vector(f, k.n);
     } else if (!lay.nrm && sh.rolling == DC_ROLLING_NONE) {
         force = dci_normal_vector(f, k.n);
@@ -1508,7 +1556,8 @@ DC_INLINE_FN int32_t dci_check_contact_model(const dc_contact_model *m, dci_layo
              (m->carry == DC_CARRY_ROTATE || m->carry == DC_CARRY_PROJECT);
     ok = ok && dci_step_fields_ok(m);
     if (!ok) return DC_ERR_CONTACT_MODEL_INVALID;
-    ok = p->kernel >= DC_KERNEL_LIN_ELASTIC && p->kernel <= DC_KERNEL_DMT_DAMPED;
+    ok = (p->kernel >= DC_KERNEL_LIN_ELASTIC && p->kernel <= DC_KERNEL_DMT_DAMPED) ||
+         p->kernel == DC_KERNEL_ELASTIC_PLASTIC;
     ok = ok && (m->tangential == DC_TANGENTIAL_NONE || m->tangential == DC_TANGENTIAL_LINEAR ||
                 m->tangential == DC_TANGENTIAL_MINDLIN ||
                 m->tangential == DC_TANGENTIAL_MINDLIN_RESCALE);
@@ -1879,6 +1928,22 @@ DC_INLINE_FN int32_t dci_spec_normal(const dc_contact_spec *s, int32_t crit, dc_
                  crit, 1.5, kf, alpha, 0.0, e_n, kf, c, h);
         return DC_OK;
     }
+    case DC_NORMAL_ELASTIC_PLASTIC: {
+        /* src/force/elastic_plastic.rs elastic_plastic_from_factor */
+        if (s->damping != DC_DAMPING_NONE) return DC_ERR_SPEC_MODEL;
+        if ((st = dci_spec_hertz_factor(s, &kf)) != DC_OK) return st;
+        if ((st = dci_set(s->yield_pressure)) != DC_OK) return st;
+        const double py = s->yield_pressure;
+        if (!isfinite(py)) return DC_ERR_NOT_FINITE;
+        if (!(py > 0.0)) return DC_ERR_NOT_POSITIVE;
+        const double c = DCI_PI * py;
+        const double q = c * (2.0 / 3.0) / kf;
+        const double h = q * q;
+        if (!(isfinite(c) && isfinite(h) && h > 0.0)) return DC_ERR_RESULT_RANGE;
+        dci_fill(out, DC_MODEL_ELASTIC_PLASTIC, DC_KERNEL_ELASTIC_PLASTIC, crit, 1.5, kf, 0.0, 0.0,
+                 (double)NAN, kf, c, h);
+        return DC_OK;
+    }
     default: return DC_ERR_SPEC_MODEL;
     }
 }
@@ -1941,7 +2006,8 @@ DC_INLINE_FN int32_t dci_contact_model(const dc_contact_spec *s, dc_contact_mode
     } else if (s->twisting != DC_TWISTING_NONE)
         return DC_ERR_SPEC_MODEL;
     m->magic = DCI_CONTACT_MAGIC;
-    m->history_len = (uint32_t)dci_layout_of(s->tangential, s->rolling, s->twisting).len;
+    m->history_len = (uint32_t)dci_layout_of(s->tangential, s->rolling, s->twisting).len +
+                     (m->normal.kernel == DC_KERNEL_ELASTIC_PLASTIC ? 1u : 0u);
     m->tangential = s->tangential;
     m->rolling = s->rolling;
     m->twisting = s->twisting;
@@ -1964,6 +2030,7 @@ DC_INLINE_FN int32_t dc_contact_spec_init_inline(dc_contact_spec *spec) {
     spec->E1 = spec->nu1 = spec->E2 = spec->nu2 = spec->p = spec->k_n = spec->e_n = u;
     spec->visco_A = spec->mu = spec->k_t = spec->mu_r = spec->mu_tw = spec->k_tw = u;
     spec->work_of_adhesion = u;
+    spec->yield_pressure = u;
     spec->e_t = 1.0;
     spec->k_r = 0.0;
     spec->eta_r = spec->eta_tw = 0.0;
@@ -1986,11 +2053,21 @@ DC_INLINE_FN int32_t dc_contact_model_set_carry_inline(dc_contact_model *model, 
 DC_INLINE_FN int32_t dc_contact_model_init_inline(const dc_contact_spec *spec,
                                                   dc_contact_model *out) {
     if (!spec) return DC_ERR_NULL_POINTER;
-    if (spec->version != DC_CONTACT_SPEC_VERSION || spec->size != (uint32_t)sizeof(dc_contact_spec))
+    /* the size before yield_pressure was appended: a caller compiled then (the field unset) */
+    const uint32_t old_size = (uint32_t)offsetof(dc_contact_spec, yield_pressure);
+    if (spec->version != DC_CONTACT_SPEC_VERSION ||
+        (spec->size != (uint32_t)sizeof(dc_contact_spec) && spec->size != old_size))
         return out ? DC_ERR_SPEC_VERSION : DC_ERR_NULL_POINTER;
     if (!out) return DC_ERR_NULL_POINTER;
+    dc_contact_spec full;
+    const dc_contact_spec *s = spec;
+    if (spec->size != (uint32_t)sizeof(dc_contact_spec)) {
+        dc_contact_spec_init_inline(&full);
+        memcpy(&full, spec, spec->size);
+        s = &full;
+    }
     dc_contact_model m;
-    const int32_t st = dci_contact_model(spec, &m);
+    const int32_t st = dci_contact_model(s, &m);
     if (st == DC_OK) *out = m;
     return st;
 }

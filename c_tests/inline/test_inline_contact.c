@@ -4,7 +4,7 @@
  * FMA contraction forced on (-O3 -march=native -ffp-contract=fast).
  *
  *  - specs: random models of every normal law (Hertz, power law incl. p = 1, 3/2, 2, linear,
- *    viscoelastic, DMT), damping, criterion, tangential (none, linear, Mindlin, rescaled Mindlin), rolling (none,
+ *    viscoelastic, DMT, elastic-plastic with its history state), damping, criterion, tangential (none, linear, Mindlin, rescaled Mindlin), rolling (none,
  *    constant, EPSD with given k_r or Ai's rule), twisting (none, SDS), rigid body 2 (E = inf),
  *    and random invalid ones (NaN = unset, inf, negative, out-of-range, bad selector, bad
  *    version): the same status, and on DC_OK the same model bytes;
@@ -17,7 +17,7 @@
  *    the test also requires that sliding, sticking, rolling-limit and separation steps occurred;
  *  - the fast entry dc_contact_force_checked_inline (model checked once by
  *    dc_contact_model_check_inline) along the same trajectories and bad inputs: same bits;
- *  - the shaped entry dc_contact_force_shaped_inline along the same trajectories: 144 shapes
+ *  - the shaped entry dc_contact_force_shaped_inline along the same trajectories: 192 shapes (Hertz damped, clamped, general p clamped, elastic-plastic)
  *    with their codes as compile-time constants (as the plugins instantiate it), the others as
  *    run-time codes: same statuses and bits; dc_contact_model_shape_inline accepts a model's own
  *    shape only;
@@ -57,7 +57,7 @@ static void fail(const char *what, long i) {
 /* A random spec; `bad` corrupts one field. */
 static void random_spec(dc_contact_spec *s, int bad) {
     dc_contact_spec_init(s);
-    s->normal = 1 + pick(5);
+    s->normal = 1 + pick(6);
     s->damping = pick(2);
     s->criterion = s->normal == DC_NORMAL_DMT || uni() < 0.3 ? DC_END_OVERLAP : DC_END_FORCE;
     s->E1 = logu(6, 11);
@@ -73,6 +73,9 @@ static void random_spec(dc_contact_spec *s, int bad) {
         s->visco_A = uni() < 0.2 ? 0.0 : logu(-9, -5);
     }
     s->work_of_adhesion = uni() < 0.2 ? 0.0 : logu(-3, 1);
+    if (s->normal == DC_NORMAL_ELASTIC_PLASTIC) s->damping = DC_DAMPING_NONE;
+    /* p_y from 1e-4 to 1e-1 of E1: yield overlaps from far below to near the trajectories' */
+    s->yield_pressure = s->E1 * logu(-4, -1);
     s->tangential = pick(4);
     s->mu = uni() < 0.1 ? 0.0 : 1.2 * uni();
     s->k_t = logu(3, 8);
@@ -89,16 +92,16 @@ static void random_spec(dc_contact_spec *s, int bad) {
     if (!bad) return;
     double *f[] = {&s->E1, &s->nu1, &s->E2, &s->nu2, &s->p, &s->k_n, &s->e_n, &s->visco_A,
                    &s->mu, &s->k_t, &s->e_t, &s->mu_r, &s->k_r, &s->eta_r, &s->mu_tw, &s->k_tw,
-                   &s->eta_tw, &s->inertia_factor, &s->work_of_adhesion};
+                   &s->eta_tw, &s->inertia_factor, &s->work_of_adhesion, &s->yield_pressure};
     const double vals[8] = {(double)NAN, (double)INFINITY, -(double)INFINITY, -1.0, 0.0, 2.0,
                             1e-320, 1e308};
-    const int which = pick(25);
-    if (which < 19) *f[which] = vals[pick(8)];
-    else if (which == 19) s->normal = pick(2) ? 0 : 6;
-    else if (which == 20) s->tangential = 4;
-    else if (which == 21) s->rolling = -1;
-    else if (which == 22) s->twisting = 2;
-    else if (which == 23) s->criterion = 2;
+    const int which = pick(26);
+    if (which < 20) *f[which] = vals[pick(8)];
+    else if (which == 20) s->normal = pick(2) ? 0 : 7;
+    else if (which == 21) s->tangential = 4;
+    else if (which == 22) s->rolling = -1;
+    else if (which == 23) s->twisting = 2;
+    else if (which == 24) s->criterion = 2;
     else s->damping = 2;
 }
 
@@ -111,12 +114,13 @@ static int same_result(const dc_contact_result *a, const dc_contact_result *b) {
  * Hertz damped, Hertz damped clamped and general p clamped, every tangential, rolling, twisting
  * and carry code. Other kernels: the shape passed as run-time values. Counts constant calls. */
 static long n_shaped_const = 0, n_shaped_runtime = 0;
-/* steps per constant shape: index kernel (0-2) * 48 + tangential * 12 + rolling * 4 +
+/* steps per constant shape: index kernel (0-3) * 48 + tangential * 12 + rolling * 4 +
  * twisting * 2 + carry (the model's own codes, all in range for a valid model) */
-static long shape_hits[144];
+static long shape_hits[192];
 static int shape_index(const dc_contact_model *m) {
     const int k = m->normal.kernel == DC_KERNEL_HERTZ_DAMPED           ? 0
                   : m->normal.kernel == DC_KERNEL_HERTZ_DAMPED_CLAMPED ? 1
+                  : m->normal.kernel == DC_KERNEL_ELASTIC_PLASTIC      ? 3
                                                                        : 2;
     return k * 48 + m->tangential * 12 + m->rolling * 4 + m->twisting * 2 + m->carry;
 }
@@ -153,6 +157,7 @@ static int32_t shaped(const dc_contact_model *m, const dc_contact_state *s, doub
     case DC_KERNEL_HERTZ_DAMPED: SH_T(DC_KERNEL_HERTZ_DAMPED)
     case DC_KERNEL_HERTZ_DAMPED_CLAMPED: SH_T(DC_KERNEL_HERTZ_DAMPED_CLAMPED)
     case DC_KERNEL_GEN_DAMPED_CLAMPED: SH_T(DC_KERNEL_GEN_DAMPED_CLAMPED)
+    case DC_KERNEL_ELASTIC_PLASTIC: SH_T(DC_KERNEL_ELASTIC_PLASTIC)
     default:
         n_shaped_runtime++;
         return SH_CALL(m->normal.kernel, m->tangential, m->rolling, m->twisting, m->carry);
@@ -279,6 +284,8 @@ static int deferred_step(const dc_contact_model *m, const dc_contact_state *s, d
 /* One contact evolved over `steps` steps of `m`; counts of regimes seen added to `seen`. */
 /* step-aware steps compared, first contact steps (onset correction), end corrections fired */
 static long n_step_steps = 0, n_step_onsets = 0, n_step_ends = 0;
+/* elastic-plastic steps in contact, and those on the unloading/reloading curve after yield */
+static long n_ep_steps = 0, n_ep_unload = 0;
 
 static void trajectory(const dc_contact_model *m, long steps, long *seen) {
     double hl[DC_CONTACT_HISTORY_MAX] = {0}, hi[DC_CONTACT_HISTORY_MAX] = {0};
@@ -376,6 +383,12 @@ static void trajectory(const dc_contact_model *m, long steps, long *seen) {
             n_step_steps++;
             n_step_onsets += h0[at] == 0.0 && s.overlap > 0.0;
             n_step_ends += hl[at] < 0.0;
+        }
+        if (m->normal.kernel == DC_KERNEL_ELASTIC_PLASTIC && sl == DC_OK && s.overlap > 0.0) {
+            const int at = (int)m->history_len - 1; /* the state slot is last */
+            const double r = s.r2 == (double)INFINITY ? s.r1 : s.r1 * s.r2 / (s.r1 + s.r2);
+            n_ep_steps++;
+            n_ep_unload += hl[at] > m->normal.h * r && s.overlap < hl[at] && rl.f_n > 0.0;
         }
         if (sl == DC_OK) {
             seen[0]++;
@@ -687,7 +700,8 @@ int main(int argc, char **argv) {
         dc_contact_spec s;
         random_spec(&s, i % 2);
         if (i % 1000 == 999) s.version = 2;
-        if (i % 1000 == 998) s.size -= 8;
+        if (i % 1000 == 998) s.size -= 8;  /* before yield_pressure: accepted, the field unset */
+        if (i % 1000 == 997) s.size -= 16; /* no version's size */
         dc_contact_model a, b;
         memset(&a, 0x77, sizeof a);
         memset(&b, 0x77, sizeof b);
@@ -823,9 +837,11 @@ int main(int argc, char **argv) {
            projected);
     printf("test_inline_contact[%s]: step-aware: %ld trajectories, %ld steps (%ld contact onsets, "
            "%ld end corrections)\n", LANG, stepped, n_step_steps, n_step_onsets, n_step_ends);
+    printf("test_inline_contact[%s]: elastic-plastic: %ld steps in contact, %ld on the "
+           "unloading/reloading curve after yield\n", LANG, n_ep_steps, n_ep_unload);
     int shapes_hit = 0;
-    for (int i = 0; i < 144; i++) shapes_hit += shape_hits[i] > 0;
-    printf("test_inline_contact[%s]: shaped entry: %ld steps with a constant shape (%d of the 144 "
+    for (int i = 0; i < 192; i++) shapes_hit += shape_hits[i] > 0;
+    printf("test_inline_contact[%s]: shaped entry: %ld steps with a constant shape (%d of the 192 "
            "shapes), %ld with a run-time one\n", LANG, n_shaped_const, shapes_hit, n_shaped_runtime);
     printf("test_inline_contact[%s]: deferred entries: %ld steps (%ld with an error status), the "
            "history not finite %ld, results out of range %ld; %ld steps not bit-identical (only "
@@ -838,7 +854,7 @@ int main(int argc, char **argv) {
     /* the comparison must have exercised every regime */
     if (!(seen[1] > 1000 && seen[2] > 1000 && seen[3] > 1000 && seen[4] > 1000 && seen[6] > 1000 &&
           seen[7] > 1000 && specs_bad > 1000 && projected * 4 > models &&
-          n_step_steps > 1000 && n_step_onsets > 10 && n_step_ends > 10 &&
+          n_step_steps > 1000 && n_step_onsets > 10 && n_step_ends > 10 && n_ep_unload > 1000 &&
           n_shaped_const * 10 > n_shaped_runtime && n_shaped_runtime > 1000 &&
           n_deferred * 2 > seen[0] && n_deferred_bad[0] > 0 && n_deferred_bad[1] > 0 &&
           /* every constant shape in the long runs (10^7 steps; shorter runs reach fewer) */

@@ -58,6 +58,8 @@ from ._native import (
     dt_static,
     duration_plan_init,
     e_from_alpha,
+    elastic_plastic_restitution,
+    elastic_plastic_yield_speed,
     effective_modulus,
     energy_partition,
     hertz_stiffness,
@@ -114,7 +116,9 @@ class Normal(_enum.IntEnum):
     """Normal law of a ContactSpec (C: DC_NORMAL_*).
 
     HERTZ: from E, nu of both bodies; POWERLAW: k_n d^p; LINEAR: k_n d; VISCOELASTIC: Hertz with
-    Brilliantov damping visco_A; DMT: adhesive Hertz (work_of_adhesion, Criterion.OVERLAP only).
+    Brilliantov damping visco_A; DMT: adhesive Hertz (work_of_adhesion, Criterion.OVERLAP only);
+    ELASTIC_PLASTIC: Thornton's elastic-perfectly-plastic Hertz (yield_pressure, Damping.NONE;
+    one double of history; contact models only).
     """
 
     HERTZ = _native.NORMAL_HERTZ
@@ -122,6 +126,7 @@ class Normal(_enum.IntEnum):
     LINEAR = _native.NORMAL_LINEAR
     VISCOELASTIC = _native.NORMAL_VISCOELASTIC
     DMT = _native.NORMAL_DMT
+    ELASTIC_PLASTIC = _native.NORMAL_ELASTIC_PLASTIC
 
 
 class Damping(_enum.IntEnum):
@@ -270,6 +275,8 @@ __all__ = [
     "plan",
     "alpha_from_e",
     "e_from_alpha",
+    "elastic_plastic_restitution",
+    "elastic_plastic_yield_speed",
     "max_overlap",
     "time_of_max_overlap",
     "contact_duration",

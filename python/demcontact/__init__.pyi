@@ -57,6 +57,8 @@ __all__ += [
     "plan",
     "alpha_from_e",
     "e_from_alpha",
+    "elastic_plastic_restitution",
+    "elastic_plastic_yield_speed",
     "max_overlap",
     "time_of_max_overlap",
     "contact_duration",
@@ -134,6 +136,7 @@ class Normal(enum.IntEnum):
     LINEAR = 3
     VISCOELASTIC = 4
     DMT = 5
+    ELASTIC_PLASTIC = 6
 
 class Damping(enum.IntEnum):
     NONE = 0
@@ -292,6 +295,10 @@ class DurationPlan:
 # calibration
 def alpha_from_e(e: _ArrayLike, p: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
 def e_from_alpha(alpha: _ArrayLike, p: _ArrayLike, criterion: _Code) -> _FloatOrArray: ...
+def elastic_plastic_restitution(x: _ArrayLike) -> _FloatOrArray: ...
+def elastic_plastic_yield_speed(
+    e_star: _ArrayLike, r_eff: _ArrayLike, m_eff: _ArrayLike, p_y: _ArrayLike
+) -> _FloatOrArray: ...
 
 # material
 def hertz_stiffness(E1: _ArrayLike, nu1: _ArrayLike, R1: _ArrayLike, E2: _ArrayLike, nu2: _ArrayLike, R2: _ArrayLike) -> _FloatOrArray: ...
@@ -436,6 +443,7 @@ class ContactSpec:
         eta_tw: Optional[_Real] = None,
         inertia_factor: Optional[_Real] = None,
         work_of_adhesion: Optional[_Real] = None,
+        yield_pressure: Optional[_Real] = None,
         carry: Optional[_Code] = None,
     ) -> ContactSpec: ...
     @property
@@ -488,6 +496,8 @@ class ContactSpec:
     def inertia_factor(self) -> float: ...
     @property
     def work_of_adhesion(self) -> float: ...
+    @property
+    def yield_pressure(self) -> float: ...
     @property
     def carry(self) -> int: ...
     def model(self) -> ContactModel: ...

@@ -55,6 +55,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
         ("NORMAL_LINEAR", DC_NORMAL_LINEAR),
         ("NORMAL_VISCOELASTIC", DC_NORMAL_VISCOELASTIC),
         ("NORMAL_DMT", DC_NORMAL_DMT),
+        ("NORMAL_ELASTIC_PLASTIC", DC_NORMAL_ELASTIC_PLASTIC),
         ("DAMPING_NONE", DC_DAMPING_NONE),
         ("DAMPING_RESTITUTION", DC_DAMPING_RESTITUTION),
         ("TANGENTIAL_NONE", DC_TANGENTIAL_NONE),
@@ -188,7 +189,7 @@ contact_spec_class! {
     codes: [normal, damping, criterion, tangential, rolling, twisting],
     reals: [
         E1, nu1, E2, nu2, p, k_n, e_n, visco_A, mu, k_t, e_t, mu_r, k_r, eta_r, mu_tw, k_tw,
-        eta_tw, inertia_factor, work_of_adhesion,
+        eta_tw, inertia_factor, work_of_adhesion, yield_pressure,
     ],
 }
 

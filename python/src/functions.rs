@@ -62,6 +62,22 @@ ufunc!(
     e_from_alpha, Cheap, (alpha, p), (criterion), c::calibration::dc_e_from_alpha
 );
 
+ufunc!(
+    /// Restitution of a head-on impact with the elastic-plastic normal law
+    /// (Normal.ELASTIC_PLASTIC; Thornton 1997) from x = v/v_y: 1 for x <= 1, else Thornton's
+    /// closed form (exact for the law). x >= 0, finite. Broadcasts over x
+    /// (C: dc_elastic_plastic_restitution).
+    elastic_plastic_restitution, Cheap, (x), (), c::calibration::dc_elastic_plastic_restitution
+);
+
+ufunc!(
+    /// Yield speed v_y [m/s] of the elastic-plastic normal law: 1/2 m* v_y^2 =
+    /// (8/15) E* sqrt(R*) d_y^(5/2), d_y = (pi p_y/(2 E*))^2 R*. All finite > 0. Broadcasts
+    /// (C: dc_elastic_plastic_yield_speed).
+    elastic_plastic_yield_speed, Cheap, (e_star, r_eff, m_eff, p_y), (),
+    c::calibration::dc_elastic_plastic_yield_speed
+);
+
 // ---- material -------------------------------------------------------------------------------
 
 ufunc!(

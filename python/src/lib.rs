@@ -28,6 +28,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     for f in [
         wrap_pyfunction!(alpha_from_e, m)?,
         wrap_pyfunction!(e_from_alpha, m)?,
+        wrap_pyfunction!(elastic_plastic_restitution, m)?,
+        wrap_pyfunction!(elastic_plastic_yield_speed, m)?,
         wrap_pyfunction!(hertz_stiffness, m)?,
         wrap_pyfunction!(effective_modulus, m)?,
         wrap_pyfunction!(omega0, m)?,

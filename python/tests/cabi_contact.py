@@ -17,6 +17,7 @@ SPEC_INTS = ["normal", "damping", "criterion", "tangential", "rolling", "twistin
 SPEC_REALS = [
     "E1", "nu1", "E2", "nu2", "p", "k_n", "e_n", "visco_A", "mu", "k_t", "e_t",
     "mu_r", "k_r", "eta_r", "mu_tw", "k_tw", "eta_tw", "inertia_factor", "work_of_adhesion",
+    "yield_pressure",
 ]
 
 

@@ -24,6 +24,17 @@ def test_contract_example():
     assert abs(dc.e_from_alpha(b, 1.5, O) - 0.5) < 1e-14
 
 
+def test_elastic_plastic_restitution():
+    # e = 1 up to the yield speed; above, Thornton's closed form (the C export, bit for bit).
+    assert dc.elastic_plastic_restitution(0.5) == 1.0 and dc.elastic_plastic_restitution(1.0) == 1.0
+    x = np.array([2.0, 10.0, 100.0])
+    e = dc.elastic_plastic_restitution(x)
+    y = 1.0 / x
+    want = math.sqrt(6 * math.sqrt(3) / 5) * np.sqrt(1 - y * y / 6) * (y / (y + 2 * np.sqrt(6 / 5 - y * y / 5))) ** 0.25
+    assert np.all(np.abs(e - want) < 1e-15) and np.all(np.diff(e) < 0)
+    assert dc.elastic_plastic_yield_speed(1e11, 1e-3, 1e-5, 1e9) > 0
+
+
 def test_enums_match_header_constants():
     header = (dc.__file__ and __import__("pathlib").Path(__file__).resolve().parents[2] / "include" / "demcontact.h").read_text()
     import re
@@ -137,6 +148,8 @@ def test_error_carries_code_message_and_location():
         (lambda: dc.alpha_from_e(0.5, 0.99, F), dc.ExponentRangeError, 6104),
         (lambda: dc.omega0(-1.0, 1.0), dc.NotPositiveError, 6105),
         (lambda: dc.e_from_alpha(-0.1, 1.5, O), dc.NegativeError, 6106),
+        (lambda: dc.elastic_plastic_restitution(-1.0), dc.NegativeError, 6106),
+        (lambda: dc.elastic_plastic_yield_speed(1e11, 1e-3, 1e-5, math.nan), dc.NotFiniteError, 6102),
         (lambda: dc.omega0(1e308, 5e-324), dc.ResultRangeError, 6108),
         (lambda: dc.contact_duration(1.5, 10.0, 1.0, 1.0, O), dc.NoEventError, 6111),
         (lambda: dc.contact_trajectory(1.5, 1.0, 1.0, 1.0, 1.0, F, n=1), dc.BufferTooShortError, 6110),

@@ -35,6 +35,8 @@ SPECS = {
     "linear_linear_constant": dict(normal=dc.Normal.LINEAR, k_n=1e4, damping=dc.Damping.RESTITUTION, e_n=0.5, criterion=O, tangential=dc.Tangential.LINEAR, k_t=8e3, e_t=0.4, mu=0.5, rolling=dc.Rolling.CONSTANT, mu_r=0.02),
     "powerlaw_linear_epsd": dict(normal=dc.Normal.POWERLAW, p=1.7, k_n=3e7, damping=dc.Damping.RESTITUTION, e_n=0.3, tangential=dc.Tangential.LINEAR, k_t=5e3, mu=0.2, rolling=dc.Rolling.EPSD, mu_r=0.1, k_r=1e-3),
     "viscoelastic_mindlin": dict(normal=dc.Normal.VISCOELASTIC, visco_A=2e-6, E1=1e8, nu1=0.45, E2=1e8, nu2=0.45, tangential=dc.Tangential.MINDLIN, mu=0.8, e_t=0.9, twisting=dc.Twisting.SDS, mu_tw=1e-4, k_tw=1e-3),
+    "elastic_plastic_full": dict(normal=dc.Normal.ELASTIC_PLASTIC, yield_pressure=2e8, E1=7e10, nu1=0.3, E2=7e10, nu2=0.3, tangential=dc.Tangential.MINDLIN_RESCALE, mu=0.3, rolling=dc.Rolling.EPSD, mu_r=0.05, twisting=dc.Twisting.SDS, mu_tw=2e-4, k_tw=0.02),
+    "elastic_plastic_normal_only": dict(normal=dc.Normal.ELASTIC_PLASTIC, yield_pressure=2e8, E1=7e10, nu1=0.3, E2=INF, nu2=0.3),
     "dmt_mindlin": dict(normal=dc.Normal.DMT, criterion=O, E1=1e9, nu1=0.3, E2=1e9, nu2=0.3, work_of_adhesion=0.05, tangential=dc.Tangential.MINDLIN, mu=0.4),
     "hertz_full_project": dict(HERTZ_FULL, carry=dc.Carry.PROJECT),
     "powerlaw_linear_epsd_project": dict(normal=dc.Normal.POWERLAW, p=1.7, k_n=3e7, damping=dc.Damping.RESTITUTION, e_n=0.3, tangential=dc.Tangential.LINEAR, k_t=5e3, mu=0.2, rolling=dc.Rolling.EPSD, mu_r=0.1, k_r=1e-3, carry=dc.Carry.PROJECT),
@@ -122,7 +124,7 @@ def test_models_equal_c(name):
 
 # Random specs, valid and not: the same status as C, and on success the same model bytes.
 SEL = {  # valid codes, then invalid ones
-    "normal": ([1, 2, 3, 4, 5], [0, 6, -1]),
+    "normal": ([1, 2, 3, 4, 5, 6], [0, 7, -1]),
     "damping": ([0, 1], [2, -1]),
     "criterion": ([0, 1], [2, -1]),
     "tangential": ([0, 1, 2, 3], [4]),
@@ -134,7 +136,7 @@ GOOD = {
     "p": [1.0, 1.5, 2.5], "k_n": [1e4, 3e7], "e_n": [0.5, 1.0, 1e-3], "visco_A": [0.0, 1e-6], "mu": [0.0, 0.3],
     "k_t": [1e3, 8e3], "e_t": [1.0, 0.5], "mu_r": [0.0, 0.1], "k_r": [0.0, 1e-3], "eta_r": [0.0, 0.5],
     "mu_tw": [0.0, 1e-4], "k_tw": [0.01, 1.0], "eta_tw": [0.0, 0.3], "inertia_factor": [0.4, 1.0, 0.1],
-    "work_of_adhesion": [0.0, 0.05],
+    "work_of_adhesion": [0.0, 0.05], "yield_pressure": [1e8, 1e9],
 }
 BAD = [math.nan, -1.0, 0.0, INF, -INF, 1.5, 1e300, -0.0, 5e-324]
 

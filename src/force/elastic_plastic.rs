@@ -32,6 +32,11 @@ use crate::{EndCriterion, Error};
 /// in a contact model: there is no `dc_pair_*` constructor).
 pub(crate) const MODEL_ELASTIC_PLASTIC: i32 = 5;
 
+/// Kernel code of this law (in `dc_pair.kernel`; ABI). A law with state has its code here, not
+/// in the stateless registry, so that no `dc_pair` path dispatches it; [`super::stateful`]
+/// gathers the codes of every law with state.
+pub(crate) const KERNEL: i32 = 20;
+
 /// (δ_y, F_y, F_max, δ_p, R_p-term) of a contact that has yielded: δ_max > δ_y. Returns
 /// (F_max, δ_p, kp) with the unloading curve F = kp (δ − δ_p)^{3/2}, kp = (4/3)E* √R_p.
 #[inline(always)]
@@ -175,7 +180,7 @@ pub fn elastic_plastic_from_factor(
     }
     Ok(PairModel {
         model: MODEL_ELASTIC_PLASTIC,
-        kernel: super::stateful::KERNEL_ELASTIC_PLASTIC,
+        kernel: KERNEL,
         criterion,
         p: 1.5,
         stiffness: kf,

@@ -7,16 +7,19 @@
 //! ([`super::registry`]), so every `dc_pair` path (`dc_normal_force*`, the pair batches, the
 //! integrator, `dc_contact_model_set_step`) refuses them (`DC_ERR_PAIR_INVALID`, NaN from the
 //! unchecked force, `DC_ERR_STEP_UNSUPPORTED`) rather than compute a force without the state.
-//! Their codes share the `dc_pair.kernel` number space (ABI: never renumber, only append).
+//! Their codes share the `dc_pair.kernel` number space (ABI: never renumber, only append); each
+//! is declared in its law's file (which imports nothing of this one: no cycle) and gathered here.
+//! A unit test below keeps [`STATEFUL_KERNEL_CODES`] apart from the registry's codes.
 //!
 //! To add one: a module with the law's force (reading and updating the state), its plastic or
-//! hysteretic loss of a step for the energy ledger, a code below, and one arm in each function.
+//! hysteretic loss of a step for the energy ledger and its code, then the code below and one arm
+//! in each function here, and the header's twin (`include/demcontact_inline.h`).
 
 use super::elastic_plastic;
 use super::pair::Consts;
 
 /// Kernel code of the elastic–plastic law ([`elastic_plastic`]); state δ_max [m].
-pub(crate) const KERNEL_ELASTIC_PLASTIC: i32 = 20;
+pub(crate) const KERNEL_ELASTIC_PLASTIC: i32 = elastic_plastic::KERNEL;
 
 /// Every kernel code of a law with state.
 pub const STATEFUL_KERNEL_CODES: &[i32] = &[KERNEL_ELASTIC_PLASTIC];
@@ -52,5 +55,18 @@ pub(crate) fn dissipated(kernel: i32, c: &Consts, r: f64, old: f64, new: f64) ->
     match kernel {
         KERNEL_ELASTIC_PLASTIC => elastic_plastic::dissipated(c, r, old, new),
         _ => 0.0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::STATEFUL_KERNEL_CODES;
+    use crate::force::registry::KERNEL_CODES;
+
+    #[test]
+    fn stateful_codes_are_not_stateless_ones() {
+        for c in STATEFUL_KERNEL_CODES {
+            assert!(!KERNEL_CODES.contains(c), "{c}");
+        }
     }
 }
