@@ -704,10 +704,12 @@ pub unsafe extern "C" fn dc_contact_model_set_step(
 }
 
 /// The number of doubles of history one contact of this model needs (0 for a normal-only or
-/// constant-rolling model; at most DC_CONTACT_HISTORY_MAX). Layout (for inspection only):
-/// normal of the last step (3), tangential spring [m] (3; DC_TANGENTIAL_MINDLIN_RESCALE: its
-/// force [N] (3) and the last contact radius [m] (1)), rolling spring torque [N m] (3),
-/// twisting spring torque [N m] (1), each present only if its sub-model is.
+/// constant-rolling model of a stateless normal law; at most DC_CONTACT_HISTORY_MAX). Layout
+/// (for inspection only): normal of the last step (3), tangential spring [m] (3;
+/// DC_TANGENTIAL_MINDLIN_RESCALE: its force [N] (3) and the last contact radius [m] (1)),
+/// rolling spring torque [N m] (3), twisting spring torque [N m] (1), the state of a normal law
+/// with state (1: the largest overlap [m] of DC_NORMAL_ELASTIC_PLASTIC), the step-aware damping
+/// state (1), each present only if its sub-model is.
 ///
 /// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID.
 ///
