@@ -25,6 +25,7 @@
 //! v_min or v_max. If that deviation is ≤ tol, a constant e (the power law) represents what the
 //! data support within the user's tolerance; otherwise the speed dependence is required.
 
+pub mod elastic_plastic;
 pub mod quantile;
 pub mod robust;
 

@@ -157,6 +157,26 @@ pub fn yield_speed(e_star: f64, r: f64, m: f64, p_y: f64) -> Result<f64, Error> 
     }
 }
 
+/// The limiting contact pressure p_y [Pa] whose yield speed ([`yield_speed`]) is v_y, from
+/// E* [Pa], R* [m], m* [kg] and v_y [m/s] (all finite, > 0): δ_y = (15 m* v_y²/(16 E* √R*))^{2/5},
+/// p_y = (2E*/π) √(δ_y/R*).
+pub fn yield_pressure_from_speed(e_star: f64, r: f64, m: f64, v_y: f64) -> Result<f64, Error> {
+    let all = [e_star, r, m, v_y];
+    if !all.iter().all(|x| x.is_finite()) {
+        return Err(Error::NotFinite);
+    }
+    if !all.iter().all(|&x| x > 0.0) {
+        return Err(Error::NotPositive);
+    }
+    let dy = (15.0 * m * v_y * v_y / (16.0 * e_star * r.sqrt())).powf(0.4);
+    let p = 2.0 * e_star / core::f64::consts::PI * (dy / r).sqrt();
+    if p.is_finite() && p > 0.0 {
+        Ok(p)
+    } else {
+        Err(Error::ResultRange)
+    }
+}
+
 /// An elastic–plastic pair from kf = (4/3) E* (finite, > 0; checked by the caller) and the
 /// limiting contact pressure p_y (finite, > 0). Only `EndCriterion::Overlap` is meaningful
 /// (the force is never attractive): both criteria are accepted and give the same law.

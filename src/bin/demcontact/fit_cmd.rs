@@ -1,4 +1,5 @@
-//! `demcontact fit`: the viscoelastic and constant-e fits of measured restitution.
+//! `demcontact fit`: the viscoelastic and constant-e fits of measured restitution, or
+//! (`--model elastic-plastic`) the yield speed and limiting pressure of Thornton's law.
 
 use crate::output::{Failure, Output, num};
 use crate::{csv, plot, refused};
@@ -28,6 +29,78 @@ pub struct Args {
     /// Print one JSON object instead of text.
     #[arg(long)]
     pub json: bool,
+    /// Model to fit: `auto` (viscoelastic and constant e, the choice at --tol) or
+    /// `elastic-plastic` (Thornton 1997: the yield speed v_y; p_y with --e-star, --r-eff, --m-eff).
+    #[arg(long, value_enum, default_value_t = FitModel::Auto)]
+    model: FitModel,
+    /// Effective modulus E* [Pa] of the contact (elastic-plastic: gives p_y).
+    #[arg(long)]
+    e_star: Option<f64>,
+    /// Effective radius R* [m] (elastic-plastic: gives p_y).
+    #[arg(long)]
+    r_eff: Option<f64>,
+    /// Effective mass m* [kg] (elastic-plastic: gives p_y).
+    #[arg(long)]
+    m_eff: Option<f64>,
+}
+
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+enum FitModel {
+    Auto,
+    ElasticPlastic,
+}
+
+/// `--model elastic-plastic`: v_y by least squares, p_y when E*, R*, m* are given.
+fn run_elastic_plastic(a: &Args, name: &str, t: &csv::Table) -> Result<Output, Failure> {
+    use demcontact::fit::elastic_plastic::fit_yield_speed;
+    use demcontact::force::elastic_plastic::{restitution, yield_pressure_from_speed};
+    let data = Data {
+        v: &t.v,
+        e: &t.e,
+        sigma: t.sigma.as_deref(),
+    };
+    let f = fit_yield_speed(&data).map_err(|e| refused(&format!("fit of {name}"), e))?;
+    let p_y = match (a.e_star, a.r_eff, a.m_eff) {
+        (Some(es), Some(r), Some(m)) => Some(
+            yield_pressure_from_speed(es, r, m, f.v_y)
+                .map_err(|e| refused("p_y from --e-star, --r-eff, --m-eff", e))?,
+        ),
+        (None, None, None) => None,
+        _ => {
+            return Err(Failure::usage(
+                "--e-star, --r-eff and --m-eff go together (p_y needs all three)".into(),
+            ));
+        }
+    };
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "{name}: {} points, elastic-plastic (Thornton 1997): v_y = {:.6e} m/s (chi2 {:.4e}, max |resid| {:.4})",
+        t.v.len(),
+        f.v_y,
+        f.chi2,
+        f.max_residual
+    );
+    match p_y {
+        Some(p) => {
+            let _ = writeln!(s, "limiting contact pressure p_y = {p:.6e} Pa");
+        }
+        None => {
+            let _ = writeln!(s, "p_y: give --e-star, --r-eff, --m-eff");
+        }
+    }
+    let mut rows = Vec::new();
+    for (i, (&v, &e)) in t.v.iter().zip(&t.e).enumerate() {
+        let g = restitution(v / f.v_y).unwrap_or(f64::NAN);
+        let _ = writeln!(s, "{v:>10.4} {e:>8.4} {g:>10.5} {:>+9.5}", e - g);
+        rows.push(json!({"line": t.line.get(i), "v": num(v), "e": num(e), "e_fit": num(g)}));
+    }
+    let json = json!({
+        "command": "fit", "file": name, "model": "elastic-plastic", "v_y": num(f.v_y),
+        "p_y": p_y.map(num), "chi2": num(f.chi2), "max_residual": num(f.max_residual),
+        "points": rows,
+    });
+    Ok(Output { text: s, json })
 }
 
 pub fn run(a: &Args) -> Result<Output, Failure> {
@@ -35,6 +108,9 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
     let text_in = std::fs::read_to_string(&a.file)
         .map_err(|e| Failure::input(&name, 0, 0, format!("cannot read: {e}")))?;
     let t = csv::parse(&name, &text_in)?;
+    if a.model == FitModel::ElasticPlastic {
+        return run_elastic_plastic(a, &name, &t);
+    }
     let crit = if a.overlap_end {
         EndCriterion::Overlap
     } else {
