@@ -9,6 +9,7 @@ mod dtstudy;
 mod plot;
 mod reference;
 mod seeds;
+mod verification;
 
 use plot::Res;
 use std::fmt::Write;
@@ -88,6 +89,13 @@ fn run() -> Res<()> {
     if want("chung") {
         chung_ooi::run(&mut rep)?;
         eprintln!("chung_ooi done at {:.1} s", start.elapsed().as_secs_f64());
+    }
+    if want("verification") {
+        verification::run(&mut rep)?;
+        eprintln!(
+            "verification done at {:.1} s",
+            start.elapsed().as_secs_f64()
+        );
     }
     let mut md = String::new();
     writeln!(md, "# The speed/accuracy trade, measured\n")?;
