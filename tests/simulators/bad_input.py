@@ -19,8 +19,7 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import harness as H  # noqa: E402
+import harness as H
 
 # status codes (include/demcontact.h)
 NOT_POSITIVE, NEGATIVE, RESTITUTION, EXPONENT, SPEC_MODEL = 6105, 6106, 6103, 6104, 6123
@@ -232,7 +231,7 @@ def main():
     os.makedirs(workdir, exist_ok=True)
     text = status_texts(os.path.abspath(a.plugin))
     if a.sim == "lammps":
-        import lammps_runs
+        from harness import lammps as lammps_runs
         exe = lammps_runs.find_lmp(a.lmp)
         env = H.mpi_env()
         cases = [(lab, lammps_deck(a.plugin, st, co, wa), bad, code) for lab, st, co, wa, bad, code in LAMMPS_CASES]
