@@ -17,7 +17,8 @@ the scene's v_max at that modulus; `conv` is the conventional choice (real E, dt
 tau_real the damped duration at v_max: the planner's dt_conventional); `plan` the planner's
 modulus and step, `plan_sa` its --step-aware step with step_exact on.
 
-Scenes (each run: one process; seeds change the random packing / velocities):
+Scenes (each run: one process; seeds change the random packing / velocities; settle runs twice
+--seeds):
   settle  300 spheres created loose (solid fraction 0.3) 20-57 mm above the floor of a
           25 x 25 mm box (walls: floor and four sides), settling under gravity for 0.25 s.
           Observables: solid fraction of the slab 0.25 h < z < 0.75 h over the whole cross-section
@@ -66,7 +67,8 @@ PLAN_TOL = dict(overlap=0.03, e=0.01)
 TOL = {"phi": 0.01, "height": 0.02, "p_wall": 0.10, "discharged": 0.10, "T_end": 0.05, "rate": 0.05}
 SMOKE_BAND = 0.10
 SCENES = {
-    "settle": dict(v_max=1.2, depth=0.02, walls=True, obs=["phi", "height", "p_wall"]),
+    # seed_factor: the settled packing's wall pressure scatters by ~10 % between seeds: twice the seeds
+    "settle": dict(v_max=1.2, depth=0.02, walls=True, obs=["phi", "height", "p_wall"], seed_factor=2),
     "hopper": dict(v_max=1.2, depth=0.03, walls=True, obs=["discharged"]),
     "gas": dict(v_max=2.5, depth=0.0, walls=False, obs=["T_end", "rate"]),
 }
@@ -378,6 +380,18 @@ def markdown(scene, rows, p_plain, p_sa, cmd, cmd_sa):
         L.append("| %s | %.3g | %.1f | %.2f | %.2f | %.2f | %s | %s |" % (
             r["config"], r["E_over_real"], r["t_H_over_dt"], r["loop_s"], r["cpu_s"], r["speedup_vs_conv"],
             " | ".join(cells), "yes" if r["within_tol"] else "no (%.1f×)" % r["worst_err_over_tol"]))
+    by = {r["config"]: r for r in rows}
+    if "plan_sa mpi" in by:
+        ok, cells = True, []
+        for o in obs:
+            m1, m2 = by["plan_sa"], by["plan_sa mpi"]
+            d = (m2[o] - m1[o]) / abs(m1[o])
+            se = math.sqrt(m1[o + "_sd"] ** 2 / m1["seeds"] + m2[o + "_sd"] ** 2 / m2["seeds"]) / abs(m1[o])
+            ok &= abs(d) <= 3 * se
+            cells.append("%s %s (1 rank) vs %s (2 ranks): %+.1f ± %.1f %%" % (o, fmt(m1[o], o), fmt(m2[o], o),
+                                                                             100 * d, 100 * se))
+        L += ["", "2 ranks against serial (plan_sa, same seeds): " + "; ".join(cells)
+              + (" — within 3 standard errors." if ok else " — MPI MISMATCH: beyond 3 standard errors.")]
     return "\n".join(L) + "\n"
 
 
@@ -400,10 +414,10 @@ def main():
     out = os.path.abspath(a.out)
     os.makedirs(out, exist_ok=True)
     scenes = ["gas"] if a.smoke else a.scene.split(",")
-    seeds = [1000 + 17 * i for i in range(1 if a.smoke else a.seeds)]
     all_runs, all_rows, md = [], [], []
     for scene in scenes:
         cfgs, p_plain, p_sa, cmd, cmd_sa = configs(a, scene)
+        seeds = [1000 + 17 * i for i in range(1 if a.smoke else a.seeds * SCENES[scene].get("seed_factor", 1))]
         runs = []
         if a.only:
             cfgs = [c for c in cfgs if c["label"] in a.only.split(",")]
@@ -429,10 +443,11 @@ def main():
                 raise SystemExit("FAIL: soft configuration outside the band of the reference")
             return
         if scene == "settle":
-            bad = [r for r in runs if abs(r["floor_over_weight"] - 1) > 0.05]
-            print("settle: floor force / weight %.3f .. %.3f over all runs (settled check: within 5 %%: %s)"
+            hi = sorted({r["config"] for r in runs if r["floor_over_weight"] > 1.02})
+            print("settle: elastic floor force / weight %.3f .. %.3f over all runs (below 1: the side walls "
+                  "carry the rest by friction); above 1.02 (bed still moving): %s"
                   % (min(r["floor_over_weight"] for r in runs), max(r["floor_over_weight"] for r in runs),
-                     "yes" if not bad else "NO for %s" % ", ".join(sorted({r["config"] for r in bad}))))
+                     ", ".join(hi) or "none"))
         rows = summarise(scene, cfgs, runs)
         all_rows += rows
         svg(os.path.join(out, "pareto_%s.svg" % scene), scene, rows)
@@ -453,6 +468,8 @@ def main():
         os.cpu_count(), " ".join(load)))
     open(os.path.join(out, "summary.md"), "w").write("\n".join(md) + "\n")
     print("\n".join(md))
+    if any("MPI MISMATCH" in m for m in md):
+        raise SystemExit("FAIL: the 2-rank statistics differ from the serial ones")
 
 
 if __name__ == "__main__":
