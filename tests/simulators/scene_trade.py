@@ -166,12 +166,12 @@ def deck_settle_liggghts(c, dt, seed):
     inserted by insert/pack at five discrete radii 1.5-2.0 mm (equal number fractions), the
     packing seeds LIGGGHTS primes."""
     W, n = 0.025, 300
-    model, settings = c
+    model, settings, youngs = c
     L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
          "communicate single vel yes", "units si",
          "region box block 0 %g 0 %g 0 0.06 units box" % (W, W), "create_box 1 box",
          "neighbor %g bin" % (0.25 * RMIN), "neigh_modify delay 0",
-         "fix m1 all property/global youngsModulus peratomtype %.10g" % c[2],
+         "fix m1 all property/global youngsModulus peratomtype %.10g" % youngs,
          "fix m2 all property/global poissonsRatio peratomtype %g" % NU,
          "fix m3 all property/global coefficientRestitution peratomtypepair 1 %g" % REST,
          "fix m4 all property/global coefficientFriction peratomtypepair 1 %g" % MU,
