@@ -114,6 +114,10 @@ absolute values. The findings on the time step are discussed in [timestep.md](ti
         rep.n_fig
     )?;
     md.push_str(&rep.body);
+    // Section 5 is measured in LAMMPS by scripts/scene_trade.sh, not by this generator: its text is
+    // kept in docs/report_scene_trade.md and appended as it is.
+    md.push('\n');
+    md.push_str(&std::fs::read_to_string("docs/report_scene_trade.md")?);
     std::fs::write(dir.join("report.md"), md)?;
     eprintln!(
         "wrote {} ({} figures) in {:.1} s",
