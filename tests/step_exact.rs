@@ -299,3 +299,136 @@ fn tangential_restitution_at_the_host_step() {
         );
     }
 }
+
+/// The batch of a step-aware model (its steady loop over every contact, then the exact path for
+/// the contacts at onset, flagged or at their predicted last step) equals the scalar
+/// `contact_force` bit for bit: 700 bouncing spheres on a wall under gravity (more than one
+/// chunk and one guard block), impact speeds 0.3–3 m/s and every onset phase, so the run has
+/// onsets, steady steps, the end handling (C) and its flag, separated contacts and resting ones;
+/// Hertz (normal-only and Mindlin), p = 1 and p = 2, both criteria, records of the model's own
+/// length and wider than DC_CONTACT_HISTORY_MAX. Each step's forces move both copies the same
+/// way (velocity Verlet), so equal bits keep the two runs on one trajectory.
+#[test]
+fn batch_equals_scalar_bit_for_bit() {
+    use demcontact::contact::batch::{BatchIn, BatchOut, contact_force_batch};
+    use demcontact::contact::model::select;
+    use demcontact::contact::{ContactState, HISTORY_MAX, contact_force};
+    let (nc, steps) = (700usize, 400usize);
+    let (rad, mass) = (2.0e-3, 2.0e-3);
+    let mut counts = [0usize; 4]; // onset, steady, (C) fired, separated
+    for (law, tangential) in [
+        (Law::Hertz, select::TANGENTIAL_NONE),
+        (Law::Hertz, select::TANGENTIAL_MINDLIN),
+        (Law::Linear, select::TANGENTIAL_NONE),
+        (Law::P2, select::TANGENTIAL_NONE),
+    ] {
+        for crit in [0, 1] {
+            let mut s = spec(law, 0.5, crit);
+            s.tangential = tangential;
+            s.mu = 0.5;
+            let dt = t_h(law, 1.0) / 20.0;
+            let m = set_step(&contact_model(&s).unwrap(), dt, 0).unwrap();
+            let at = m.layout.step.unwrap();
+            for stride in [m.layout.len, HISTORY_MAX + 1] {
+                // One flight of ~40 steps at 1 m/s.
+                let g = 2.0 / (40.0 * dt);
+                let speed = |i: usize| 0.3 * 10f64.powf(i as f64 / nc as f64);
+                let mut d: Vec<f64> = (0..nc)
+                    .map(|i| -((i % 64) as f64 / 64.0 + (i / 64) as f64) * speed(i) * dt)
+                    .collect();
+                let mut v: Vec<f64> = (0..nc).map(|i| -speed(i)).collect();
+                let vt: Vec<f64> = (0..nc)
+                    .map(|i| 0.1 * speed(i) * ((i % 7) as f64 - 3.0))
+                    .collect();
+                let mut acc = vec![-g; nc];
+                let mut hb = vec![0.0; nc * stride];
+                let mut hs = hb.clone();
+                let n = vec![[0.0, 0.0, 1.0]; nc];
+                let (r1, r2) = (vec![rad; nc], vec![f64::INFINITY; nc]);
+                let (m1, m2) = (vec![mass; nc], vec![f64::INFINITY; nc]);
+                let zero = vec![[0.0; 3]; nc];
+                for _ in 0..steps {
+                    let mut v1 = vec![[0.0; 3]; nc];
+                    for i in 0..nc {
+                        let vh = v[i] + 0.5 * dt * acc[i];
+                        v[i] = vh;
+                        d[i] -= dt * vh;
+                        v1[i] = [vt[i], 0.0, vh];
+                    }
+                    let (mut f_n, mut force) = (vec![0.0; nc], vec![[0.0; 3]; nc]);
+                    let (mut t1, mut t2) = (vec![[0.0; 3]; nc], vec![[0.0; 3]; nc]);
+                    let before = hb.clone();
+                    let inp = BatchIn {
+                        normal: &n,
+                        overlap: &d,
+                        v1: &v1,
+                        v2: &zero,
+                        w1: &zero,
+                        w2: &zero,
+                        r1: &r1,
+                        r2: &r2,
+                        m1: &m1,
+                        m2: &m2,
+                    };
+                    let mut out = BatchOut {
+                        f_n: &mut f_n,
+                        force: &mut force,
+                        torque1: Some(&mut t1),
+                        torque2: Some(&mut t2),
+                        history: &mut hb,
+                        stride,
+                    };
+                    contact_force_batch(&m, &inp, dt, &mut out).unwrap();
+                    for i in 0..nc {
+                        let st = ContactState {
+                            n: n[i],
+                            overlap: d[i],
+                            v1: v1[i],
+                            v2: [0.0; 3],
+                            w1: [0.0; 3],
+                            w2: [0.0; 3],
+                            r1: rad,
+                            r2: f64::INFINITY,
+                            m1: mass,
+                            m2: f64::INFINITY,
+                        };
+                        let h = &mut hs[i * stride..(i + 1) * stride];
+                        let r = contact_force(&m, &st, dt, h).unwrap();
+                        let same = r.fn_.to_bits() == f_n[i].to_bits()
+                            && (0..3).all(|k| r.force[k].to_bits() == force[i][k].to_bits())
+                            && h.iter()
+                                .zip(&hb[i * stride..])
+                                .all(|(a, b)| a.to_bits() == b.to_bits());
+                        assert!(
+                            same,
+                            "{law:?} tangential {tangential} crit {crit} stride {stride} contact {i}: \
+                             scalar {:e} batch {:e}",
+                            r.fn_, f_n[i]
+                        );
+                        let (h0, h1) = (before[i * stride + at], hb[i * stride + at]);
+                        let k = if d[i] <= 0.0 {
+                            3
+                        } else if h0 == 0.0 {
+                            0
+                        } else if h1 < 0.0 {
+                            2
+                        } else {
+                            1
+                        };
+                        counts[k] += 1;
+                        acc[i] = force[i][2] / mass - g;
+                        v[i] += 0.5 * dt * acc[i];
+                    }
+                }
+            }
+        }
+    }
+    println!(
+        "onset {} steady {} end (C) {} separated {}",
+        counts[0], counts[1], counts[2], counts[3]
+    );
+    assert!(
+        counts.iter().all(|&c| c > 1000),
+        "every case exercised: {counts:?}"
+    );
+}
