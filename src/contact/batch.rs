@@ -117,11 +117,29 @@ impl Visit for NormalPass<'_, '_> {
     type Out = ();
     #[inline(always)]
     fn visit<L: Law, const CLAMP: bool>(self) {
-        normal_pass::<L, CLAMP>(self.c, self.inp, self.f_n, self.force);
+        vectorised(NormalLoop::<L, CLAMP> {
+            p: self,
+            law: PhantomData,
+        });
     }
 }
 
-#[inline(never)]
+/// [`normal_pass`] run through [`vectorised`] (compiled for the CPU's widest vectors; every
+/// flavour gives the same bits).
+struct NormalLoop<'a, 'b, L, const CLAMP: bool> {
+    p: NormalPass<'a, 'b>,
+    law: PhantomData<L>,
+}
+
+impl<L: Law, const CLAMP: bool> SimdLoop for NormalLoop<'_, '_, L, CLAMP> {
+    #[inline(always)]
+    fn run(self) {
+        let p = self.p;
+        normal_pass::<L, CLAMP>(p.c, p.inp, p.f_n, p.force);
+    }
+}
+
+#[inline(always)]
 fn normal_pass<L: Law, const CLAMP: bool>(
     c: Consts,
     b: &BatchIn<'_>,
