@@ -432,3 +432,109 @@ fn batch_equals_scalar_bit_for_bit() {
         "every case exercised: {counts:?}"
     );
 }
+
+/// A step-aware normal-only batch (one history double per contact, saved in the guard's narrow
+/// buffer) whose contacts 5 and 530 of 600 overflow (overlap 1e300 m): `ResultRange`, those
+/// contacts' outputs NaN and their history double as it was, every other contact as the scalar
+/// `contact_force`, bit for bit; records of 1 and of 13 doubles.
+#[test]
+fn batch_overflow_keeps_the_step_slot() {
+    use demcontact::Error;
+    use demcontact::contact::batch::{BatchIn, BatchOut, contact_force_batch};
+    use demcontact::contact::{ContactState, contact_force};
+    let nc = 600;
+    let dt = t_h(Law::Hertz, 1.0) / 20.0;
+    let m = set_step(&contact_model(&spec(Law::Hertz, 0.5, 0)).unwrap(), dt, 0).unwrap();
+    assert_eq!(m.layout.len, 1);
+    for stride in [1, 13] {
+        let bad = |i: usize| i == 5 || i == 530;
+        let d: Vec<f64> = (0..nc)
+            .map(|i| {
+                if bad(i) {
+                    1e300
+                } else {
+                    1e-6 * (1.0 + i as f64 / nc as f64)
+                }
+            })
+            .collect();
+        let v1: Vec<[f64; 3]> = (0..nc)
+            .map(|i| [0.0, 0.0, -0.5 + (i % 3) as f64 * 0.25])
+            .collect();
+        let n = vec![[0.0, 0.0, 1.0]; nc];
+        let zero = vec![[0.0; 3]; nc];
+        let (r1, r2) = (vec![2e-3; nc], vec![f64::INFINITY; nc]);
+        let (m1, m2) = (vec![2e-3; nc], vec![f64::INFINITY; nc]);
+        // Every other contact past its onset (R stored), the rest fresh.
+        let h0: Vec<f64> = (0..nc * stride)
+            .map(|k| {
+                if k % stride == 0 && (k / stride) % 2 == 1 {
+                    0.97
+                } else {
+                    0.0
+                }
+            })
+            .collect();
+        let mut hb = h0.clone();
+        let (mut f_n, mut force) = (vec![0.0; nc], vec![[0.0; 3]; nc]);
+        let inp = BatchIn {
+            normal: &n,
+            overlap: &d,
+            v1: &v1,
+            v2: &zero,
+            w1: &zero,
+            w2: &zero,
+            r1: &r1,
+            r2: &r2,
+            m1: &m1,
+            m2: &m2,
+        };
+        let mut out = BatchOut {
+            f_n: &mut f_n,
+            force: &mut force,
+            torque1: None,
+            torque2: None,
+            history: &mut hb,
+            stride,
+        };
+        assert_eq!(
+            contact_force_batch(&m, &inp, dt, &mut out),
+            Err(Error::ResultRange)
+        );
+        for i in 0..nc {
+            let rec = i * stride..(i + 1) * stride;
+            if bad(i) {
+                assert!(
+                    f_n[i].is_nan() && force[i].iter().all(|x| x.is_nan()),
+                    "contact {i}"
+                );
+                assert_eq!(hb[rec.clone()], h0[rec], "contact {i}: history touched");
+                continue;
+            }
+            let st = ContactState {
+                n: n[i],
+                overlap: d[i],
+                v1: v1[i],
+                v2: [0.0; 3],
+                w1: [0.0; 3],
+                w2: [0.0; 3],
+                r1: 2e-3,
+                r2: f64::INFINITY,
+                m1: 2e-3,
+                m2: f64::INFINITY,
+            };
+            let mut h = h0[rec.clone()].to_vec();
+            let r = contact_force(&m, &st, dt, &mut h).unwrap();
+            assert_eq!(
+                r.fn_.to_bits(),
+                f_n[i].to_bits(),
+                "stride {stride} contact {i}"
+            );
+            assert!(
+                h.iter()
+                    .zip(&hb[rec])
+                    .all(|(a, b)| a.to_bits() == b.to_bits()),
+                "contact {i}"
+            );
+        }
+    }
+}
