@@ -220,10 +220,20 @@ fn dt_for_accuracy_step_aware_is_larger_and_holds() {
 /// e_t = −u_t,out/u_t,in with u_t = v_t − R ω (ω about the axis normal to the plane of impact).
 /// Velocity Verlet (LAMMPS order), onset phase j of 32.
 fn oblique_e_t(m: &demcontact::contact::ContactModel, dt: f64, j: usize) -> (f64, f64) {
+    oblique_e_t_at(m, dt, j, 0.5)
+}
+
+/// [`oblique_e_t`] at tangential impact speed `vt0` (normal 1 m/s).
+fn oblique_e_t_at(
+    m: &demcontact::contact::ContactModel,
+    dt: f64,
+    j: usize,
+    vt0: f64,
+) -> (f64, f64) {
     use demcontact::contact::{ContactState, contact_force};
     let (mass, r) = (2.0e-3, 2.0e-3);
     let inertia = 0.4 * mass * r * r;
-    let (vn0, vt0) = (1.0, 0.5); // normal (towards the wall) and tangential speed
+    let vn0 = 1.0; // normal speed (towards the wall)
     let mut hist = [0.0; 16];
     let mut d = -(j as f64) / 32.0 * vn0 * dt;
     // Wall normal +z; the sphere moves in x (tangential) and −z; spin about y.
@@ -536,5 +546,45 @@ fn batch_overflow_keeps_the_step_slot() {
                 "contact {i}"
             );
         }
+    }
+}
+
+/// Whether the discrete-map calibration extends to the tangential dashpot: at t_H/20 a damping
+/// change alone moves the realised e_t onto the reference. The same oblique impact at three
+/// tangential speeds (0.25, 0.5, 1 m/s; normal 1 m/s), reference the plain model (spec e_t 0.5)
+/// at t_H/2000, step-aware models at t_H/20 with spec e_t 0.5 (the tangential dashpot as built)
+/// and 0.385 (a stronger tangential dashpot, one value for all three speeds). Asserted: with 0.5
+/// every speed misses its reference by more than 0.05; with 0.385 every speed is within 0.01.
+#[test]
+fn tangential_damping_alone_can_correct_e_t() {
+    let th = t_h(Law::Hertz, 1.0);
+    let model = |et: f64| {
+        let mut s = spec(Law::Hertz, 0.5, 1);
+        s.tangential = demcontact::contact::model::select::TANGENTIAL_MINDLIN;
+        s.mu = 10.0;
+        s.e_t = et;
+        contact_model(&s).unwrap()
+    };
+    let mean = |m: &demcontact::contact::ContactModel, n: f64, vt: f64| {
+        (0..32)
+            .map(|j| oblique_e_t_at(m, th / n, j, vt).1)
+            .sum::<f64>()
+            / 32.0
+    };
+    for vt in [0.25, 0.5, 1.0] {
+        let reference = mean(&model(0.5), 2000.0, vt);
+        let built = mean(&set_step(&model(0.5), th / 20.0, 0).unwrap(), 20.0, vt);
+        let stronger = mean(&set_step(&model(0.385), th / 20.0, 0).unwrap(), 20.0, vt);
+        println!(
+            "v_t {vt}: reference {reference:.4}; t_H/20 step-aware, spec e_t 0.5: {built:.4}, 0.385: {stronger:.4}"
+        );
+        assert!(
+            (built - reference).abs() > 0.05,
+            "v_t {vt}: {built} vs {reference}"
+        );
+        assert!(
+            (stronger - reference).abs() < 0.01,
+            "v_t {vt}: {stronger} vs {reference}"
+        );
     }
 }
