@@ -8,6 +8,15 @@ if(DEMCONTACT_BUILD_TESTS)
   add_executable(dc_oblique_ref tests/simulators/oblique_ref.c)
   target_link_libraries(dc_oblique_ref PRIVATE demcontact::demcontact m)
   set_target_properties(dc_oblique_ref PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/simulators")
+  # The harness as a package: no sys.path edits, no import cycles, every module imports cleanly,
+  # both simulators implement its interface (no simulator needed).
+  find_package(Python3 COMPONENTS Interpreter QUIET)
+  if(Python3_Interpreter_FOUND)
+    add_test(NAME simulators_package COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/tests/simulators/check_package.py")
+  else()
+    add_test(NAME simulators_package COMMAND sh -c "echo 'SKIPPED: simulators_package (no python3 interpreter)'; exit 77")
+  endif()
+  set_tests_properties(simulators_package PROPERTIES SKIP_RETURN_CODE 77)
 endif()
 
 # A plugin whose simulator is missing (the caller returns right after): the configure says what is

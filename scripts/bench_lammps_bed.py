@@ -29,7 +29,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "tests", "simulators"))
 import harness as H  # noqa: E402
 import bed  # noqa: E402
-import lammps_runs  # noqa: E402
+from harness import lammps as lammps_runs  # noqa: E402
 
 MU = bed.MU
 MODELS = [  # (label, plugin?, pair_style, contact arguments, wall fix style)

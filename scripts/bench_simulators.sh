@@ -20,7 +20,7 @@ scripts/setup.sh
 scripts/setup_simulators.sh
 cmake -S . -B "$b" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$b" -j2 --target demcontact_liggghts demcontact_lammps >/dev/null
-h=tests/simulators/harness.py
+s=tests/simulators
 out="$b/simulators/bench"
 mkdir -p "$out"
 lmp=()
@@ -28,12 +28,12 @@ resume=()
 ((timing_only)) && resume=(--resume)
 [[ -n "${DC_LAMMPS_LMP:-}" ]] && lmp=(--lmp "$DC_LAMMPS_LMP")
 if ((!timing_only)); then
-  python3 $h collision --sim liggghts --check --plugin "$b/simulators/libdemcontact_liggghts.so" --workdir "$out/liggghts_collision"
+  python3 $s/collision.py --sim liggghts --check --plugin "$b/simulators/libdemcontact_liggghts.so" --workdir "$out/liggghts_collision"
   echo
-  python3 $h collision --sim lammps --check "${lmp[@]}" --plugin "$b/simulators/demcontactplugin.so" --workdir "$out/lammps_collision"
+  python3 $s/collision.py --sim lammps --check "${lmp[@]}" --plugin "$b/simulators/demcontactplugin.so" --workdir "$out/lammps_collision"
   echo
 fi
-python3 $h bed --sim liggghts --check --np 2 --n "$n" "${resume[@]}" --plugin "$b/simulators/libdemcontact_liggghts.so" --workdir "$out/liggghts_bed"
+python3 $s/bed.py --sim liggghts --check --np 2 --n "$n" "${resume[@]}" --plugin "$b/simulators/libdemcontact_liggghts.so" --workdir "$out/liggghts_bed"
 echo
 python3 scripts/bench_lammps_bed.py "${lmp[@]}" --np 2 --reps 3 --plugin "$b/simulators/demcontactplugin.so" \
   --data "$out/liggghts_bed/bed_hertz/settled.data" --workdir "$out/lammps_bed"

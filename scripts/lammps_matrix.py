@@ -163,7 +163,7 @@ def cell(kind, lmp, plugin, logdir):
     np_ = ["--np", "2"] if kind.endswith("2ranks") else []
     wd = os.path.join(logdir, kind)
     if kind.startswith("collision"):
-        cmd = ["python3", os.path.join(sim, "harness.py"), "collision", "--sim", "lammps", "--check",
+        cmd = ["python3", os.path.join(sim, "collision.py"), "--sim", "lammps", "--check",
                "--lmp", lmp, "--plugin", plugin, "--workdir", wd] + np_
     else:
         # both pour cells share one workdir: the 2-rank cell reuses the serial runs (--resume) and

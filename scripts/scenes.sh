@@ -21,9 +21,9 @@ python3 $s/scenes.py --sim lammps --np 2 --check --pour-reps 3 --plugin $lm --wo
 echo
 python3 $s/lammps_example.py --np 2 --plugin $lm --workdir "$out/lammps_example"
 echo
-python3 $s/harness.py collision --sim liggghts --viscoelastic --check --plugin $lg --workdir "$out/liggghts_visco"
+python3 $s/collision.py --sim liggghts --viscoelastic --check --plugin $lg --workdir "$out/liggghts_visco"
 echo
-python3 $s/harness.py collision --sim lammps --viscoelastic --check --plugin $lm --workdir "$out/lammps_visco"
+python3 $s/collision.py --sim lammps --viscoelastic --check --plugin $lm --workdir "$out/lammps_visco"
 echo
 python3 $s/oblique.py --sim liggghts --plugin $lg --ref build/simulators/dc_oblique_ref --workdir "$out/liggghts_oblique"
 echo

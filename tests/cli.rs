@@ -641,6 +641,83 @@ fn plan_json_matches_the_library() {
     }
 }
 
+/// `plan --step-aware`: the step-aware step is reported without the flag and chosen with it;
+/// both match the library (`plan::step_aware`), the plain figures stay, and an e tolerance no
+/// step-aware step meets is refused with the flag (status, flag and value named) and reported as
+/// null without it.
+#[test]
+fn plan_step_aware() {
+    let inp = demcontact::plan::PlanInput {
+        youngs: 7e10,
+        poisson: 0.22,
+        density: 2500.0,
+        restitution: 0.5,
+        radius_min: 1e-3,
+        radius_max: 2e-3,
+        v_max: 2.0,
+        depth: 0.5,
+        overlap_tol: 0.01,
+        e_tol: 0.01,
+        static_tol: 0.01,
+        ..demcontact::plan::PlanInput::new()
+    };
+    let p = demcontact::plan::plan(&inp).unwrap();
+    let sa = demcontact::plan::step_aware(&inp, &p).unwrap();
+    let close = |got: &Value, want: f64, key: &str| {
+        let got = got.as_f64().unwrap();
+        assert!(
+            (got - want).abs() <= 4e-16 * want.abs(),
+            "{key}: {got} vs {want}"
+        );
+    };
+    let plain_args: Vec<&str> = PLAN.iter().copied().chain(["--json"]).collect();
+    let j = json_of(&run(&plain_args));
+    assert_eq!(j["step_aware_chosen"], false);
+    close(&j["dt"], p.dt, "dt (plain)");
+    close(&j["step_aware"]["dt"], sa.dt, "step_aware.dt");
+    close(
+        &j["step_aware"]["speedup"],
+        sa.speedup,
+        "step_aware.speedup",
+    );
+    assert_eq!(j["step_aware"]["binding_dt"], "e-tol");
+    let aware_args: Vec<&str> = PLAN
+        .iter()
+        .copied()
+        .chain(["--step-aware", "--json"])
+        .collect();
+    let o = run(&aware_args);
+    assert_eq!(o.status.code(), Some(0));
+    let j = json_of(&o);
+    assert_eq!(j["step_aware_chosen"], true);
+    close(&j["dt"], sa.dt, "dt (step-aware)");
+    close(&j["speedup"], sa.speedup, "speedup");
+    close(&j["dt_plain"], p.dt, "dt_plain");
+    close(&j["dt_over_t_hertz"], sa.dt_over_t_hertz, "dt_over_t_hertz");
+    close(&j["e_plain_at_dt"], p.e_plain_at_dt, "e_plain_at_dt");
+    assert_eq!(j["binding_dt"], "e-tol (step-aware)");
+    // The step-aware step is the larger: about t_H/10 here against t_H/42 plain.
+    assert!(sa.dt > 3.0 * p.dt, "{} vs {}", sa.dt, p.dt);
+    let o = run(&aware_args[..aware_args.len() - 1]);
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        text.contains("step-aware step") && text.contains("chosen"),
+        "{text}"
+    );
+    // An e tolerance the step-aware dashpot cannot meet above t_H/8192: refused with the flag.
+    let tight = plan_with("--e-tol", Some("1e-7"));
+    let mut a: Vec<&str> = tight.iter().map(String::as_str).collect();
+    a.push("--step-aware");
+    let o = run(&a);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(o.stdout.is_empty());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("--e-tol 0.0000001"), "{err}");
+    a.push("--json");
+    let j = json_of(&run(&a));
+    assert_eq!(j["error"]["status"].as_i64(), Some(6137), "{j}");
+}
+
 #[test]
 fn plan_bad_input() {
     // (flag, value, status, what the message must contain)

@@ -220,10 +220,20 @@ fn dt_for_accuracy_step_aware_is_larger_and_holds() {
 /// e_t = −u_t,out/u_t,in with u_t = v_t − R ω (ω about the axis normal to the plane of impact).
 /// Velocity Verlet (LAMMPS order), onset phase j of 32.
 fn oblique_e_t(m: &demcontact::contact::ContactModel, dt: f64, j: usize) -> (f64, f64) {
+    oblique_e_t_at(m, dt, j, 0.5)
+}
+
+/// [`oblique_e_t`] at tangential impact speed `vt0` (normal 1 m/s).
+fn oblique_e_t_at(
+    m: &demcontact::contact::ContactModel,
+    dt: f64,
+    j: usize,
+    vt0: f64,
+) -> (f64, f64) {
     use demcontact::contact::{ContactState, contact_force};
     let (mass, r) = (2.0e-3, 2.0e-3);
     let inertia = 0.4 * mass * r * r;
-    let (vn0, vt0) = (1.0, 0.5); // normal (towards the wall) and tangential speed
+    let vn0 = 1.0; // normal speed (towards the wall)
     let mut hist = [0.0; 16];
     let mut d = -(j as f64) / 32.0 * vn0 * dt;
     // Wall normal +z; the sphere moves in x (tangential) and −z; spin about y.
@@ -296,6 +306,285 @@ fn tangential_restitution_at_the_host_step() {
         assert!(
             (et_s - et_ref).abs() <= (et_p - et_ref).abs() + 0.005,
             "e_t {et_s} vs {et_p}"
+        );
+    }
+}
+
+/// The batch of a step-aware model (its steady loop over every contact, then the exact path for
+/// the contacts at onset, flagged or at their predicted last step) equals the scalar
+/// `contact_force` bit for bit: 700 bouncing spheres on a wall under gravity (more than one
+/// chunk and one guard block), impact speeds 0.3–3 m/s and every onset phase, so the run has
+/// onsets, steady steps, the end handling (C) and its flag, separated contacts and resting ones;
+/// Hertz (normal-only and Mindlin), p = 1 and p = 2, both criteria, records of the model's own
+/// length and wider than DC_CONTACT_HISTORY_MAX. Each step's forces move both copies the same
+/// way (velocity Verlet), so equal bits keep the two runs on one trajectory.
+#[test]
+fn batch_equals_scalar_bit_for_bit() {
+    use demcontact::contact::batch::{BatchIn, BatchOut, contact_force_batch};
+    use demcontact::contact::model::select;
+    use demcontact::contact::{ContactState, HISTORY_MAX, contact_force};
+    let (nc, steps) = (700usize, 400usize);
+    let (rad, mass) = (2.0e-3, 2.0e-3);
+    let mut counts = [0usize; 4]; // onset, steady, (C) fired, separated
+    for (law, tangential) in [
+        (Law::Hertz, select::TANGENTIAL_NONE),
+        (Law::Hertz, select::TANGENTIAL_MINDLIN),
+        (Law::Linear, select::TANGENTIAL_NONE),
+        (Law::P2, select::TANGENTIAL_NONE),
+    ] {
+        for crit in [0, 1] {
+            let mut s = spec(law, 0.5, crit);
+            s.tangential = tangential;
+            s.mu = 0.5;
+            let dt = t_h(law, 1.0) / 20.0;
+            let m = set_step(&contact_model(&s).unwrap(), dt, 0).unwrap();
+            let at = m.layout.step.unwrap();
+            for stride in [m.layout.len, HISTORY_MAX + 1] {
+                // One flight of ~40 steps at 1 m/s.
+                let g = 2.0 / (40.0 * dt);
+                let speed = |i: usize| 0.3 * 10f64.powf(i as f64 / nc as f64);
+                let mut d: Vec<f64> = (0..nc)
+                    .map(|i| -((i % 64) as f64 / 64.0 + (i / 64) as f64) * speed(i) * dt)
+                    .collect();
+                let mut v: Vec<f64> = (0..nc).map(|i| -speed(i)).collect();
+                let vt: Vec<f64> = (0..nc)
+                    .map(|i| 0.1 * speed(i) * ((i % 7) as f64 - 3.0))
+                    .collect();
+                let mut acc = vec![-g; nc];
+                let mut hb = vec![0.0; nc * stride];
+                let mut hs = hb.clone();
+                let n = vec![[0.0, 0.0, 1.0]; nc];
+                let (r1, r2) = (vec![rad; nc], vec![f64::INFINITY; nc]);
+                let (m1, m2) = (vec![mass; nc], vec![f64::INFINITY; nc]);
+                let zero = vec![[0.0; 3]; nc];
+                for _ in 0..steps {
+                    let mut v1 = vec![[0.0; 3]; nc];
+                    for i in 0..nc {
+                        let vh = v[i] + 0.5 * dt * acc[i];
+                        v[i] = vh;
+                        d[i] -= dt * vh;
+                        v1[i] = [vt[i], 0.0, vh];
+                    }
+                    let (mut f_n, mut force) = (vec![0.0; nc], vec![[0.0; 3]; nc]);
+                    let (mut t1, mut t2) = (vec![[0.0; 3]; nc], vec![[0.0; 3]; nc]);
+                    let before = hb.clone();
+                    let inp = BatchIn {
+                        normal: &n,
+                        overlap: &d,
+                        v1: &v1,
+                        v2: &zero,
+                        w1: &zero,
+                        w2: &zero,
+                        r1: &r1,
+                        r2: &r2,
+                        m1: &m1,
+                        m2: &m2,
+                    };
+                    let mut out = BatchOut {
+                        f_n: &mut f_n,
+                        force: &mut force,
+                        torque1: Some(&mut t1),
+                        torque2: Some(&mut t2),
+                        history: &mut hb,
+                        stride,
+                    };
+                    contact_force_batch(&m, &inp, dt, &mut out).unwrap();
+                    for i in 0..nc {
+                        let st = ContactState {
+                            n: n[i],
+                            overlap: d[i],
+                            v1: v1[i],
+                            v2: [0.0; 3],
+                            w1: [0.0; 3],
+                            w2: [0.0; 3],
+                            r1: rad,
+                            r2: f64::INFINITY,
+                            m1: mass,
+                            m2: f64::INFINITY,
+                        };
+                        let h = &mut hs[i * stride..(i + 1) * stride];
+                        let r = contact_force(&m, &st, dt, h).unwrap();
+                        let same = r.fn_.to_bits() == f_n[i].to_bits()
+                            && (0..3).all(|k| r.force[k].to_bits() == force[i][k].to_bits())
+                            && h.iter()
+                                .zip(&hb[i * stride..])
+                                .all(|(a, b)| a.to_bits() == b.to_bits());
+                        assert!(
+                            same,
+                            "{law:?} tangential {tangential} crit {crit} stride {stride} contact {i}: \
+                             scalar {:e} batch {:e}",
+                            r.fn_, f_n[i]
+                        );
+                        let (h0, h1) = (before[i * stride + at], hb[i * stride + at]);
+                        let k = if d[i] <= 0.0 {
+                            3
+                        } else if h0 == 0.0 {
+                            0
+                        } else if h1 < 0.0 {
+                            2
+                        } else {
+                            1
+                        };
+                        counts[k] += 1;
+                        acc[i] = force[i][2] / mass - g;
+                        v[i] += 0.5 * dt * acc[i];
+                    }
+                }
+            }
+        }
+    }
+    println!(
+        "onset {} steady {} end (C) {} separated {}",
+        counts[0], counts[1], counts[2], counts[3]
+    );
+    assert!(
+        counts.iter().all(|&c| c > 1000),
+        "every case exercised: {counts:?}"
+    );
+}
+
+/// A step-aware normal-only batch (one history double per contact, saved in the guard's narrow
+/// buffer) whose contacts 5 and 530 of 600 overflow (overlap 1e300 m): `ResultRange`, those
+/// contacts' outputs NaN and their history double as it was, every other contact as the scalar
+/// `contact_force`, bit for bit; records of 1 and of 13 doubles.
+#[test]
+fn batch_overflow_keeps_the_step_slot() {
+    use demcontact::Error;
+    use demcontact::contact::batch::{BatchIn, BatchOut, contact_force_batch};
+    use demcontact::contact::{ContactState, contact_force};
+    let nc = 600;
+    let dt = t_h(Law::Hertz, 1.0) / 20.0;
+    let m = set_step(&contact_model(&spec(Law::Hertz, 0.5, 0)).unwrap(), dt, 0).unwrap();
+    assert_eq!(m.layout.len, 1);
+    for stride in [1, 13] {
+        let bad = |i: usize| i == 5 || i == 530;
+        let d: Vec<f64> = (0..nc)
+            .map(|i| {
+                if bad(i) {
+                    1e300
+                } else {
+                    1e-6 * (1.0 + i as f64 / nc as f64)
+                }
+            })
+            .collect();
+        let v1: Vec<[f64; 3]> = (0..nc)
+            .map(|i| [0.0, 0.0, -0.5 + (i % 3) as f64 * 0.25])
+            .collect();
+        let n = vec![[0.0, 0.0, 1.0]; nc];
+        let zero = vec![[0.0; 3]; nc];
+        let (r1, r2) = (vec![2e-3; nc], vec![f64::INFINITY; nc]);
+        let (m1, m2) = (vec![2e-3; nc], vec![f64::INFINITY; nc]);
+        // Every other contact past its onset (R stored), the rest fresh.
+        let h0: Vec<f64> = (0..nc * stride)
+            .map(|k| {
+                if k % stride == 0 && (k / stride) % 2 == 1 {
+                    0.97
+                } else {
+                    0.0
+                }
+            })
+            .collect();
+        let mut hb = h0.clone();
+        let (mut f_n, mut force) = (vec![0.0; nc], vec![[0.0; 3]; nc]);
+        let inp = BatchIn {
+            normal: &n,
+            overlap: &d,
+            v1: &v1,
+            v2: &zero,
+            w1: &zero,
+            w2: &zero,
+            r1: &r1,
+            r2: &r2,
+            m1: &m1,
+            m2: &m2,
+        };
+        let mut out = BatchOut {
+            f_n: &mut f_n,
+            force: &mut force,
+            torque1: None,
+            torque2: None,
+            history: &mut hb,
+            stride,
+        };
+        assert_eq!(
+            contact_force_batch(&m, &inp, dt, &mut out),
+            Err(Error::ResultRange)
+        );
+        for i in 0..nc {
+            let rec = i * stride..(i + 1) * stride;
+            if bad(i) {
+                assert!(
+                    f_n[i].is_nan() && force[i].iter().all(|x| x.is_nan()),
+                    "contact {i}"
+                );
+                assert_eq!(hb[rec.clone()], h0[rec], "contact {i}: history touched");
+                continue;
+            }
+            let st = ContactState {
+                n: n[i],
+                overlap: d[i],
+                v1: v1[i],
+                v2: [0.0; 3],
+                w1: [0.0; 3],
+                w2: [0.0; 3],
+                r1: 2e-3,
+                r2: f64::INFINITY,
+                m1: 2e-3,
+                m2: f64::INFINITY,
+            };
+            let mut h = h0[rec.clone()].to_vec();
+            let r = contact_force(&m, &st, dt, &mut h).unwrap();
+            assert_eq!(
+                r.fn_.to_bits(),
+                f_n[i].to_bits(),
+                "stride {stride} contact {i}"
+            );
+            assert!(
+                h.iter()
+                    .zip(&hb[rec])
+                    .all(|(a, b)| a.to_bits() == b.to_bits()),
+                "contact {i}"
+            );
+        }
+    }
+}
+
+/// Whether the discrete-map calibration extends to the tangential dashpot: at t_H/20 a damping
+/// change alone moves the realised e_t onto the reference. The same oblique impact at three
+/// tangential speeds (0.25, 0.5, 1 m/s; normal 1 m/s), reference the plain model (spec e_t 0.5)
+/// at t_H/2000, step-aware models at t_H/20 with spec e_t 0.5 (the tangential dashpot as built)
+/// and 0.385 (a stronger tangential dashpot, one value for all three speeds). Asserted: with 0.5
+/// every speed misses its reference by more than 0.05; with 0.385 every speed is within 0.01.
+#[test]
+fn tangential_damping_alone_can_correct_e_t() {
+    let th = t_h(Law::Hertz, 1.0);
+    let model = |et: f64| {
+        let mut s = spec(Law::Hertz, 0.5, 1);
+        s.tangential = demcontact::contact::model::select::TANGENTIAL_MINDLIN;
+        s.mu = 10.0;
+        s.e_t = et;
+        contact_model(&s).unwrap()
+    };
+    let mean = |m: &demcontact::contact::ContactModel, n: f64, vt: f64| {
+        (0..32)
+            .map(|j| oblique_e_t_at(m, th / n, j, vt).1)
+            .sum::<f64>()
+            / 32.0
+    };
+    for vt in [0.25, 0.5, 1.0] {
+        let reference = mean(&model(0.5), 2000.0, vt);
+        let built = mean(&set_step(&model(0.5), th / 20.0, 0).unwrap(), 20.0, vt);
+        let stronger = mean(&set_step(&model(0.385), th / 20.0, 0).unwrap(), 20.0, vt);
+        println!(
+            "v_t {vt}: reference {reference:.4}; t_H/20 step-aware, spec e_t 0.5: {built:.4}, 0.385: {stronger:.4}"
+        );
+        assert!(
+            (built - reference).abs() > 0.05,
+            "v_t {vt}: {built} vs {reference}"
+        );
+        assert!(
+            (stronger - reference).abs() < 0.01,
+            "v_t {vt}: {stronger} vs {reference}"
         );
     }
 }

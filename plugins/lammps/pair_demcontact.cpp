@@ -35,6 +35,7 @@
  * (the size of fix demcontact/history; dt changes leave it unchanged).
  */
 #include "pair_demcontact.h"
+#include "scan_bad_values.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -51,6 +52,7 @@
 #include <cstring>
 #include <mpi.h>
 #include <string>
+#include <type_traits>
 
 namespace demcontact_lammps {
 
@@ -205,6 +207,15 @@ void PairDemcontact::build_models()
                 nh = std::max(nh, models[s1 * N + s2].nh);
             }
         }
+    // the loop compiled for the models' common shape (every type pair, both orders), if all
+    // are full contacts with one instantiated shape; else the generic loop
+    bool all_full = true;
+    for (int i = 1; i <= n; i++)
+        for (int j = 1; j <= n; j++) all_full = all_full && models[i * N + j].full;
+    loop = all_full ? demcontact_shaped::pick_common<LoopOf>(n * n, [&](int k) -> const dc_contact_model & {
+        return models[(k / n + 1) * N + k % n + 1].cm;
+    })
+                    : &PairDemcontact::compute_loop<demcontact_shaped::Generic>;
     if (comm->me == 0) {
         const Model &m11 = models[N + 1];
         utils::logmesg(lmp, "pair demcontact: {}{} {}, limit_damping {}, alpha(1,1) = {:.15g}, A(1,1) = {:.6g} s, "
@@ -279,6 +290,50 @@ void PairDemcontact::map_slots()
 void PairDemcontact::compute(int eflag, int vflag)
 {
     ev_init(eflag, vflag);
+    (this->*loop)();
+}
+
+/* One contact through S: a Shape's body inlined here when every type pair has that shape (the
+   Result stays in registers), else contact_eval (Generic: any model, through Model::eval). Same
+   bits either way (demcontact_shaped.h). */
+template <class S>
+static inline int32_t eval_as(const Model &m, const State &s, double dt, double *h, dc_contact_result &r)
+{
+    return S::eval(&m.cm, &s, dt, h, &r);
+}
+template <>
+inline int32_t eval_as<demcontact_shaped::Generic>(const Model &m, const State &s, double dt, double *h,
+                                                   dc_contact_result &r)
+{
+    Result out;
+    const int32_t st = contact_eval(m, s, dt, h, out);
+    for (int k = 0; k < 3; k++) {
+        r.force[k] = out.force[k];
+        r.torque1[k] = out.torque1[k];
+        r.torque2[k] = out.torque2[k];
+    }
+    return st;
+}
+
+/* The deferred entry (a Shape's loop): the checks of each contact's state made once per pass on
+   what the states are built from, dt and every owned and ghost atom's radius and mass (finite,
+   > 0), velocity and spin (finite) (scan_bad_values.h), the history and result checks collected
+   and tested after the loop, before LAMMPS integrates. When the scan finds a bad value the pass
+   takes the per-contact checks instead (the same errors, naming the contact, as before). Not
+   checked up front: the normal and overlap, computed here from positions (coinciding atoms or a
+   position not finite give results not finite, caught after the loop). */
+static bool states_ok(const Atom *atom, double dt)
+{
+    using demcontact_scan::bad_values;
+    const int n = atom->nlocal + atom->nghost;
+    return std::isfinite(dt) && dt > 0.0 &&
+           (n == 0 || !(bad_values(atom->v[0], 3 * n, false) | bad_values(atom->omega[0], 3 * n, false) |
+                        bad_values(atom->radius, n, true) | bad_values(atom->rmass, n, true)));
+}
+
+template <class S>
+void PairDemcontact::compute_loop()
+{
     double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
     const double *radius = atom->radius, *rmass = atom->rmass;
     const int *type = atom->type;
@@ -286,6 +341,10 @@ void PairDemcontact::compute(int eflag, int vflag)
     const int nlocal = atom->nlocal;
     const int N = n1();
     const double dt = update->dt;
+    constexpr bool shaped = !std::is_same<S, demcontact_shaped::Generic>::value;
+    const bool deferred = shaped && states_ok(atom, dt);
+    dc_contact_checks checks;
+    dc_contact_checks_init_inline(&checks);
     // history is advanced by real steps only, not by the force evaluation of `run` setup
     const bool advance = update->setupflag == 0;
     FixDemcontactHistory *H = history;
@@ -369,8 +428,10 @@ void PairDemcontact::compute(int eflag, int vflag)
                     h = scratch;
                 }
             }
-            Result out;
-            const int32_t st = contact_eval(models[type[a] * N + type[b]], s, dt, h, out);
+            dc_contact_result out;
+            const Model &mdl = models[type[a] * N + type[b]];
+            const int32_t st = deferred ? S::eval_deferred(&mdl.cm, &s, dt, h, &out, &checks)
+                                        : eval_as<S>(mdl, s, dt, h, out);
             if (st != DC_OK)
                 error->one(FLERR, "pair demcontact: atoms {} {}: {}", tag[a], tag[b], dc_status_str(st));
             // newton on: forces and torques to both (a ghost's go to its owner by reverse
@@ -390,6 +451,20 @@ void PairDemcontact::compute(int eflag, int vflag)
             if (evflag)
                 ev_tally_xyz(a, b, nlocal, newton ? 1 : 0, 0.0, 0.0, out.force[0], out.force[1], out.force[2], dx,
                              dy, dz);
+        }
+    }
+    if (deferred) {
+        const int32_t st = dc_contact_checks_status_inline(&checks);
+        if (st != DC_OK) {
+            tagint who = -1;
+            for (int i = 0; i < atom->nlocal + atom->nghost && who < 0; i++) // ghosts: newton on
+                for (int k = 0; k < 3; k++)
+                    if (!std::isfinite(f[i][k]) || !std::isfinite(torque[i][k])) who = tag[i];
+            if (who >= 0)
+                error->one(FLERR, "pair demcontact: step {}: {} (atom {}: force or torque not finite)",
+                           update->ntimestep, dc_status_str(st), who);
+            error->one(FLERR, "pair demcontact: step {}: {} (in a contact's results or history)", update->ntimestep,
+                       dc_status_str(st));
         }
     }
 }

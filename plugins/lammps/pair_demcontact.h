@@ -24,12 +24,27 @@ public:
     void reset_dt() override;
     void compute(int eflag, int vflag) override;
 
+    /* The force loop compiled for one evaluation S (demcontact_shaped.h: a Shape, the per-contact
+       body inlined into the loop, or Generic, through contact_eval); chosen by build_models. */
+    template <class S>
+    void compute_loop();
+    typedef void (PairDemcontact::*Loop)();
+    struct LoopOf {
+        typedef Loop type;
+        template <class S>
+        static type get()
+        {
+            return &PairDemcontact::compute_loop<S>;
+        }
+    };
+
 private:
     int n1() const { return atom->ntypes + 1; }
     void allocate();
     void build_models();
     void map_slots();
 
+    Loop loop = &PairDemcontact::compute_loop<demcontact_shaped::Generic>;
     bool clamp = false;
     bool newton = true; // newton-on neighbour list (force->newton_pair), else newton off
     int maxpartner = 32;

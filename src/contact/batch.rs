@@ -25,10 +25,12 @@ use super::vec3::{
     scale, sub,
 };
 use super::{rolling_constant, rolling_epsd, step_exact, twisting_sds};
-use crate::Error;
 use crate::force::pair::{Consts, Law, Visit, eval};
 use crate::force::registry::{dispatch, normal_force_raw, unclamped};
 use crate::force::stateful;
+use crate::numerics::simd::{SimdLoop, vectorised};
+use crate::{EndCriterion, Error};
+use core::marker::PhantomData;
 
 /// Inputs of n contacts.
 #[derive(Clone, Copy, Debug)]
@@ -116,11 +118,29 @@ impl Visit for NormalPass<'_, '_> {
     type Out = ();
     #[inline(always)]
     fn visit<L: Law, const CLAMP: bool>(self) {
-        normal_pass::<L, CLAMP>(self.c, self.inp, self.f_n, self.force);
+        vectorised(NormalLoop::<L, CLAMP> {
+            p: self,
+            law: PhantomData,
+        });
     }
 }
 
-#[inline(never)]
+/// [`normal_pass`] run through [`vectorised`] (compiled for the CPU's widest vectors; every
+/// flavour gives the same bits).
+struct NormalLoop<'a, 'b, L, const CLAMP: bool> {
+    p: NormalPass<'a, 'b>,
+    law: PhantomData<L>,
+}
+
+impl<L: Law, const CLAMP: bool> SimdLoop for NormalLoop<'_, '_, L, CLAMP> {
+    #[inline(always)]
+    fn run(self) {
+        let p = self.p;
+        normal_pass::<L, CLAMP>(p.c, p.inp, p.f_n, p.force);
+    }
+}
+
+#[inline(always)]
 fn normal_pass<L: Law, const CLAMP: bool>(
     c: Consts,
     b: &BatchIn<'_>,
@@ -388,22 +408,174 @@ impl Visit for StepPass<'_, '_, '_> {
     }
 }
 
+/// Contacts per chunk of [`step_pass`]: its mask of contacts for the exact path lives on the
+/// stack (one byte each).
+const STEP_CHUNK: usize = 256;
+
 #[inline(never)]
 fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_>, at: usize) {
+    let n = b.overlap.len();
+    let mut a = 0;
+    while a < n {
+        let e = n.min(a + STEP_CHUNK);
+        let len = if o.history.is_empty() { 0 } else { at + 1 };
+        let (Some(ci), Some(mut co)) = (sub_in(b, a, e), sub_out(o, len, a, e)) else {
+            // Unreachable after check_call (the slices have their lengths): the rest by the
+            // exact path.
+            step_exact_path::<L>(m, b, dt, o, at, a, &[]);
+            return;
+        };
+        // 1 = this contact takes the exact path (a contact the steady loop does not reach
+        // keeps it).
+        let mut mask = [1u64; STEP_CHUNK];
+        let mask = mask.get_mut(..e - a).unwrap_or(&mut []);
+        // The history doubles gathered first (a strided load in the steady loop would keep it
+        // from vectorising).
+        let mut slots = [0.0f64; STEP_CHUNK];
+        let held = co
+            .history
+            .get(at..)
+            .unwrap_or(&[])
+            .iter()
+            .step_by(co.stride);
+        for (s, &x) in slots.iter_mut().zip(held) {
+            *s = x;
+        }
+        let slots = slots.get(..e - a).unwrap_or(&[]);
+        let (c, f_n, force) = (m.normal.consts, &mut *co.f_n, &mut *co.force);
+        if m.normal.criterion == EndCriterion::Overlap {
+            vectorised(StepSteady::<L, true> {
+                consts: c,
+                b: &ci,
+                dt,
+                f_n,
+                force,
+                slots,
+                mask,
+                law: PhantomData,
+            });
+        } else {
+            vectorised(StepSteady::<L, false> {
+                consts: c,
+                b: &ci,
+                dt,
+                f_n,
+                force,
+                slots,
+                mask,
+                law: PhantomData,
+            });
+        }
+        step_exact_path::<L>(m, &ci, dt, &mut co, at, 0, mask);
+        a = e;
+    }
+}
+
+/// The steady contact step of [`step_pass`] for every contact that `slots` (its history
+/// doubles) reaches, branch-free: the force with the stored R (the history double's
+/// magnitude), clamped at zero (DC_END_FORCE) or not (DC_END_OVERLAP), as [`step_exact::normal_force`] computes it for
+/// a contact that is neither at its onset (history 0), nor flagged (history < 0), nor (with
+/// `OVERLAP`) at its predicted last step; `mask` marks those, and separated contacts of an
+/// adhesive law, for [`step_exact_path`].
+///
+/// Run through [`vectorised`] (compiled for the CPU's widest vectors: at SSE2's two lanes the
+/// compiler's cost model keeps this loop scalar); every flavour gives the same bits.
+struct StepSteady<'a, 'b, L, const OVERLAP: bool> {
+    consts: Consts,
+    b: &'b BatchIn<'a>,
+    dt: f64,
+    f_n: &'b mut [f64],
+    force: &'b mut [[f64; 3]],
+    slots: &'b [f64],
+    mask: &'b mut [u64],
+    law: PhantomData<L>,
+}
+
+impl<L: Law, const OVERLAP: bool> SimdLoop for StepSteady<'_, '_, L, OVERLAP> {
+    #[inline(always)]
+    fn run(self) {
+        let StepSteady {
+            consts,
+            b,
+            dt,
+            f_n,
+            force,
+            slots,
+            mask,
+            ..
+        } = self;
+        let it = b
+            .normal
+            .iter()
+            .zip(b.overlap)
+            .zip(b.v1.iter().zip(b.v2))
+            .zip(b.r1.iter().zip(b.r2).zip(b.m1.iter().zip(b.m2)))
+            .zip(f_n.iter_mut().zip(force.iter_mut()))
+            .zip(slots.iter().zip(mask.iter_mut()));
+        for (((((&n, &d), (&v1, &v2)), ((&r1, &r2), (&m1, &m2))), (fo, fv)), (&s, mk)) in it {
+            // As Kin::of (same operations, same bits).
+            let vn = -dot(sub(v1, v2), n);
+            let (r, mm) = (harmonic(r1, r2), harmonic(m1, m2));
+            let c = Consts {
+                c: consts.c * s.abs(),
+                ..consts
+            };
+            // As step_exact::normal_force's steady step (same operations, same bits).
+            let raw = L::raw(&c, d, vn, r, mm);
+            let (f, end) = if OVERLAP {
+                let vp = vn - dt * raw / mm;
+                (raw, d + dt * vp <= 0.0)
+            } else {
+                (if raw > 0.0 { raw } else { 0.0 }, false)
+            };
+            let touching = d > 0.0;
+            // Separated: the plain law's +0 (a repulsive law), else the exact path.
+            let f = if touching { f } else { 0.0 };
+            let exact = if touching {
+                s <= 0.0 || end
+            } else {
+                L::ADHESIVE
+            };
+            *mk = u64::from(exact);
+            *fo = f;
+            *fv = normal_vector(f, n);
+        }
+    }
+}
+
+/// The contacts from `from` on that `mask` marks (`mask[i - from]`; all of them where `mask`
+/// ends) as the scalar path computes
+/// them ([`step_exact::contact_normal_with`] with the law's monomorphised kernel in contact,
+/// the law's own force otherwise), bit for bit.
+#[inline(never)]
+fn step_exact_path<L: Law>(
+    m: &ContactModel,
+    b: &BatchIn<'_>,
+    dt: f64,
+    o: &mut BatchOut<'_>,
+    at: usize,
+    from: usize,
+    mask: &[u64],
+) {
     let pair = &m.normal;
-    let it = b
-        .normal
-        .iter()
-        .zip(b.overlap)
-        .zip(b.v1.iter().zip(b.v2))
-        .zip(b.r1.iter().zip(b.r2).zip(b.m1.iter().zip(b.m2)))
-        .zip(o.f_n.iter_mut().zip(o.force.iter_mut()))
-        .zip(o.history.chunks_exact_mut(o.stride));
-    for (((((&n, &d), (&v1, &v2)), ((&r1, &r2), (&m1, &m2))), (fo, fv)), h) in it {
-        // As Kin::of (same operations, same bits).
+    let stride = o.stride;
+    for i in from..b.overlap.len() {
+        if mask.get(i - from).is_some_and(|&x| x == 0) {
+            continue;
+        }
+        let (Some(&n), Some(&d), Some(&v1), Some(&v2)) =
+            (b.normal.get(i), b.overlap.get(i), b.v1.get(i), b.v2.get(i))
+        else {
+            continue;
+        };
+        let (Some(&r1), Some(&r2), Some(&m1), Some(&m2)) =
+            (b.r1.get(i), b.r2.get(i), b.m1.get(i), b.m2.get(i))
+        else {
+            continue;
+        };
         let vn = -dot(sub(v1, v2), n);
         let (r, mm) = (harmonic(r1, r2), harmonic(m1, m2));
-        let f = match h.get_mut(at) {
+        let f = match o.history.get_mut(i * stride + at) {
             Some(slot) if d > 0.0 => {
                 step_exact::contact_normal_with(m, d, vn, r, mm, dt, slot, |c, d, v, r, mm| {
                     eval::<L, false>(&c, d, v, r, mm)
@@ -411,8 +583,10 @@ fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOu
             }
             _ => normal_force_raw(pair.kernel, pair.consts, d, vn, r, mm),
         };
-        *fo = f;
-        *fv = normal_vector(f, n);
+        if let (Some(fo), Some(fv)) = (o.f_n.get_mut(i), o.force.get_mut(i)) {
+            *fo = f;
+            *fv = normal_vector(f, n);
+        }
     }
 }
 
@@ -533,12 +707,7 @@ fn check_values(m: &ContactModel, inp: &BatchIn<'_>, out: &BatchOut<'_>) -> Resu
             check_state(&s)?;
         }
     }
-    if len > 0
-        && !out
-            .history
-            .chunks_exact(out.stride)
-            .all(|h| h.iter().take(len).all(|x| x.is_finite()))
-    {
+    if len > 0 && !bits_finite(history_bits(out.history, out.stride, len)) {
         return Err(Error::NotFinite);
     }
     Ok(())
@@ -628,22 +797,33 @@ fn contact_finite(o: &BatchOut<'_>, len: usize, i: usize) -> bool {
         && all_finite(h)
 }
 
+/// [`finite_bits`] of the first `len` values of each record of `stride` (values past `len`
+/// are the host's: not judged). Branch-free, like [`finite_bits`]; one value per record (a
+/// step-aware normal-only model) by a strided fold.
+fn history_bits(history: &[f64], stride: usize, len: usize) -> u64 {
+    if len == 0 {
+        0
+    } else if len == stride {
+        finite_bits(history)
+    } else if len == 1 {
+        history
+            .iter()
+            .step_by(stride)
+            .fold(0, |acc, x| acc | finite_bits(&[*x]))
+    } else {
+        history.chunks_exact(stride).fold(0, |acc, h| {
+            acc | finite_bits(h.get(..len).unwrap_or(&[f64::NAN]))
+        })
+    }
+}
+
 /// Every output of the batch (and every new history value) finite? One OR reduction over all
 /// arrays, no early exit: the common case costs a read of what was just written (in cache: the
 /// guard runs block by block).
 fn outputs_finite(o: &BatchOut<'_>, len: usize) -> bool {
     let torque =
         |t: &Option<&mut [[f64; 3]]>| t.as_ref().map_or(0, |t| finite_bits(t.as_flattened()));
-    let history = if len == 0 {
-        0
-    } else if len == o.stride {
-        finite_bits(o.history)
-    } else {
-        // Values past `len` in each record are the host's: not judged.
-        o.history.chunks_exact(o.stride).fold(0, |acc, h| {
-            acc | finite_bits(h.get(..len).unwrap_or(&[f64::NAN]))
-        })
-    };
+    let history = history_bits(o.history, o.stride, len);
     bits_finite(
         finite_bits(o.f_n)
             | finite_bits(o.force.as_flattened())
@@ -678,15 +858,19 @@ fn compute_guarded(
         return Ok(first);
     }
     // The zeroed stack buffer is paid on every call: a short batch gets a short one.
-    if n <= SHORT {
-        guarded_with_history::<SHORT>(m, inp, dt, out)
-    } else {
-        guarded_with_history::<GUARD>(m, inp, dt, out)
+    // A record of one or two doubles (a step-aware normal-only model) is saved in a buffer of
+    // that width (value by value): the full-width buffer would cost a 48 KB fill per call.
+    match (n <= SHORT, m.layout.len <= 2) {
+        (true, true) => guarded_with_history::<SHORT, 2>(m, inp, dt, out),
+        (true, false) => guarded_with_history::<SHORT, HISTORY_MAX>(m, inp, dt, out),
+        (false, true) => guarded_with_history::<GUARD, 2>(m, inp, dt, out),
+        (false, false) => guarded_with_history::<GUARD, HISTORY_MAX>(m, inp, dt, out),
     }
 }
 
-/// [`compute_guarded`] for a model with history, `G` contacts per block.
-fn guarded_with_history<const G: usize>(
+/// [`compute_guarded`] for a model with history, `G` contacts per block, records saved in a
+/// buffer `W` doubles wide (`W` ≥ the model's history length).
+fn guarded_with_history<const G: usize, const W: usize>(
     m: &ContactModel,
     inp: &BatchIn<'_>,
     dt: f64,
@@ -694,13 +878,13 @@ fn guarded_with_history<const G: usize>(
 ) -> Result<Option<usize>, Error> {
     let len = m.layout.len;
     // The block's history records copied aside in one memcpy (the records' tails past `len`
-    // are the host's and come along unused); records wider than HISTORY_MAX, value by value.
-    let mut saved = [[0.0; HISTORY_MAX]; G];
+    // are the host's and come along unused); records wider than W, value by value.
+    let mut saved = [[0.0; W]; G];
     let saved = saved.as_flattened_mut();
     let mut first = None;
     for_blocks(inp, out, len, G, |a, ci, co| {
         let stride = co.stride;
-        let wide = stride > HISTORY_MAX;
+        let wide = stride > W;
         let rec = if wide { len } else { stride };
         if wide {
             for (s, h) in saved

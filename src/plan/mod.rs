@@ -53,11 +53,11 @@
 //!
 //! # Step-aware restitution
 //! `e_plain_*` is the restitution velocity-Verlet realises at the chosen step with the plain
-//! (continuously calibrated) dashpot, over 64 onset phases. A step-aware dashpot
-//! (`dc_contact_model_set_step`) is studied in docs/timestep.md and not yet in the library;
-//! [`Plan::dt_over_t_hertz`] (dt over the elastic Hertz duration at v_max) is the quantity its
-//! accuracy bound is stated in, so a `step_aware` input and an `e_step_aware` output can be added
-//! without changing anything here.
+//! (continuously calibrated) dashpot, over 64 onset phases. [`step_aware`] gives the step the
+//! step-aware dashpot (`dc_contact_model_set_step`, [`crate::contact::step_exact`]) allows at
+//! the same modulus and tolerance: [`crate::contact::step_exact::dt_for_accuracy`] for the
+//! fastest pair at v_max, capped by the same stability limit. It is a separate call because its
+//! calibration costs 0.1–1 s; the modulus does not depend on it.
 
 use crate::force::powerlaw::powerlaw_from_alpha;
 use crate::material;
@@ -870,5 +870,65 @@ pub fn plan(inp: &PlanInput) -> Result<Plan, PlanError> {
         e_plain_min: e_min,
         e_plain_max: e_max,
         e_plain_mean: e_sum / f64::from(N_PHASE),
+    })
+}
+
+/// The step with the step-aware dashpot (see the module docs), at the plan's modulus.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepAware {
+    /// Largest step meeting every tolerance with the step-aware dashpot [s]: the smaller of
+    /// `dt_restitution` and `stability_fraction` × the plan's `dt_stability`.
+    pub dt: f64,
+    /// What sets dt.
+    pub binding_dt: StepBinding,
+    /// The e-tolerance step of the step-aware dashpot, fastest pair at v_max [s].
+    pub dt_restitution: f64,
+    /// dt over the plan's (plain) dt.
+    pub gain: f64,
+    /// dt/dt_conventional.
+    pub speedup: f64,
+    /// dt over the elastic Hertz duration at v_max (R_min–R_min pair, youngs_soft).
+    pub dt_over_t_hertz: f64,
+    /// Steps per contact at v_max: the plan's duration/dt.
+    pub steps_per_contact: f64,
+}
+
+/// The step-aware counterpart of the plan's step (`pl` must be `plan(inp)`): the inputs are
+/// checked again; the refusals are [`plan`]'s, and [`Error::StepUnreachable`] (field
+/// [`PlanField::ETol`]) when no step down to t_H/8192 meets the e tolerance.
+pub fn step_aware(inp: &PlanInput, pl: &Plan) -> Result<StepAware, PlanError> {
+    inp.check()?;
+    let none = PlanError::at(PlanField::None);
+    let pairs = inp.pairs(pl.youngs_soft).map_err(&none)?;
+    let fast = fastest_pair(&pairs).map_err(&none)?;
+    let dt_e = crate::contact::step_exact::dt_for_accuracy(
+        P,
+        inp.restitution,
+        inp.criterion,
+        inp.v_max,
+        fast.omega0,
+        inp.e_tol,
+    )
+    .map_err(|e| match e {
+        Error::StepUnreachable => PlanError {
+            field: PlanField::ETol,
+            error: e,
+        },
+        e => none(e),
+    })?;
+    let dt_stab_used = inp.stability_fraction * pl.dt_stability;
+    let (dt, binding_dt) = if dt_stab_used < dt_e {
+        (dt_stab_used, StepBinding::Stability)
+    } else {
+        (dt_e, StepBinding::Restitution)
+    };
+    Ok(StepAware {
+        dt,
+        binding_dt,
+        dt_restitution: dt_e,
+        gain: dt / pl.dt,
+        speedup: dt / pl.dt_conventional,
+        dt_over_t_hertz: dt / pl.t_hertz,
+        steps_per_contact: pl.duration / dt,
     })
 }

@@ -19,8 +19,7 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import harness as H  # noqa: E402
+import harness as H
 
 # status codes (include/demcontact.h)
 NOT_POSITIVE, NEGATIVE, RESTITUTION, EXPONENT, SPEC_MODEL = 6105, 6106, 6103, 6104, 6123
@@ -108,14 +107,25 @@ LAMMPS_CASES = [
      "write 'tangential mindlin_rescale NULL e_t mu'", None),
 ]
 
+# bad values met during the run (pair_demcontact.cpp): an atom's velocity not finite (the pass
+# then takes the per-contact checks, naming the contact); finite values whose contact results are
+# not (heavy atoms sliding fast: the damped trial force overflows), found by the deferred checks
+# after the loop, before LAMMPS integrates
+LAMMPS_RUN_CASES = [  # (label, pair_coeff, deck overrides, bad value as printed, status)
+    ("velocity not finite (run time)", FULL, dict(velocity=["variable big equal 1e308*10",
+                                                            "velocity all set v_big 0 0"]), "atoms 1 2", NOT_FINITE),
+    ("results not finite (run time)", FULL.replace("NULL 1.0", "NULL 0.5"),
+     dict(density="1e30", velocity=["group one id 1", "velocity one set 0 1e300 0"]), "step 0", RESULT_RANGE),
+]
 
-def lammps_deck(plugin, style, coeff, wall):
+
+def lammps_deck(plugin, style, coeff, wall, velocity=("velocity all set 0.1 0 0",), density="2500"):
     L = ["units si", "atom_style sphere", "boundary f f f", "comm_modify vel yes",
          "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box", "create_box 1 box",
          "plugin load %s" % os.path.abspath(plugin), ("pair_style demcontact " + style).strip(),
          "pair_coeff 1 1 " + coeff,
          "create_atoms 1 single 0 0 0 units box", "create_atoms 1 single 0.00199 0 0 units box",
-         "set group all diameter 0.002 density 2500", "velocity all set 0.1 0 0",
+         "set group all diameter 0.002 density %s" % density] + list(velocity) + [
          "fix integr all nve/sphere"]
     if wall and wall.startswith("region:"):  # a region wall: the box's own faces
         L += ["region wallreg block -0.01 0.01 -0.01 0.01 -0.01 0.01 side in units box",
@@ -221,10 +231,11 @@ def main():
     os.makedirs(workdir, exist_ok=True)
     text = status_texts(os.path.abspath(a.plugin))
     if a.sim == "lammps":
-        import lammps_runs
+        from harness import lammps as lammps_runs
         exe = lammps_runs.find_lmp(a.lmp)
         env = H.mpi_env()
         cases = [(lab, lammps_deck(a.plugin, st, co, wa), bad, code) for lab, st, co, wa, bad, code in LAMMPS_CASES]
+        cases += [(lab, lammps_deck(a.plugin, "", co, None, **kw), bad, code) for lab, co, kw, bad, code in LAMMPS_RUN_CASES]
         # (both carry values, both Mindlin laws and step_exact accepted)
         control = lammps_deck(a.plugin, "", FULL + " carry project step_exact",
                               FULL_RESCALE + " carry rotate step_exact zplane -0.01 NULL")

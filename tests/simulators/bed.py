@@ -210,3 +210,7 @@ def main(a, workdir):
           % (TOL_PHI, 100 * TOL_Z, TOL_CN))
     if a.check and not ok:
         raise SystemExit("FAIL: packing statistics differ beyond tolerance")
+
+
+if __name__ == "__main__":
+    main(*H.arguments("bed", __doc__.splitlines()[0]))

@@ -20,12 +20,10 @@ import math
 import os
 import shutil
 import subprocess
-import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-import harness as H  # noqa: E402
+import harness as H
 
 SKIP = 77
 TOL = 2e-3

@@ -27,11 +27,9 @@ to the builtin. Exit 77 when LAMMPS or the deck is not installed.
 import argparse
 import os
 import re
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import harness as H  # noqa: E402
+import harness as H
 
 DECK = "/usr/share/lammps/examples/granular/in.pour.flatwall"
 PAIR = "hertz/material 1000.0 0.5 0.3 tangential mindlin NULL 1.0 0.5"
@@ -93,7 +91,7 @@ def main():
     a = ap.parse_args()
     if a.reps < 1 or a.steps < 0 or a.np < 1:
         raise SystemExit("example_timing: --reps and --np must be >= 1, --steps >= 0")
-    import lammps_runs
+    from harness import lammps as lammps_runs
     exe = lammps_runs.find_lmp(a.lmp)
     if not os.path.exists(a.deck):
         print("SKIPPED: example_timing (%s missing: apt-get install lammps-examples)" % a.deck)

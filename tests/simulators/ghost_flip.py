@@ -20,11 +20,9 @@ Exit 77 (ctest SKIP) when LAMMPS is missing.
 import argparse
 import math
 import os
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import harness as H  # noqa: E402
+import harness as H
 
 R, RHO, E, NU, REST, MU, E_T = 1e-3, 2500.0, 5e6, 0.3, 0.5, 0.5, 0.5
 L = 0.02              # periodic box length along x
@@ -78,7 +76,7 @@ def main():
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--workdir")
     a = ap.parse_args()
-    import lammps_runs
+    from harness import lammps as lammps_runs
     exe = lammps_runs.find_lmp(a.lmp)
     d = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_ghost_flip_"))
     os.makedirs(d, exist_ok=True)

@@ -31,11 +31,9 @@ import argparse
 import math
 import os
 import re
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import harness as H  # noqa: E402
+import harness as H
 
 EX_DIR = "/usr/share/lammps/examples"
 DECK = EX_DIR + "/granular/in.pour.flatwall"  # (--deck: another copy of a deck)
@@ -161,17 +159,7 @@ def measured(text, ex):
 
 def thermo(log):
     """The thermo rows of each run: a list per run of dicts."""
-    runs, rows, cols = [], [], None
-    for line in open(log).read().splitlines():
-        f = line.split()
-        if f[:1] == ["Step"]:
-            cols, rows = f, []
-        elif cols and len(f) == len(cols) and re.match(r"^\d+$", f[0]):
-            rows.append(dict(zip(cols, f)))
-        elif line.startswith("Loop time"):
-            runs.append(rows)
-            cols, rows = None, []
-    return runs
+    return H.parse_thermo(open(log).read())
 
 
 def run_deck(exe, mpirun, env, d, deck, np_):
@@ -285,7 +273,7 @@ def main():
     ap.add_argument("--table", action="store_true")
     ap.add_argument("--workdir")
     a = ap.parse_args()
-    import lammps_runs
+    from harness import lammps as lammps_runs
     exe = lammps_runs.find_lmp(a.lmp)
     workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_lmpex_"))
     env = H.mpi_env()

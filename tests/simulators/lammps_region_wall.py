@@ -27,8 +27,7 @@ import re
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import harness as H  # noqa: E402
+import harness as H
 
 R, V0, U, W = 1e-3, (0.3, 0.0, -0.5), 0.2, 0.2
 MODEL = "hertz/material 5e6 0.5 0.3 tangential mindlin NULL 0.5 0.5 rolling sds NULL 0 0.1"
@@ -78,7 +77,7 @@ def main():
     ap.add_argument("--lmp")
     ap.add_argument("--workdir")
     a = ap.parse_args()
-    import lammps_runs
+    from harness import lammps as lammps_runs
     exe = lammps_runs.find_lmp(a.lmp)
     env = H.mpi_env()
     workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_regwall_"))

@@ -22,11 +22,9 @@ transient, max |F_z + f_t| / f_t <= TOL. Exit 77 (ctest SKIP) when the simulator
 import argparse
 import math
 import os
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import harness as H  # noqa: E402
+import harness as H
 
 R, RHO, E, NU, REST, MU, E_T = 1e-3, 2500.0, 5e6, 0.3, 0.5, 0.5, 0.5
 FN, FT = 1e-3, 1e-4
@@ -123,7 +121,7 @@ def main():
     workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_migr_"))
     os.makedirs(workdir, exist_ok=True)
     if a.sim == "lammps":
-        import lammps_runs
+        from harness import lammps as lammps_runs
         exe = lammps_runs.find_lmp(a.lmp)
         env = H.mpi_env()
         mpirun = os.path.join(os.path.dirname(exe), "mpirun")

@@ -25,11 +25,9 @@ import argparse
 import math
 import os
 import subprocess
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import harness as H  # noqa: E402
+import harness as H
 
 E, NU, RHO, R, REST, MU, E_T, V = 3.8e11, 0.23, 4000.0, 2.5e-3, 0.98, 0.092, 1.0, 3.9
 ANGLES = list(range(5, 90, 5))
@@ -128,7 +126,7 @@ def main():
     os.makedirs(workdir, exist_ok=True)
     dt, steps = timing(a.steps_per_contact)
     if a.sim == "lammps":
-        import lammps_runs
+        from harness import lammps as lammps_runs
         exe = lammps_runs.find_lmp(a.lmp)
         env = H.mpi_env()
         deck = lammps_deck(a.plugin, dt, steps, a.step_exact, a.rescale)

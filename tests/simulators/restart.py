@@ -32,11 +32,9 @@ Exit 77 (ctest SKIP) when LAMMPS is missing.
 import argparse
 import math
 import os
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import harness as H  # noqa: E402
+import harness as H
 
 R, RHO, E, NU, REST, MU, E_T, MU_R = 1e-3, 2500.0, 5e6, 0.3, 0.5, 0.5, 0.5, 0.1
 FN, FT = 1e-3, 1e-4
@@ -118,7 +116,7 @@ def main():
                     help="the wall of sphere C: fix demcontact/wall zplane or fix demcontact/wall/region")
     ap.add_argument("--workdir")
     a = ap.parse_args()
-    import lammps_runs
+    from harness import lammps as lammps_runs
     exe = lammps_runs.find_lmp(a.lmp)
     env = H.mpi_env()
     mpirun = os.path.join(os.path.dirname(exe), "mpirun")

@@ -25,12 +25,10 @@ import argparse
 import os
 import re
 import resource
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import harness as H  # noqa: E402
-import scenes as S  # noqa: E402
+import harness as H
+import scenes as S
 
 
 def child_cpu():
@@ -89,7 +87,7 @@ def main():
     # (label, deck(steps), env, exe)
     models = []
     if a.sim == "lammps":
-        import lammps_runs
+        from harness import lammps as lammps_runs
         exe = lammps_runs.find_lmp(a.lmp)
         mpirun = os.path.join(os.path.dirname(exe), "mpirun")
         lm = {m[0]: m for m in S.lammps_models()}

@@ -48,11 +48,9 @@ import math
 import os
 import re
 import resource
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import harness as H  # noqa: E402
+import harness as H
 
 RHO, E, NU, REST, MU, MU_R = 2500.0, 5e6, 0.3, 0.5, 0.5, 0.1
 RMIN, RMAX = 1.0e-3, 1.5e-3
@@ -342,7 +340,7 @@ def main():
     workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_scene_"))
     g = geometry(a.smoke)
     if a.sim == "lammps":
-        import lammps_runs
+        from harness import lammps as lammps_runs
         exe = lammps_runs.find_lmp(a.lmp)
         env = H.mpi_env()
         mpirun = os.path.join(os.path.dirname(exe), "mpirun")

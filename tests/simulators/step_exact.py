@@ -27,11 +27,9 @@ import argparse
 import math
 import os
 import re
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import harness as H  # noqa: E402
+import harness as H
 
 R, RHO, E, NU, V = 1e-3, 2500.0, 1e7, 0.3, 1.0
 SPACING = 4 * R  # between the collisions of one run
@@ -116,7 +114,7 @@ def lammps_deck(plugin, geom, crit, variant, targets, dt, steps, cols, np_, dt_r
 
 
 def run_lammps(a, geom, crit, variant, targets, workdir):
-    import lammps_runs
+    from harness import lammps as lammps_runs
     exe = lammps_runs.find_lmp(a.lmp)
     dt, gaps, steps = setup(geom, a.steps_per_contact, a.phases)
     cols = collisions(geom, targets, gaps)

@@ -88,6 +88,10 @@ pub struct Args {
     /// The conventional step for the speed-up: τ_real / this (real E).
     #[arg(long = "conventional-divisor", default_value_t = 50.0)]
     conventional_divisor: f64,
+    /// Choose the step of the step-aware dashpot (dc_contact_model_set_step) instead of the
+    /// plain one; both are reported either way.
+    #[arg(long = "step-aware")]
+    step_aware: bool,
     /// Print one JSON object instead of text.
     #[arg(long)]
     pub json: bool,
@@ -188,6 +192,10 @@ impl Args {
                 };
                 format!("{flag}: {}{figure}", describe(pe.error))
             }
+            (PlanField::ETol, e @ demcontact::Error::StepUnreachable) => format!(
+                "{flag}: {} (the step-aware dashpot meets it at no step down to t_H/8192)",
+                describe(e)
+            ),
             (_, e @ (demcontact::Error::RestitutionRange | demcontact::Error::PoissonRange)) => {
                 format!("{flag}: {}", describe(e))
             }
@@ -199,7 +207,22 @@ impl Args {
 
 pub fn run(a: &Args) -> Result<Output, Failure> {
     let inp = a.input();
-    let p = plan::plan(&inp).map_err(|e| a.failure(e))?;
+    let plain = plan::plan(&inp).map_err(|e| a.failure(e))?;
+    // The step-aware step: always reported (null when unreachable), chosen with --step-aware.
+    let sa = match plan::step_aware(&inp, &plain) {
+        Ok(s) => Some(s),
+        Err(e) if a.step_aware => return Err(a.failure(e)),
+        Err(_) => None,
+    };
+    let mut p = plain;
+    let mut binding_dt = p.binding_dt.name().to_string();
+    if let (true, Some(s)) = (a.step_aware, sa) {
+        p.dt = s.dt;
+        p.speedup = s.speedup;
+        p.dt_over_t_hertz = s.dt_over_t_hertz;
+        p.steps_per_contact = s.steps_per_contact;
+        binding_dt = format!("{} (step-aware)", s.binding_dt.name());
+    }
     let crit = match a.criterion {
         Crit::Force => "force",
         Crit::Overlap => "overlap",
@@ -242,8 +265,33 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
         &mut t,
         "time step",
         format!("{:.6e}", p.dt),
-        format!("s   (binding: {})", p.binding_dt.name()),
+        format!("s   (binding: {binding_dt})"),
     );
+    match sa {
+        Some(s) => row(
+            &mut t,
+            "  step-aware step",
+            format!("{:.6e}", s.dt),
+            format!(
+                "s   ({:.4}x the plain {:.6e} s; speed-up {:.4}; dt = t_Hertz/{:.2}{})",
+                s.gain,
+                plain.dt,
+                s.speedup,
+                1.0 / s.dt_over_t_hertz,
+                if a.step_aware {
+                    ", chosen"
+                } else {
+                    "; --step-aware to choose it"
+                }
+            ),
+        ),
+        None => row(
+            &mut t,
+            "  step-aware step",
+            "none".into(),
+            "(no step down to t_Hertz/8192 meets --e-tol)".into(),
+        ),
+    }
     row(
         &mut t,
         "  e-tol step",
@@ -306,7 +354,11 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
     );
     row(
         &mut t,
-        "e realised at dt (plain)",
+        if a.step_aware {
+            "e at the plain step (plain)"
+        } else {
+            "e realised at dt (plain)"
+        },
         format!("{:.6}", p.e_plain_at_dt),
         format!(
             "(farthest of {} onset phases; range {:.6} .. {:.6}, mean {:.6})",
@@ -325,7 +377,18 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
         "softening": num(p.softening),
         "binding": p.binding.name(),
         "dt": num(p.dt),
-        "binding_dt": p.binding_dt.name(),
+        "binding_dt": binding_dt,
+        "step_aware_chosen": a.step_aware,
+        "dt_plain": num(plain.dt),
+        "step_aware": sa.map(|s| json!({
+            "dt": num(s.dt),
+            "binding_dt": s.binding_dt.name(),
+            "dt_restitution": num(s.dt_restitution),
+            "gain": num(s.gain),
+            "speedup": num(s.speedup),
+            "dt_over_t_hertz": num(s.dt_over_t_hertz),
+            "steps_per_contact": num(s.steps_per_contact),
+        })),
         "dt_restitution": num(p.dt_restitution),
         "dt_stability": num(p.dt_stability),
         "dt_conventional": num(p.dt_conventional),

