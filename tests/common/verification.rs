@@ -114,18 +114,17 @@ impl Scene {
     /// Forces at the current positions and (half-step) velocities; returns the contact count.
     fn forces(&mut self) -> usize {
         let nb = self.balls.len();
-        let mut touching = 0;
         for f in &mut self.force {
             *f = [0.0; 3];
         }
         for t in &mut self.torque {
             *t = [0.0; 3];
         }
-        let mut res = unsafe { std::mem::zeroed::<dc_contact_result>() };
-        let mut h = 0;
+        // (ball, the other ball or None for a wall, the state) per contact, in history order
+        let mut contacts = Vec::with_capacity(self.hist.len());
         for bi in 0..nb {
-            for wi in 0..self.walls.len() {
-                let (b, w) = (self.balls[bi], self.walls[wi]);
+            for w in &self.walls {
+                let b = self.balls[bi];
                 let st = dc_contact_state {
                     n: w.n,
                     overlap: b.r - (dot(w.n, b.x) - w.c),
@@ -138,26 +137,7 @@ impl Scene {
                     m1: b.m,
                     m2: f64::INFINITY,
                 };
-                let hist = &mut self.hist[h];
-                h += 1;
-                if st.overlap > 0.0 {
-                    let s = unsafe {
-                        dc_contact_force(
-                            &self.model,
-                            &st,
-                            self.dt,
-                            hist.as_mut_ptr(),
-                            hist.len(),
-                            &mut res,
-                        )
-                    };
-                    assert_eq!(s, DC_OK);
-                    self.force[bi] = add(self.force[bi], res.force);
-                    self.torque[bi] = add(self.torque[bi], res.torque1);
-                    touching += 1;
-                } else {
-                    *hist = [0.0; DC_CONTACT_HISTORY_MAX];
-                }
+                contacts.push((bi, None, st));
             }
         }
         for i in 0..nb {
@@ -177,29 +157,34 @@ impl Scene {
                     m1: a.m,
                     m2: b.m,
                 };
-                let hist = &mut self.hist[h];
-                h += 1;
-                if st.overlap > 0.0 {
-                    let s = unsafe {
-                        dc_contact_force(
-                            &self.model,
-                            &st,
-                            self.dt,
-                            hist.as_mut_ptr(),
-                            hist.len(),
-                            &mut res,
-                        )
-                    };
-                    assert_eq!(s, DC_OK);
-                    self.force[i] = add(self.force[i], res.force);
-                    self.torque[i] = add(self.torque[i], res.torque1);
-                    self.force[j] = sub(self.force[j], res.force);
-                    self.torque[j] = add(self.torque[j], res.torque2);
-                    touching += 1;
-                } else {
-                    *hist = [0.0; DC_CONTACT_HISTORY_MAX];
-                }
+                contacts.push((i, Some(j), st));
             }
+        }
+        let mut touching = 0;
+        let mut res = unsafe { std::mem::zeroed::<dc_contact_result>() };
+        for ((i, j, st), hist) in contacts.into_iter().zip(self.hist.iter_mut()) {
+            if st.overlap <= 0.0 {
+                *hist = [0.0; DC_CONTACT_HISTORY_MAX];
+                continue;
+            }
+            let s = unsafe {
+                dc_contact_force(
+                    &self.model,
+                    &st,
+                    self.dt,
+                    hist.as_mut_ptr(),
+                    hist.len(),
+                    &mut res,
+                )
+            };
+            assert_eq!(s, DC_OK);
+            self.force[i] = add(self.force[i], res.force);
+            self.torque[i] = add(self.torque[i], res.torque1);
+            if let Some(j) = j {
+                self.force[j] = sub(self.force[j], res.force);
+                self.torque[j] = add(self.torque[j], res.torque2);
+            }
+            touching += 1;
         }
         touching
     }
