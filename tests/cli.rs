@@ -716,6 +716,42 @@ fn plan_step_aware() {
     a.push("--json");
     let j = json_of(&run(&a));
     assert_eq!(j["error"]["status"].as_i64(), Some(6137), "{j}");
+    // A loose e tolerance the plain dashpot meets beyond t_H/10, where the step-aware calibration
+    // stops: --step-aware keeps the larger plain step and says so.
+    let loose = [
+        "plan",
+        "--E1",
+        "6.9e8",
+        "--nu1",
+        "0.3",
+        "--rho1",
+        "3533",
+        "--e",
+        "0.54",
+        "--R-min",
+        "0.0047",
+        "--R-max",
+        "0.036",
+        "--v-max",
+        "0.032",
+        "--depth",
+        "0",
+        "--overlap-tol",
+        "0.016",
+        "--e-tol",
+        "0.072",
+        "--step-aware",
+    ];
+    let j = json_of(&run(&[&loose[..], &["--json"]].concat()));
+    assert_eq!(j["step_aware_chosen"], false, "{j}");
+    assert_eq!(j["dt"], j["dt_plain"], "{j}");
+    let sa_dt = j["step_aware"]["dt"].as_f64().unwrap();
+    assert!(sa_dt < j["dt_plain"].as_f64().unwrap(), "{j}");
+    let text = String::from_utf8(run(&loose).stdout).unwrap();
+    assert!(
+        text.contains("not chosen: the plain step is larger"),
+        "{text}"
+    );
 }
 
 #[test]

@@ -529,9 +529,14 @@ fn planner_matches_independent_integration_200_scenes() {
 /// step `dt`, velocity Verlet in the LAMMPS order written here (relative coordinate, reduced
 /// mass), the first step at a gap of `phase` of one step's travel.
 fn collide_step_aware(inp: &PlanInput, youngs: f64, dt: f64, phase: f64) -> f64 {
+    collide_with(inp, &step_aware_model(inp, youngs, dt), dt, phase)
+}
+
+/// The step-aware contact model of the plan's material at modulus `youngs` and step `dt`.
+fn step_aware_model(inp: &PlanInput, youngs: f64, dt: f64) -> demcontact::contact::ContactModel {
     use demcontact::contact::spec::{damping, normal};
     use demcontact::contact::step_exact::set_step;
-    use demcontact::contact::{ContactSpec, ContactState, contact_force, contact_model};
+    use demcontact::contact::{ContactSpec, contact_model};
     let spec = ContactSpec {
         normal: normal::HERTZ,
         damping: damping::RESTITUTION,
@@ -546,7 +551,17 @@ fn collide_step_aware(inp: &PlanInput, youngs: f64, dt: f64, phase: f64) -> f64 
         nu2: inp.poisson,
         ..ContactSpec::default()
     };
-    let model = set_step(&contact_model(&spec).unwrap(), dt, 0).unwrap();
+    set_step(&contact_model(&spec).unwrap(), dt, 0).unwrap()
+}
+
+/// Realised e of the R_min–R_min collision at v_max through `model` (see collide_step_aware).
+fn collide_with(
+    inp: &PlanInput,
+    model: &demcontact::contact::ContactModel,
+    dt: f64,
+    phase: f64,
+) -> f64 {
+    use demcontact::contact::{ContactState, contact_force};
     let r = inp.radius_min;
     let m = inp.density * 4.0 / 3.0 * PI * r.powi(3);
     let v0 = inp.v_max;
@@ -564,7 +579,7 @@ fn collide_step_aware(inp: &PlanInput, youngs: f64, dt: f64, phase: f64) -> f64 
             m1: m,
             m2: m,
         };
-        contact_force(&model, &s, dt, &mut hist).unwrap().force[2]
+        contact_force(model, &s, dt, &mut hist).unwrap().force[2]
     };
     // Sphere 1 above sphere 2 (normal +z), relative velocity −v0; relative acceleration F/m*.
     let m_star = m / 2.0;
@@ -669,4 +684,67 @@ fn step_aware_step_holds_and_is_the_largest() {
             assert!(w2 > 0.9 * inp.e_tol, "{i}: 2 dt still within: {w2}");
         }
     }
+}
+
+/// The step-aware step over the same 200 random scenes as the plan itself: at the returned step
+/// the R_min–R_min collision at v_max, integrated by this file's own velocity-Verlet loop through
+/// the library's step-aware model, realises e within --e-tol at every one of 61 onset phases;
+/// the step is never above the stability limit, and below the plain one only at the
+/// calibration's end t_H/10 (where the CLI keeps the plain step). Scenes whose e-tolerance
+/// the step-aware model cannot reach are refused with DC_ERR_STEP_UNREACHABLE naming --e-tol.
+#[test]
+fn step_aware_step_holds_200_scenes() {
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let (mut checked, mut unreachable, mut capped, mut worst_ratio) = (0, 0, 0, 0.0f64);
+    let mut i = 0;
+    while checked + unreachable < 200 {
+        i += 1;
+        assert!(i < 1000, "too many infeasible scenes");
+        let inp = random_input(&mut rng);
+        let Ok(pl) = plan(&inp) else { continue };
+        let sa = match demcontact::plan::step_aware(&inp, &pl) {
+            Ok(sa) => sa,
+            Err(e) => {
+                assert_eq!(e.error, demcontact::Error::StepUnreachable, "{i}: {e:?}");
+                assert_eq!(e.field, demcontact::plan::PlanField::ETol, "{i}");
+                unreachable += 1;
+                continue;
+            }
+        };
+        // below the plain step only at the step-aware calibration's end, t_H/10, where the plain
+        // dashpot meets the (loose) tolerance beyond it (the CLI then keeps the plain step)
+        if sa.dt < pl.dt {
+            assert!(
+                (sa.dt_over_t_hertz - 0.1).abs() < 1e-9 && pl.dt_over_t_hertz > 0.1,
+                "{i}: step-aware {} < plain {} ({sa:?}; plan {pl:?})",
+                sa.dt,
+                pl.dt
+            );
+            capped += 1;
+        }
+        assert!(
+            sa.dt <= inp.stability_fraction * pl.dt_stability * (1.0 + 1e-12),
+            "{i}"
+        );
+        let model = step_aware_model(&inp, pl.youngs_soft, sa.dt);
+        let worst = (0..61)
+            .map(|j| {
+                let e = collide_with(&inp, &model, sa.dt, f64::from(j) / 61.0);
+                rel(e, inp.restitution)
+            })
+            .fold(0.0, f64::max);
+        assert!(
+            worst <= inp.e_tol,
+            "{i}: worst phase {worst} > e_tol {}",
+            inp.e_tol
+        );
+        worst_ratio = worst_ratio.max(worst / inp.e_tol);
+        checked += 1;
+    }
+    println!(
+        "step-aware: {checked} scenes checked at 61 phases ({capped} at the t_H/10 cap below the \
+         plain step), {unreachable} refused as unreachable; largest worst-phase error / e_tol \
+         {worst_ratio:.3}"
+    );
+    assert!(checked >= 150, "too few scenes reached: {checked}");
 }
