@@ -208,15 +208,19 @@ impl Args {
 pub fn run(a: &Args) -> Result<Output, Failure> {
     let inp = a.input();
     let plain = plan::plan(&inp).map_err(|e| a.failure(e))?;
-    // The step-aware step: always reported (null when unreachable), chosen with --step-aware.
+    // The step-aware step: always reported (null when unreachable), chosen with --step-aware
+    // where it is the larger step.
     let sa = match plan::step_aware(&inp, &plain) {
         Ok(s) => Some(s),
         Err(e) if a.step_aware => return Err(a.failure(e)),
         Err(_) => None,
     };
+    // Chosen only where it is the larger step: the step-aware calibration stops at t_H/10, and
+    // where the plain dashpot meets --e-tol beyond that the plain step is kept.
+    let chosen = a.step_aware && sa.is_some_and(|s| s.dt > plain.dt);
     let mut p = plain;
     let mut binding_dt = p.binding_dt.name().to_string();
-    if let (true, Some(s)) = (a.step_aware, sa) {
+    if let (true, Some(s)) = (chosen, sa) {
         p.dt = s.dt;
         p.speedup = s.speedup;
         p.dt_over_t_hertz = s.dt_over_t_hertz;
@@ -278,8 +282,10 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
                 plain.dt,
                 s.speedup,
                 1.0 / s.dt_over_t_hertz,
-                if a.step_aware {
+                if chosen {
                     ", chosen"
+                } else if a.step_aware {
+                    "; not chosen: the plain step is larger"
                 } else {
                     "; --step-aware to choose it"
                 }
@@ -354,7 +360,7 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
     );
     row(
         &mut t,
-        if a.step_aware {
+        if chosen {
             "e at the plain step (plain)"
         } else {
             "e realised at dt (plain)"
@@ -378,7 +384,7 @@ pub fn run(a: &Args) -> Result<Output, Failure> {
         "binding": p.binding.name(),
         "dt": num(p.dt),
         "binding_dt": binding_dt,
-        "step_aware_chosen": a.step_aware,
+        "step_aware_chosen": chosen,
         "dt_plain": num(plain.dt),
         "step_aware": sa.map(|s| json!({
             "dt": num(s.dt),
