@@ -1623,7 +1623,9 @@ DC_INLINE_FN int32_t dc_contact_force_inline(const dc_contact_model *model,
     /* the model's lay.len doubles only: the evaluation reads and writes no others (the library's
      * history is that long), so the rest of the caller's buffer is neither copied nor checked */
     const int n = lay.len;
-    double h[DC_CONTACT_HISTORY_MAX];
+    /* zeroed: only lay.len values are copied in and read; GCC's host pass under nvcc cannot
+     * prove it across the slots a runtime layout may hold (-Wmaybe-uninitialized) */
+    double h[DC_CONTACT_HISTORY_MAX] = {0.0};
     if (!dci_copy_finite(h, history, n)) return DC_ERR_NOT_FINITE;
     dc_contact_result r;
     dci_contact_evaluate(model, dci_shape_of(model), lay, state, dt, h, &r);
@@ -1679,7 +1681,9 @@ DCI_ALWAYS_INLINE_FN int32_t dci_force_checked(const dc_contact_model *model, dc
     if (DCI_UNLIKELY(st != DC_OK)) return st;
     /* the model's lay.len doubles only (the evaluation reads and writes no others) */
     const int need = lay.len;
-    double h[DC_CONTACT_HISTORY_MAX];
+    /* zeroed: only lay.len values are copied in and read; GCC's host pass under nvcc cannot
+     * prove it across the slots a runtime layout may hold (-Wmaybe-uninitialized) */
+    double h[DC_CONTACT_HISTORY_MAX] = {0.0};
     if (DCI_UNLIKELY(!dci_copy_finite(h, history, need))) return DC_ERR_NOT_FINITE;
     dc_contact_result r;
     dci_contact_evaluate(model, sh, lay, state, dt, h, &r);
@@ -1782,7 +1786,9 @@ DCI_ALWAYS_INLINE_FN int32_t dci_force_deferred(const dc_contact_model *model, d
     const dci_layout lay = dci_layout_step(dci_layout_of(sh.tangential, sh.rolling, sh.twisting), model);
     /* straight through: the evaluation is + - * / sqrt and selects on any doubles (no trap,
      * no index from a value), so a bad value gives bad values, caught below or by the caller */
-    double h[DC_CONTACT_HISTORY_MAX];
+    /* zeroed: only lay.len values are copied in and read; GCC's host pass under nvcc cannot
+     * prove it across the slots a runtime layout may hold (-Wmaybe-uninitialized) */
+    double h[DC_CONTACT_HISTORY_MAX] = {0.0};
     c->history += dci_nf(dci_copy_sum(h, history, lay.len, 0));
     dc_contact_result r;
     dci_contact_evaluate(model, sh, lay, state, dt, h, &r);
