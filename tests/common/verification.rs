@@ -62,6 +62,15 @@ pub struct Wall {
     pub c: f64,
 }
 
+/// One ball above the floor y = 0 (normal +y).
+pub fn on_floor(ball: Ball, g: f64, dt: f64, model: dc_contact_model) -> Scene {
+    let floor = Wall {
+        n: [0.0, 1.0, 0.0],
+        c: 0.0,
+    };
+    Scene::new(vec![ball], vec![floor], g, dt, model)
+}
+
 /// The model from a spec edited by `f` (panics on a refused spec: a test set-up error).
 pub fn model(f: impl FnOnce(&mut dc_contact_spec)) -> dc_contact_model {
     let mut spec: dc_contact_spec = unsafe { std::mem::zeroed() };
@@ -187,6 +196,19 @@ impl Scene {
             touching += 1;
         }
         touching
+    }
+
+    /// Steps until every contact that opened has closed again (one impact; at most 1 s).
+    pub fn run_impact(&mut self) {
+        let mut touched = false;
+        loop {
+            let n = self.step();
+            touched |= n > 0;
+            if touched && n == 0 {
+                return;
+            }
+            assert!(self.t < 1.0, "impact did not end");
+        }
     }
 
     /// One velocity-Verlet step (LAMMPS order: half kick, drift, forces, half kick); returns the
@@ -315,16 +337,7 @@ pub fn dem01_exact(kn: f64, m: f64, zeta: f64, h0: f64, t: f64) -> f64 {
 pub fn dem01(kn: f64, e: f64, h0: f64, dt: f64, t_end: f64) -> Vec<(f64, f64, f64)> {
     let b = Ball::new([0.0, h0, 0.0], [0.0; 3], [0.0; 3], R01, RHO01);
     let m = b.m;
-    let mut sc = Scene::new(
-        vec![b],
-        vec![Wall {
-            n: [0.0, 1.0, 0.0],
-            c: 0.0,
-        }],
-        G,
-        dt,
-        linear_model(kn, e, |_| {}),
-    );
+    let mut sc = on_floor(b, G, dt, linear_model(kn, e, |_| {}));
     let z = zeta_linear(e);
     let mut out = Vec::new();
     while sc.t < t_end {
@@ -356,16 +369,7 @@ pub fn dem02_exact(kn: f64, m: f64, e: f64, h0: f64, k: usize) -> (Vec<f64>, Vec
 /// through the three samples around the discrete maximum, so the step does not bias it).
 pub fn dem02(kn: f64, e: f64, h0: f64, dt: f64, k: usize) -> Vec<f64> {
     let b = Ball::new([0.0, h0, 0.0], [0.0; 3], [0.0; 3], R01, RHO01);
-    let mut sc = Scene::new(
-        vec![b],
-        vec![Wall {
-            n: [0.0, 1.0, 0.0],
-            c: 0.0,
-        }],
-        G,
-        dt,
-        linear_model(kn, e, |_| {}),
-    );
+    let mut sc = on_floor(b, G, dt, linear_model(kn, e, |_| {}));
     let mut apex = Vec::new();
     let mut ys = [h0, h0, h0];
     let mut bounced = false;
@@ -486,16 +490,7 @@ pub fn dem04(kn: f64, mu: f64, v0: f64, dt: f64, t_end: f64) -> Vec<(f64, f64, f
         s.e_t = 0.3;
         s.mu = mu;
     });
-    let mut sc = Scene::new(
-        vec![b],
-        vec![Wall {
-            n: [0.0, 1.0, 0.0],
-            c: 0.0,
-        }],
-        G,
-        dt,
-        model,
-    );
+    let mut sc = on_floor(b, G, dt, model);
     sc.balls[0].v = [v0, 0.0, 0.0];
     sc.t = 0.0;
     let mut out = Vec::new();
@@ -538,25 +533,8 @@ pub fn wall_impact(
         r,
         rho,
     );
-    let mut sc = Scene::new(
-        vec![b],
-        vec![Wall {
-            n: [0.0, 1.0, 0.0],
-            c: 0.0,
-        }],
-        0.0,
-        dt,
-        model,
-    );
-    let mut touched = false;
-    loop {
-        let n = sc.step();
-        touched |= n > 0;
-        if touched && n == 0 {
-            break;
-        }
-        assert!(sc.t < 1.0, "impact did not end");
-    }
+    let mut sc = on_floor(b, 0.0, dt, model);
+    sc.run_impact();
     let b = sc.balls[0];
     Out {
         vx: b.v[0],
@@ -588,15 +566,7 @@ pub fn pair_impact(
     );
     let b2 = Ball::new([0.0; 3], [0.0; 3], [0.0, 0.0, w2], r2, rho);
     let mut sc = Scene::new(vec![b1, b2], vec![], 0.0, dt, model);
-    let mut touched = false;
-    loop {
-        let n = sc.step();
-        touched |= n > 0;
-        if touched && n == 0 {
-            break;
-        }
-        assert!(sc.t < 1.0, "impact did not end");
-    }
+    sc.run_impact();
     let o = |b: Ball| Out {
         vx: b.v[0],
         vy: b.v[1],
