@@ -9,8 +9,19 @@
 //! section between the best point's neighbours to 1e-12 relative in v_y: exact data are
 //! recovered to rounding. Data all at e = 1 do not fix v_y (any v_y ≥ v_max fits):
 //! [`Error::FitDegenerate`].
+//!
+//! Standard error, as the restitution fits give theirs ([`super`]): linearised in u = ln v_y,
+//! Jᵢ = ∂g(vᵢe^{−u})/∂u by a central difference (step 1e-5 in u; g is smooth except at the yield
+//! speed itself, where the one-sided slopes differ and the difference takes their mean),
+//! SE(u)² = 1/Σ(Jᵢ²/σᵢ²) with σ given, s²/ΣJᵢ² with s² = RSS/(n−1) otherwise. The 95 % interval
+//! is exp(u ± q·SE(u)) with q from [`super::quantile::quantile95`] (Student's t with n − 1 degrees
+//! of freedom when σ comes from the scatter): positive, asymmetric in v_y. Since δ_y ∝ v_y^{4/5}
+//! and p_y ∝ √δ_y ∝ v_y^{2/5} at fixed E*, R*, m*, SE(ln p_y) = (2/5)·SE(u), and p_y's interval
+//! is the pressures of v_y's interval ends.
+//! Seeded coverage studies in tests/fit_elastic_plastic.rs check the level.
 
 use super::Data;
+use super::quantile::quantile95;
 use crate::Error;
 use crate::force::elastic_plastic::restitution;
 
@@ -23,6 +34,36 @@ pub struct ElasticPlasticFit {
     pub chi2: f64,
     /// Largest |eᵢ − g(vᵢ/v_y)|.
     pub max_residual: f64,
+    /// Standard error of ln v_y (relative standard error of v_y, to first order).
+    pub ln_v_y_se: f64,
+    /// The multiplier of `ln_v_y_se` for the two-sided 95 % interval.
+    pub quantile95: f64,
+    /// Lower end of the 95 % interval of v_y [m/s]: v_y·exp(−quantile95·ln_v_y_se).
+    pub v_y_lo95: f64,
+    /// Upper end of the 95 % interval of v_y [m/s]: v_y·exp(+quantile95·ln_v_y_se).
+    pub v_y_hi95: f64,
+    /// True when the standard error comes from the residual scatter (no σ given).
+    pub se_from_scatter: bool,
+}
+
+/// g(v/v_y) for v_y = e^u (NaN outside the closed form's domain).
+fn model(v: f64, u: f64) -> f64 {
+    restitution(v / u.exp()).unwrap_or(f64::NAN)
+}
+
+/// SE of u = ln v_y at the fitted u (see the module documentation).
+fn ln_v_y_se(d: &Data, u: f64, chi2: f64) -> f64 {
+    const H: f64 = 1e-5;
+    let mut jtwj = 0.0;
+    for i in 0..d.n() {
+        let j = (model(d.v(i), u + H) - model(d.v(i), u - H)) / (2.0 * H);
+        jtwj += d.w(i) * j * j;
+    }
+    let s2 = match d.sigma {
+        Some(_) => 1.0,
+        None => chi2 / (d.n() as f64 - 1.0),
+    };
+    (s2 / jtwj).sqrt()
 }
 
 fn chi2(d: &Data, v_y: f64) -> f64 {
@@ -76,7 +117,8 @@ pub fn fit_yield_speed(d: &Data) -> Result<ElasticPlasticFit, Error> {
             f2 = f(x2);
         }
     }
-    let v_y = (0.5 * (a + b)).exp();
+    let u = 0.5 * (a + b);
+    let v_y = u.exp();
     let max_residual = (0..n)
         .map(|i| (d.e(i) - restitution(d.v(i) / v_y).unwrap_or(f64::NAN)).abs())
         .fold(0.0, f64::max);
@@ -84,9 +126,20 @@ pub fn fit_yield_speed(d: &Data) -> Result<ElasticPlasticFit, Error> {
     if !(v_y.is_finite() && v_y > 0.0 && chi2.is_finite()) {
         return Err(Error::NoConvergence);
     }
+    let se = ln_v_y_se(d, u, chi2);
+    if se.is_nan() {
+        return Err(Error::NoConvergence);
+    }
+    let se_from_scatter = d.sigma.is_none();
+    let q = quantile95(n, se_from_scatter);
     Ok(ElasticPlasticFit {
         v_y,
         chi2,
         max_residual,
+        ln_v_y_se: se,
+        quantile95: q,
+        v_y_lo95: (u - q * se).exp(),
+        v_y_hi95: (u + q * se).exp(),
+        se_from_scatter,
     })
 }

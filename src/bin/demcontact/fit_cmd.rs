@@ -60,11 +60,16 @@ fn run_elastic_plastic(a: &Args, name: &str, t: &csv::Table) -> Result<Output, F
         sigma: t.sigma.as_deref(),
     };
     let f = fit_yield_speed(&data).map_err(|e| refused(&format!("fit of {name}"), e))?;
+    // p_y and its 95 % interval: p_y is increasing in v_y (∝ v_y^{2/5}), so the interval's ends
+    // are the pressures of v_y's.
     let p_y = match (a.e_star, a.r_eff, a.m_eff) {
-        (Some(es), Some(r), Some(m)) => Some(
-            yield_pressure_from_speed(es, r, m, f.v_y)
-                .map_err(|e| refused("p_y from --e-star, --r-eff, --m-eff", e))?,
-        ),
+        (Some(es), Some(r), Some(m)) => {
+            let p = |v| {
+                yield_pressure_from_speed(es, r, m, v)
+                    .map_err(|e| refused("p_y from --e-star, --r-eff, --m-eff", e))
+            };
+            Some((p(f.v_y)?, p(f.v_y_lo95)?, p(f.v_y_hi95)?))
+        }
         (None, None, None) => None,
         _ => {
             return Err(Failure::usage(
@@ -81,9 +86,24 @@ fn run_elastic_plastic(a: &Args, name: &str, t: &csv::Table) -> Result<Output, F
         f.chi2,
         f.max_residual
     );
+    let _ = writeln!(
+        s,
+        "v_y 95 % interval [{:.6e}, {:.6e}] m/s (SE of ln v_y {:.3e}, {})",
+        f.v_y_lo95,
+        f.v_y_hi95,
+        f.ln_v_y_se,
+        if f.se_from_scatter {
+            "sigma from the scatter"
+        } else {
+            "sigma given"
+        }
+    );
     match p_y {
-        Some(p) => {
-            let _ = writeln!(s, "limiting contact pressure p_y = {p:.6e} Pa");
+        Some((p, lo, hi)) => {
+            let _ = writeln!(
+                s,
+                "limiting contact pressure p_y = {p:.6e} Pa, 95 % interval [{lo:.6e}, {hi:.6e}] Pa"
+            );
         }
         None => {
             let _ = writeln!(s, "p_y: give --e-star, --r-eff, --m-eff");
@@ -97,7 +117,10 @@ fn run_elastic_plastic(a: &Args, name: &str, t: &csv::Table) -> Result<Output, F
     }
     let json = json!({
         "command": "fit", "file": name, "model": "elastic-plastic", "v_y": num(f.v_y),
-        "p_y": p_y.map(num), "chi2": num(f.chi2), "max_residual": num(f.max_residual),
+        "v_y_lo95": num(f.v_y_lo95), "v_y_hi95": num(f.v_y_hi95), "ln_v_y_se": num(f.ln_v_y_se),
+        "quantile95": num(f.quantile95), "se_from_scatter": f.se_from_scatter,
+        "p_y": p_y.map(|p| num(p.0)), "p_y_lo95": p_y.map(|p| num(p.1)),
+        "p_y_hi95": p_y.map(|p| num(p.2)), "chi2": num(f.chi2), "max_residual": num(f.max_residual),
         "points": rows,
     });
     Ok(Output { text: s, json })
