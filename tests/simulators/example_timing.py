@@ -32,11 +32,13 @@ evaluations of the run (touching pairs summed over the sampled steps, x 10) in t
 The models run alternately (granular, demcontact, demcontact_project, [LABEL, LABEL_project],
 granular, ...), each --reps times for each rank count (1, and --np when > 1); the minimum is
 kept. Printed per model: loop time ("Loop time"), pair, neighbour and modify time (LAMMPS' task
-timing breakdown, average over ranks), neighbour-list builds, atoms at the end, and the loop ratio
-to the builtin. Exit 77 when LAMMPS or the deck is not installed.
+timing breakdown, average over ranks), neighbour-list builds, atoms at the end, the loop ratio
+to the builtin, and the user CPU time of the whole run (all ranks, start-up included; less
+sensitive than the wall-clock times to other work on the machine) and its ratio to the builtin. Exit 77 when LAMMPS or the deck is not installed.
 """
 import argparse
 import os
+import resource
 import re
 import tempfile
 
@@ -251,10 +253,12 @@ def main():
         for r in range(a.reps):
             for lab, _ in models:
                 log = "log.%s.np%d.%d" % (lab, np_, r)
+                u0 = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
                 H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.%s" % lab, "-log", log], d, env)
-                t = times(os.path.join(d, log))
+                t = times(os.path.join(d, log)) + (resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime - u0,)
                 b = best.get((lab, np_))
-                best[(lab, np_)] = t if b is None else tuple(min(x, y) for x, y in zip(b[:4], t[:4])) + t[4:]
+                best[(lab, np_)] = t if b is None else tuple(min(x, y) for x, y in zip(b[:4], t[:4])) + t[4:6] + (
+                    min(b[6], t[6]),)
     load1 = open("/proc/loadavg").read().split()[:3]
     count = {}
     if a.count:
@@ -267,15 +271,15 @@ def main():
           "(load average at the start: %s; at the end: %s)"
           % (a.steps or "the deck's", a.reps, " ".join(load0), " ".join(load1)))
     print()
-    print("| model | ranks | loop [s] | pair [s] | neigh [s] | modify [s] | builds | atoms | loop ratio |"
-          + (" contacts [1e6] |" if a.count else ""))
-    print("|---|---|---|---|---|---|---|---|---|" + ("---|" if a.count else ""))
+    print("| model | ranks | loop [s] | pair [s] | neigh [s] | modify [s] | builds | atoms | loop ratio | user [s] "
+          "| user ratio |" + (" contacts [1e6] |" if a.count else ""))
+    print("|---|---|---|---|---|---|---|---|---|---|---|" + ("---|" if a.count else ""))
     for np_ in nps:
-        ref = best[("granular", np_)][0]
+        ref, uref = best[("granular", np_)][0], best[("granular", np_)][6]
         for lab, _ in models:
             b = best[(lab, np_)]
-            print("| %s | %d | %.3f | %.3f | %.3f | %.3f | %d | %d | %.3f |"
-                  % (lab, np_, b[0], b[1], b[2], b[3], b[4], b[5], b[0] / ref)
+            print("| %s | %d | %.3f | %.3f | %.3f | %.3f | %d | %d | %.3f | %.3f | %.3f |"
+                  % (lab, np_, b[0], b[1], b[2], b[3], b[4], b[5], b[0] / ref, b[6], b[6] / uref)
                   + (" %.2f |" % (count[lab] / 1e6) if a.count else ""))
 
 
