@@ -4,7 +4,7 @@ lammps-examples) without rolling resistance, demcontact against the builtin `pai
 with the same parameters (issue 33's speed measure):
 
   example_timing.py --plugin demcontactplugin.so [--before LABEL=old.so ...] [--np 2] [--reps 3]
-                    [--steps N] [--workdir DIR] [--lmp lmp] [--deck in.pour.flatwall]
+                    [--steps N] [--workdir DIR] [--lmp lmp] [--deck in.pour.flatwall] [--count]
 
 Decks (only the pair and wall lines of the example change; printed):
   granular            pair_style granular; pair_coeff * * hertz/material 1000.0 0.5 0.3 tangential
@@ -30,11 +30,12 @@ Decks (only the pair and wall lines of the example change; printed):
 evaluations of the run (touching pairs summed over the sampled steps, x 10) in the table.
 
 The models run alternately (granular, demcontact, demcontact_project, [LABEL, LABEL_project],
-granular, ...), each --reps times for each rank count (1, and --np when > 1); the minimum is
+matched, matched_project, granular, ...), each --reps times for each rank count (1, and --np when > 1); the minimum is
 kept. Printed per model: loop time ("Loop time"), pair, neighbour and modify time (LAMMPS' task
 timing breakdown, average over ranks), neighbour-list builds, atoms at the end, the loop ratio
 to the builtin, and the user CPU time of the whole run (all ranks, start-up included; less
-sensitive than the wall-clock times to other work on the machine) and its ratio to the builtin. Exit 77 when LAMMPS or the deck is not installed.
+sensitive than the wall-clock times to other work on the machine) and its ratio to the builtin.
+Exit 77 when LAMMPS or the deck is not installed.
 """
 import argparse
 import os
@@ -233,6 +234,9 @@ def main():
     e_law = builtin_restitution(1000.0, 0.3, 0.5, 0.75, 1.0)
     print("builtin restitution at diameter 0.75, speed 1 (LAMMPS): pair %.6f (its law integrated: %.6f), "
           "wall %.6f" % (e_pair, e_law, e_wall))
+    span = [builtin_restitution(1000.0, 0.3, 0.5, dd, v) for dd in (0.5, 0.75, 1.0) for v in (0.1, 1.0, 5.0, 15.0)]
+    print("builtin pair restitution over diameters 0.5-1 and speeds 0.1-15 (its law): %.4f-%.4f"
+          % (min(span), max(span)))
     if not abs(e_pair - e_law) <= 1e-4:
         raise SystemExit("example_timing: the builtin's pair restitution %.6f is not its law's %.6f (tolerance 1e-4)"
                          % (e_pair, e_law))
