@@ -287,7 +287,7 @@ void PairDemcontact::map_slots()
 
 /* Only j's copy of the contact (i's slot si just made): i's record from it (stamp, history), the
    partner kept. Not met in a normal run (the two copies are made, moved, synchronised and
-   restored together); kept because healing costs nothing where it is not needed. Returns sj. */
+   restored together); kept at the cost of one search of j's slots per new contact. Returns sj. */
 int PairDemcontact::heal_from_partner(int i, int si, int j, int sj)
 {
     FixDemcontactHistory &H = *history;
