@@ -269,13 +269,11 @@ void PairDemcontact::map_slots()
         int *c = &pslot[2 * (size_t)pofs[ii]];
         for (int jj = 0; jj < list->numneigh[i]; jj++) {
             const int j = jlist[jj] & NEIGHMASK;
-            int si = H.find(i, tag[j]);
-            int sj = j < nlocal ? H.find(j, tag[i]) : -1;
-            if (si < 0 && sj >= 0) { // only j's copy (cannot happen in a normal run; cheap to heal)
-                si = H.add(i, tag[j]);
-                std::memcpy(H.slot(i, si), H.slot(j, sj), sizeof(double) * H.stride());
-                H.set_partner(i, si, tag[j]);
-            }
+            const int si = H.find(i, tag[j]);
+            // j's copy is searched only where i has one: most list pairs have neither, and the
+            // search reads j's records (a cache miss each). j's copy alone is healed where the
+            // pair is evaluated (heal_from_partner)
+            const int sj = si >= 0 && j < nlocal ? H.find(j, tag[i]) : -1;
             c[2 * jj] = si;
             c[2 * jj + 1] = sj;
             if (si >= 0 && sj >= 0) H.add_partner_pair(i, si, j, sj);
@@ -285,6 +283,17 @@ void PairDemcontact::map_slots()
     mapped_ncalls = neighbor->ncalls;
     mapped_generation = H.generation;
     mapped_list = list;
+}
+
+/* Only j's copy of the contact (i's slot si just made): i's record from it (stamp, history), the
+   partner kept. Not met in a normal run (the two copies are made, moved, synchronised and
+   restored together); kept at the cost of one search of j's slots per new contact. Returns sj. */
+int PairDemcontact::heal_from_partner(int i, int si, int j, int sj)
+{
+    FixDemcontactHistory &H = *history;
+    std::memcpy(H.slot(i, si), H.slot(j, sj), sizeof(double) * H.stride());
+    H.set_partner(i, si, atom->tag[j]);
+    return sj;
 }
 
 void PairDemcontact::compute(int eflag, int vflag)
@@ -402,7 +411,9 @@ void PairDemcontact::compute_loop()
                 if (advance) {
                     const bool fresh = si < 0 || (sj < 0 && j < nlocal);
                     if (si < 0) {
+                        const int sj0 = j < nlocal ? H->find(j, tag[i]) : -1;
                         si = cache[2 * jj] = H->add(i, tag[j]);
+                        if (sj0 >= 0) sj = cache[2 * jj + 1] = heal_from_partner(i, si, j, sj0);
                         if (newton && j >= nlocal) H->add_ghost_pair(i, si, j, tag[j]);
                     }
                     if (sj < 0 && j < nlocal) sj = cache[2 * jj + 1] = H->add(j, tag[i]);
@@ -423,8 +434,10 @@ void PairDemcontact::compute_loop()
                         for (int k = 0; k < nhh; k++) scratch[k] = st == tick ? h[k] : 0.0;
                         h = scratch;
                     }
-                } else { // setup, no slot yet: a new contact
-                    for (int k = 0; k < nhh; k++) scratch[k] = 0.0;
+                } else { // setup, no slot yet: a new contact (or j's copy alone, if current)
+                    const int sj0 = j < nlocal ? H->find(j, tag[i]) : -1;
+                    const bool cur = sj0 >= 0 && H->stamp(j, sj0) == tick;
+                    for (int k = 0; k < nhh; k++) scratch[k] = cur ? H->history(j, sj0)[k] : 0.0;
                     h = scratch;
                 }
             }

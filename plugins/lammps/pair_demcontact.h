@@ -43,6 +43,7 @@ private:
     void allocate();
     void build_models();
     void map_slots();
+    int heal_from_partner(int i, int si, int j, int sj);
 
     Loop loop = &PairDemcontact::compute_loop<demcontact_shaped::Generic>;
     bool clamp = false;

@@ -4,7 +4,7 @@ lammps-examples) without rolling resistance, demcontact against the builtin `pai
 with the same parameters (issue 33's speed measure):
 
   example_timing.py --plugin demcontactplugin.so [--before LABEL=old.so ...] [--np 2] [--reps 3]
-                    [--steps N] [--workdir DIR] [--lmp lmp] [--deck in.pour.flatwall]
+                    [--steps N] [--workdir DIR] [--lmp lmp] [--deck in.pour.flatwall] [--count]
 
 Decks (only the pair and wall lines of the example change; printed):
   granular            pair_style granular; pair_coeff * * hertz/material 1000.0 0.5 0.3 tangential
@@ -16,16 +16,30 @@ Decks (only the pair and wall lines of the example change; printed):
                       default carry); fix demcontact/wall hertz/material 1e5 0.5 0.3 tangential
                       mindlin NULL 1.0 0.5 zplane 0 NULL
   demcontact_project  the same with `carry project` on the pair and wall lines
-  LABEL               (--before) an older plugin with the demcontact decks, both carries
+  matched             (and matched_project) demcontact with the builtin's restitution: the builtin's
+                      viscoelastic coefficient 0.5 is not a restitution; its law (eta = 0.5 a m_eff)
+                      is nearly elastic between the deck's spheres (e = 0.994-0.999 over diameters
+                      0.5-1 and speeds 0.1-15, builtin_restitution()). The decks take the e the
+                      builtin realises in LAMMPS for two spheres of the mean diameter 0.75 at relative
+                      speed 1, and for one of them onto the deck's wall at 1 (builtin_collisions(),
+                      printed: pair 0.998, wall 0.640), so that both runs dissipate alike and
+                      evaluate as many contacts (see --count). The pair's e is checked against
+                      builtin_restitution() (within 1e-4: exit 1 otherwise).
+
+--count: one more (untimed) run per model with `compute contact/atom` every 10 steps: the contact
+evaluations of the run (touching pairs summed over the sampled steps, x 10) in the table.
 
 The models run alternately (granular, demcontact, demcontact_project, [LABEL, LABEL_project],
-granular, ...), each --reps times for each rank count (1, and --np when > 1); the minimum is
+matched, matched_project, granular, ...), each --reps times for each rank count (1, and --np when > 1); the minimum is
 kept. Printed per model: loop time ("Loop time"), pair, neighbour and modify time (LAMMPS' task
-timing breakdown, average over ranks), neighbour-list builds, atoms at the end, and the loop ratio
-to the builtin. Exit 77 when LAMMPS or the deck is not installed.
+timing breakdown, average over ranks), neighbour-list builds, atoms at the end, the loop ratio
+to the builtin, and the user CPU time of the whole run (all ranks, start-up included; less
+sensitive than the wall-clock times to other work on the machine) and its ratio to the builtin.
+Exit 77 when LAMMPS or the deck is not installed.
 """
 import argparse
 import os
+import resource
 import re
 import tempfile
 
@@ -34,11 +48,86 @@ import harness as H
 DECK = "/usr/share/lammps/examples/granular/in.pour.flatwall"
 PAIR = "hertz/material 1000.0 0.5 0.3 tangential mindlin NULL 1.0 0.5"
 WALL = "hertz/material 1e5 0.5 0.3 tangential mindlin NULL 1.0 0.5"
+MATCHED = "hertz/material 1000.0 %.3f 0.3 tangential mindlin NULL 1.0 0.5"
+MATCHED_WALL = "hertz/material 1e5 %.3f 0.3 tangential mindlin NULL 1.0 0.5"
 
 
-def decks(text, plugin, carry, steps):
+def builtin_restitution(E, nu, eta0, d, v, wall=False):
+    """Normal restitution of LAMMPS' `hertz/material E eta0 nu` with its default viscoelastic
+    damping (F = 4/3 E* sqrt(R) x^1.5 + eta0 a m_eff x', a = sqrt(R x), E* = E / (2 (1 - nu^2)),
+    the same material on both sides, as the builtin's wall mixes its coefficients with themselves)
+    for two spheres of diameter d and density 1 (wall: one sphere on a plane) meeting at speed v:
+    RK4 in 20000 steps of the contact time, until the overlap or the force ends."""
+    import math
+    Es = E / (2.0 * (1.0 - nu * nu))
+    R = d / 2.0 if wall else d / 4.0
+    m = math.pi * d ** 3 / 6.0
+    meff = m if wall else m / 2.0
+
+    def acc(x, u):
+        return (-(4.0 / 3.0) * Es * math.sqrt(R) * x ** 1.5 - eta0 * meff * math.sqrt(R * x) * u) / meff if x > 0 else 0.0
+
+    x, u = 0.0, v
+    h = 2.87 * (meff ** 2 / (R * Es ** 2 * v)) ** 0.2 / 20000.0
+    for _ in range(1000000):
+        k1x, k1u = u, acc(x, u)
+        k2x, k2u = u + h / 2 * k1u, acc(x + h / 2 * k1x, u + h / 2 * k1u)
+        k3x, k3u = u + h / 2 * k2u, acc(x + h / 2 * k2x, u + h / 2 * k2u)
+        k4x, k4u = u + h * k3u, acc(x + h * k3x, u + h * k3u)
+        x += h / 6 * (k1x + 2 * k2x + 2 * k3x + k4x)
+        u += h / 6 * (k1u + 2 * k2u + 2 * k3u + k4u)
+        if x <= 0.0 or (u < 0.0 and acc(x, u) >= 0.0):
+            return -u / v
+    raise SystemExit("example_timing: builtin_restitution did not end")
+
+
+COLLISIONS = """atom_style sphere
+atom_modify map array
+units lj
+boundary p p f
+region box block -5 5 -5 5 0 10
+create_box 1 box
+comm_modify vel yes
+pair_style granular
+pair_coeff * * %(pair)s
+create_atoms 1 single 0 0 5
+create_atoms 1 single 0 0 5.8
+create_atoms 1 single 3 3 0.4
+set atom * diameter 0.75
+set atom * density 1.0
+velocity all set 0 0 0
+set atom 1 vz 0.5
+set atom 2 vz -0.5
+set atom 3 vz -1.0
+fix 1 all nve/sphere
+%(wall)s
+neighbor 0.3 bin
+timestep 0.00001
+run 60000
+variable e_pair equal vz[2]-vz[1]
+variable e_wall equal vz[3]
+print "E_PAIR ${e_pair} E_WALL ${e_wall}"
+"""
+
+
+def builtin_collisions(exe, d, env, deck_text):
+    """(pair e, wall e) the builtin realises with the deck's own pair (PAIR) and wall lines: two
+    spheres of diameter 0.75, density 1, head-on at relative speed 1, and one onto the wall at 1
+    (no gravity, dt 1e-5: over 4000 steps per contact)."""
+    wall = next(l for l in deck_text.splitlines() if l.split()[:1] == ["fix"] and "wall/gran" in l)
+    f = wall.split()
+    open(os.path.join(d, "in.collisions"), "w").write(
+        COLLISIONS % {"pair": PAIR, "wall": " ".join(["fix", f[1], "all"] + f[3:])})
+    out, _ = H.run([exe, "-in", "in.collisions", "-log", "log.collisions"], d, env)
+    m = re.search(r"^E_PAIR (\S+) E_WALL (\S+)", open(os.path.join(d, "log.collisions")).read(), re.M)
+    if not m:
+        raise SystemExit("example_timing: no restitution in %s/log.collisions" % d)
+    return float(m.group(1)), float(m.group(2))
+
+
+def decks(text, plugin, carry, steps, pair=PAIR, wall=WALL):
     """(builtin deck, our deck) of the example: only the pair and wall lines (and `run` with
-    --steps) changed."""
+    --steps) changed; `pair` and `wall` are our lines' coefficients."""
     b, o = [], []
     extra = " carry %s" % carry if carry else ""
     for line in text.splitlines():
@@ -49,11 +138,11 @@ def decks(text, plugin, carry, steps):
         elif f[:1] == ["pair_coeff"]:
             if not any(l.startswith("pair_coeff * *") for l in b):
                 b.append("pair_coeff * * " + PAIR)
-                o.append("pair_coeff * * " + PAIR + extra)
+                o.append("pair_coeff * * " + pair + extra)
         elif len(f) > 4 and f[0] == "fix" and f[3] == "wall/gran":
             m = re.search(r"\b(xplane|yplane|zplane|zcylinder)\b.*$", line)
             b.append(line)
-            o.append("fix %s %s demcontact/wall %s%s %s" % (f[1], f[2], WALL, extra, m.group(0)))
+            o.append("fix %s %s demcontact/wall %s%s %s" % (f[1], f[2], wall, extra, m.group(0)))
         elif f[:1] == ["run"] and steps:
             b.append("run %d" % steps)
             o.append("run %d" % steps)
@@ -77,6 +166,30 @@ def times(log):
     return loop, sec["Pair"], sec["Neigh"], sec["Modify"], builds, atoms
 
 
+def contacts(log):
+    """Contact evaluations of a --count run: touching pairs (thermo column c_dc_cs, normalised
+    per atom in lj units: times atoms / 2) summed over the steps sampled every 10."""
+    t = open(log).read()
+    rows = [l.split() for l in t.splitlines() if re.match(r"^\s*\d+\s+\d+\s+\S+\s+\S+\s*$", l)]
+    if not rows:
+        raise SystemExit("example_timing: no contact counts in %s" % log)
+    return 10 * sum(float(r[3]) * int(r[1]) / 2.0 for r in rows)
+
+
+def counting(deck):
+    out = []
+    for line in deck.splitlines():
+        f = line.split()
+        if f[:1] == ["thermo_style"]:
+            out += ["compute dc_cc all contact/atom", "compute dc_cs all reduce sum c_dc_cc",
+                    "thermo_style custom step atoms ke c_dc_cs"]
+        elif f[:1] == ["thermo"]:
+            out.append("thermo 10")
+        else:
+            out.append(line)
+    return "\n".join(out) + "\n"
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--plugin", required=True)
@@ -88,6 +201,7 @@ def main():
     ap.add_argument("--workdir")
     ap.add_argument("--lmp")
     ap.add_argument("--deck", default=DECK)
+    ap.add_argument("--count", action="store_true", help="count the contact evaluations (one untimed run per model)")
     a = ap.parse_args()
     if a.reps < 1 or a.steps < 0 or a.np < 1:
         raise SystemExit("example_timing: --reps and --np must be >= 1, --steps >= 0")
@@ -116,10 +230,24 @@ def main():
             raise SystemExit("example_timing: no plugin %s" % p)
         models.append((lab, decks(text, p, None, a.steps)[1]))
         models.append((lab + "_project", decks(text, p, "project", a.steps)[1]))
+    e_pair, e_wall = builtin_collisions(exe, d, env, text)
+    e_law = builtin_restitution(1000.0, 0.3, 0.5, 0.75, 1.0)
+    print("builtin restitution at diameter 0.75, speed 1 (LAMMPS): pair %.6f (its law integrated: %.6f), "
+          "wall %.6f" % (e_pair, e_law, e_wall))
+    span = [builtin_restitution(1000.0, 0.3, 0.5, dd, v) for dd in (0.5, 0.75, 1.0) for v in (0.1, 1.0, 5.0, 15.0)]
+    print("builtin pair restitution over diameters 0.5-1 and speeds 0.1-15 (its law): %.4f-%.4f"
+          % (min(span), max(span)))
+    if not abs(e_pair - e_law) <= 1e-4:
+        raise SystemExit("example_timing: the builtin's pair restitution %.6f is not its law's %.6f (tolerance 1e-4)"
+                         % (e_pair, e_law))
+    e_pair, e_wall = round(e_pair, 3), round(e_wall, 3)
+    for carry in (None, "project"):
+        models.append(("matched" + ("_" + carry if carry else ""),
+                       decks(text, a.plugin, carry, a.steps, MATCHED % e_pair, MATCHED_WALL % e_wall)[1]))
     for lab, deck in models:
         open(os.path.join(d, "in.%s" % lab), "w").write(deck)
     print("Decks in %s; lines changed against %s:" % (d, a.deck))
-    for lab, deck in models[:3]:
+    for lab, deck in models[:3] + models[-1:]:
         old = set(text.splitlines())
         print("  %s: %s" % (lab, " | ".join(l for l in deck.splitlines() if l not in old)))
     nps = [1] + ([a.np] if a.np > 1 else [])
@@ -129,24 +257,34 @@ def main():
         for r in range(a.reps):
             for lab, _ in models:
                 log = "log.%s.np%d.%d" % (lab, np_, r)
+                u0 = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
                 H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.%s" % lab, "-log", log], d, env)
-                t = times(os.path.join(d, log))
+                t = times(os.path.join(d, log)) + (resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime - u0,)
                 b = best.get((lab, np_))
-                best[(lab, np_)] = t if b is None else tuple(min(x, y) for x, y in zip(b[:4], t[:4])) + t[4:]
+                best[(lab, np_)] = t if b is None else tuple(min(x, y) for x, y in zip(b[:4], t[:4])) + t[4:6] + (
+                    min(b[6], t[6]),)
     load1 = open("/proc/loadavg").read().split()[:3]
+    count = {}
+    if a.count:
+        for lab, deck in models:
+            open(os.path.join(d, "in.count.%s" % lab), "w").write(counting(deck))
+            H.run([exe, "-in", "in.count.%s" % lab, "-log", "log.count.%s" % lab], d, env)
+            count[lab] = contacts(os.path.join(d, "log.count.%s" % lab))
     print()
     print("## in.pour.flatwall without rolling, %s steps, minimum of %d alternating runs "
           "(load average at the start: %s; at the end: %s)"
           % (a.steps or "the deck's", a.reps, " ".join(load0), " ".join(load1)))
     print()
-    print("| model | ranks | loop [s] | pair [s] | neigh [s] | modify [s] | builds | atoms | loop ratio |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| model | ranks | loop [s] | pair [s] | neigh [s] | modify [s] | builds | atoms | loop ratio | user [s] "
+          "| user ratio |" + (" contacts [1e6] |" if a.count else ""))
+    print("|---|---|---|---|---|---|---|---|---|---|---|" + ("---|" if a.count else ""))
     for np_ in nps:
-        ref = best[("granular", np_)][0]
+        ref, uref = best[("granular", np_)][0], best[("granular", np_)][6]
         for lab, _ in models:
             b = best[(lab, np_)]
-            print("| %s | %d | %.3f | %.3f | %.3f | %.3f | %d | %d | %.3f |"
-                  % (lab, np_, b[0], b[1], b[2], b[3], b[4], b[5], b[0] / ref))
+            print("| %s | %d | %.3f | %.3f | %.3f | %.3f | %d | %d | %.3f | %.3f | %.3f |"
+                  % (lab, np_, b[0], b[1], b[2], b[3], b[4], b[5], b[0] / ref, b[6], b[6] / uref)
+                  + (" %.2f |" % (count[lab] / 1e6) if a.count else ""))
 
 
 if __name__ == "__main__":
