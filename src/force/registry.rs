@@ -22,11 +22,30 @@
 //! Duplicate codes are a compile error (`unreachable_patterns` is denied in the generated
 //! matches).
 
+use super::pair;
 use super::pair::{Coded, Consts, Law, PairModel, Registered, SpecLaw, StateLaw, Visit, eval};
-use super::{dmt, elastic_plastic, hertz, powerlaw, viscoelastic};
 use crate::contact::spec::{ContactSpec, damping, hertz_factor, set};
 use crate::laws::{KernelInfo, LawInfo};
 use crate::{EndCriterion, Error};
+
+// The law files, one per law, declared here next to their lines below (reached as
+// `force::<law>` by re-export). A law file imports `super::pair` (and `super::<other law>`) as
+// if it sat in `force`: `pair` is imported here.
+#[path = "dmt.rs"]
+pub mod dmt;
+#[path = "elastic_plastic.rs"]
+pub mod elastic_plastic;
+#[path = "hertz.rs"]
+pub mod hertz;
+#[path = "powerlaw.rs"]
+pub mod powerlaw;
+#[path = "viscoelastic.rs"]
+pub mod viscoelastic;
+
+/// The law modules, re-exported by `force` (`force::dmt`, …).
+pub mod law_files {
+    pub use super::{dmt, elastic_plastic, hertz, powerlaw, viscoelastic};
+}
 
 macro_rules! normal_laws {
     ($(

@@ -13,6 +13,7 @@ pub mod codes;
 pub mod cpp;
 pub mod fortran;
 pub mod header;
+pub mod inline;
 pub mod probe;
 pub mod shape;
 
@@ -29,6 +30,7 @@ pub fn law_files(root: &Path) -> Result<Vec<(&'static str, String)>, String> {
     Ok(vec![
         (codes::CODES, codes::codes_rs()),
         (codes::PY_LAWS, codes::py_laws()),
+        (codes::DOC_LAWS, codes::doc_laws()),
         (
             pyi,
             codes::splice(
@@ -38,6 +40,10 @@ pub fn law_files(root: &Path) -> Result<Vec<(&'static str, String)>, String> {
                 &codes::pyi_block(),
                 pyi,
             )?,
+        ),
+        (
+            inline::INLINE,
+            inline::inline_header(&read(inline::INLINE)?)?,
         ),
     ])
 }
