@@ -1043,8 +1043,8 @@ DCI_ALWAYS_INLINE_FN double dci_harmonic(double a, double b) {
     return b == (double)INFINITY ? a : a * (b / (a + b));
 }
 
-/* The frame motion of one step (src/contact/frame.rs): the rotation by the mean spin
- * q = (w1 + w2)/2 dt (Rodrigues, s = sin|q|/|q|, c = (1 - cos|q|)/|q|^2, Taylor series for
+/* The frame motion of one step (src/contact/frame.rs `FrameStep::new`): the rotation by the
+ * mean spin q = (w1 + w2)/2 dt (Rodrigues, s = sin|q|/|q|, c = (1 - cos|q|)/|q|^2, Taylor series for
  * |q|^2 < 1e-3, else libm sin as the library's f64::sin), then the minimal tilt from the spun old
  * normal to n, then the projection on the plane normal to n. DC_CARRY_PROJECT (project = 1):
  * the projection alone, rescaled to the old length. */
@@ -1113,7 +1113,7 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_carry(const dci_frame *f, dci_v3 v) {
     return dci_tangential(w, f->n);
 }
 
-/* Kinematics of one contact (src/contact/kinematics.rs). */
+/* Kinematics of one contact (src/contact/kinematics.rs `Kin::of`). */
 typedef struct dci_kin {
     dci_v3 n, vt, w_roll, w_rel;
     double d, vn, r_eff, m_eff, a1, a2, m1, m2, r1, r2;
@@ -1150,7 +1150,7 @@ DCI_ALWAYS_INLINE_FN dci_kin dci_kin_of(const dc_contact_state *s, dci_v3 n_old,
     return k;
 }
 
-/* Tangential stage (src/contact/tangential.rs): spring carried, incremented by v_t dt, dashpot,
+/* Tangential stage (src/contact/tangential.rs `step`): spring carried, incremented by v_t dt, dashpot,
  * Coulomb truncation with LAMMPS's spring reset. kt: the law's stiffness of this contact. */
 DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_step(const dc_contact_model *m, const dci_kin *k,
                                                 double kt, double f_normal, double dt,
@@ -1174,7 +1174,7 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_step(const dc_contact_model *m, const
     return trial;
 }
 
-/* Rescaled incremental Mindlin stage (src/contact/tangential_mindlin_rescale.rs): the force
+/* Rescaled incremental Mindlin stage (src/contact/tangential_mindlin_rescale.rs `run`): the force
  * history fs carried, scaled by a/a_old when the contact radius shrank, incremented by
  * -k_t v_t dt; dashpot, Coulomb truncation with LAMMPS's reset; a_old <- a. */
 DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_rescale_step(const dc_contact_model *m,
@@ -1205,7 +1205,7 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_rescale_step(const dc_contact_model *
     return trial;
 }
 
-/* Constant rolling torque (src/contact/rolling_constant.rs). */
+/* Constant rolling torque (src/contact/rolling_constant.rs `torque`). */
 DCI_ALWAYS_INLINE_FN dci_v3 dci_rolling_constant(const dc_contact_model *m, const dci_kin *k,
                                                  double f_normal, int *on) {
     const double w2 = dci_norm2(k->w_roll);
@@ -1218,7 +1218,7 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_rolling_constant(const dc_contact_model *m, cons
     return dci_v(0.0, 0.0, 0.0);
 }
 
-/* EPSD rolling (src/contact/rolling_epsd.rs); kn: the normal law's elastic tangent stiffness. */
+/* EPSD rolling (src/contact/rolling_epsd.rs `step`); kn: the normal law's elastic tangent stiffness. */
 DCI_ALWAYS_INLINE_FN dci_v3 dci_rolling_epsd(const dc_contact_model *m, const dci_kin *k,
                                              double f_normal, double kn, double dt,
                                              const dci_frame *frame, dci_v3 *mk, int *lim) {
@@ -1243,7 +1243,7 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_rolling_epsd(const dc_contact_model *m, const dc
     return dci_add(spring, dci_scale(-cr, wr));
 }
 
-/* Twisting spring-dashpot-slider (src/contact/twisting_sds.rs): torque about n on body 1. */
+/* Twisting spring-dashpot-slider (src/contact/twisting_sds.rs `step`): torque about n on body 1. */
 DCI_ALWAYS_INLINE_FN double dci_twisting(const dc_contact_model *m, const dci_kin *k,
                                          double f_normal, double dt, double *mk, int *lim) {
     DCI_NO_CONTRACT
@@ -1265,7 +1265,7 @@ DCI_ALWAYS_INLINE_FN double dci_twisting(const dc_contact_model *m, const dci_ki
     return spring - DCI_M(c, wt);
 }
 
-/* History layout (src/contact/model.rs Layout::of_model): normal of the last step at 0, then the
+/* History layout (src/contact/model.rs `Layout::of_model`): normal of the last step at 0, then the
  * tangential spring (3; 4 for DC_TANGENTIAL_MINDLIN_RESCALE: force and last contact radius), the
  * rolling spring (3, EPSD only), the twisting spring (1), the step-aware damping state (1, after
  * dc_contact_model_set_step). -1: absent. nrm: the normal is stored (Layout::has_normal). */
@@ -1293,8 +1293,8 @@ DCI_ALWAYS_INLINE_FN dci_layout dci_layout_of(int32_t tangential, int32_t rollin
 }
 
 /* The layout of model m: the state of a normal law with state after the springs (its kernel:
- * src/contact/model.rs Layout::of_model), then the step-aware slot (reserved[0] not +0:
- * src/ffi/contact.rs model_of) if any. */
+ * src/contact/model.rs `Layout::of_model`), then the step-aware slot (reserved[0] not +0:
+ * src/ffi/contact.rs `model_of`) if any. */
 DCI_ALWAYS_INLINE_FN dci_layout dci_layout_step(dci_layout l, const dc_contact_model *m) {
     if (dci_has_state(m->normal.kernel)) {
         l.nstate = l.len;
@@ -1888,7 +1888,7 @@ DCI_ALWAYS_INLINE_FN int32_t dc_contact_force_shaped_deferred_inline(
                               dt, history, out, checks);
 }
 
-/* ---- dc_contact_model_init_inline (src/contact/spec.rs contact_model) */
+/* ---- dc_contact_model_init_inline (src/contact/spec.rs `contact_model`) */
 
 /* NaN = unset (DC_ERR_SPEC_UNSET) */
 DC_INLINE_FN int32_t dci_set(double x) { return x != x ? DC_ERR_SPEC_UNSET : DC_OK; }
@@ -2069,7 +2069,7 @@ DC_INLINE_FN int32_t dci_zeta_from_e_t(double e_t, double *out) {
     return DC_OK;
 }
 
-/* 8 G*, 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2 (src/contact/tangential_mindlin.rs) */
+/* 8 G*, 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2 (src/contact/tangential_mindlin.rs `eight_g_star`) */
 DC_INLINE_FN int32_t dci_eight_g_star(double e1, double nu1, double e2, double nu2, double *out) {
     const double c1 = 2.0 * (2.0 - nu1) * (1.0 + nu1) / e1;
     const double c2 = 2.0 * (2.0 - nu2) * (1.0 + nu2) / e2;

@@ -31,6 +31,7 @@ pub fn law_files(root: &Path) -> Result<Vec<(&'static str, String)>, String> {
         (codes::CODES, codes::codes_rs()),
         (codes::PY_LAWS, codes::py_laws()),
         (codes::DOC_LAWS, codes::doc_laws()),
+        (codes::PLUGIN_LAWS, codes::plugin_laws()),
         (
             pyi,
             codes::splice(
