@@ -41,7 +41,7 @@ static inline const dc_normal_law *dc_normal_laws(void) {
     static const dc_normal_law laws[DC_NORMAL_LAW_COUNT] = {
         {"hertz", DC_NORMAL_HERTZ, 1, 1, 1, 0, 0, {{NULL, NULL, 0}}},
         {"powerlaw", DC_NORMAL_POWERLAW, 0, 1, 1, 0, 2, {{"p", "1", offsetof(dc_contact_spec, p)}, {"k_n", "N/m^p", offsetof(dc_contact_spec, k_n)}}},
-        {"linear", DC_NORMAL_LINEAR, 0, 1, 1, 0, 1, {{"k_n", "N/m^p", offsetof(dc_contact_spec, k_n)}}},
+        {"linear", DC_NORMAL_LINEAR, 0, 1, 1, 0, 1, {{"k_n", "N/m", offsetof(dc_contact_spec, k_n)}}},
         {"viscoelastic", DC_NORMAL_VISCOELASTIC, 1, 0, 1, 0, 1, {{"visco_A", "s", offsetof(dc_contact_spec, visco_A)}}},
         {"dmt", DC_NORMAL_DMT, 1, 1, 0, 0, 1, {{"work_of_adhesion", "J/m^2", offsetof(dc_contact_spec, work_of_adhesion)}}},
         {"elastic_plastic", DC_NORMAL_ELASTIC_PLASTIC, 1, 0, 1, 1, 1, {{"yield_pressure", "Pa", offsetof(dc_contact_spec, yield_pressure)}}},

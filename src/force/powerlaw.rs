@@ -232,7 +232,11 @@ impl SpecLaw for Powerlaw {
 impl SpecLaw for Linear {
     const DOC: &'static str = "Normal law: linear spring F = k_n d.";
     const MATERIALS: bool = false;
-    const PARAMS: &'static [crate::laws::Param] = &[K_N];
+    const PARAMS: &'static [crate::laws::Param] = &[crate::laws::Param {
+        field: "k_n",
+        unit: "N/m",
+        doc: "normal stiffness k_n > 0",
+    }];
     const RESTITUTION: bool = true;
     const CLAMP: bool = true;
     fn build(

@@ -232,7 +232,12 @@ pub const PLUGIN_LAWS: &str = "plugins/common/demcontact_laws.h";
 
 /// `plugins/common/demcontact_laws.h`: the normal laws as the plugins' input keywords see them.
 pub fn plugin_laws() -> String {
-    let width = NORMAL.iter().map(|l| l.params.len()).max().unwrap_or(0).max(1);
+    let width = NORMAL
+        .iter()
+        .map(|l| l.params.len())
+        .max()
+        .unwrap_or(0)
+        .max(1);
     let mut s = String::from(
         "/*\n * demcontact_laws.h: the normal laws of dc_contact_spec as the plugins' input keywords\n \
          * see them (keyword, selector, what the law reads), so that a law added to the registry is\n \
