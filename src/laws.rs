@@ -239,3 +239,32 @@ pub(crate) const P_ETA_R: Param = p("eta_r", "1", "rolling damping ratio eta_r >
 pub(crate) const P_MU_TW: Param = p("mu_tw", "m", "twisting friction coefficient mu_tw >= 0");
 pub(crate) const P_K_TW: Param = p("k_tw", "N m/rad", "twisting stiffness k_tw > 0");
 pub(crate) const P_ETA_TW: Param = p("eta_tw", "1", "twisting damping ratio eta_tw >= 0");
+
+#[cfg(test)]
+mod tests {
+    use super::{KINDS, NORMAL};
+
+    #[test]
+    fn every_kind_has_unique_codes_keywords_and_names() {
+        for k in KINDS {
+            for (i, a) in k.laws.iter().enumerate() {
+                for b in &k.laws[..i] {
+                    assert!(a.code != b.code, "{}: code {}", k.prefix, a.code);
+                    assert!(a.keyword != b.keyword, "{}: {}", k.prefix, a.keyword);
+                    assert!(a.name != b.name, "{}: {}", k.prefix, a.name);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn every_model_is_introduced_by_exactly_one_law() {
+        for l in NORMAL {
+            let intro = NORMAL
+                .iter()
+                .filter(|m| m.model == l.model && !m.model_doc.is_empty())
+                .count();
+            assert_eq!(intro, 1, "dc_pair.model {} ({})", l.model, l.name);
+        }
+    }
+}
