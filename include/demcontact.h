@@ -76,17 +76,34 @@
 #define DC_BUILTIN_LAMMPS_TSUJI_HOOKE_SQRT2 10
 
 /**
- * Version of dc_contact_spec this library reads (dc_contact_spec_init sets it).
+ * dc_pair.model of a power-law Tsuji pair with fixed stiffness (including the linear
+ * spring-dashpot, p = 1).
  */
-#define DC_CONTACT_SPEC_VERSION 1
+#define DC_MODEL_POWERLAW 1
 
 /**
- * Doubles of history per contact for the largest contact model
- * (dc_contact_history_len gives the exact, usually smaller, figure of one model). A normal law
- * with state (DC_NORMAL_ELASTIC_PLASTIC) adds one double; it has no step-aware form, so its
- * double and the step-aware one never meet and 12 still bounds every model.
+ * dc_pair.model of a Hertz pair from material data (k = (4/3) E* sqrt(R*) per contact).
  */
-#define DC_CONTACT_HISTORY_MAX 12
+#define DC_MODEL_HERTZ 2
+
+/**
+ * dc_pair.model of a viscoelastic Hertz pair (Brilliantov et al.).
+ */
+#define DC_MODEL_VISCOELASTIC 3
+
+/**
+ * dc_pair.model of an adhesive DMT pair (the normal law of a dc_contact_model built with
+ * DC_NORMAL_DMT; there is no dc_pair_* constructor for it).
+ */
+#define DC_MODEL_DMT 4
+
+/**
+ * dc_pair.model of an elastic-plastic pair (the normal law of a dc_contact_model built with
+ * DC_NORMAL_ELASTIC_PLASTIC). Its force needs per-contact state (the largest overlap), so it
+ * exists only inside a contact model: there is no dc_pair_* constructor, and every dc_pair path
+ * refuses its kernel (DC_ERR_PAIR_INVALID; NaN from the unchecked dc_normal_force).
+ */
+#define DC_MODEL_ELASTIC_PLASTIC 5
 
 /**
  * Normal law: Hertz from E, nu of both bodies, k = (4/3) E* sqrt(R*) per contact.
@@ -109,20 +126,19 @@
 #define DC_NORMAL_VISCOELASTIC 4
 
 /**
- * Normal law: adhesive DMT, Hertz minus 2 pi w R* (w = work_of_adhesion), attraction also
- * beyond touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of
- * separation); never clamped: requires DC_END_OVERLAP.
+ * Normal law: adhesive DMT, Hertz minus 2 pi w R* (w = work_of_adhesion), attraction also beyond
+ * touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of separation); never
+ * clamped: requires DC_END_OVERLAP.
  */
 #define DC_NORMAL_DMT 5
 
 /**
- * Normal law: elastic-perfectly-plastic (Thornton 1997): Hertz up to the limiting contact
- * pressure yield_pressure = p_y (yield overlap d_y = (pi p_y/(2 E*))^2 R*), then
- * F = F_y + pi p_y R* (d - d_y); unloading and reloading along a Hertz curve of enlarged
- * radius with a residual overlap. One double of history (the largest overlap); no dashpot
- * (damping must be DC_DAMPING_NONE: the loss is plastic, e(v) from
- * dc_elastic_plastic_restitution). Contact models only: no dc_pair constructor, no
- * step-aware form (DC_ERR_STEP_UNSUPPORTED).
+ * Normal law: elastic-perfectly-plastic (Thornton 1997): Hertz up to the limiting contact pressure
+ * yield_pressure = p_y (yield overlap d_y = (pi p_y/(2 E*))^2 R*), then F = F_y + pi p_y R* (d -
+ * d_y); unloading and reloading along a Hertz curve of enlarged radius with a residual overlap.
+ * One double of history (the largest overlap); no dashpot (damping must be DC_DAMPING_NONE: the
+ * loss is plastic, e(v) from dc_elastic_plastic_restitution). Contact models only: no dc_pair
+ * constructor, no step-aware form (DC_ERR_STEP_UNSUPPORTED).
  */
 #define DC_NORMAL_ELASTIC_PLASTIC 6
 
@@ -147,17 +163,17 @@
 #define DC_TANGENTIAL_LINEAR 1
 
 /**
- * Tangential: Mindlin k_t = 8 G* a, a = sqrt(R* d), dashpot from e_t, Coulomb limit.
- * Kept as LAMMPS `mindlin` has it (total form k_t(d) xi); it creates energy when the contact
- * grows (up to +0.27 % of the kinetic energy in an elastic oblique impact, docs/force.md):
- * prefer DC_TANGENTIAL_MINDLIN_RESCALE.
+ * Tangential: Mindlin k_t = 8 G* a, a = sqrt(R* d), dashpot from e_t, Coulomb limit. Kept as
+ * LAMMPS `mindlin` has it (total form k_t(d) xi); it creates energy when the contact grows (up to
+ * +0.27 % of the kinetic energy in an elastic oblique impact, docs/force.md): prefer
+ * DC_TANGENTIAL_MINDLIN_RESCALE.
  */
 #define DC_TANGENTIAL_MINDLIN 2
 
 /**
  * Tangential: Mindlin k_t = 8 G* a in incremental force form, the force history rescaled by
- * a/a_old when the contact shrinks (Thornton et al. 2013; LAMMPS `mindlin_rescale/force`),
- * dashpot from e_t, Coulomb limit: creates no energy. 4 doubles of tangential history.
+ * a/a_old when the contact shrinks (Thornton et al. 2013; LAMMPS `mindlin_rescale/force`), dashpot
+ * from e_t, Coulomb limit: creates no energy. 4 doubles of tangential history.
  */
 #define DC_TANGENTIAL_MINDLIN_RESCALE 3
 
@@ -187,18 +203,31 @@
 #define DC_TWISTING_SDS 1
 
 /**
- * History springs follow the contact frame by rotation (the bodies' mean spin, then the tilt
- * of the normal): objective under any rigid rotation of the pair. Default.
+ * History springs follow the contact frame by rotation (the bodies' mean spin, then the tilt of
+ * the normal): objective under any rigid rotation of the pair. Default.
  */
 #define DC_CARRY_ROTATE 0
 
 /**
- * History springs projected on the new tangent plane and rescaled to their old length, as
- * LAMMPS `granular` does (LIGGGHTS `tangential history` projects without rescaling): cheaper,
- * but a pair turning about its normal loads its spring (see docs/force.md). Set with
+ * History springs projected on the new tangent plane and rescaled to their old length, as LAMMPS
+ * `granular` does (LIGGGHTS `tangential history` projects without rescaling): cheaper, but a pair
+ * turning about its normal loads its spring (see docs/force.md). Set with
  * dc_contact_model_set_carry.
  */
 #define DC_CARRY_PROJECT 1
+
+/**
+ * Version of dc_contact_spec this library reads (dc_contact_spec_init sets it).
+ */
+#define DC_CONTACT_SPEC_VERSION 1
+
+/**
+ * Doubles of history per contact for the largest contact model
+ * (dc_contact_history_len gives the exact, usually smaller, figure of one model). A normal law
+ * with state (DC_NORMAL_ELASTIC_PLASTIC) adds one double; it has no step-aware form, so its
+ * double and the step-aware one never meet and 12 still bounds every model.
+ */
+#define DC_CONTACT_HISTORY_MAX 12
 
 /**
  * dc_fit_result.model: a constant e (power-law contact) represents the data within tol.
@@ -209,36 +238,6 @@
  * dc_fit_result.model: the speed dependence exceeds tol; use the viscoelastic model.
  */
 #define DC_FIT_MODEL_VISCOELASTIC 1
-
-/**
- * dc_pair.model of a power-law Tsuji pair with fixed stiffness (including the linear
- * spring-dashpot, p = 1).
- */
-#define DC_MODEL_POWERLAW 1
-
-/**
- * dc_pair.model of a Hertz pair from material data (k = (4/3) E* sqrt(R*) per contact).
- */
-#define DC_MODEL_HERTZ 2
-
-/**
- * dc_pair.model of a viscoelastic Hertz pair (Brilliantov et al.).
- */
-#define DC_MODEL_VISCOELASTIC 3
-
-/**
- * dc_pair.model of an adhesive DMT pair (the normal law of a dc_contact_model built with
- * DC_NORMAL_DMT; there is no dc_pair_* constructor for it).
- */
-#define DC_MODEL_DMT 4
-
-/**
- * dc_pair.model of an elastic-plastic pair (the normal law of a dc_contact_model built with
- * DC_NORMAL_ELASTIC_PLASTIC). Its force needs per-contact state (the largest overlap), so it
- * exists only inside a contact model: there is no dc_pair_* constructor, and every dc_pair
- * path refuses its kernel (DC_ERR_PAIR_INVALID; NaN from the unchecked dc_normal_force).
- */
-#define DC_MODEL_ELASTIC_PLASTIC 5
 
 /**
  * Version of dc_plan_input this library reads (dc_plan_input_init sets it).

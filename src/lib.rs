@@ -24,6 +24,7 @@ pub mod error;
 pub mod ffi;
 pub mod fit;
 pub mod force;
+pub mod laws;
 pub mod lsd;
 pub mod material;
 pub mod numerics;

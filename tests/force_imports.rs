@@ -13,7 +13,10 @@ fn siblings(src: &str, names: &[String]) -> Vec<String> {
             let l = l.trim();
             l.starts_with("use super::{") && l.split(['{', '}', ',', ' ']).any(|t| t == n)
         });
-        if src.contains(&direct) || listed || src.contains(&format!("use super::{n};")) {
+        // The registry declares the law files (`#[path = "dmt.rs"] pub mod dmt;`): an edge.
+        let declared = src.contains(&format!("#[path = \"{n}.rs\"]"));
+        if src.contains(&direct) || listed || declared || src.contains(&format!("use super::{n};"))
+        {
             out.push(n.clone());
         }
     }

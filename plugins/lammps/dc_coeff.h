@@ -15,6 +15,14 @@
  *                                      Brilliantov viscoelastic Hertz, speed-dependent e: the damping
  *                                      constant A is calibrated so that two spheres of radius r_ref
  *                                      and density rho_ref colliding head-on at v_ref rebound with e
+ *   <law> v1 v2 ...                    the normal law of dc_contact_spec named by its keyword, with
+ *                                      the values of the fields it reads, in the order of the
+ *                                      generated table demcontact_laws.h (docs/laws.md): e.g.
+ *                                      dmt w (work_of_adhesion), elastic_plastic p_y
+ *                                      (yield_pressure), linear k_n, powerlaw p k_n,
+ *                                      viscoelastic A. Materials from E and nu; a law that takes no
+ *                                      restitution target (elastic_plastic, viscoelastic) needs
+ *                                      e = 1 (DC_DAMPING_NONE). Always demcontact's full contact.
  *   limit_damping                      clamp attractive normal force (also a pair_style keyword);
  *                                      alpha then comes from the force-zero calibration
  *   tangential mindlin NULL e_t mu     Mindlin k_t = 8 G* a from E, nu; tangential restitution e_t
@@ -48,9 +56,9 @@
  * alone (dc_pair / dc_normal_force, no history). The full contact needs the Hertz exponent 1.5.
  *
  * Mixing (pair_coeff I J not given, I != J): each body keeps its own type's E and nu (combined
- * exactly into E*); e, A, e_t, mu, k_t, mu_r, k_r, eta_r, mu_tw, k_tw, eta_tw are the geometric
- * means of the two types' values; the exponent, the sub-model choices, the carry and step_exact must
- * agree.
+ * exactly into E*); e, A, e_t, mu, k_t, mu_r, k_r, eta_r, mu_tw, k_tw, eta_tw and the normal law's
+ * values are the geometric means of the two types' values; the exponent, the normal law, the
+ * sub-model choices, the carry and step_exact must agree.
  */
 #ifndef DEMCONTACT_LAMMPS_COEFF_H
 #define DEMCONTACT_LAMMPS_COEFF_H
@@ -62,6 +70,7 @@
 #include <demcontact.h>
 #include "tsuji_force.h"
 #include "demcontact_shaped.h"
+#include "demcontact_laws.h"
 
 #include <cmath>
 #include <cstring>
@@ -85,11 +94,14 @@ struct Coeff {
     int tangential = DC_TANGENTIAL_NONE, rolling = DC_ROLLING_NONE, twisting = DC_TWISTING_NONE;
     double mu = 0, k_t = NAN, e_t = 1, mu_r = 0, k_r = 0, eta_r = 0, mu_tw = 0, k_tw = NAN, eta_tw = 0;
     int carry = DC_CARRY_ROTATE; // frame carry of the history springs (keyword carry)
+    // normal law given by keyword (<law> v1 v2 ...; demcontact_laws.h) and its values
+    int normal = DC_NORMAL_HERTZ;
+    double normal_param[DC_LAW_PARAMS_MAX] = {};
     bool step_exact = false;     // keyword step_exact: dc_contact_model_set_step at the run's dt
     bool full() const
     {
         return tangential != DC_TANGENTIAL_NONE || rolling != DC_ROLLING_NONE || twisting != DC_TWISTING_NONE ||
-               step_exact;
+               step_exact || normal != DC_NORMAL_HERTZ;
     }
 };
 
@@ -105,10 +117,18 @@ inline dc_contact_spec full_spec(const Coeff &a, const Coeff &b, const Coeff &m)
     s.nu1 = a.nu;
     s.E2 = b.E;
     s.nu2 = b.nu;
+    const dc_normal_law *law = dc_normal_law_of(m.normal);
     if (m.damping == DAMP_VISCOELASTIC) {
         s.normal = DC_NORMAL_VISCOELASTIC;
         s.damping = DC_DAMPING_NONE;
         s.visco_A = m.A;
+    } else if (m.normal != DC_NORMAL_HERTZ && law) {
+        // a law given by keyword: its fields by their offsets in dc_contact_spec
+        s.normal = m.normal;
+        s.damping = law->restitution ? DC_DAMPING_RESTITUTION : DC_DAMPING_NONE;
+        s.e_n = m.e;
+        for (int k = 0; k < law->nparams; k++)
+            *reinterpret_cast<double *>(reinterpret_cast<char *>(&s) + law->params[k].offset) = m.normal_param[k];
     } else {
         s.normal = DC_NORMAL_HERTZ;
         s.damping = DC_DAMPING_RESTITUTION;
@@ -248,6 +268,10 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
         } else if (k == "step_exact") {
             c.step_exact = true;
             i += 1;
+        } else if (const dc_normal_law *law = dc_normal_law_find(k.c_str())) {
+            c.normal = law->code;
+            for (int j = 0; j < law->nparams; j++) c.normal_param[j] = num(i + 1 + j, law->params[j].field);
+            i += 1 + law->nparams;
         } else {
             error->all(FLERR, "{}: unknown keyword '{}'", what, k);
         }
@@ -275,6 +299,33 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
         if (!(c.rho_ref > 0.0)) reject("rho_ref", c.rho_ref, DC_ERR_NOT_POSITIVE);
         s = viscoelastic_A(c, c.clamp, &c.A);
         if (s != DC_OK) reject("e (viscoelastic calibration)", c.e, s);
+    }
+    if (c.normal != DC_NORMAL_HERTZ) {
+        const dc_normal_law *law = dc_normal_law_of(c.normal);
+        if (c.damping == DAMP_VISCOELASTIC)
+            error->all(FLERR, "{}: damping viscoelastic is a Hertz law of its own: drop it or the normal law '{}'", what,
+                       law->keyword);
+        if (!law->restitution && c.e != 1.0)
+            error->all(FLERR, "{}: normal law '{}' takes no restitution target (its loss is its own): give e = 1, not {}",
+                       what, law->keyword, c.e);
+        if (!law->clamp && c.clamp)
+            error->all(FLERR, "{}: normal law '{}' is never clamped (DC_END_OVERLAP only): drop limit_damping", what,
+                       law->keyword);
+        // the normal law alone, so that a rejected value is named
+        dc_contact_model cm;
+        Coeff n;
+        n.E = c.E;
+        n.nu = c.nu;
+        n.e = c.e;
+        n.clamp = c.clamp;
+        n.normal = c.normal;
+        for (int j = 0; j < DC_LAW_PARAMS_MAX; j++) n.normal_param[j] = c.normal_param[j];
+        dc_contact_spec ns = full_spec(n, n, n);
+        s = dc_contact_model_init(&ns, &cm);
+        if (s != DC_OK) {
+            if (law->nparams == 1) reject(law->params[0].field, c.normal_param[0], s);
+            error->all(FLERR, "{}: normal law '{}' rejected by demcontact: {}", what, law->keyword, dc_status_str(s));
+        }
     }
     if (c.step_exact && c.p != 1.5) error->all(FLERR, "{}: step_exact needs the Hertz exponent 1.5 (got {})", what, c.p);
     if (c.full()) {

@@ -177,9 +177,9 @@ void PairDemcontact::build_models()
                 b = &coeffs[j * N + j];
                 if (a->p != b->p || a->damping != b->damping || a->tangential != b->tangential ||
                     a->rolling != b->rolling || a->twisting != b->twisting || a->carry != b->carry ||
-                    a->step_exact != b->step_exact)
-                    error->all(FLERR, "pair_style demcontact: types {} and {} differ in exponent, sub-models, carry or "
-                                      "step_exact: give pair_coeff {} {} explicitly", i, j, i, j);
+                    a->step_exact != b->step_exact || a->normal != b->normal)
+                    error->all(FLERR, "pair_style demcontact: types {} and {} differ in exponent, normal law, sub-models, "
+                                      "carry or step_exact: give pair_coeff {} {} explicitly", i, j, i, j);
                 const Coeff A = *a, B = *b;
                 m = A;
                 auto gm = [](double x, double y) { return std::sqrt(x * y); };
@@ -194,6 +194,7 @@ void PairDemcontact::build_models()
                 m.mu_tw = gm(A.mu_tw, B.mu_tw);
                 m.k_tw = gm(A.k_tw, B.k_tw);
                 m.eta_tw = gm(A.eta_tw, B.eta_tw);
+                for (int k = 0; k < DC_LAW_PARAMS_MAX; k++) m.normal_param[k] = gm(A.normal_param[k], B.normal_param[k]);
                 a = &coeffs[i * N + i];
                 b = &coeffs[j * N + j];
             }

@@ -89,6 +89,7 @@ from ._native import (
     viscoelastic_k_gamma,
     viscoelastic_speed_for_e,
 )
+from ._laws import Carry, Damping, Normal, Rolling, Tangential, Twisting
 from ._types import ContactBatchResult, ContactEnergy, ContactResult, EnergyPartition, FitResult, Trajectory
 
 
@@ -112,73 +113,12 @@ class Model(_enum.IntEnum):
     VISCOELASTIC = _native.MODEL_VISCOELASTIC
 
 
-class Normal(_enum.IntEnum):
-    """Normal law of a ContactSpec (C: DC_NORMAL_*).
-
-    HERTZ: from E, nu of both bodies; POWERLAW: k_n d^p; LINEAR: k_n d; VISCOELASTIC: Hertz with
-    Brilliantov damping visco_A; DMT: adhesive Hertz (work_of_adhesion, Criterion.OVERLAP only);
-    ELASTIC_PLASTIC: Thornton's elastic-perfectly-plastic Hertz (yield_pressure, Damping.NONE;
-    one double of history; contact models only).
-    """
-
-    HERTZ = _native.NORMAL_HERTZ
-    POWERLAW = _native.NORMAL_POWERLAW
-    LINEAR = _native.NORMAL_LINEAR
-    VISCOELASTIC = _native.NORMAL_VISCOELASTIC
-    DMT = _native.NORMAL_DMT
-    ELASTIC_PLASTIC = _native.NORMAL_ELASTIC_PLASTIC
-
-
-class Damping(_enum.IntEnum):
-    """Normal damping of a ContactSpec (C: DC_DAMPING_*): none, or calibrated exactly from e_n."""
-
-    NONE = _native.DAMPING_NONE
-    RESTITUTION = _native.DAMPING_RESTITUTION
-
-
-class Tangential(_enum.IntEnum):
-    """Tangential law (C: DC_TANGENTIAL_*): Cundall-Strack k_t spring or Mindlin 8 G* a, Coulomb cap.
-
-    MINDLIN keeps LAMMPS ``mindlin``'s total form, which creates energy when the contact grows;
-    MINDLIN_RESCALE (incremental force, rescaled when the contact shrinks: LAMMPS
-    ``mindlin_rescale/force``) creates none and is the one to prefer.
-    """
-
-    NONE = _native.TANGENTIAL_NONE
-    LINEAR = _native.TANGENTIAL_LINEAR
-    MINDLIN = _native.TANGENTIAL_MINDLIN
-    MINDLIN_RESCALE = _native.TANGENTIAL_MINDLIN_RESCALE
-
-
 class Integrator(_enum.IntEnum):
     """The host's time integrator for ContactModel.set_step (C: DC_INTEGRATOR_*): velocity Verlet
     in the LAMMPS/LIGGGHTS order, or symplectic Euler (one map: the same correction)."""
 
     VELOCITY_VERLET = _native.INTEGRATOR_VELOCITY_VERLET
     SYMPLECTIC_EULER = _native.INTEGRATOR_SYMPLECTIC_EULER
-
-
-class Rolling(_enum.IntEnum):
-    """Rolling resistance (C: DC_ROLLING_*): constant torque or elastic-plastic spring-dashpot."""
-
-    NONE = _native.ROLLING_NONE
-    CONSTANT = _native.ROLLING_CONSTANT
-    EPSD = _native.ROLLING_EPSD
-
-
-class Twisting(_enum.IntEnum):
-    """Twisting resistance (C: DC_TWISTING_*): spring-dashpot-slider about n."""
-
-    NONE = _native.TWISTING_NONE
-    SDS = _native.TWISTING_SDS
-
-
-class Carry(_enum.IntEnum):
-    """How history springs follow the contact frame (C: DC_CARRY_*): ROTATE (default, objective)
-    or PROJECT (LAMMPS' projection and rescale: cheaper, not objective about n)."""
-
-    ROTATE = _native.CARRY_ROTATE
-    PROJECT = _native.CARRY_PROJECT
 
 
 #: Doubles of history per contact of the largest contact model; version of dc_contact_spec read.

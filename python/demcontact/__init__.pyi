@@ -130,6 +130,7 @@ class FitModel(enum.IntEnum):
     CONSTANT = 0
     VISCOELASTIC = 1
 
+# BEGIN GENERATED laws (cargo run -p xtask -- all)
 class Normal(enum.IntEnum):
     HERTZ = 1
     POWERLAW = 2
@@ -160,6 +161,8 @@ class Twisting(enum.IntEnum):
 class Carry(enum.IntEnum):
     ROTATE = 0
     PROJECT = 1
+
+# END GENERATED laws
 
 class Integrator(enum.IntEnum):
     VELOCITY_VERLET = 0

@@ -49,28 +49,11 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     use c::contact::*;
     m.add("CONTACT_SPEC_VERSION", DC_CONTACT_SPEC_VERSION)?;
     m.add("CONTACT_HISTORY_MAX", DC_CONTACT_HISTORY_MAX)?;
-    for (name, v) in [
-        ("NORMAL_HERTZ", DC_NORMAL_HERTZ),
-        ("NORMAL_POWERLAW", DC_NORMAL_POWERLAW),
-        ("NORMAL_LINEAR", DC_NORMAL_LINEAR),
-        ("NORMAL_VISCOELASTIC", DC_NORMAL_VISCOELASTIC),
-        ("NORMAL_DMT", DC_NORMAL_DMT),
-        ("NORMAL_ELASTIC_PLASTIC", DC_NORMAL_ELASTIC_PLASTIC),
-        ("DAMPING_NONE", DC_DAMPING_NONE),
-        ("DAMPING_RESTITUTION", DC_DAMPING_RESTITUTION),
-        ("TANGENTIAL_NONE", DC_TANGENTIAL_NONE),
-        ("TANGENTIAL_LINEAR", DC_TANGENTIAL_LINEAR),
-        ("TANGENTIAL_MINDLIN", DC_TANGENTIAL_MINDLIN),
-        ("TANGENTIAL_MINDLIN_RESCALE", DC_TANGENTIAL_MINDLIN_RESCALE),
-        ("ROLLING_NONE", DC_ROLLING_NONE),
-        ("ROLLING_CONSTANT", DC_ROLLING_CONSTANT),
-        ("ROLLING_EPSD", DC_ROLLING_EPSD),
-        ("TWISTING_NONE", DC_TWISTING_NONE),
-        ("TWISTING_SDS", DC_TWISTING_SDS),
-        ("CARRY_ROTATE", DC_CARRY_ROTATE),
-        ("CARRY_PROJECT", DC_CARRY_PROJECT),
-    ] {
-        m.add(name, v)?;
+    // Every law of every kind, from the registries (demcontact::laws): NORMAL_HERTZ, ...
+    for k in demcontact::laws::KINDS {
+        for l in k.laws {
+            m.add(format!("{}_{}", k.prefix, l.name), l.code)?;
+        }
     }
     Ok(())
 }

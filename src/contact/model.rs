@@ -8,32 +8,69 @@ use crate::force::PairModel;
 ///
 /// cbindgen:ignore
 pub mod select {
-    /// No tangential force.
-    pub const TANGENTIAL_NONE: i32 = 0;
-    /// Cundall–Strack linear history spring k_t with dashpot and Coulomb limit.
-    pub const TANGENTIAL_LINEAR: i32 = 1;
-    /// Mindlin no-slip spring k_t = 8 G* a, a = √(R* δ), dashpot, Coulomb limit.
-    pub const TANGENTIAL_MINDLIN: i32 = 2;
-    /// Mindlin spring in incremental force form, its force history rescaled by a/a_old when the
-    /// contact radius shrinks (Thornton et al. 2013, eq. 18b; LAMMPS `mindlin_rescale/force`):
-    /// creates no energy. History: the force (3) and the contact radius of the last step (1).
-    pub const TANGENTIAL_MINDLIN_RESCALE: i32 = 3;
-    /// No rolling resistance.
-    pub const ROLLING_NONE: i32 = 0;
-    /// Constant directional torque μ_r R* |Fn| opposing the rolling angular velocity.
-    pub const ROLLING_CONSTANT: i32 = 1;
-    /// Elastic–plastic spring–dashpot (Ai et al. 2011, type C), own history, limit μ_r R* |Fn|.
-    pub const ROLLING_EPSD: i32 = 2;
-    /// No twisting resistance.
-    pub const TWISTING_NONE: i32 = 0;
-    /// Spring–dashpot–slider about the normal, limit μ_tw |Fn|.
-    pub const TWISTING_SDS: i32 = 1;
-    /// History springs carried by the frame's rotation (spin, then tilt): objective.
-    pub const CARRY_ROTATE: i32 = 0;
-    /// History springs projected on the new tangent plane and rescaled to their old length
-    /// (LAMMPS `granular`; LIGGGHTS `history` projects without rescaling): cheaper, not
-    /// objective about the normal.
-    pub const CARRY_PROJECT: i32 = 1;
+    use crate::laws::{
+        P_E_T, P_ETA_R, P_ETA_TW, P_K_R, P_K_T, P_K_TW, P_MU, P_MU_R, P_MU_TW, selectors,
+    };
+
+    selectors! {
+        TANGENTIAL:
+        /// No tangential force.
+        TANGENTIAL_NONE (NONE) = 0, "none", "Tangential: none.", false, [];
+        /// Cundall–Strack linear history spring k_t with dashpot and Coulomb limit.
+        TANGENTIAL_LINEAR (LINEAR) = 1, "linear",
+            "Tangential: Cundall-Strack linear history spring k_t, dashpot from e_t, Coulomb limit.",
+            false, [P_MU, P_K_T, P_E_T];
+        /// Mindlin no-slip spring k_t = 8 G* a, a = √(R* δ), dashpot, Coulomb limit.
+        TANGENTIAL_MINDLIN (MINDLIN) = 2, "mindlin",
+            "Tangential: Mindlin k_t = 8 G* a, a = sqrt(R* d), dashpot from e_t, Coulomb limit. Kept as LAMMPS `mindlin` has it (total form k_t(d) xi); it creates energy when the contact grows (up to +0.27 % of the kinetic energy in an elastic oblique impact, docs/force.md): prefer DC_TANGENTIAL_MINDLIN_RESCALE.",
+            true, [P_MU, P_E_T];
+        /// Mindlin spring in incremental force form, its force history rescaled by a/a_old when
+        /// the contact radius shrinks (Thornton et al. 2013, eq. 18b; LAMMPS
+        /// `mindlin_rescale/force`): creates no energy. History: the force (3) and the contact
+        /// radius of the last step (1).
+        TANGENTIAL_MINDLIN_RESCALE (MINDLIN_RESCALE) = 3, "mindlin_rescale",
+            "Tangential: Mindlin k_t = 8 G* a in incremental force form, the force history rescaled by a/a_old when the contact shrinks (Thornton et al. 2013; LAMMPS `mindlin_rescale/force`), dashpot from e_t, Coulomb limit: creates no energy. 4 doubles of tangential history.",
+            true, [P_MU, P_E_T];
+    }
+
+    selectors! {
+        ROLLING:
+        /// No rolling resistance.
+        ROLLING_NONE (NONE) = 0, "none", "Rolling resistance: none.", false, [];
+        /// Constant directional torque μ_r R* |Fn| opposing the rolling angular velocity.
+        ROLLING_CONSTANT (CONSTANT) = 1, "constant",
+            "Rolling resistance: constant torque mu_r R* |Fn| opposing the rolling angular velocity.",
+            false, [P_MU_R];
+        /// Elastic–plastic spring–dashpot (Ai et al. 2011, type C), own history, limit
+        /// μ_r R* |Fn|.
+        ROLLING_EPSD (EPSD) = 2, "epsd",
+            "Rolling resistance: elastic-plastic spring-dashpot (Ai et al. 2011), limit mu_r R* |Fn|.",
+            false, [P_MU_R, P_K_R, P_ETA_R];
+    }
+
+    selectors! {
+        TWISTING:
+        /// No twisting resistance.
+        TWISTING_NONE (NONE) = 0, "none", "Twisting resistance: none.", false, [];
+        /// Spring–dashpot–slider about the normal, limit μ_tw |Fn|.
+        TWISTING_SDS (SDS) = 1, "sds",
+            "Twisting resistance: spring-dashpot-slider about n, limit mu_tw |Fn|.",
+            false, [P_MU_TW, P_K_TW, P_ETA_TW];
+    }
+
+    selectors! {
+        CARRY:
+        /// History springs carried by the frame's rotation (spin, then tilt): objective.
+        CARRY_ROTATE (ROTATE) = 0, "rotate",
+            "History springs follow the contact frame by rotation (the bodies' mean spin, then the tilt of the normal): objective under any rigid rotation of the pair. Default.",
+            false, [];
+        /// History springs projected on the new tangent plane and rescaled to their old length
+        /// (LAMMPS `granular`; LIGGGHTS `history` projects without rescaling): cheaper, not
+        /// objective about the normal.
+        CARRY_PROJECT (PROJECT) = 1, "project",
+            "History springs projected on the new tangent plane and rescaled to their old length, as LAMMPS `granular` does (LIGGGHTS `tangential history` projects without rescaling): cheaper, but a pair turning about its normal loads its spring (see docs/force.md). Set with dc_contact_model_set_carry.",
+            false, [];
+    }
 }
 
 /// Doubles per contact of the largest model: normal of the last step (3), tangential spring (3,

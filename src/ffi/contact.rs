@@ -1,5 +1,6 @@
 //! Exports: full contact (normal, tangential, rolling, twisting) with caller-owned history.
 
+pub use super::codes::*;
 use super::status::*;
 use super::{dc_status, guard, read_in, write_result};
 use crate::contact::batch::{BatchIn, BatchOut, contact_force_batch, contact_force_batch_fused};
@@ -8,7 +9,7 @@ use crate::contact::evaluate::{
     check_model_parts, contact_force_checked_model, contact_force_energy_checked_model,
 };
 use crate::contact::model::{HISTORY_MAX, Layout, select};
-use crate::contact::spec::{ContactSpec, contact_model, damping, normal};
+use crate::contact::spec::{ContactSpec, contact_model};
 use crate::contact::step_exact::{StepExact, set_step};
 use crate::contact::{ContactForce, ContactModel, ContactState};
 use crate::force::pair::{MODEL_HERTZ, MODEL_POWERLAW};
@@ -25,84 +26,7 @@ pub const DC_CONTACT_SPEC_VERSION: u32 = 1;
 /// double and the step-aware one never meet and 12 still bounds every model.
 pub const DC_CONTACT_HISTORY_MAX: usize = 12;
 
-/// Normal law: Hertz from E, nu of both bodies, k = (4/3) E* sqrt(R*) per contact.
-pub const DC_NORMAL_HERTZ: i32 = 1;
-/// Normal law: power law F = k_n d^p (fixed k_n, exponent p >= 1).
-pub const DC_NORMAL_POWERLAW: i32 = 2;
-/// Normal law: linear spring F = k_n d.
-pub const DC_NORMAL_LINEAR: i32 = 3;
-/// Normal law: viscoelastic Hertz (Brilliantov et al.) with damping constant visco_A.
-pub const DC_NORMAL_VISCOELASTIC: i32 = 4;
-/// Normal law: adhesive DMT, Hertz minus 2 pi w R* (w = work_of_adhesion), attraction also
-/// beyond touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of
-/// separation); never clamped: requires DC_END_OVERLAP.
-pub const DC_NORMAL_DMT: i32 = 5;
-/// Normal law: elastic-perfectly-plastic (Thornton 1997): Hertz up to the limiting contact
-/// pressure yield_pressure = p_y (yield overlap d_y = (pi p_y/(2 E*))^2 R*), then
-/// F = F_y + pi p_y R* (d - d_y); unloading and reloading along a Hertz curve of enlarged
-/// radius with a residual overlap. One double of history (the largest overlap); no dashpot
-/// (damping must be DC_DAMPING_NONE: the loss is plastic, e(v) from
-/// dc_elastic_plastic_restitution). Contact models only: no dc_pair constructor, no
-/// step-aware form (DC_ERR_STEP_UNSUPPORTED).
-pub const DC_NORMAL_ELASTIC_PLASTIC: i32 = 6;
-/// Normal damping: none (e_n = 1).
-pub const DC_DAMPING_NONE: i32 = 0;
-/// Normal damping: alpha calibrated exactly from e_n for the criterion.
-pub const DC_DAMPING_RESTITUTION: i32 = 1;
-/// Tangential: none.
-pub const DC_TANGENTIAL_NONE: i32 = 0;
-/// Tangential: Cundall-Strack linear history spring k_t, dashpot from e_t, Coulomb limit.
-pub const DC_TANGENTIAL_LINEAR: i32 = 1;
-/// Tangential: Mindlin k_t = 8 G* a, a = sqrt(R* d), dashpot from e_t, Coulomb limit.
-/// Kept as LAMMPS `mindlin` has it (total form k_t(d) xi); it creates energy when the contact
-/// grows (up to +0.27 % of the kinetic energy in an elastic oblique impact, docs/force.md):
-/// prefer DC_TANGENTIAL_MINDLIN_RESCALE.
-pub const DC_TANGENTIAL_MINDLIN: i32 = 2;
-/// Tangential: Mindlin k_t = 8 G* a in incremental force form, the force history rescaled by
-/// a/a_old when the contact shrinks (Thornton et al. 2013; LAMMPS `mindlin_rescale/force`),
-/// dashpot from e_t, Coulomb limit: creates no energy. 4 doubles of tangential history.
-pub const DC_TANGENTIAL_MINDLIN_RESCALE: i32 = 3;
-/// Rolling resistance: none.
-pub const DC_ROLLING_NONE: i32 = 0;
-/// Rolling resistance: constant torque mu_r R* |Fn| opposing the rolling angular velocity.
-pub const DC_ROLLING_CONSTANT: i32 = 1;
-/// Rolling resistance: elastic-plastic spring-dashpot (Ai et al. 2011), limit mu_r R* |Fn|.
-pub const DC_ROLLING_EPSD: i32 = 2;
-/// Twisting resistance: none.
-pub const DC_TWISTING_NONE: i32 = 0;
-/// Twisting resistance: spring-dashpot-slider about n, limit mu_tw |Fn|.
-pub const DC_TWISTING_SDS: i32 = 1;
-/// History springs follow the contact frame by rotation (the bodies' mean spin, then the tilt
-/// of the normal): objective under any rigid rotation of the pair. Default.
-pub const DC_CARRY_ROTATE: i32 = 0;
-/// History springs projected on the new tangent plane and rescaled to their old length, as
-/// LAMMPS `granular` does (LIGGGHTS `tangential history` projects without rescaling): cheaper,
-/// but a pair turning about its normal loads its spring (see docs/force.md). Set with
-/// dc_contact_model_set_carry.
-pub const DC_CARRY_PROJECT: i32 = 1;
-
-const _: () = assert!(
-    DC_NORMAL_HERTZ == normal::HERTZ
-        && DC_NORMAL_POWERLAW == normal::POWERLAW
-        && DC_NORMAL_LINEAR == normal::LINEAR
-        && DC_NORMAL_VISCOELASTIC == normal::VISCOELASTIC
-        && DC_NORMAL_DMT == normal::DMT
-        && DC_NORMAL_ELASTIC_PLASTIC == normal::ELASTIC_PLASTIC
-        && DC_DAMPING_NONE == damping::NONE
-        && DC_DAMPING_RESTITUTION == damping::RESTITUTION
-        && DC_TANGENTIAL_NONE == select::TANGENTIAL_NONE
-        && DC_TANGENTIAL_LINEAR == select::TANGENTIAL_LINEAR
-        && DC_TANGENTIAL_MINDLIN == select::TANGENTIAL_MINDLIN
-        && DC_TANGENTIAL_MINDLIN_RESCALE == select::TANGENTIAL_MINDLIN_RESCALE
-        && DC_ROLLING_NONE == select::ROLLING_NONE
-        && DC_ROLLING_CONSTANT == select::ROLLING_CONSTANT
-        && DC_ROLLING_EPSD == select::ROLLING_EPSD
-        && DC_TWISTING_NONE == select::TWISTING_NONE
-        && DC_TWISTING_SDS == select::TWISTING_SDS
-        && DC_CARRY_ROTATE == select::CARRY_ROTATE
-        && DC_CARRY_PROJECT == select::CARRY_PROJECT
-        && DC_CONTACT_HISTORY_MAX == HISTORY_MAX
-);
+const _: () = assert!(DC_CONTACT_HISTORY_MAX == HISTORY_MAX);
 
 /// What a contact model is made of, named field by field: fill it with dc_contact_spec_init,
 /// then set the fields your scene needs (by name: never positionally), then call

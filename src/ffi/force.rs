@@ -9,29 +9,16 @@ use crate::force::registry::{needs, normal_force_raw, unclamped};
 use crate::force::{Consts, PairModel, hertz, powerlaw, viscoelastic};
 use crate::{EndCriterion, Error};
 
-/// dc_pair.model of a power-law Tsuji pair with fixed stiffness (including the linear
-/// spring-dashpot, p = 1).
-pub const DC_MODEL_POWERLAW: i32 = 1;
-/// dc_pair.model of a Hertz pair from material data (k = (4/3) E* sqrt(R*) per contact).
-pub const DC_MODEL_HERTZ: i32 = 2;
-/// dc_pair.model of a viscoelastic Hertz pair (Brilliantov et al.).
-pub const DC_MODEL_VISCOELASTIC: i32 = 3;
-/// dc_pair.model of an adhesive DMT pair (the normal law of a dc_contact_model built with
-/// DC_NORMAL_DMT; there is no dc_pair_* constructor for it).
-pub const DC_MODEL_DMT: i32 = 4;
-/// dc_pair.model of an elastic-plastic pair (the normal law of a dc_contact_model built with
-/// DC_NORMAL_ELASTIC_PLASTIC). Its force needs per-contact state (the largest overlap), so it
-/// exists only inside a contact model: there is no dc_pair_* constructor, and every dc_pair
-/// path refuses its kernel (DC_ERR_PAIR_INVALID; NaN from the unchecked dc_normal_force).
-pub const DC_MODEL_ELASTIC_PLASTIC: i32 = 5;
+pub use super::codes::{
+    DC_MODEL_DMT, DC_MODEL_ELASTIC_PLASTIC, DC_MODEL_HERTZ, DC_MODEL_POWERLAW,
+    DC_MODEL_VISCOELASTIC,
+};
 
-// The C constants are literals (cbindgen cannot resolve paths); they must equal the core's.
+// The generated C constants (src/ffi/codes.rs) must equal the core's of the pair constructors.
 const _: () = assert!(
     DC_MODEL_POWERLAW == MODEL_POWERLAW
         && DC_MODEL_HERTZ == MODEL_HERTZ
         && DC_MODEL_VISCOELASTIC == MODEL_VISCOELASTIC
-        && DC_MODEL_DMT == crate::force::dmt::MODEL_DMT
-        && DC_MODEL_ELASTIC_PLASTIC == crate::force::elastic_plastic::MODEL_ELASTIC_PLASTIC
 );
 
 /// A calibrated contact model for one material pair (type pair): plain data, owned by the

@@ -12,6 +12,7 @@
 
 pub mod builtin;
 pub mod calibration;
+pub mod codes;
 pub mod contact;
 pub mod fit;
 pub mod force;

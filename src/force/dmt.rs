@@ -19,12 +19,39 @@
 //! Constants: k = (4/3) E*, c = α √k (0 undamped), h = 2π w. Per contact in contact: 2 square
 //! roots as Hertz; in the tail one `powf`.
 
-use super::pair::{Consts, Law, PairModel, pick};
+use super::pair::{Consts, Law, PairModel, Registered, SpecLaw, pick};
 use crate::powerlaw::alpha_from_e;
 use crate::{EndCriterion, Error};
 
-/// dc_pair.model of a DMT pair (the C constant `DC_MODEL_DMT` equals it).
-pub(crate) const MODEL_DMT: i32 = 4;
+/// The DMT law of a contact specification (`DC_NORMAL_DMT`); its registry line gives it its
+/// codes (`dc_pair.model`: `DC_MODEL_DMT`).
+pub(crate) struct Dmt;
+
+impl SpecLaw for Dmt {
+    const DOC: &'static str = "Normal law: adhesive DMT, Hertz minus 2 pi w R* (w = work_of_adhesion), attraction also beyond touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of separation); never clamped: requires DC_END_OVERLAP.";
+    const MATERIALS: bool = true;
+    const PARAMS: &'static [crate::laws::Param] = &[crate::laws::Param {
+        field: "work_of_adhesion",
+        unit: "J/m^2",
+        doc: "work of adhesion w >= 0 (pull-off force 2 pi w R*)",
+    }];
+    const RESTITUTION: bool = true;
+    const CLAMP: bool = false;
+    const MODEL_DOC: &'static str = "dc_pair.model of an adhesive DMT pair (the normal law of a dc_contact_model built with DC_NORMAL_DMT; there is no dc_pair_* constructor for it).";
+    fn build(
+        s: &crate::contact::spec::ContactSpec,
+        kf: f64,
+        e_n: f64,
+        crit: EndCriterion,
+    ) -> Result<PairModel, Error> {
+        dmt_from_factor(
+            kf,
+            crate::contact::spec::set(s.work_of_adhesion)?,
+            e_n,
+            crit,
+        )
+    }
+}
 
 pub(crate) struct DmtElastic;
 pub(crate) struct DmtDamped;
@@ -94,7 +121,7 @@ pub fn dmt_from_factor(
         return Err(Error::ResultRange);
     }
     Ok(PairModel {
-        model: MODEL_DMT,
+        model: Dmt::MODEL,
         kernel: pick::<DmtElastic, DmtDamped>(alpha > 0.0, criterion),
         criterion,
         p: 1.5,

@@ -25,17 +25,46 @@
 //!
 //! Constants: k = (4/3) E*, c = π p_y, h = (π p_y/(2E*))² (so δ_y = h R*).
 
-use super::pair::{Consts, PairModel};
+use super::pair::{Consts, PairModel, Registered, SpecLaw, StateLaw};
 use crate::{EndCriterion, Error};
 
-/// dc_pair.model of an elastic–plastic pair (the C constant `DC_MODEL_ELASTIC_PLASTIC`; only
-/// in a contact model: there is no `dc_pair_*` constructor).
-pub(crate) const MODEL_ELASTIC_PLASTIC: i32 = 5;
+/// The elastic–plastic law of a contact specification (`DC_NORMAL_ELASTIC_PLASTIC`); its
+/// registry line gives it its codes (`dc_pair.model` `DC_MODEL_ELASTIC_PLASTIC`, kernel
+/// `DC_KERNEL_ELASTIC_PLASTIC`: a law with state, so no `dc_pair` path dispatches it).
+pub(crate) struct ElasticPlastic;
 
-/// Kernel code of this law (in `dc_pair.kernel`; ABI). A law with state has its code here, not
-/// in the stateless registry, so that no `dc_pair` path dispatches it; [`super::stateful`]
-/// gathers the codes of every law with state.
-pub(crate) const KERNEL: i32 = 20;
+impl SpecLaw for ElasticPlastic {
+    const DOC: &'static str = "Normal law: elastic-perfectly-plastic (Thornton 1997): Hertz up to the limiting contact pressure yield_pressure = p_y (yield overlap d_y = (pi p_y/(2 E*))^2 R*), then F = F_y + pi p_y R* (d - d_y); unloading and reloading along a Hertz curve of enlarged radius with a residual overlap. One double of history (the largest overlap); no dashpot (damping must be DC_DAMPING_NONE: the loss is plastic, e(v) from dc_elastic_plastic_restitution). Contact models only: no dc_pair constructor, no step-aware form (DC_ERR_STEP_UNSUPPORTED).";
+    const MATERIALS: bool = true;
+    const PARAMS: &'static [crate::laws::Param] = &[crate::laws::Param {
+        field: "yield_pressure",
+        unit: "Pa",
+        doc: "limiting contact pressure p_y > 0",
+    }];
+    // The plastic work is this law's loss; a restitution target would be ignored.
+    const RESTITUTION: bool = false;
+    const CLAMP: bool = true;
+    const MODEL_DOC: &'static str = "dc_pair.model of an elastic-plastic pair (the normal law of a dc_contact_model built with DC_NORMAL_ELASTIC_PLASTIC). Its force needs per-contact state (the largest overlap), so it exists only inside a contact model: there is no dc_pair_* constructor, and every dc_pair path refuses its kernel (DC_ERR_PAIR_INVALID; NaN from the unchecked dc_normal_force).";
+    fn build(
+        s: &crate::contact::spec::ContactSpec,
+        kf: f64,
+        _e_n: f64,
+        crit: EndCriterion,
+    ) -> Result<PairModel, Error> {
+        elastic_plastic_from_factor(kf, crate::contact::spec::set(s.yield_pressure)?, crit)
+    }
+}
+
+impl StateLaw for ElasticPlastic {
+    #[inline(always)]
+    fn force(c: &Consts, d: f64, _vn: f64, r: f64, _m: f64, dmax: &mut f64) -> f64 {
+        force(c, d, r, dmax)
+    }
+    #[inline(always)]
+    fn dissipated(c: &Consts, r: f64, old: f64, new: f64) -> f64 {
+        dissipated(c, r, old, new)
+    }
+}
 
 /// (δ_y, F_y, F_max, δ_p, R_p-term) of a contact that has yielded: δ_max > δ_y. Returns
 /// (F_max, δ_p, kp) with the unloading curve F = kp (δ − δ_p)^{3/2}, kp = (4/3)E* √R_p.
@@ -199,8 +228,8 @@ pub fn elastic_plastic_from_factor(
         return Err(Error::ResultRange);
     }
     Ok(PairModel {
-        model: MODEL_ELASTIC_PLASTIC,
-        kernel: KERNEL,
+        model: ElasticPlastic::MODEL,
+        kernel: ElasticPlastic::STATE_KERNEL,
         criterion,
         p: 1.5,
         stiffness: kf,

@@ -8,10 +8,32 @@
 //! So one contact costs two square roots (q and √(m q)) and no `pow`; c = α √kf per pair. α is
 //! the exact p = 3/2 calibration (speed independent: one α per pair).
 
-use super::pair::{Consts, Law, MODEL_HERTZ, PairModel, pick};
+use super::pair::{Consts, Law, MODEL_HERTZ, PairModel, SpecLaw, pick};
 use crate::material::effective_modulus;
 use crate::powerlaw::alpha_from_e;
 use crate::{EndCriterion, Error};
+
+/// The Hertz law of a contact specification (`DC_NORMAL_HERTZ`).
+pub(crate) struct Hertz;
+
+impl SpecLaw for Hertz {
+    const DOC: &'static str =
+        "Normal law: Hertz from E, nu of both bodies, k = (4/3) E* sqrt(R*) per contact.";
+    const MATERIALS: bool = true;
+    const PARAMS: &'static [crate::laws::Param] = &[];
+    const RESTITUTION: bool = true;
+    const CLAMP: bool = true;
+    const MODEL_DOC: &'static str =
+        "dc_pair.model of a Hertz pair from material data (k = (4/3) E* sqrt(R*) per contact).";
+    fn build(
+        _s: &crate::contact::spec::ContactSpec,
+        kf: f64,
+        e_n: f64,
+        crit: EndCriterion,
+    ) -> Result<PairModel, Error> {
+        hertz_from_factor(kf, e_n, crit)
+    }
+}
 
 pub(crate) struct HertzElastic;
 pub(crate) struct HertzDamped;

@@ -149,3 +149,48 @@ pub(crate) fn pick<E: Coded, D: Coded>(damped: bool, criterion: EndCriterion) ->
         (true, EndCriterion::Force) => D::CLAMPED,
     }
 }
+
+/// A normal law as the contact specification sees it: what it reads and how it is built. One
+/// type per law (`dmt::Dmt`), named by the law's line in the registry ([`super::registry`]),
+/// which generates the validation dispatch and the metadata ([`crate::laws::NORMAL`]) from it.
+pub(crate) trait SpecLaw {
+    /// One paragraph: what the law is (becomes the comment of `DC_NORMAL_<NAME>`).
+    const DOC: &'static str;
+    /// Whether the law reads the bodies' materials (E1, ν1, E2, ν2: (4/3) E* is passed to
+    /// [`SpecLaw::build`]).
+    const MATERIALS: bool;
+    /// The other specification fields it reads (checked by [`SpecLaw::build`]).
+    const PARAMS: &'static [crate::laws::Param];
+    /// Whether `DC_DAMPING_RESTITUTION` is accepted (else `DC_ERR_SPEC_MODEL`).
+    const RESTITUTION: bool;
+    /// Whether `DC_END_FORCE` is accepted (else [`SpecLaw::build`] refuses it).
+    const CLAMP: bool;
+    /// The comment of `DC_MODEL_<NAME>` for the law that introduces its `dc_pair.model` (its
+    /// registry line's `model`); empty for a law that shares another law's model.
+    const MODEL_DOC: &'static str = "";
+    /// The pair of this law from the specification: kf = (4/3) E* (when `MATERIALS`, else
+    /// NaN), the target restitution e_n (1 without damping), the end criterion.
+    fn build(
+        s: &crate::contact::spec::ContactSpec,
+        kf: f64,
+        e_n: f64,
+        criterion: EndCriterion,
+    ) -> Result<PairModel, crate::Error>;
+}
+
+/// A normal law with one double of per-contact state (contact models only; its kernel code is
+/// given by its registry line's `state` and is never a stateless kernel).
+pub(crate) trait StateLaw {
+    /// The force at overlap d (any sign: the law decides its range), reading and updating the
+    /// state.
+    fn force(c: &Consts, d: f64, vn: f64, r: f64, m: f64, state: &mut f64) -> f64;
+    /// The energy the law removed in a step that took its state from `old` to `new` [J] (≥ 0).
+    fn dissipated(c: &Consts, r: f64, old: f64, new: f64) -> f64;
+}
+
+/// The codes the registry line of a law gives it: its `dc_pair.model` and (laws with state) its
+/// kernel code, 0 for a stateless law.
+pub(crate) trait Registered {
+    const MODEL: i32;
+    const STATE_KERNEL: i32;
+}

@@ -14,7 +14,7 @@
 //! criterion, which also decides clamping: `Force` clamps attractive force to zero, and its α is
 //! the force-zero one, so a clamping solver realises the target e.
 
-use super::pair::{Consts, Law, MODEL_POWERLAW, PairModel, pick};
+use super::pair::{Consts, Law, MODEL_POWERLAW, PairModel, SpecLaw, pick};
 use crate::numerics::pow_dd::pow_dd;
 use crate::powerlaw::{alpha_from_e, check_exponent, e_from_alpha};
 use crate::{EndCriterion, Error};
@@ -190,4 +190,61 @@ pub fn powerlaw(p: f64, k: f64, e: f64, criterion: EndCriterion) -> Result<PairM
 /// The linear spring-dashpot `F = k δ + α √(m k) vn` (p = 1), calibrated to e.
 pub fn linear(k: f64, e: f64, criterion: EndCriterion) -> Result<PairModel, Error> {
     powerlaw(1.0, k, e, criterion)
+}
+
+/// The power law of a contact specification (`DC_NORMAL_POWERLAW`).
+pub(crate) struct Powerlaw;
+
+/// The linear spring of a contact specification (`DC_NORMAL_LINEAR`).
+pub(crate) struct Linear;
+
+const K_N: crate::laws::Param = crate::laws::Param {
+    field: "k_n",
+    unit: "N/m^p",
+    doc: "normal stiffness k_n > 0",
+};
+
+impl SpecLaw for Powerlaw {
+    const DOC: &'static str = "Normal law: power law F = k_n d^p (fixed k_n, exponent p >= 1).";
+    const MODEL_DOC: &'static str = "dc_pair.model of a power-law Tsuji pair with fixed stiffness (including the linear spring-dashpot, p = 1).";
+    const MATERIALS: bool = false;
+    const PARAMS: &'static [crate::laws::Param] = &[
+        crate::laws::Param {
+            field: "p",
+            unit: "1",
+            doc: "force-law exponent p >= 1",
+        },
+        K_N,
+    ];
+    const RESTITUTION: bool = true;
+    const CLAMP: bool = true;
+    fn build(
+        s: &crate::contact::spec::ContactSpec,
+        _kf: f64,
+        e_n: f64,
+        crit: EndCriterion,
+    ) -> Result<PairModel, Error> {
+        use crate::contact::spec::set;
+        powerlaw(set(s.p)?, set(s.k_n)?, e_n, crit)
+    }
+}
+
+impl SpecLaw for Linear {
+    const DOC: &'static str = "Normal law: linear spring F = k_n d.";
+    const MATERIALS: bool = false;
+    const PARAMS: &'static [crate::laws::Param] = &[crate::laws::Param {
+        field: "k_n",
+        unit: "N/m",
+        doc: "normal stiffness k_n > 0",
+    }];
+    const RESTITUTION: bool = true;
+    const CLAMP: bool = true;
+    fn build(
+        s: &crate::contact::spec::ContactSpec,
+        _kf: f64,
+        e_n: f64,
+        crit: EndCriterion,
+    ) -> Result<PairModel, Error> {
+        linear(crate::contact::spec::set(s.k_n)?, e_n, crit)
+    }
 }

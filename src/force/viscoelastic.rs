@@ -12,7 +12,7 @@
 //! Schwager & Pöschel).
 
 use super::hertz::{HertzElastic, hertz_factor};
-use super::pair::{Consts, Law, MODEL_VISCOELASTIC, PairModel, pick};
+use super::pair::{Consts, Law, MODEL_VISCOELASTIC, PairModel, SpecLaw, pick};
 use crate::{EndCriterion, Error};
 
 pub(crate) struct Viscoelastic;
@@ -68,4 +68,31 @@ pub fn viscoelastic_from_factor(
         e: f64::NAN,
         consts: Consts { k: kf, c, h: 0.25 },
     })
+}
+
+/// The viscoelastic law of a contact specification (`DC_NORMAL_VISCOELASTIC`): its damping is
+/// A, so a restitution target (which it would ignore) is refused.
+pub(crate) struct Visco;
+
+impl SpecLaw for Visco {
+    const DOC: &'static str =
+        "Normal law: viscoelastic Hertz (Brilliantov et al.) with damping constant visco_A.";
+    const MATERIALS: bool = true;
+    const PARAMS: &'static [crate::laws::Param] = &[crate::laws::Param {
+        field: "visco_A",
+        unit: "s",
+        doc: "viscoelastic damping constant A >= 0",
+    }];
+    const RESTITUTION: bool = false;
+    const CLAMP: bool = true;
+    const MODEL_DOC: &'static str =
+        "dc_pair.model of a viscoelastic Hertz pair (Brilliantov et al.).";
+    fn build(
+        s: &crate::contact::spec::ContactSpec,
+        kf: f64,
+        _e_n: f64,
+        crit: EndCriterion,
+    ) -> Result<PairModel, Error> {
+        viscoelastic_from_factor(kf, crate::contact::spec::set(s.visco_a)?, crit)
+    }
 }

@@ -105,6 +105,21 @@ LAMMPS_CASES = [
      "mu = -0.5", NEGATIVE),
     ("mindlin_rescale k_t given", "", "hertz/material 5e6 0.5 0.3 tangential mindlin_rescale 1e6 1.0 0.5", None,
      "write 'tangential mindlin_rescale NULL e_t mu'", None),
+    # normal laws by their registry keyword (plugins/common/demcontact_laws.h, generated)
+    ("control: dmt (good input)", "", "hertz/material 5e6 0.5 0.3 dmt 0.01", None, None, None),
+    ("control: elastic_plastic (good input)", "", "hertz/material 5e6 1 0.3 elastic_plastic 1e5", None, None,
+     None),
+    ("dmt w < 0", "", "hertz/material 5e6 0.5 0.3 dmt -0.1", None, "work_of_adhesion = -0.1", NEGATIVE),
+    ("dmt limit_damping", "", "hertz/material 5e6 0.5 0.3 limit_damping dmt 0.01", None,
+     "normal law 'dmt' is never clamped", None),
+    ("elastic_plastic p_y = 0", "", "hertz/material 5e6 1 0.3 elastic_plastic 0", None, "yield_pressure = 0",
+     NOT_POSITIVE),
+    ("elastic_plastic e < 1", "", "hertz/material 5e6 0.5 0.3 elastic_plastic 1e5", None,
+     "normal law 'elastic_plastic' takes no restitution target", None),
+    ("elastic_plastic no value", "", "hertz/material 5e6 1 0.3 elastic_plastic", None,
+     "missing value for yield_pressure", None),
+    ("wall elastic_plastic p_y < 0", "", LAMMPS_GOOD, "hertz/material 5e6 1 0.3 elastic_plastic -1 zplane -0.01 NULL",
+     "yield_pressure = -1", NOT_POSITIVE),
 ]
 
 # bad values met during the run (pair_demcontact.cpp): an atom's velocity not finite (the pass

@@ -9,9 +9,11 @@
 pub mod abi;
 pub mod apidoc;
 pub mod cheader;
+pub mod codes;
 pub mod cpp;
 pub mod fortran;
 pub mod header;
+pub mod inline;
 pub mod probe;
 pub mod shape;
 
@@ -19,6 +21,33 @@ use std::path::Path;
 
 /// Path (relative to the repository root) of the committed C header.
 pub const HEADER: &str = "include/demcontact.h";
+
+/// Every file generated from the law registries ([`demcontact::laws`]), given the committed
+/// files they splice a block into (read from `root`): (path relative to the root, contents).
+pub fn law_files(root: &Path) -> Result<Vec<(&'static str, String)>, String> {
+    let read = |p: &str| std::fs::read_to_string(root.join(p)).map_err(|e| format!("{p}: {e}"));
+    let pyi = "python/demcontact/__init__.pyi";
+    Ok(vec![
+        (codes::CODES, codes::codes_rs()),
+        (codes::PY_LAWS, codes::py_laws()),
+        (codes::DOC_LAWS, codes::doc_laws()),
+        (codes::PLUGIN_LAWS, codes::plugin_laws()),
+        (
+            pyi,
+            codes::splice(
+                &read(pyi)?,
+                codes::PYI_BEGIN,
+                codes::PYI_END,
+                &codes::pyi_block(),
+                pyi,
+            )?,
+        ),
+        (
+            inline::INLINE,
+            inline::inline_header(&read(inline::INLINE)?)?,
+        ),
+    ])
+}
 
 /// Every file generated from the header text: (path relative to the root, contents).
 pub fn bindings(header: &str) -> Result<Vec<(&'static str, String)>, cheader::ParseError> {

@@ -1,8 +1,10 @@
 //! `cargo run -p xtask -- <command>`:
+//! * `laws`: regenerates the files driven by the law registries (`demcontact::laws`): the C
+//!   constants `src/ffi/codes.rs`, the Python enums and stubs (see `codes.rs`);
 //! * `header`: regenerates `include/demcontact.h` with cbindgen;
 //! * `bindings`: regenerates, from the committed header, the Fortran module, the C++ wrappers,
 //!   the ABI probe files and `docs/api.md`;
-//! * `all`: `header`, then `bindings`;
+//! * `all`: `laws`, `header`, then `bindings`;
 //! * `check`: writes nothing, exits 1 naming every stale file;
 //! * `abi-list [HEADER]`: prints the ABI symbol list of a header (default: the committed one),
 //!   the format of `tests/data/abi_v0.txt`.
@@ -36,6 +38,9 @@ fn write(root: &Path, files: &[(&str, String)]) -> Result<(), String> {
 fn run(cmd: &str, args: &[String]) -> Result<bool, String> {
     let root = root();
     match cmd {
+        "laws" => {
+            write(&root, &xtask::law_files(&root)?)?;
+        }
         "header" => {
             write(&root, &[(xtask::HEADER, xtask::header::generate(&root)?)])?;
         }
@@ -44,12 +49,14 @@ fn run(cmd: &str, args: &[String]) -> Result<bool, String> {
             write(&root, &xtask::bindings(&header).map_err(|e| e.to_string())?)?;
         }
         "all" => {
+            run("laws", args)?;
             run("header", args)?;
             run("bindings", args)?;
         }
         "check" => {
             let header = xtask::header::generate(&root)?;
-            let mut files = vec![(xtask::HEADER, header.clone())];
+            let mut files = xtask::law_files(&root)?;
+            files.push((xtask::HEADER, header.clone()));
             files.extend(xtask::bindings(&header).map_err(|e| e.to_string())?);
             let stale = xtask::stale(&root, &files);
             for p in &stale {
@@ -72,7 +79,7 @@ fn run(cmd: &str, args: &[String]) -> Result<bool, String> {
         }
         other => {
             return Err(format!(
-                "unknown command `{other}`; commands: header, bindings, all, check, abi-list [HEADER]"
+                "unknown command `{other}`; commands: laws, header, bindings, all, check, abi-list [HEADER]"
             ));
         }
     }
@@ -82,7 +89,9 @@ fn run(cmd: &str, args: &[String]) -> Result<bool, String> {
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let Some((cmd, rest)) = args.split_first() else {
-        eprintln!("usage: cargo run -p xtask -- <header|bindings|all|check|abi-list [HEADER]>");
+        eprintln!(
+            "usage: cargo run -p xtask -- <laws|header|bindings|all|check|abi-list [HEADER]>"
+        );
         return ExitCode::FAILURE;
     };
     match run(cmd, rest) {
