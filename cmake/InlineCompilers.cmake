@@ -37,8 +37,9 @@ file(MAKE_DIRECTORY "${OUT}")
 #  2. dc_forces_arith (the 17 kernels without libm) compiled to an sm_90 cubin with -fmad=true
 #     (nvcc's default) and -fmad=false: its machine code must be the same bytes, i.e. nothing was
 #     fused and every + - * / sqrt is rounded as on the host (prec-div, prec-sqrt on by default).
-# nvcc_checks(PROGRAMS... [CUBINS]): each program's two nvcc builds and runs; CUBINS: item 2.
-function(nvcc_checks)
+# nvcc_checks(CUBINS PROGRAMS...): each program's two nvcc builds and runs (item 1), and item 2
+# where CUBINS is ON.
+function(nvcc_checks cubins)
   get_filename_component(bindir "${NVCC}" DIRECTORY)
   set(nv ${NVCC} -std=c++17 -Werror all-warnings -Xcompiler -Wall,-Wextra,-Werror ${inc})
   set(link -L${bindir}/../lib -L${LIBDIR} -ldemcontact -lm -Xlinker -rpath,${LIBDIR})
@@ -46,16 +47,14 @@ function(nvcc_checks)
   # The FMA-host run at N/2: at N/4 its constant-shape steps fell below the coverage check's
   # tenth of the run-time ones (90041 against 910375, 144 shapes).
   math(EXPR half "${N} / 2")
-  set(programs ${ARGN})
-  list(REMOVE_ITEM programs CUBINS)
-  foreach(t IN LISTS programs)
+  foreach(t IN LISTS ARGN)
     run(${nv} -O2 -arch=sm_75 ${SRC}/c_tests/inline/${t}_nvcc.cu ${link} -o ${OUT}/${t}_nvcc)
     run(${OUT}/${t}_nvcc ${N})
     run(${nv} -arch=sm_75 -Xcompiler -O3,-march=native,-ffp-contract=off
         ${SRC}/c_tests/inline/${t}_nvcc.cu ${link} -o ${OUT}/${t}_nvcc_native)
     run(${OUT}/${t}_nvcc_native ${half})
   endforeach()
-  if(NOT "CUBINS" IN_LIST ARGN)
+  if(NOT cubins)
     return()
   endif()
   find_program(READELF readelf)
@@ -120,7 +119,7 @@ elseif(MODE STREQUAL "cuda")
   resolve_nvcc()
   find_program(CLANGXX clang++)
   if(NVCC)
-    nvcc_checks(test_inline CUBINS)
+    nvcc_checks(ON test_inline)
   elseif(CLANGXX)
     execute_process(COMMAND ${CLANGXX} -x cuda -std=c++17 --cuda-gpu-arch=sm_70 ${inc}
                     -c ${SRC}/c_tests/inline/cuda_kernels.cu -o ${OUT}/cuda_kernels.o
@@ -138,7 +137,7 @@ elseif(MODE STREQUAL "cuda_contact")
   if(NOT NVCC)
     skip(inline_cuda_contact "no nvcc (scripts/setup_cuda.sh installs one)")
   endif()
-  nvcc_checks(test_inline_contact)
+  nvcc_checks(OFF test_inline_contact)
 elseif(MODE STREQUAL "gpu_check")
   # examples_cpp/gpu/gpu_check.cu built by nvcc as scripts/gpu_check.sh builds it (sm_90,
   # -fmad=false), against the shared library. Without a GPU it must stop with its CUDA error
