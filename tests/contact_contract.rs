@@ -660,10 +660,10 @@ fn batch_equals_scalar_bit_for_bit() {
             models.push(s);
         }
     }
-    // Under Miri 2 steps (half of this file's interpreted time went here with 4): the first
-    // writes every history slot from zero, the second reads and advances it, the batch and scalar
-    // paths are the same for later steps; scripts/miri_coverage.sh contact_contract checks that
-    // this grid reaches every region of src/ the native one does.
+    // Under Miri 2 steps (with 4, half of this file's interpreted time went here): the first
+    // writes every history slot from zero, the second reads and advances it; later steps run the
+    // same code with other values. scripts/miri_coverage.sh contact_contract checks that this
+    // grid still reaches every region of src/ that the native one reaches.
     let steps = if cfg!(miri) { 2 } else { 4 };
     for m in models {
         // Scalar reference over `steps` steps (history evolving).
