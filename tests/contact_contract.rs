@@ -660,16 +660,11 @@ fn batch_equals_scalar_bit_for_bit() {
             models.push(s);
         }
     }
-    // Under Miri 2 steps (with 4, half of this file's interpreted time went here): the first
-    // writes every history slot from zero, the second reads and advances it; later steps run the
-    // same code with other values. scripts/miri_coverage.sh contact_contract checks that this
-    // grid still reaches every region of src/ that the native one reaches.
-    let steps = if cfg!(miri) { 2 } else { 4 };
     for m in models {
-        // Scalar reference over `steps` steps (history evolving).
+        // Scalar reference over 4 steps (history evolving).
         let mut hs = vec![[0.0f64; DC_CONTACT_HISTORY_MAX]; nc];
         let mut hb = vec![0.0f64; nc * stride];
-        for step in 0..steps {
+        for step in 0..4 {
             let mut want = Vec::new();
             for (i, s) in st.iter().enumerate() {
                 let mut r = sentinel_res();
