@@ -64,8 +64,8 @@ endforeach()
 # (Testing/Temporary/CTestCostData.txt), so the long ones carry their seconds (a CI run at -j2 on
 # 2 loaded cores): without it inline_clang_contact started in the middle and ran alone at the end.
 set_tests_properties(inline_clang_contact PROPERTIES COST 500)
-set_tests_properties(inline_cuda_contact PROPERTIES COST 150)
-set_tests_properties(inline_cuda PROPERTIES COST 150)
+set_tests_properties(inline_cuda_contact PROPERTIES COST 260)
+set_tests_properties(inline_cuda PROPERTIES COST 35)
 
 # The GPU check (examples_cpp/gpu/gpu_check.cu, scripts/gpu_check.sh, docs/gpu.md). Here, without
 # a GPU: its CPU smoke (the same source as host C++, each device launch a loop on the CPU: the
