@@ -62,7 +62,7 @@ foreach(mode clang clang_contact cuda cuda_contact cuda_stub)
 endforeach()
 # ctest starts the costliest tests first. A fresh clone has no timing history
 # (Testing/Temporary/CTestCostData.txt), so the long ones carry their seconds (a CI run at -j2 on
-# 2 loaded cores): without it inline_clang_contact started in the middle and ran alone at the end.
+# 2 loaded cores; the CUDA halves by their CPU seconds). docs/ci.md: scripts/ctest_replay.py.
 set_tests_properties(inline_clang_contact PROPERTIES COST 500)
 set_tests_properties(inline_cuda_contact PROPERTIES COST 260)
 set_tests_properties(inline_cuda PROPERTIES COST 35)
