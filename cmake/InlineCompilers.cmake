@@ -1,8 +1,14 @@
 # Builds and runs c_tests/inline/test_inline.c with a second compiler or compiles the CUDA check.
-#   -DMODE=clang   clang -O3 -march=native (default contraction: bits), and with
+#   -DMODE=clang   test_inline.c by clang -O3 -march=native (default contraction: bits), and with
 #                  -ffp-contract=fast (clang then ignores the header's pragma: within 8 ulp)
-#   -DMODE=cuda    nvcc (-DNVCC=<path>, else PATH): the checks of nvcc_checks() below; else
-#                  clang++ -x cuda with a CUDA installation: compile cuda_kernels.cu
+#   -DMODE=clang_contact  test_inline_contact.c by clang -O3 -march=native (bits; its 192
+#                  constant-shape instantiations make this the costliest compile of the suite,
+#                  so it is its own ctest case, started first, beside the others)
+#   -DMODE=cuda    nvcc (-DNVCC=<path>, else PATH): the checks of nvcc_checks() below for
+#                  test_inline and the sm_90 cubins; else clang++ -x cuda with a CUDA
+#                  installation: compile cuda_kernels.cu
+#   -DMODE=cuda_contact  nvcc: the checks of nvcc_checks() below for test_inline_contact (its
+#                  own ctest case for the same reason as clang_contact); skipped without nvcc
 #   -DMODE=cuda_stub  clang++ -x cuda -nocudainc --cuda-device-only with cuda_stub.h: device PTX
 #   -DMODE=gpu_check  nvcc builds examples_cpp/gpu/gpu_check.cu (the GPU check) and runs it briefly
 # A missing compiler prints "SKIPPED: <name> (<reason>)" and stops; the test's
@@ -31,7 +37,9 @@ file(MAKE_DIRECTORY "${OUT}")
 #  2. dc_forces_arith (the 17 kernels without libm) compiled to an sm_90 cubin with -fmad=true
 #     (nvcc's default) and -fmad=false: its machine code must be the same bytes, i.e. nothing was
 #     fused and every + - * / sqrt is rounded as on the host (prec-div, prec-sqrt on by default).
-function(nvcc_checks)
+# nvcc_checks(CUBINS PROGRAMS...): each program's two nvcc builds and runs (item 1), and item 2
+# where CUBINS is ON.
+function(nvcc_checks cubins)
   get_filename_component(bindir "${NVCC}" DIRECTORY)
   set(nv ${NVCC} -std=c++17 -Werror all-warnings -Xcompiler -Wall,-Wextra,-Werror ${inc})
   set(link -L${bindir}/../lib -L${LIBDIR} -ldemcontact -lm -Xlinker -rpath,${LIBDIR})
@@ -39,13 +47,16 @@ function(nvcc_checks)
   # The FMA-host run at N/2: at N/4 its constant-shape steps fell below the coverage check's
   # tenth of the run-time ones (90041 against 910375, 144 shapes).
   math(EXPR half "${N} / 2")
-  foreach(t test_inline test_inline_contact)
+  foreach(t IN LISTS ARGN)
     run(${nv} -O2 -arch=sm_75 ${SRC}/c_tests/inline/${t}_nvcc.cu ${link} -o ${OUT}/${t}_nvcc)
     run(${OUT}/${t}_nvcc ${N})
     run(${nv} -arch=sm_75 -Xcompiler -O3,-march=native,-ffp-contract=off
         ${SRC}/c_tests/inline/${t}_nvcc.cu ${link} -o ${OUT}/${t}_nvcc_native)
     run(${OUT}/${t}_nvcc_native ${half})
   endforeach()
+  if(NOT cubins)
+    return()
+  endif()
   find_program(READELF readelf)
   if(NOT READELF)
     message(FATAL_ERROR "readelf (binutils) not found: cannot compare the cubins")
@@ -95,6 +106,12 @@ if(MODE STREQUAL "clang")
   run(${CLANG} -std=c99 -O3 -march=native -ffp-contract=fast -DDCI_TEST_ULPS=8 -Wall -Wextra
       -Werror ${inc} ${SRC}/c_tests/inline/test_inline.c ${link} -o ${OUT}/test_inline_clang_fast)
   run(${OUT}/test_inline_clang_fast ${N})
+elseif(MODE STREQUAL "clang_contact")
+  find_program(CLANG clang)
+  if(NOT CLANG)
+    skip(inline_clang_contact "clang not installed")
+  endif()
+  set(link -L${LIBDIR} -ldemcontact -lm -Wl,-rpath,${LIBDIR})
   run(${CLANG} -std=c99 -O3 -march=native -Wall -Wextra -Werror ${inc}
       ${SRC}/c_tests/inline/test_inline_contact.c ${link} -o ${OUT}/test_inline_contact_clang)
   run(${OUT}/test_inline_contact_clang ${N})
@@ -102,7 +119,7 @@ elseif(MODE STREQUAL "cuda")
   resolve_nvcc()
   find_program(CLANGXX clang++)
   if(NVCC)
-    nvcc_checks()
+    nvcc_checks(ON test_inline)
   elseif(CLANGXX)
     execute_process(COMMAND ${CLANGXX} -x cuda -std=c++17 --cuda-gpu-arch=sm_70 ${inc}
                     -c ${SRC}/c_tests/inline/cuda_kernels.cu -o ${OUT}/cuda_kernels.o
@@ -115,6 +132,12 @@ elseif(MODE STREQUAL "cuda")
   else()
     skip(inline_cuda "neither nvcc (scripts/setup_cuda.sh installs one) nor clang++ installed")
   endif()
+elseif(MODE STREQUAL "cuda_contact")
+  resolve_nvcc()
+  if(NOT NVCC)
+    skip(inline_cuda_contact "no nvcc (scripts/setup_cuda.sh installs one)")
+  endif()
+  nvcc_checks(OFF test_inline_contact)
 elseif(MODE STREQUAL "gpu_check")
   # examples_cpp/gpu/gpu_check.cu built by nvcc as scripts/gpu_check.sh builds it (sm_90,
   # -fmad=false), against the shared library. Without a GPU it must stop with its CUDA error

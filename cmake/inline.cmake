@@ -52,7 +52,7 @@ if(DEMCONTACT_CUDA_VENV)
   file(GLOB _dc_nvcc_hints "${DEMCONTACT_CUDA_VENV}/lib/python3*/site-packages/nvidia/cu*/bin")
 endif()
 find_program(DEMCONTACT_NVCC nvcc HINTS ${_dc_nvcc_hints} DOC "nvcc for ctest inline_cuda")
-foreach(mode clang cuda cuda_stub)
+foreach(mode clang clang_contact cuda cuda_contact cuda_stub)
   add_test(NAME inline_${mode}
     COMMAND "${CMAKE_COMMAND}" -DMODE=${mode} -DSRC=${CMAKE_SOURCE_DIR} -DLIBDIR=${DC_LIB_DIR}
             -DNVCC=${DEMCONTACT_NVCC}
@@ -60,6 +60,12 @@ foreach(mode clang cuda cuda_stub)
             -P "${CMAKE_SOURCE_DIR}/cmake/InlineCompilers.cmake")
   set_tests_properties(inline_${mode} PROPERTIES SKIP_REGULAR_EXPRESSION "SKIPPED: ")
 endforeach()
+# ctest starts the costliest tests first. A fresh clone has no timing history
+# (Testing/Temporary/CTestCostData.txt), so the long ones carry their seconds (a CI run at -j2 on
+# 2 loaded cores; the CUDA halves by their CPU seconds). docs/ci.md: scripts/ctest_replay.py.
+set_tests_properties(inline_clang_contact PROPERTIES COST 500)
+set_tests_properties(inline_cuda_contact PROPERTIES COST 260)
+set_tests_properties(inline_cuda PROPERTIES COST 35)
 
 # The GPU check (examples_cpp/gpu/gpu_check.cu, scripts/gpu_check.sh, docs/gpu.md). Here, without
 # a GPU: its CPU smoke (the same source as host C++, each device launch a loop on the CPU: the

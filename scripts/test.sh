@@ -74,8 +74,10 @@ step fuzz_selftest scripts/fuzz_selftest.sh
 step python scripts/test_python.sh
 # The step-aware calibration study (docs/timestep.md): its self-check on the Hertz subset.
 step step_exact_study bash -c '.venv-python/bin/python -m pip install -q scipy mpmath && .venv-python/bin/python scripts/step_exact_study.py --quick --check'
-# Clean parallel CMake builds in a row (a race between targets fails one of them).
-step parallel_builds env DC_PB_CARGO_DIR="$PWD/target" scripts/parallel_builds.sh 2
+# A clean parallel CMake build at -j4 (a race between targets fails it). With cmake_build above
+# (itself a clean -j2 build on a fresh clone) that makes two clean parallel builds per run; more
+# in a row: scripts/long_checks.sh.
+step parallel_builds env DC_PB_CARGO_DIR="$PWD/target" scripts/parallel_builds.sh 1
 step_table
 echo "== skipped steps =="
 if [ -s "$DC_SKIP_LOG" ]; then

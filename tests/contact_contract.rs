@@ -1161,7 +1161,10 @@ fn batches_report_overflow_with_nan_and_history_kept() {
             .iter()
             .flat_map(move |s| [(z, s, full), (z, s, normal_only), (z, s, rolling_only)])
     }) {
-        let good = soa(&many_states(nc));
+        // The states once (the per-contact reference below reads them; many_states(k)[i] is the
+        // same for every k > i, and rebuilding it per contact was quadratic, slow under Miri).
+        let states_nc = many_states(nc);
+        let good = soa(&states_nc);
         // A history that has something in it: two ordinary steps; the host's own values
         // past the model's record must survive too.
         let mut h0 = vec![0.0f64; nc * stride];
@@ -1173,7 +1176,7 @@ fn batches_report_overflow_with_nan_and_history_kept() {
         for _ in 0..2 {
             assert_eq!(call(&m, &good, &mut h0, stride, None).0, DC_OK);
         }
-        let mut a = soa(&many_states(nc));
+        let mut a = soa(&states_nc);
         for &i in &over {
             a.d[i] = 1e300;
             a.v1[3 * i] = 1e300;
@@ -1189,7 +1192,7 @@ fn batches_report_overflow_with_nan_and_history_kept() {
                     n: [a.n[3 * i], a.n[3 * i + 1], a.n[3 * i + 2]],
                     overlap: a.d[i],
                     v1: [a.v1[3 * i], a.v1[3 * i + 1], a.v1[3 * i + 2]],
-                    ..many_states(i + 1)[i]
+                    ..states_nc[i]
                 };
                 let mut hs = h0[i * stride..(i + 1) * stride].to_vec();
                 let mut r = sentinel_res();

@@ -16,5 +16,6 @@ foreach(code liggghts lammps yade)
   else()
     add_test(NAME builtin_${code} COMMAND sh -c "echo 'SKIPPED: ${code} (no python3 interpreter)'; exit 77")
   endif()
-  set_tests_properties(builtin_${code} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600 RUN_SERIAL TRUE)
+  # One process (YADE with -j 1): it runs beside other tests under ctest -j2.
+  set_tests_properties(builtin_${code} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600)
 endforeach()
