@@ -21,9 +21,10 @@
 //!   elastic = E_new.
 //! The constant rolling torque M has no spring: slip = −M·ω_r dt. The normal dashpot:
 //! (F_n − F_el) vn dt, F_el the normal law's force at vn = 0. A normal law with state
-//! ([`crate::force::stateful`], e.g. elastic–plastic) reports its own loss of the step as the
-//! normal term (the plastic work, exact from the state before and after); its potential in the
-//! balance is then the elastic energy of its unloading curve
+//! ([`crate::force::stateful`], e.g. elastic–plastic) reports its own loss of the step (the
+//! plastic work, exact from the state before and after) plus the same dashpot term, F_el its
+//! force at vn = 0 in the state after the step (0 for a law without a dashpot); its potential
+//! in the balance is then the elastic energy of its unloading curve
 //! ([`crate::force::elastic_plastic::stored_energy`]).
 //!
 //! Not counted, on purpose: the energy a law creates. `TANGENTIAL_MINDLIN` changes k_t under a
@@ -176,14 +177,24 @@ pub(crate) fn ledger(
         f
     };
     e.normal_damping = match m.layout.normal_state {
-        // A law with state: its own loss of the step (the plastic work), exact.
-        Some(at) => stateful::dissipated(
-            pair.kernel,
-            &pair.consts,
-            k.r_eff,
-            get1(old, at),
-            get1(new, at),
-        ),
+        // A law with state: its own loss of the step (exact, from the state before and after)
+        // plus the work of its dashpot, (F − F_el) vn dt with F_el its force at vn = 0 in the
+        // state after the step (0 for a law whose force does not read vn).
+        Some(at) => {
+            let (s_old, s_new) = (get1(old, at), get1(new, at));
+            let mut st = s_new;
+            let f_el = stateful::force(
+                pair.kernel,
+                &pair.consts,
+                k.d,
+                0.0,
+                k.r_eff,
+                k.m_eff,
+                &mut st,
+            );
+            stateful::dissipated(pair.kernel, &pair.consts, k.r_eff, s_old, s_new)
+                + (f - f_el) * k.vn * dt
+        }
         None => (f - fe) * k.vn * dt,
     };
     let frame = Kin::frame(s, get3(old, 0), dt, m.carry);
