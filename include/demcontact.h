@@ -106,6 +106,14 @@
 #define DC_MODEL_ELASTIC_PLASTIC 5
 
 /**
+ * dc_pair.model of a JKR pair (the normal law of a dc_contact_model built with DC_NORMAL_JKR). Its
+ * force needs per-contact state (whether the neck is formed), so it exists only inside a contact
+ * model: there is no dc_pair_* constructor, and every dc_pair path refuses its kernel
+ * (DC_ERR_PAIR_INVALID; NaN from the unchecked dc_normal_force).
+ */
+#define DC_MODEL_JKR 6
+
+/**
  * Normal law: Hertz from E, nu of both bodies, k = (4/3) E* sqrt(R*) per contact.
  */
 #define DC_NORMAL_HERTZ 1
@@ -141,6 +149,17 @@
  * constructor, no step-aware form (DC_ERR_STEP_UNSUPPORTED).
  */
 #define DC_NORMAL_ELASTIC_PLASTIC 6
+
+/**
+ * Normal law: adhesive JKR (Johnson, Kendall & Roberts 1971) with w = work_of_adhesion: the stable
+ * branch of d = a^2/R* - sqrt(2 pi w a/E*), F = 4 E* a^3/(3 R*) - sqrt(8 pi w E* a^3); the neck
+ * forms at d >= 0 and holds down to d_c = -(3/4)(pi^2 w^2 R* / E*^2)^(1/3) (force -(5/6) pi w R*),
+ * then breaks (loss W ~ 7.09 (w^5 R*^4/E*^2)^(1/3)); pull-off under load control -(3/2) pi w R*.
+ * One double of history (0 no neck, 1 formed). Optional Hertz dashpot with the JKR contact radius
+ * (e_n calibrated for w -> 0). Never clamped: requires DC_END_OVERLAP. Contact models only: no
+ * dc_pair constructor, no step-aware form (DC_ERR_STEP_UNSUPPORTED).
+ */
+#define DC_NORMAL_JKR 7
 
 /**
  * Normal damping: none (e_n = 1).

@@ -25,12 +25,14 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_MODEL_VISCOELASTIC = 3
   integer(c_int32_t), parameter :: DC_MODEL_DMT = 4
   integer(c_int32_t), parameter :: DC_MODEL_ELASTIC_PLASTIC = 5
+  integer(c_int32_t), parameter :: DC_MODEL_JKR = 6
   integer(c_int32_t), parameter :: DC_NORMAL_HERTZ = 1
   integer(c_int32_t), parameter :: DC_NORMAL_POWERLAW = 2
   integer(c_int32_t), parameter :: DC_NORMAL_LINEAR = 3
   integer(c_int32_t), parameter :: DC_NORMAL_VISCOELASTIC = 4
   integer(c_int32_t), parameter :: DC_NORMAL_DMT = 5
   integer(c_int32_t), parameter :: DC_NORMAL_ELASTIC_PLASTIC = 6
+  integer(c_int32_t), parameter :: DC_NORMAL_JKR = 7
   integer(c_int32_t), parameter :: DC_DAMPING_NONE = 0
   integer(c_int32_t), parameter :: DC_DAMPING_RESTITUTION = 1
   integer(c_int32_t), parameter :: DC_TANGENTIAL_NONE = 0

@@ -34,7 +34,7 @@ typedef struct dc_normal_law {
     dc_law_param params[DC_LAW_PARAMS_MAX];
 } dc_normal_law;
 
-#define DC_NORMAL_LAW_COUNT 6
+#define DC_NORMAL_LAW_COUNT 7
 
 /* Every normal law, in registry order. */
 static inline const dc_normal_law *dc_normal_laws(void) {
@@ -45,12 +45,13 @@ static inline const dc_normal_law *dc_normal_laws(void) {
         {"viscoelastic", DC_NORMAL_VISCOELASTIC, 1, 0, 1, 0, 1, {{"visco_A", "s", offsetof(dc_contact_spec, visco_A)}}},
         {"dmt", DC_NORMAL_DMT, 1, 1, 0, 0, 1, {{"work_of_adhesion", "J/m^2", offsetof(dc_contact_spec, work_of_adhesion)}}},
         {"elastic_plastic", DC_NORMAL_ELASTIC_PLASTIC, 1, 0, 1, 1, 1, {{"yield_pressure", "Pa", offsetof(dc_contact_spec, yield_pressure)}}},
+        {"jkr", DC_NORMAL_JKR, 1, 1, 0, 1, 1, {{"work_of_adhesion", "J/m^2", offsetof(dc_contact_spec, work_of_adhesion)}}},
     };
     return laws;
 }
 
 /* The keywords, for messages. */
-#define DC_NORMAL_LAW_KEYWORDS "hertz, powerlaw, linear, viscoelastic, dmt, elastic_plastic"
+#define DC_NORMAL_LAW_KEYWORDS "hertz, powerlaw, linear, viscoelastic, dmt, elastic_plastic, jkr"
 
 /* The law of keyword kw, or NULL. */
 static inline const dc_normal_law *dc_normal_law_find(const char *kw) {

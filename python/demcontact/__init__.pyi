@@ -138,6 +138,7 @@ class Normal(enum.IntEnum):
     VISCOELASTIC = 4
     DMT = 5
     ELASTIC_PLASTIC = 6
+    JKR = 7
 
 class Damping(enum.IntEnum):
     NONE = 0

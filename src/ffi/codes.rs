@@ -18,6 +18,11 @@ pub const DC_MODEL_DMT: i32 = 4;
 /// exists only inside a contact model: there is no dc_pair_* constructor, and every dc_pair path
 /// refuses its kernel (DC_ERR_PAIR_INVALID; NaN from the unchecked dc_normal_force).
 pub const DC_MODEL_ELASTIC_PLASTIC: i32 = 5;
+/// dc_pair.model of a JKR pair (the normal law of a dc_contact_model built with DC_NORMAL_JKR). Its
+/// force needs per-contact state (whether the neck is formed), so it exists only inside a contact
+/// model: there is no dc_pair_* constructor, and every dc_pair path refuses its kernel
+/// (DC_ERR_PAIR_INVALID; NaN from the unchecked dc_normal_force).
+pub const DC_MODEL_JKR: i32 = 6;
 /// Normal law: Hertz from E, nu of both bodies, k = (4/3) E* sqrt(R*) per contact.
 pub const DC_NORMAL_HERTZ: i32 = 1;
 /// Normal law: power law F = k_n d^p (fixed k_n, exponent p >= 1).
@@ -37,6 +42,14 @@ pub const DC_NORMAL_DMT: i32 = 5;
 /// loss is plastic, e(v) from dc_elastic_plastic_restitution). Contact models only: no dc_pair
 /// constructor, no step-aware form (DC_ERR_STEP_UNSUPPORTED).
 pub const DC_NORMAL_ELASTIC_PLASTIC: i32 = 6;
+/// Normal law: adhesive JKR (Johnson, Kendall & Roberts 1971) with w = work_of_adhesion: the stable
+/// branch of d = a^2/R* - sqrt(2 pi w a/E*), F = 4 E* a^3/(3 R*) - sqrt(8 pi w E* a^3); the neck
+/// forms at d >= 0 and holds down to d_c = -(3/4)(pi^2 w^2 R* / E*^2)^(1/3) (force -(5/6) pi w R*),
+/// then breaks (loss W ~ 7.09 (w^5 R*^4/E*^2)^(1/3)); pull-off under load control -(3/2) pi w R*.
+/// One double of history (0 no neck, 1 formed). Optional Hertz dashpot with the JKR contact radius
+/// (e_n calibrated for w -> 0). Never clamped: requires DC_END_OVERLAP. Contact models only: no
+/// dc_pair constructor, no step-aware form (DC_ERR_STEP_UNSUPPORTED).
+pub const DC_NORMAL_JKR: i32 = 7;
 /// Normal damping: none (e_n = 1).
 pub const DC_DAMPING_NONE: i32 = 0;
 /// Normal damping: alpha calibrated exactly from e_n for the criterion.

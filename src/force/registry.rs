@@ -37,6 +37,8 @@ pub mod dmt;
 pub mod elastic_plastic;
 #[path = "hertz.rs"]
 pub mod hertz;
+#[path = "jkr.rs"]
+pub mod jkr;
 #[path = "powerlaw.rs"]
 pub mod powerlaw;
 #[path = "viscoelastic.rs"]
@@ -44,7 +46,7 @@ pub mod viscoelastic;
 
 /// The law modules, re-exported by `force` (`force::dmt`, …).
 pub mod law_files {
-    pub use super::{dmt, elastic_plastic, hertz, powerlaw, viscoelastic};
+    pub use super::{dmt, elastic_plastic, hertz, jkr, powerlaw, viscoelastic};
 }
 
 macro_rules! normal_laws {
@@ -223,6 +225,7 @@ normal_laws! {
     DMT = 5, "dmt", dmt::Dmt, model 4
         kernels [DMT_ELASTIC: dmt::DmtElastic => 18; DMT_DAMPED: dmt::DmtDamped => 19;];
     ELASTIC_PLASTIC = 6, "elastic_plastic", elastic_plastic::ElasticPlastic, model 5 state 20;
+    JKR = 7, "jkr", jkr::Jkr, model 6 state 21;
 }
 
 /// Which per-contact inputs a kernel reads: (vn, r_eff, m_eff). `None` for an unknown code.
