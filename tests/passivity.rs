@@ -69,14 +69,19 @@ struct Case {
     deg: f64,
     /// Normal law: elastic–plastic (yield speed V/10) instead of Hertz.
     plastic: bool,
+    /// Normal law: JKR (sticking speed a quarter of the normal impact speed) instead of Hertz,
+    /// with this normal restitution target e_n (1: undamped).
+    jkr: Option<f64>,
 }
 
-/// (ΔKE/KE_in, (ΔKE + Σ dissipated)/KE_in, Σ dissipated/KE_in).
+/// (ΔKE/KE_in, (ΔKE + Σ dissipated)/KE_in, Σ dissipated/KE_in, and for JKR the bound of the
+/// work the force's two jumps may leave in a Verlet step, ((4/3) + (5/6)) π w R* V dt/KE_in).
 #[derive(Clone, Copy, Debug)]
 struct Outcome {
     gain: f64,
     residual: f64,
     dissipated: f64,
+    jump: f64,
 }
 
 fn e_star(c: &Case) -> f64 {
@@ -121,12 +126,28 @@ fn run_n(c: &Case, steps: f64) -> Outcome {
     let vy = 0.1 * V;
     let dy = (15.0 * m_eff * vy * vy / (16.0 * es * r_eff.sqrt())).powf(0.4);
     let p_y = 2.0 * es / std::f64::consts::PI * (dy / r_eff).sqrt();
+    // JKR: w such that the sticking speed is a quarter of the normal impact speed, from
+    // ½ m* v_s² = (2π)^{5/3} (6 + 4^{−1/3})/20 (w⁵ R*⁴/E*²)^{1/3}.
+    let vs = 0.25 * V * c.deg.to_radians().cos();
+    let cw = (2.0 * std::f64::consts::PI).powf(5.0 / 3.0) * (6.0 + 0.25f64.cbrt()) / 20.0;
+    let w = ((0.5 * m_eff * vs * vs / cw).powi(3) * es * es / r_eff.powi(4)).powf(0.2);
+    let jump = (4.0 / 3.0 + 5.0 / 6.0) * std::f64::consts::PI * w * r_eff * V * dt;
     let model = model(|s| {
         s.normal = if c.plastic {
             DC_NORMAL_ELASTIC_PLASTIC
+        } else if c.jkr.is_some() {
+            DC_NORMAL_JKR
         } else {
             DC_NORMAL_HERTZ
         };
+        if let Some(e_n) = c.jkr {
+            s.work_of_adhesion = w;
+            s.criterion = DC_END_OVERLAP;
+            if e_n < 1.0 {
+                s.damping = DC_DAMPING_RESTITUTION;
+                s.e_n = e_n;
+            }
+        }
         s.yield_pressure = p_y;
         s.E1 = c.mat.e;
         s.nu1 = c.mat.nu;
@@ -219,12 +240,15 @@ fn run_n(c: &Case, steps: f64) -> Outcome {
         }
         if st.overlap > 0.0 {
             touched = true;
-        } else if touched {
+        } else if touched && res.f_n == 0.0 {
+            // Out of contact (a JKR neck holds at δ ≤ 0, with an attractive force, until it
+            // breaks).
             let d = ke(&b1, &other) - ke_in;
             return Outcome {
                 gain: d / ke_in,
                 residual: (d + dissipated) / ke_in,
                 dissipated: dissipated / ke_in,
+                jump: if c.jkr.is_some() { jump / ke_in } else { 0.0 },
             };
         }
     }
@@ -265,6 +289,7 @@ fn no_contact_creates_energy_and_the_ledger_balances() {
                                     mu,
                                     deg: 5.0 * i as f64,
                                     plastic: false,
+                                    jkr: None,
                                 };
                                 let o = run(&c);
                                 if tangential == DC_TANGENTIAL_MINDLIN
@@ -332,6 +357,7 @@ fn ledger_residual_is_first_order_in_dt() {
             mu: 1e3,
             deg: 45.0,
             plastic: false,
+            jkr: None,
         };
         let (a, b) = (run_n(&c, 3000.0), run_n(&c, 6000.0));
         let ratio = a.residual / b.residual;
@@ -368,6 +394,7 @@ fn elastic_plastic_hysteresis_only_removes_energy_and_the_ledger_balances() {
                             mu,
                             deg: 15.0 * i as f64,
                             plastic: true,
+                            jkr: None,
                         };
                         let o = run(&c);
                         assert!(o.gain < 0.0, "{c:?}: {o:?}");
@@ -382,6 +409,57 @@ fn elastic_plastic_hysteresis_only_removes_energy_and_the_ledger_balances() {
     }
     println!(
         "elastic-plastic: ΔKE/KE_in from {:.3} to {:.3} lost; largest |ledger residual| {r_max:.2e}",
+        lost.0, lost.1
+    );
+}
+
+/// JKR (sticking speed a quarter of the normal impact speed) undamped and with e_n = 0.7, with
+/// every tangential law but the total-form Mindlin (which creates energy by design) × carry ×
+/// rolling × sticking/sliding × both scenes × both materials, 15°–75°: the breakage (and the
+/// dashpot) only remove energy, and the ledger, whose normal term is the law's breakage loss
+/// plus its dashpot's work, balances the kinetic energy lost to the scheme's bound plus the work
+/// the force's jumps (at formation and at breakage) may leave in one Verlet step.
+#[test]
+fn jkr_adhesion_only_removes_energy_and_the_ledger_balances() {
+    let (mut r_max, mut lost, mut j_max) = (0.0f64, (f64::INFINITY, 0.0f64), 0.0f64);
+    for e_n in [1.0, 0.7] {
+        for tangential in [DC_TANGENTIAL_LINEAR, DC_TANGENTIAL_MINDLIN_RESCALE] {
+            for mat in [AL2O3, AL_ALLOY] {
+                for scene in [Scene::Pair, Scene::Wall] {
+                    for carry in [DC_CARRY_ROTATE, DC_CARRY_PROJECT] {
+                        for rolling in [DC_ROLLING_NONE, DC_ROLLING_CONSTANT, DC_ROLLING_EPSD] {
+                            for mu in [1e3, 0.1] {
+                                for i in 1..=5 {
+                                    let c = Case {
+                                        mat,
+                                        scene,
+                                        tangential,
+                                        carry,
+                                        rolling,
+                                        mu,
+                                        deg: 15.0 * i as f64,
+                                        plastic: false,
+                                        jkr: Some(e_n),
+                                    };
+                                    let o = run(&c);
+                                    let bound = BOUND + o.jump;
+                                    assert!(o.gain < 0.0, "{c:?}: {o:?}");
+                                    assert!(o.dissipated > 0.0, "{c:?}: {o:?}");
+                                    assert!(o.residual.abs() <= bound, "{c:?}: ledger {o:?}");
+                                    r_max = r_max.max(o.residual.abs());
+                                    j_max = j_max.max(o.jump);
+                                    lost = (lost.0.min(-o.gain), lost.1.max(-o.gain));
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    println!(
+        "jkr: ΔKE/KE_in from {:.3} to {:.3} lost; largest |ledger residual| {r_max:.2e} \
+         (bound {BOUND:.0e} + jumps, largest jump term {j_max:.2e})",
         lost.0, lost.1
     );
 }
