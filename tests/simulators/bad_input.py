@@ -120,6 +120,12 @@ LAMMPS_CASES = [
      "missing value for yield_pressure", None),
     ("wall elastic_plastic p_y < 0", "", LAMMPS_GOOD, "hertz/material 5e6 1 0.3 elastic_plastic -1 zplane -0.01 NULL",
      "yield_pressure = -1", NOT_POSITIVE),
+    ("control: jkr (good input)", "", "hertz/material 5e6 0.5 0.3 jkr 0.01", None, None, None),
+    ("jkr w < 0", "", "hertz/material 5e6 0.5 0.3 jkr -0.1", None, "work_of_adhesion = -0.1", NOT_POSITIVE),
+    ("jkr w = 0", "", "hertz/material 5e6 1 0.3 jkr 0", None, "work_of_adhesion = 0", NOT_POSITIVE),
+    ("jkr no value", "", "hertz/material 5e6 0.5 0.3 jkr", None, "missing value for work_of_adhesion", None),
+    ("jkr limit_damping", "", "hertz/material 5e6 0.5 0.3 limit_damping jkr 0.01", None,
+     "normal law 'jkr' is never clamped", None),
 ]
 
 # bad values met during the run (pair_demcontact.cpp): an atom's velocity not finite (the pass
