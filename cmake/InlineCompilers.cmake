@@ -1,7 +1,7 @@
 # Builds and runs c_tests/inline/test_inline.c with a second compiler or compiles the CUDA check.
 #   -DMODE=clang   test_inline.c by clang -O3 -march=native (default contraction: bits), and with
 #                  -ffp-contract=fast (clang then ignores the header's pragma: within 8 ulp)
-#   -DMODE=clang_contact  test_inline_contact.c by clang -O3 -march=native (bits; its 192
+#   -DMODE=clang_contact  test_inline_contact.c by clang -O3 -march=native (bits; its 240
 #                  constant-shape instantiations make this the costliest compile of the suite,
 #                  so it is its own ctest case, started first, beside the others)
 #   -DMODE=cuda    nvcc (-DNVCC=<path>, else PATH): the checks of nvcc_checks() below for

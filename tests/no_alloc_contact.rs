@@ -36,10 +36,13 @@ fn contact_exports_do_not_allocate() {
     let n = count_allocations(|| {
         let mut spec: dc_contact_spec = unsafe { std::mem::zeroed() };
         let mut model: dc_contact_model = unsafe { std::mem::zeroed() };
-        for (t, law) in [0, 1, 2, 3]
-            .into_iter()
-            .flat_map(|t| [(t, DC_NORMAL_HERTZ), (t, DC_NORMAL_ELASTIC_PLASTIC)])
-        {
+        for (t, law) in [0, 1, 2, 3].into_iter().flat_map(|t| {
+            [
+                (t, DC_NORMAL_HERTZ),
+                (t, DC_NORMAL_ELASTIC_PLASTIC),
+                (t, DC_NORMAL_JKR),
+            ]
+        }) {
             for r in [0, 1, 2, 3] {
                 for tw in [0, 1, 2] {
                     for &x in &V {
@@ -47,6 +50,10 @@ fn contact_exports_do_not_allocate() {
                             black_box(dc_contact_spec_init(&mut spec));
                             spec.normal = law;
                             spec.yield_pressure = 1e9;
+                            spec.work_of_adhesion = 0.5;
+                            if law == DC_NORMAL_JKR {
+                                spec.criterion = DC_END_OVERLAP;
+                            }
                             spec.E1 = 7e10;
                             spec.nu1 = 0.3;
                             spec.E2 = x;

@@ -116,8 +116,8 @@ struct Choice {
 
 fn choice_valid() -> impl Strategy<Value = Choice> {
     (
-        // 1–4 as they are; 5 stands for the elastic–plastic law (a law with state).
-        1i32..6,
+        // 1–4 as they are; 5 stands for the elastic–plastic law, 6 for JKR (laws with state).
+        1i32..7,
         0i32..2,
         0i32..2,
         0i32..4,
@@ -127,17 +127,22 @@ fn choice_valid() -> impl Strategy<Value = Choice> {
     )
         .prop_map(
             |(normal, damping, criterion, tangential, rolling, twisting, carry)| Choice {
-                normal: if normal == 5 {
-                    DC_NORMAL_ELASTIC_PLASTIC
-                } else {
-                    normal
+                normal: match normal {
+                    5 => DC_NORMAL_ELASTIC_PLASTIC,
+                    6 => DC_NORMAL_JKR,
+                    n => n,
                 },
                 damping: if normal == DC_NORMAL_VISCOELASTIC || normal == 5 {
                     0
                 } else {
                     damping
                 },
-                criterion,
+                // JKR is never clamped.
+                criterion: if normal == 6 {
+                    DC_END_OVERLAP
+                } else {
+                    criterion
+                },
                 tangential,
                 rolling,
                 twisting,
@@ -164,6 +169,7 @@ fn model_valid(c: Choice, mu: f64, e: f64) -> dc_contact_model {
     s.e_n = e;
     s.visco_A = 1e-6;
     s.yield_pressure = 1e9;
+    s.work_of_adhesion = 0.5;
     s.mu = mu;
     s.k_t = 1e6;
     s.e_t = e;
@@ -339,8 +345,11 @@ proptest! {
         let mut first: Option<(usize, i32)> = None;
         let len = m.history_len as usize;
         // A normal-only model's batch neither reads nor checks w1, w2 (header): the scalar
-        // reference gets zeros there.
-        let normal_only = len == 0 && m.rolling == DC_ROLLING_NONE;
+        // reference gets zeros there. Normal-only by its selectors (a law with state has a
+        // history of one double and is still normal-only).
+        let normal_only = m.tangential == DC_TANGENTIAL_NONE
+            && m.rolling == DC_ROLLING_NONE
+            && m.twisting == DC_TWISTING_NONE;
         for (i, st) in sts.iter().enumerate() {
             let mut hs = h0[i * stride..(i + 1) * stride].to_vec();
             let mut r: dc_contact_result = unsafe { std::mem::zeroed() };

@@ -17,7 +17,7 @@
  *    the test also requires that sliding, sticking, rolling-limit and separation steps occurred;
  *  - the fast entry dc_contact_force_checked_inline (model checked once by
  *    dc_contact_model_check_inline) along the same trajectories and bad inputs: same bits;
- *  - the shaped entry dc_contact_force_shaped_inline along the same trajectories: 192 shapes (Hertz damped, clamped, general p clamped, elastic-plastic)
+ *  - the shaped entry dc_contact_force_shaped_inline along the same trajectories: 240 shapes (Hertz damped, clamped, general p clamped, elastic-plastic, JKR)
  *    with their codes as compile-time constants (as the plugins instantiate it), the others as
  *    run-time codes: same statuses and bits; dc_contact_model_shape_inline accepts a model's own
  *    shape only;
@@ -57,9 +57,11 @@ static void fail(const char *what, long i) {
 /* A random spec; `bad` corrupts one field. */
 static void random_spec(dc_contact_spec *s, int bad) {
     dc_contact_spec_init(s);
-    s->normal = 1 + pick(6);
+    s->normal = 1 + pick(7);
     s->damping = pick(2);
-    s->criterion = s->normal == DC_NORMAL_DMT || uni() < 0.3 ? DC_END_OVERLAP : DC_END_FORCE;
+    s->criterion = s->normal == DC_NORMAL_DMT || s->normal == DC_NORMAL_JKR || uni() < 0.3
+                       ? DC_END_OVERLAP
+                       : DC_END_FORCE;
     s->E1 = logu(6, 11);
     s->nu1 = -0.5 + uni();
     s->E2 = uni() < 0.2 ? (double)INFINITY : logu(6, 11);
@@ -97,7 +99,7 @@ static void random_spec(dc_contact_spec *s, int bad) {
                             1e-320, 1e308};
     const int which = pick(26);
     if (which < 20) *f[which] = vals[pick(8)];
-    else if (which == 20) s->normal = pick(2) ? 0 : 7;
+    else if (which == 20) s->normal = pick(2) ? 0 : 8;
     else if (which == 21) s->tangential = 4;
     else if (which == 22) s->rolling = -1;
     else if (which == 23) s->twisting = 2;
@@ -114,13 +116,14 @@ static int same_result(const dc_contact_result *a, const dc_contact_result *b) {
  * Hertz damped, Hertz damped clamped and general p clamped, every tangential, rolling, twisting
  * and carry code. Other kernels: the shape passed as run-time values. Counts constant calls. */
 static long n_shaped_const = 0, n_shaped_runtime = 0;
-/* steps per constant shape: index kernel (0-3) * 48 + tangential * 12 + rolling * 4 +
+/* steps per constant shape: index kernel (0-4) * 48 + tangential * 12 + rolling * 4 +
  * twisting * 2 + carry (the model's own codes, all in range for a valid model) */
-static long shape_hits[192];
+static long shape_hits[240];
 static int shape_index(const dc_contact_model *m) {
     const int k = m->normal.kernel == DC_KERNEL_HERTZ_DAMPED           ? 0
                   : m->normal.kernel == DC_KERNEL_HERTZ_DAMPED_CLAMPED ? 1
                   : m->normal.kernel == DC_KERNEL_ELASTIC_PLASTIC      ? 3
+                  : m->normal.kernel == DC_KERNEL_JKR                  ? 4
                                                                        : 2;
     return k * 48 + m->tangential * 12 + m->rolling * 4 + m->twisting * 2 + m->carry;
 }
@@ -158,6 +161,7 @@ static int32_t shaped(const dc_contact_model *m, const dc_contact_state *s, doub
     case DC_KERNEL_HERTZ_DAMPED_CLAMPED: SH_T(DC_KERNEL_HERTZ_DAMPED_CLAMPED)
     case DC_KERNEL_GEN_DAMPED_CLAMPED: SH_T(DC_KERNEL_GEN_DAMPED_CLAMPED)
     case DC_KERNEL_ELASTIC_PLASTIC: SH_T(DC_KERNEL_ELASTIC_PLASTIC)
+    case DC_KERNEL_JKR: SH_T(DC_KERNEL_JKR)
     default:
         n_shaped_runtime++;
         return SH_CALL(m->normal.kernel, m->tangential, m->rolling, m->twisting, m->carry);
@@ -286,6 +290,8 @@ static int deferred_step(const dc_contact_model *m, const dc_contact_state *s, d
 static long n_step_steps = 0, n_step_onsets = 0, n_step_ends = 0;
 /* elastic-plastic steps in contact, and those on the unloading/reloading curve after yield */
 static long n_ep_steps = 0, n_ep_unload = 0;
+/* JKR steps with the neck formed at overlap <= 0, and steps on which the neck broke */
+static long n_jkr_neck = 0, n_jkr_break = 0;
 
 static void trajectory(const dc_contact_model *m, long steps, long *seen) {
     double hl[DC_CONTACT_HISTORY_MAX] = {0}, hi[DC_CONTACT_HISTORY_MAX] = {0};
@@ -389,6 +395,11 @@ static void trajectory(const dc_contact_model *m, long steps, long *seen) {
             const double r = s.r2 == (double)INFINITY ? s.r1 : s.r1 * s.r2 / (s.r1 + s.r2);
             n_ep_steps++;
             n_ep_unload += hl[at] > m->normal.h * r && s.overlap < hl[at] && rl.f_n > 0.0;
+        }
+        if (m->normal.kernel == DC_KERNEL_JKR && sl == DC_OK) {
+            const int at = (int)m->history_len - 1; /* the state slot is last */
+            n_jkr_neck += !(s.overlap > 0.0) && hl[at] > 0.0;
+            n_jkr_break += h0[at] > 0.0 && !(hl[at] > 0.0);
         }
         if (sl == DC_OK) {
             seen[0]++;
@@ -839,9 +850,11 @@ int main(int argc, char **argv) {
            "%ld end corrections)\n", LANG, stepped, n_step_steps, n_step_onsets, n_step_ends);
     printf("test_inline_contact[%s]: elastic-plastic: %ld steps in contact, %ld on the "
            "unloading/reloading curve after yield\n", LANG, n_ep_steps, n_ep_unload);
+    printf("test_inline_contact[%s]: JKR: %ld steps with the neck at overlap <= 0, %ld breakages\n",
+           LANG, n_jkr_neck, n_jkr_break);
     int shapes_hit = 0;
-    for (int i = 0; i < 192; i++) shapes_hit += shape_hits[i] > 0;
-    printf("test_inline_contact[%s]: shaped entry: %ld steps with a constant shape (%d of the 192 "
+    for (int i = 0; i < 240; i++) shapes_hit += shape_hits[i] > 0;
+    printf("test_inline_contact[%s]: shaped entry: %ld steps with a constant shape (%d of the 240 "
            "shapes), %ld with a run-time one\n", LANG, n_shaped_const, shapes_hit, n_shaped_runtime);
     printf("test_inline_contact[%s]: deferred entries: %ld steps (%ld with an error status), the "
            "history not finite %ld, results out of range %ld; %ld steps not bit-identical (only "
@@ -855,6 +868,7 @@ int main(int argc, char **argv) {
     if (!(seen[1] > 1000 && seen[2] > 1000 && seen[3] > 1000 && seen[4] > 1000 && seen[6] > 1000 &&
           seen[7] > 1000 && specs_bad > 1000 && projected * 4 > models &&
           n_step_steps > 1000 && n_step_onsets > 10 && n_step_ends > 10 && n_ep_unload > 1000 &&
+          n_jkr_neck > 1000 && n_jkr_break > 100 &&
           n_shaped_const * 10 > n_shaped_runtime && n_shaped_runtime > 1000 &&
           n_deferred * 2 > seen[0] && n_deferred_bad[0] > 0 && n_deferred_bad[1] > 0 &&
           /* every constant shape in the long runs (10^7 steps; shorter runs reach fewer) */
