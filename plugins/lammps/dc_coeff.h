@@ -20,7 +20,9 @@
  *                                      generated table demcontact_laws.h (docs/laws.md): e.g.
  *                                      dmt w (work_of_adhesion), elastic_plastic p_y
  *                                      (yield_pressure), linear k_n, powerlaw p k_n,
- *                                      viscoelastic A. Materials from E and nu; a law that takes no
+ *                                      viscoelastic A (dmt and jkr, which act at negative overlap,
+ *                                      are refused: this plugin computes overlapping pairs only).
+ *                                      Materials from E and nu; a law that takes no
  *                                      restitution target (elastic_plastic, viscoelastic) needs
  *                                      e = 1 (DC_DAMPING_NONE). Always demcontact's full contact.
  *   limit_damping                      clamp attractive normal force (also a pair_style keyword);
@@ -326,6 +328,15 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
             if (law->nparams == 1) reject(law->params[0].field, c.normal_param[0], s);
             error->all(FLERR, "{}: normal law '{}' rejected by demcontact: {}", what, law->keyword, dc_status_str(s));
         }
+        // An adhesive law (one that is never clamped: a clamp would delete its attraction) acts at
+        // negative overlap: DMT's tail, JKR's neck down to its breakage overlap. The pair loop and
+        // the wall fixes evaluate a contact only while the bodies overlap, so such a law would lose
+        // its attraction there (undamped JKR: no breakage loss, e = 1): refused, not approximated.
+        if (!law->clamp)
+            error->all(FLERR,
+                       "{}: normal law '{}' acts at negative overlap, which this plugin does not evaluate "
+                       "(it computes overlapping pairs only): not supported in LAMMPS",
+                       what, law->keyword);
     }
     if (c.step_exact && c.p != 1.5) error->all(FLERR, "{}: step_exact needs the Hertz exponent 1.5 (got {})", what, c.p);
     if (c.full()) {
