@@ -153,7 +153,7 @@ fn cli_fits_p_y() {
 /// speeds over 3–300 v_y, where e ≤ 0.86 keeps the noisy data below 1): σ given (normal quantile) and σ from the scatter (Student t, 19
 /// degrees of freedom). 2000 replicates: binomial SD 9.7 counts, so the band 1900 ± 45 (±4.6 SD;
 /// the data are seeded, the counts fixed) rejects ±1 SE (68 %) and an interval 30 % too narrow
-/// (≈ 86 %, 1720).
+/// (≈ 83 %, about 1660).
 #[test]
 fn yield_speed_interval_coverage() {
     const REPS: usize = 2000;

@@ -76,7 +76,7 @@ fn chi2(d: &Data, v_y: f64) -> f64 {
 }
 
 /// Fits v_y; see the module documentation. Errors as [`super::fit_restitution`]'s input checks,
-/// and [`Error::FitDegenerate`] when every eᵢ is 1.
+/// and [`Error::FitDegenerate`] when every eᵢ is 1 or the data do not fix v_y (infinite SE).
 pub fn fit_yield_speed(d: &Data) -> Result<ElasticPlasticFit, Error> {
     d.validate()?;
     let n = d.n();
@@ -127,8 +127,9 @@ pub fn fit_yield_speed(d: &Data) -> Result<ElasticPlasticFit, Error> {
         return Err(Error::NoConvergence);
     }
     let se = ln_v_y_se(d, u, chi2);
-    if se.is_nan() {
-        return Err(Error::NoConvergence);
+    // ΣJ² = 0 (every point where g is flat at the fit) leaves v_y undetermined: SE +∞.
+    if !se.is_finite() {
+        return Err(Error::FitDegenerate);
     }
     let se_from_scatter = d.sigma.is_none();
     let q = quantile95(n, se_from_scatter);

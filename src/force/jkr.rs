@@ -25,7 +25,7 @@
 //! so the branch creates and loses nothing ([`stored_energy`]). Formation at δ = 0 costs no
 //! energy (the force jumps, U does not). Breakage drops the neck's potential at δ_c,
 //!   W = U(u_c) = F₀ δ₀ (6 + u_c)/20 = (2π)^{5/3} (6 + 4^{−1/3})/20 (w⁵ R*⁴/E*²)^{1/3}
-//!     ≈ 7.0930 (w⁵ R*⁴/E*²)^{1/3},
+//!     ≈ 7.0922 (w⁵ R*⁴/E*²)^{1/3},
 //! the whole loss of an undamped impact ([`dissipated`]): e = √(1 − v_s²/v²) above the sticking
 //! speed v_s = √(2W/m*), sticking (no separation) below ([`restitution`], [`sticking_speed`]).
 //!
