@@ -97,7 +97,7 @@ def test_every_c_spec_field_is_a_keyword_and_attribute():
 
 
 def test_enums_match_header_constants():
-    assert [int(x) for x in dc.Normal] == [1, 2, 3, 4, 5, 6]
+    assert [int(x) for x in dc.Normal] == [1, 2, 3, 4, 5, 6, 7]
     assert [int(x) for x in dc.Damping] == [0, 1]
     assert [int(x) for x in dc.Tangential] == [0, 1, 2, 3]
     assert [int(x) for x in dc.Rolling] == [0, 1, 2]
