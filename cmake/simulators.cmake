@@ -8,6 +8,10 @@ if(DEMCONTACT_BUILD_TESTS)
   add_executable(dc_oblique_ref tests/simulators/oblique_ref.c)
   target_link_libraries(dc_oblique_ref PRIVATE demcontact::demcontact m)
   set_target_properties(dc_oblique_ref PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/simulators")
+  # The library's own adhesive (JKR, DMT) head-on impacts, the reference of tests/simulators/adhesion.py.
+  add_executable(dc_adhesion_ref tests/simulators/adhesion_ref.c)
+  target_link_libraries(dc_adhesion_ref PRIVATE demcontact::demcontact m)
+  set_target_properties(dc_adhesion_ref PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/simulators")
   # The harness as a package: no sys.path edits, no import cycles, every module imports cleanly,
   # both simulators implement its interface (no simulator needed).
   find_package(Python3 COMPONENTS Interpreter QUIET)

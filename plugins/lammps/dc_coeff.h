@@ -20,8 +20,8 @@
  *                                      generated table demcontact_laws.h (docs/laws.md): e.g.
  *                                      dmt w (work_of_adhesion), elastic_plastic p_y
  *                                      (yield_pressure), linear k_n, powerlaw p k_n,
- *                                      viscoelastic A (dmt and jkr, which act at negative overlap,
- *                                      are refused: this plugin computes overlapping pairs only).
+ *                                      viscoelastic A, jkr w (work_of_adhesion). The adhesive laws
+ *                                      (dmt, jkr) act beyond touching: see law_reach() below.
  *                                      Materials from E and nu; a law that takes no
  *                                      restitution target (elastic_plastic, viscoelastic) needs
  *                                      e = 1 (DC_DAMPING_NONE). Always demcontact's full contact.
@@ -328,15 +328,6 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
             if (law->nparams == 1) reject(law->params[0].field, c.normal_param[0], s);
             error->all(FLERR, "{}: normal law '{}' rejected by demcontact: {}", what, law->keyword, dc_status_str(s));
         }
-        // An adhesive law (one that is never clamped: a clamp would delete its attraction) acts at
-        // negative overlap: DMT's tail, JKR's neck down to its breakage overlap. The pair loop and
-        // the wall fixes evaluate a contact only while the bodies overlap, so such a law would lose
-        // its attraction there (undamped JKR: no breakage loss, e = 1): refused, not approximated.
-        if (!law->clamp)
-            error->all(FLERR,
-                       "{}: normal law '{}' acts at negative overlap, which this plugin does not evaluate "
-                       "(it computes overlapping pairs only): not supported in LAMMPS",
-                       what, law->keyword);
     }
     if (c.step_exact && c.p != 1.5) error->all(FLERR, "{}: step_exact needs the Hertz exponent 1.5 (got {})", what, c.p);
     if (c.full()) {
@@ -388,8 +379,12 @@ inline void parse_coeff(LAMMPS *lmp, Error *error, const std::string &what, int 
 
 /* The model of one type pair: the normal law alone (dc_pair, no history) or demcontact's full
    contact (dc_contact_model, history of nh doubles per contact). */
+enum Adhesion { ADH_NONE = 0, ADH_DMT = 1, ADH_JKR = 2 };
+
 struct Model {
     bool full = false;
+    int adhesive = ADH_NONE; // a law that acts at negative overlap (DMT's tail, JKR's neck)
+    int state_at = -1;       // JKR: the history index of its state (0 no neck, 1 formed)
     bool step_exact = false; // step-aware (dc_contact_model_set_step): set_dt at every dt change
     int nh = 0;
     dc_pair pair{};
@@ -399,6 +394,27 @@ struct Model {
     demcontact_shaped::Eval eval = &demcontact_shaped::eval_fn<demcontact_shaped::Generic>;
 };
 
+/* How far beyond touching (a separation, > 0) the normal law of m between materials a and b acts
+   for the effective radius reff (a wall: the particle's radius); 0 for a law that acts only while
+   the bodies overlap. The laws' own lengths (docs/force.md; src/force/dmt.rs, jkr.rs), with E*
+   from dc_effective_modulus and w the contact's work of adhesion:
+     dmt: its tail ends at d_c = (3 pi w sqrt(R*) / (2 E*))^(2/3);
+     jkr: its neck breaks at delta_c = -(3/4) (pi^2 w^2 R* / E*^2)^(1/3), the reach |delta_c|.
+   Both grow with R* (as R*^(1/3)), so the reach at the largest radii of a type pair bounds every
+   pair of those types. Given 1e-6 larger: a bound, used to keep pairs in the neighbour list and
+   to pick the pairs and wall contacts evaluated beyond touching (demcontact itself decides the
+   force there, 0 beyond the law's range). NaN: a material demcontact refuses. */
+inline double law_reach(const Coeff &a, const Coeff &b, const Coeff &m, double reff)
+{
+    if (m.damping == DAMP_VISCOELASTIC || (m.normal != DC_NORMAL_DMT && m.normal != DC_NORMAL_JKR)) return 0.0;
+    double es = 0.0;
+    if (dc_effective_modulus(a.E, a.nu, b.E, b.nu, &es) != DC_OK || !(reff >= 0.0)) return NAN;
+    const double w = m.normal_param[0];
+    const double r = m.normal == DC_NORMAL_DMT ? std::pow(3.0 * M_PI * w * std::sqrt(reff) / (2.0 * es), 2.0 / 3.0)
+                                               : 0.75 * std::cbrt(M_PI * M_PI * w * w * reff / (es * es));
+    return r * (1.0 + 1e-6);
+}
+
 /* Build the model of a contact between materials a (body 1) and b (body 2), per-pair values from m;
    dt: the run's time step, for step_exact (dc_contact_model_set_step, which also sets the history
    length: one more double). */
@@ -407,6 +423,11 @@ inline int32_t make_model(const Coeff &a, const Coeff &b, const Coeff &m, Model 
     const bool clamp = a.clamp || b.clamp;
     out.full = m.full();
     out.step_exact = m.step_exact;
+    out.adhesive = m.damping == DAMP_VISCOELASTIC ? ADH_NONE
+                   : m.normal == DC_NORMAL_DMT    ? ADH_DMT
+                   : m.normal == DC_NORMAL_JKR    ? ADH_JKR
+                                                  : ADH_NONE;
+    out.state_at = -1;
     if (out.full) {
         dc_contact_spec sp = full_spec(a, b, m);
         int32_t s = dc_contact_model_init(&sp, &out.cm);
@@ -422,6 +443,9 @@ inline int32_t make_model(const Coeff &a, const Coeff &b, const Coeff &m, Model 
         out.nh = static_cast<int>(len);
         out.pair = out.cm.normal;
         if (s != DC_OK) return s;
+        // a law with state keeps it after the springs, last (JKR has no step-aware double:
+        // dc_contact_model_set_step refuses it): docs/force.md, "Normal laws with state"
+        if (out.adhesive == ADH_JKR) out.state_at = out.nh - 1;
         // checked once here: contact_eval then takes the header's fast entry (no per-call model checks)
         s = dc_contact_model_check_inline(&out.cm);
         out.eval = demcontact_shaped::eval_for(out.cm);

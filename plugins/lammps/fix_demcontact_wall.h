@@ -90,8 +90,11 @@ public:
                     n[dim] = -1.0;
                 }
                 const double overlap = radius[i] - gap;
-                if (!(overlap > 0.0)) {
+                if (!(overlap > 0.0) &&
+                    !held(overlap, nh > 0 && key[i][face] == face ? hist[i] + face * nh : nullptr)) {
                     if (nh > 0 && advance) key[i][face] = -1;
+                    // DMT's tail: its attraction up to d_c beyond touching
+                    if (model.adhesive == ADH_DMT && overlap > -reach(radius[i])) apply_tail(i, n, overlap, still);
                     continue;
                 }
                 double *h = nullptr;

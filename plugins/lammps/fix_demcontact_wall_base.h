@@ -143,7 +143,7 @@ protected:
     void setup_model(int narg, char **arg, int slots)
     {
         const std::string what = fmt::format("fix {} {}", id, style);
-        Coeff c;
+        Coeff &c = coeff;
         parse_coeff(lmp, error, what, narg, arg, false, c);
         const int32_t s = make_model(c, c, c, model, update->dt);
         if (s != DC_OK)
@@ -177,7 +177,7 @@ protected:
     }
 
     /* The contact of owned atom i with the wall: normal n (unit, from the wall to the atom), overlap
-       > 0, vwall the velocity of the wall's surface at the contact point, h the contact's nh doubles
+       (> 0, or <= 0 where an adhesive law acts), vwall the velocity of the wall's surface at the contact point, h the contact's nh doubles
        of history (nullptr when nh = 0). Adds the force and torque to the atom. */
     void apply(int i, const double n[3], double overlap, const double vwall[3], double *h)
     {
@@ -203,6 +203,27 @@ protected:
         }
     }
 
+    /* How far beyond touching the wall's law acts on a particle of radius r (law_reach, R* = r);
+       0 for a law that acts only while overlapping. */
+    double reach(double r) const { return model.adhesive == ADH_NONE ? 0.0 : law_reach(coeff, coeff, coeff, r); }
+
+    /* A contact with overlap <= 0 (or NaN), history slot h of the last step or nullptr (none, or
+       not current): whether the law still acts on it through that history (JKR: at overlap 0 the
+       neck forms; below, while h says it is formed). */
+    bool held(double overlap, const double *h) const
+    {
+        if (model.adhesive != ADH_JKR) return false;
+        return overlap >= 0.0 || (h != nullptr && h[model.state_at] != 0.0);
+    }
+
+    /* DMT's tail: the attraction at overlap in (-reach, 0], on zeroed history (the library resets
+       a separated contact's history; the law has no state). */
+    void apply_tail(int i, const double n[3], double overlap, const double vwall[3])
+    {
+        double zero[64] = {0.0};
+        apply(i, n, overlap, vwall, nh > 0 ? zero : nullptr);
+    }
+
     void clear(int i)
     {
         for (int s = 0; s < nslot; s++) key[i][s] = -1;
@@ -210,6 +231,7 @@ protected:
     }
 
     Model model;
+    Coeff coeff; // the wall's contact arguments (law_reach)
     int nh = 0, nslot = 0;
     double **hist = nullptr; // [nmax][nslot * nh]
     int **key = nullptr;     // [nmax][nslot]: the wall face of each slot, -1 = free

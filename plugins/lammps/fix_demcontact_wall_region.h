@@ -94,7 +94,10 @@ public:
         for (int i = 0; i < nlocal; i++) {
             if (!(mask[i] & groupbit)) continue;
             int nc = 0;
-            if (region->match(x[i][0], x[i][1], x[i][2])) nc = region->surface(x[i][0], x[i][1], x[i][2], radius[i]);
+            // the faces within the radius, plus an adhesive law's reach (as fix wall/gran/region
+            // asks the region for its JKR pull-off distance)
+            const double cut = radius[i] + reach(radius[i]);
+            if (region->match(x[i][0], x[i][1], x[i][2])) nc = region->surface(x[i][0], x[i][1], x[i][2], cut);
             if (nc > region->tmax)
                 error->one(FLERR, "fix {} demcontact/wall/region: atom {} touches {} faces of region {} (at most {})",
                            id, atom->tag[i], nc, idregion, region->tmax);
@@ -102,8 +105,19 @@ public:
             for (int ic = 0; ic < nc; ic++) {
                 const Region::Contact &c = region->contact[ic];
                 const double overlap = radius[i] - c.r;
-                if (!(overlap > 0.0) || !(c.r > 0.0)) continue;
+                if (!(c.r > 0.0)) continue;
                 const double n[3] = {c.delx / c.r, c.dely / c.r, c.delz / c.r};
+                if (!(overlap > 0.0)) {
+                    const int s = nh > 0 ? slot_of(i, c.iwall) : -1;
+                    if (!held(overlap, s >= 0 ? hist[i] + s * nh : nullptr)) {
+                        if (s >= 0 && advance) key[i][s] = -1; // the contact ended
+                        if (model.adhesive == ADH_DMT && overlap > -reach(radius[i])) {
+                            if (moving) region->velocity_contact(vwall, x[i], ic);
+                            apply_tail(i, n, overlap, vwall); // DMT's tail
+                        }
+                        continue;
+                    }
+                }
                 if (moving) region->velocity_contact(vwall, x[i], ic);
                 double *h = nullptr;
                 if (nh > 0) {
@@ -177,7 +191,9 @@ private:
             bool on = false;
             for (int ic = 0; ic < nc && !on; ic++) {
                 const Region::Contact &c = region->contact[ic];
-                on = c.iwall == key[i][s] && c.r > 0.0 && c.r < atom->radius[i];
+                // touching, or (JKR) at reach while the slot's neck is formed
+                on = c.iwall == key[i][s] && c.r > 0.0 &&
+                     (c.r < atom->radius[i] || held(atom->radius[i] - c.r, hist[i] + s * nh));
             }
             if (!on) key[i][s] = -1;
         }

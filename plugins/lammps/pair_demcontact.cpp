@@ -72,6 +72,7 @@ PairDemcontact::~PairDemcontact()
         delete[] coeffs;
         delete[] models;
         delete[] onerad;
+        delete[] reach;
     }
     if (history && modify->get_fix_by_id("DEMCONTACT_HISTORY")) modify->delete_fix("DEMCONTACT_HISTORY");
 }
@@ -120,9 +121,13 @@ void PairDemcontact::init_style()
     // newton on (LAMMPS' default): each contact once, the ghost's force and torque summed into its
     // owner by LAMMPS' reverse communication; newton off: by both owners (see the top of this file)
     newton = force->newton_pair != 0;
-    neighbor->add_request(this, NeighConst::REQ_SIZE | (newton ? NeighConst::REQ_NEWTON_ON : NeighConst::REQ_NEWTON_OFF));
-
     build_models();
+    // Adhesive laws act beyond touching, so a size list (pairs within radius_i + radius_j + skin)
+    // would miss them: the list by type cutoffs instead (init_one: the largest radii plus the
+    // law's reach), which keeps every pair that can come within the reach before the next rebuild.
+    neighbor->add_request(this, (adhesive ? 0 : NeighConst::REQ_SIZE) |
+                                    (newton ? NeighConst::REQ_NEWTON_ON : NeighConst::REQ_NEWTON_OFF));
+
     if (nh > 32) error->all(FLERR, "pair demcontact: history of {} doubles exceeds 32", nh);
     mapped_ncalls = -1; // the slot cache is rebuilt at the first force evaluation
     // history storage (created once, kept between runs while its size fits)
@@ -167,6 +172,7 @@ void PairDemcontact::build_models()
 {
     const int N = n1(), n = atom->ntypes;
     nh = 0;
+    adhesive = false;
     for (int i = 1; i <= n; i++)
         for (int j = i; j <= n; j++) {
             Coeff &m = coeffs[i * N + j];
@@ -206,6 +212,7 @@ void PairDemcontact::build_models()
                                m.step_exact ? fmt::format(", step_exact at timestep {}", update->dt) : "",
                                dc_status_str(s));
                 nh = std::max(nh, models[s1 * N + s2].nh);
+                adhesive = adhesive || models[s1 * N + s2].adhesive != ADH_NONE;
             }
         }
     // the loop compiled for the models' common shape (every type pair, both orders), if all
@@ -229,7 +236,25 @@ void PairDemcontact::build_models()
     }
 }
 
-double PairDemcontact::init_one(int i, int j) { return onerad[i] + onerad[j]; }
+/* The cutoff of types i, j: their largest radii, plus (adhesive laws) how far beyond touching
+   their law acts at those radii (law_reach, the model's materials and work of adhesion), which
+   the force loop also reads. */
+double PairDemcontact::init_one(int i, int j)
+{
+    const int N = n1();
+    double r = 0.0;
+    if (models[i * N + j].adhesive != ADH_NONE) {
+        const Coeff &m = coeffs[std::min(i, j) * N + std::max(i, j)];
+        const bool mixed = !setflag[std::min(i, j)][std::max(i, j)];
+        const Coeff &a = mixed ? coeffs[i * N + i] : m, &b = mixed ? coeffs[j * N + j] : m;
+        const double ri = onerad[i], rj = onerad[j];
+        r = law_reach(a, b, m, ri > 0.0 && rj > 0.0 ? ri * rj / (ri + rj) : 0.0);
+        if (!std::isfinite(r))
+            error->all(FLERR, "pair_style demcontact: types {} {}: the adhesive law's reach is {}", i, j, r);
+    }
+    reach[i * N + j] = reach[j * N + i] = r;
+    return onerad[i] + onerad[j] + r;
+}
 
 /* LAMMPS changed update->dt during a run (fix dt/reset; `timestep` after a run): the step_exact
    models follow it (the next run's init_style rebuilds them anyway). */
@@ -381,7 +406,13 @@ void PairDemcontact::compute_loop()
             const double dxi = x[i][0] - x[j][0], dyi = x[i][1] - x[j][1], dzi = x[i][2] - x[j][2];
             const double rsq = dxi * dxi + dyi * dyi + dzi * dzi;
             const double radsum = radius[i] + radius[j];
-            if (rsq >= radsum * radsum) continue;
+            // not touching: only an adhesive law may act (its type pair's reach > 0)
+            double beyond = 0.0;
+            if (rsq >= radsum * radsum) {
+                if (!adhesive) continue;
+                beyond = reach[type[i] * N + type[j]];
+                if (!(beyond > 0.0)) continue;
+            }
             // body 1 = smaller atom ID, so both owners of a cross-boundary contact agree bitwise
             // (x[b] - x[a] is exactly -(x[a] - x[b]), and rsq, radsum are symmetric)
             const bool iFirst = tag[i] < tag[j];
@@ -405,7 +436,30 @@ void PairDemcontact::compute_loop()
             s.m2 = rmass[b];
             double *h = nullptr;
             int sj = -1;
-            if (H) {
+            const Model &mdl = models[type[a] * N + type[b]];
+            bool tail = false; // an adhesive law's force beyond touching, on zeroed scratch history
+            if (beyond > 0.0 && !(s.overlap > 0.0)) {
+                if (mdl.adhesive == ADH_DMT) {
+                    // DMT's tail (up to its d_c; demcontact gives 0 beyond): stateless, and the
+                    // library resets the history of a separated contact anyway, so no slot is made
+                    if (!(s.overlap > -beyond)) continue;
+                    tail = true;
+                } else if (mdl.adhesive == ADH_JKR && !(s.overlap >= 0.0)) {
+                    // JKR at negative overlap: only while the neck is formed (its state in the
+                    // contact's current history; no slot or a stale one: no neck, no force). Both
+                    // copies of a contact agree (fix_demcontact_history.h), i's is the one read.
+                    const int si = H ? cache[2 * jj] : -1;
+                    if (si < 0) continue;
+                    const bigint st = H->stamp(i, si);
+                    const bool cur = st == tick || (advance && st == tick - 1);
+                    if (!cur || H->history(i, si)[mdl.state_at] == 0.0) continue;
+                }
+            }
+            if (tail) {
+                if (H)
+                    for (int k = 0; k < H->nh; k++) scratch[k] = 0.0;
+                h = H ? scratch : nullptr;
+            } else if (H) {
                 const int nhh = H->nh;
                 int si = cache[2 * jj];
                 sj = cache[2 * jj + 1];
@@ -443,7 +497,6 @@ void PairDemcontact::compute_loop()
                 }
             }
             dc_contact_result out;
-            const Model &mdl = models[type[a] * N + type[b]];
             const int32_t st = deferred ? S::eval_deferred(&mdl.cm, &s, dt, h, &out, &checks)
                                         : eval_as<S>(mdl, s, dt, h, out);
             if (st != DC_OK)
@@ -494,6 +547,7 @@ void PairDemcontact::allocate()
     coeffs = new Coeff[(n + 1) * (n + 1)];
     models = new Model[(n + 1) * (n + 1)]();
     onerad = new double[n + 1]();
+    reach = new double[(n + 1) * (n + 1)]();
 }
 
 } // namespace demcontact_lammps

@@ -53,6 +53,10 @@ private:
     Coeff *coeffs = nullptr; // (ntypes+1)^2, [i*(ntypes+1)+j], i <= j given or mixed
     Model *models = nullptr;  // calibrated model per type pair [type1*(ntypes+1)+type2], both orders
     double *onerad = nullptr; // largest radius per type (present and future particles)
+    // adhesive laws (dmt, jkr): how far beyond touching each type pair's law acts at the types'
+    // largest radii [type1*(ntypes+1)+type2] (0: overlapping pairs only), and whether any does
+    double *reach = nullptr;
+    bool adhesive = false;
     FixDemcontactHistory *history = nullptr;
     // history slots of every neighbour-list pair (owner i's, owner j's or -1), cached by map_slots()
     std::vector<int> pofs;  // pair index of list entry ii's first neighbour

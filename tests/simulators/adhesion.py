@@ -1,0 +1,259 @@
+#!/usr/bin/env python3
+"""Adhesive head-on impacts in LAMMPS (`pair_coeff ... jkr w`, `... dmt w`; fix demcontact/wall and
+fix demcontact/wall/region) against the library's own contact integrated with the same
+velocity-Verlet steps (adhesion_ref, dc_contact_force):
+
+  adhesion.py --plugin demcontactplugin.so --ref adhesion_ref [--lmp lmp] [--np 2]
+              [--newton on|off ...] [--walls] [--workdir DIR]
+
+Silica-like spheres, R = 10 um, rho = 2500, E = 70 GPa, nu = 0.25, w = 0.2 J/m^2 (JKR sticking
+speed of a pair v_s = sqrt(2W/m*), W = (2 pi)^(5/3) (6 + 4^(-1/3))/20 (w^5 R*^4/E*^2)^(1/3),
+about 4 cm/s; of a sphere on a wall about 3 cm/s). Each run holds several impacts far apart, one
+per speed; the spheres start 3 reaches apart (JKR |delta_c|, DMT d_c), dt = t_H(20 v_s)/200.
+
+  jkr           undamped, v/v_s = 0.5, 0.9 (stick), 1.5, 3, 10 (separate)
+  jkr damped    e_n = 0.5 with tangential mindlin (the neck state after the springs in the
+                history), v/v_s = 0.5 (stick), 2, 5, 20 (separate at 5, 20)
+  dmt           undamped (the tail is conservative: e = 1), v/v_s = 0.05, 0.5, 3, 10
+  dmt damped    e_n = 0.3, v/v_s = 0.05 (captured), 3, 10 (separate)
+
+Pairs: two spheres on the x axis, the first at x < 0 (with --np 2 and `processors 2 1 1` each
+sphere on its own rank: every contact across the rank boundary), with the given `newton` settings.
+--drift: both spheres of each pair also move at a common U along x, from x = -3e-5 to +3e-5 over
+the run (with 2 ranks: on rank 0, then split across the boundary, then both migrated to rank 1,
+the stuck necks held through every reneighbouring; the reference integrates the same
+velocities).
+--walls: a sphere on the plane z = 0 by fix demcontact/wall zplane and by fix
+demcontact/wall/region on a `region plane` (the region's distance is z itself: the same bits).
+
+Checks: (a) every impact's final position and velocity equal the reference's to 1e-12 relative
+(the realised restitution too; measured: 0, bit-identical); (b, c) JKR: the impacts below v_s
+end with the neck formed (the reference's state 1, the gap within |delta_c|), those above with it
+broken and the bodies apart, and the undamped rebound within 2e-3 of e = sqrt(1 - v_s^2/v^2)
+(the closed form of the continuous law; the step misplaces some of the work of the force's jumps
+at formation and breakage); (d) DMT undamped e within 1e-3 of 1, the damped slow impact captured
+and the fast ones apart. Exit 1 on any failure, 77 (ctest SKIP) when LAMMPS is missing.
+"""
+import argparse
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+import harness as H
+
+R, RHO, E, NU, W = 1e-5, 2500.0, 7e10, 0.25, 0.2
+TOL_BITS = 1e-12  # LAMMPS against the reference (relative; bit-identical expected)
+TOL_E_JKR = 2e-3  # undamped JKR rebound against the closed form of the continuous law
+TOL_E_DMT = 1e-3  # undamped DMT rebound against 1
+SPAN = 1e-4       # distance between impacts (10 R; the cutoff is 2 R plus a few nm)
+
+CASES = [  # (label, law, e_n, mu, speeds / v_s, outcome per speed: S stuck, A apart)
+    ("jkr", "jkr", 1.0, 0.0, (0.5, 0.9, 1.5, 3.0, 10.0), "SSAAA"),
+    ("jkr damped", "jkr", 0.5, 0.5, (0.5, 2.0, 5.0, 20.0), "SSAA"),
+    ("dmt", "dmt", 1.0, 0.0, (0.05, 0.5, 3.0, 10.0), "AAAA"),
+    ("dmt damped", "dmt", 0.3, 0.0, (0.05, 3.0, 10.0), "SSA"),
+]
+
+def e_star():
+    return E / (2.0 * (1.0 - NU * NU))
+
+
+def reach(law, r_eff):
+    es = e_star()
+    if law == "jkr":
+        return 0.75 * (math.pi ** 2 * W ** 2 * r_eff / es ** 2) ** (1.0 / 3.0)
+    return (3.0 * math.pi * W * math.sqrt(r_eff) / (2.0 * es)) ** (2.0 / 3.0)
+
+
+def sticking_speed(r_eff, m_eff):
+    w_break = (2 * math.pi) ** (5.0 / 3.0) * (6 + 4 ** (-1.0 / 3.0)) / 20 * (W ** 5 * r_eff ** 4 / e_star() ** 2) ** (1.0 / 3.0)
+    return math.sqrt(2.0 * w_break / m_eff)
+
+
+def hertz_time(r_eff, m_eff, v):
+    return 2.868 * (m_eff ** 2 / (r_eff * e_star() ** 2 * v)) ** 0.2
+
+
+def coeff(law, e_n, mu):
+    c = "hertz/material %.17g %.17g %.17g %s %.17g" % (E, e_n, NU, law, W)
+    if mu > 0:
+        c += " tangential mindlin NULL 1 %.17g" % mu
+    return c
+
+
+def plan(wall, law, e_n, speeds):
+    """dt, steps and the bodies: (x or z, v) of the first sphere (and the second's, pairs)."""
+    mass = RHO * 4.0 / 3.0 * math.pi * R ** 3
+    r_eff, m_eff = (R, mass) if wall else (R / 2, mass / 2)
+    vs = sticking_speed(r_eff, m_eff)
+    dt = hertz_time(r_eff, m_eff, 20 * vs) / 200
+    gap = 3 * reach(law, r_eff)
+    vmin = min(speeds) * vs
+    steps = int((gap / vmin + 12 * hertz_time(r_eff, m_eff, vmin)) / dt) + 1
+    return vs, dt, steps, gap, r_eff
+
+
+def deck(plugin, wall, law, e_n, mu, speeds, newton, np_, drift):
+    vs, dt, steps, gap, _ = plan(wall, law, e_n, speeds)
+    # --drift: both spheres of a pair also move at U along x, from x = -X0 to +X0 over the run
+    x0 = 0.3 * SPAN if drift else 0.0
+    u = 2 * x0 / (steps * dt)
+    L = ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f", "comm_modify vel yes",
+         "newton %s" % newton, "processors %d 1 1" % np_ if np_ > 1 else "",
+         "region box block %g %g %g %g %g %g units box" % (-SPAN, SPAN, -SPAN, SPAN * (len(speeds) + 1),
+                                                          -SPAN, SPAN),
+         "create_box 1 box", "plugin load %s" % os.path.abspath(plugin), "neighbor %g bin" % (R / 10),
+         "neigh_modify delay 0"]
+    if wall == "zplane":
+        L.append("fix w all demcontact/wall %s zplane 0 NULL" % coeff(law, e_n, mu))
+    elif wall == "region":
+        L += ["region fl plane 0 0 0 0 0 1 side in units box",
+              "fix w all demcontact/wall/region %s region fl" % coeff(law, e_n, mu)]
+    else:
+        L += ["pair_style demcontact", "pair_coeff * * " + coeff(law, e_n, mu)]
+    n = 0
+    for k, s in enumerate(speeds):
+        v = s * vs
+        y = SPAN * k
+        if wall:
+            L += ["create_atoms 1 single %.17g %.17g %.17g units box" % (SPAN / 2, y, R + gap),
+                  "set atom %d diameter %.17g density %.17g vz %.17g" % (n + 1, 2 * R, RHO, -v)]
+            n += 1
+        else:
+            x = R + gap / 2
+            L += ["create_atoms 1 single %.17g %.17g 0 units box" % (-x0 - x, y),
+                  "create_atoms 1 single %.17g %.17g 0 units box" % (-x0 + x, y),
+                  "set atom %d diameter %.17g density %.17g vx %.17g" % (n + 1, 2 * R, RHO, u + v / 2),
+                  "set atom %d diameter %.17g density %.17g vx %.17g" % (n + 2, 2 * R, RHO, u - v / 2)]
+            n += 2
+    L += ["fix integr all nve/sphere", "timestep %.17g" % dt,
+          "dump d all custom %d traj.dump id x y z vx vy vz mass radius" % steps,
+          "dump_modify d format float %.17g sort id", "thermo %d" % steps, "run %d" % steps]
+    return "\n".join(l for l in L if l) + "\n", dt, steps, vs
+
+
+def frames(path):
+    out = []
+    for block in open(path).read().split("ITEM: TIMESTEP")[1:]:
+        lines = block.strip().splitlines()
+        i = next(k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
+        cols = lines[i].split()[2:]
+        atoms = {}
+        for l in lines[i + 1:]:
+            f = dict(zip(cols, map(float, l.split())))
+            atoms[int(f["id"])] = f
+        out.append(atoms)
+    return out
+
+
+def rel(a, b, scale):
+    return abs(a - b) / scale
+
+
+def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, newton, np_):
+    tag = "%s_%s_%s_np%d%s" % (wall or "pair", label.replace(" ", "_"), newton, np_,
+                               "_drift" if a.drift and not wall else "")
+    d = os.path.join(a.workdir, tag)
+    os.makedirs(d, exist_ok=True)
+    text, dt, steps, vs = deck(a.plugin, wall, law, e_n, mu, speeds, newton, np_, a.drift and not wall)
+    open(os.path.join(d, "in.deck"), "w").write(text)
+    H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.deck", "-log", "log.lammps"], d, env)
+    fr = frames(os.path.join(d, "traj.dump"))
+    if len(fr) != 2:
+        raise SystemExit("FAIL: %s: %d dump frames, expected 2" % (tag, len(fr)))
+    first, last = fr
+    if a.drift and not wall and not all(first[i]["x"] < 0 < last[i]["x"] for i in first):
+        raise SystemExit("FAIL: %s: the pairs did not drift through x = 0" % tag)
+    # the reference: the same bodies from LAMMPS's own step-0 values (mass as LAMMPS computed it)
+    lines, bodies = [], []
+    ax = "z" if wall else "x"
+    for k, s in enumerate(speeds):
+        if wall:
+            b = [first[k + 1]]
+            lines.append("wall %s %.17g %.17g %.17g %.17g %.17g %.17g %d %.17g %.17g %.17g %.17g" % (
+                law, E, NU, W, e_n, mu, dt, steps, b[0]["radius"], b[0]["mass"], b[0]["z"], b[0]["vz"]))
+        else:
+            b = [first[2 * k + 1], first[2 * k + 2]]
+            lines.append("pair %s %.17g %.17g %.17g %.17g %.17g %.17g %d %s %s" % (
+                law, E, NU, W, e_n, mu, dt, steps,
+                " ".join("%.17g" % b[0][c] for c in ("radius", "mass", "x", "vx")),
+                " ".join("%.17g" % b[1][c] for c in ("radius", "mass", "x", "vx"))))
+        bodies.append(b)
+    p = subprocess.run([a.ref], input="\n".join(lines) + "\n", stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                       text=True)
+    if p.returncode != 0:
+        raise SystemExit("FAIL: %s: adhesion_ref: %s" % (tag, p.stderr.strip()))
+    refs = [list(map(float, l.split())) for l in p.stdout.strip().splitlines()]
+    ok = True
+    _, _, _, _, r_eff = plan(wall, law, e_n, speeds)
+    rch = reach(law, r_eff)
+    for k, s in enumerate(speeds):
+        v = s * vs
+        x1, v1, x2, v2, state = refs[k]
+        ids = [k + 1] if wall else [2 * k + 1, 2 * k + 2]
+        g = [last[i] for i in ids]
+        d_bits = max(rel(g[0][ax], x1, R), rel(g[0]["v" + ax], v1, v))
+        if not wall:
+            d_bits = max(d_bits, rel(g[1]["x"], x2, R), rel(g[1]["vx"], v2, v))
+        # realised restitution (relative speed after over before) and the final surface gap
+        e_lmp = (g[0]["vz"] if wall else g[1]["vx"] - g[0]["vx"]) / v
+        e_ref = (v1 if wall else v2 - v1) / v
+        gap = g[0]["z"] - R if wall else g[1]["x"] - g[0]["x"] - 2 * R
+        d_e = abs(e_lmp - e_ref) / max(abs(e_ref), 1e-300)
+        stuck = gap <= rch and state != 0.0 if law == "jkr" else gap <= rch
+        apart = gap > rch and e_lmp > 0
+        msg = []
+        if not (d_bits <= TOL_BITS and (d_e <= TOL_BITS or e_ref == e_lmp)):
+            msg.append("differs from the reference by %.3g (e by %.3g; tolerance %g)" % (d_bits, d_e, TOL_BITS))
+        expect = None
+        want = outcome[k]
+        if want == "S" and not stuck:
+            msg.append("not stuck (gap %.3g, reach %.3g, state %g)" % (gap, rch, state))
+        if want == "A" and not (apart and state <= 0.0):
+            msg.append("not apart (gap %.3g, reach %.3g, e %.3g, state %g)" % (gap, rch, e_lmp, state))
+        if e_n == 1.0 and want == "A":
+            expect = math.sqrt(1.0 - 1.0 / s ** 2) if law == "jkr" else 1.0
+            tol = TOL_E_JKR if law == "jkr" else TOL_E_DMT
+            if not abs(e_lmp - expect) <= tol:
+                msg.append("e = %.6g, expected %.6g (tolerance %g)" % (e_lmp, expect, tol))
+        ok &= not msg
+        print("%s %-26s v/v_s = %-5g e = %-20.17g ref %-20.17g %s |d| = %.2g%s%s" % (
+            "ok  " if not msg else "FAIL", tag, s, e_lmp, e_ref,
+            "stuck" if stuck else ("apart" if apart else "?"), d_bits,
+            "" if expect is None else ", expected %.6g" % expect, "" if not msg else ": " + "; ".join(msg)))
+    return ok
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--plugin", required=True)
+    ap.add_argument("--ref", required=True, help="adhesion_ref (tests/simulators/adhesion_ref.c)")
+    ap.add_argument("--lmp")
+    ap.add_argument("--np", type=int, default=1)
+    ap.add_argument("--newton", nargs="+", default=["on"], choices=["on", "off"])
+    ap.add_argument("--drift", action="store_true",
+                    help="the pairs also drift along x through x = 0 (with --np 2: the rank boundary)")
+    ap.add_argument("--walls", action="store_true", help="also the sphere-wall impacts (both wall fixes)")
+    ap.add_argument("--workdir")
+    a = ap.parse_args()
+    from harness import lammps as lammps_runs
+    exe = lammps_runs.find_lmp(a.lmp)
+    env = H.mpi_env()
+    mpirun = os.path.join(os.path.dirname(exe), "mpirun")
+    a.workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_adhesion_"))
+    a.ref = os.path.abspath(a.ref)
+    ok = True
+    for label, law, e_n, mu, speeds, outcome in CASES:
+        for newton in a.newton:
+            ok &= run_case(a, exe, env, mpirun, None, label, law, e_n, mu, speeds, outcome, newton, a.np)
+        if a.walls:
+            for wall in ("zplane", "region"):
+                ok &= run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, "on", a.np)
+    print("ok" if ok else "FAIL")
+    sys.exit(0 if ok else 1)
+
+
+if __name__ == "__main__":
+    main()
