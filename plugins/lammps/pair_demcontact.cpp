@@ -17,6 +17,16 @@
  * `init` AND the particles that fix pour / fix deposit will insert later (their extract("radius")),
  * so a pour into an empty box gets the right neighbour cutoff; radii may differ per atom.
  *
+ * Adhesive normal laws (pair_coeff ... dmt w, ... jkr w) act beyond touching: a type pair's cutoff
+ * adds its law's reach at the types' largest radii (law_reach in dc_coeff.h: DMT's d_c, JKR's
+ * |delta_c|), and the neighbour list is then built by type cutoffs, not by each pair's radii plus
+ * the skin (a size list), so that every pair that can come within the reach before the next
+ * rebuild is listed. In the loop such a pair is evaluated at negative overlap: DMT within its
+ * tail (on zeroed history, no slot: the law has no state and the library resets a separated
+ * contact's history), JKR only while its current history says the neck is formed (state 1); the
+ * held neck's slot is stamped each step like a touching contact's, so it is kept by compact(),
+ * migrates and is exchanged between the owners (newton on) as every contact history.
+ *
  * Neighbour list: half, size, with the global newton setting. Newton on (LAMMPS' default): each
  * contact is evaluated once, its force and torques added to both atoms (a ghost's reach its owner
  * by LAMMPS' reverse communication); the contact history is kept by both atoms, the other owner's
