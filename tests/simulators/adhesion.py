@@ -15,7 +15,10 @@ per speed; the spheres start 3 reaches apart (JKR |delta_c|, DMT d_c), dt = t_H(
   jkr damped    e_n = 0.5 with tangential mindlin (the neck state after the springs in the
                 history), v/v_s = 0.5 (stick), 2, 5, 20 (separate at 5, 20)
   dmt           undamped (the tail is conservative: e = 1), v/v_s = 0.05, 0.5, 3, 10
-  dmt damped    e_n = 0.3, v/v_s = 0.05 (captured), 3, 10 (separate)
+  dmt damped    e_n = 0.3, v/v_s = 0.05, 3 (captured), 10 (separate)
+  jkr pulled    e_n = 0.5, a pair at rest just touching, pulled apart by 1.4 pi w R* (fix
+                addforce): held by the neck at negative overlap; on 2 ranks with --drift the
+                side that evaluates it changes while it is held (deck())
 
 Pairs: two spheres on the x axis, the first at x < 0 (with --np 2 and `processors 2 1 1` each
 sphere on its own rank: every contact across the rank boundary), with the given `newton` settings.
@@ -32,7 +35,8 @@ end with the neck formed (the reference's state 1, the gap within |delta_c|), th
 broken and the bodies apart, and the undamped rebound within 2e-3 of e = sqrt(1 - v_s^2/v^2)
 (the closed form of the continuous law; the step misplaces some of the work of the force's jumps
 at formation and breakage); (d) DMT undamped e within 1e-3 of 1, the damped slow impact captured
-and the fast ones apart. Exit 1 on any failure, 77 (ctest SKIP) when LAMMPS is missing.
+and the fast ones apart; the pulled pair ends held (gap in (0, |delta_c|), the reference's state
+1). Exit 1 on any failure, 77 (ctest SKIP) when LAMMPS is missing.
 """
 import argparse
 import math
@@ -54,6 +58,12 @@ CASES = [  # (label, law, e_n, mu, speeds / v_s, outcome per speed: S stuck, A a
     ("jkr damped", "jkr", 0.5, 0.5, (0.5, 2.0, 5.0, 20.0), "SSAA"),
     ("dmt", "dmt", 1.0, 0.0, (0.05, 0.5, 3.0, 10.0), "AAAA"),
     ("dmt damped", "dmt", 0.3, 0.0, (0.05, 3.0, 10.0), "SSA"),
+    # P: a pair pulled apart (pairs only): starting at rest at overlap 1e-3 |delta_c| (the neck
+    # forms at once) under a constant load 1.4 pi w R* (fix addforce, apart), between the force at
+    # zero overlap (4/3) and the pull-off force (3/2 pi w R*): it settles held by the neck at
+    # negative overlap (the timing of a 0.5 v_s impact); with --drift on 2 ranks the side that
+    # evaluates it changes while the neck holds it apart (deck())
+    ("jkr pulled", "jkr", 0.5, 0.0, (0.5,), "P"),
 ]
 
 def e_star():
@@ -95,8 +105,14 @@ def plan(wall, law, e_n, speeds):
     return vs, dt, steps, gap, r_eff
 
 
-def deck(plugin, wall, law, e_n, mu, speeds, newton, np_, drift):
-    vs, dt, steps, gap, _ = plan(wall, law, e_n, speeds)
+def pull_load(r_eff):
+    return 1.4 * math.pi * W * r_eff
+
+
+def deck(plugin, wall, law, e_n, mu, speeds, newton, np_, drift, pulled=False):
+    vs, dt, steps, gap, r_eff = plan(wall, law, e_n, speeds)
+    if pulled:
+        gap = -1e-3 * reach(law, r_eff)
     # --drift: both spheres of a pair also move at U along x, from x = -X0 to +X0 over the run
     x0 = 0.3 * SPAN if drift else 0.0
     u = 2 * x0 / (steps * dt)
@@ -123,11 +139,22 @@ def deck(plugin, wall, law, e_n, mu, speeds, newton, np_, drift):
             n += 1
         else:
             x = R + gap / 2
+            if pulled:
+                v = 0.0
             L += ["create_atoms 1 single %.17g %.17g 0 units box" % (-x0 - x, y),
                   "create_atoms 1 single %.17g %.17g 0 units box" % (-x0 + x, y),
                   "set atom %d diameter %.17g density %.17g vx %.17g" % (n + 1, 2 * R, RHO, u + v / 2),
                   "set atom %d diameter %.17g density %.17g vx %.17g" % (n + 2, 2 * R, RHO, u - v / 2)]
             n += 2
+    if pulled:
+        p = pull_load(r_eff)
+        L += ["group pa id 1", "group pb id 2", "fix pa pa addforce %.17g 0 0" % -p,
+              "fix pb pb addforce %.17g 0 0" % p,
+              # one neighbour bin, no sorting: the list owner of an owned pair is the atom of lower
+              # index and of a ghost pair the one at smaller x, so once both spheres have migrated
+              # (B first) B evaluates the contact that A's rank evaluated while they were split:
+              # B's copy of the held neck must have come from A's rank (newton on: the exchange)
+              "neigh_modify binsize %g" % (8 * SPAN), "atom_modify sort 0 0.0"]
     L += ["fix integr all nve/sphere", "timestep %.17g" % dt,
           "dump d all custom %d traj.dump id x y z vx vy vz mass radius" % steps,
           "dump_modify d format float %.17g sort id", "thermo %d" % steps, "run %d" % steps]
@@ -157,7 +184,8 @@ def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, ne
                                "_drift" if a.drift and not wall else "")
     d = os.path.join(a.workdir, tag)
     os.makedirs(d, exist_ok=True)
-    text, dt, steps, vs = deck(a.plugin, wall, law, e_n, mu, speeds, newton, np_, a.drift and not wall)
+    pulled = outcome == "P"
+    text, dt, steps, vs = deck(a.plugin, wall, law, e_n, mu, speeds, newton, np_, a.drift and not wall, pulled)
     open(os.path.join(d, "in.deck"), "w").write(text)
     H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.deck", "-log", "log.lammps"], d, env)
     fr = frames(os.path.join(d, "traj.dump"))
@@ -172,12 +200,12 @@ def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, ne
     for k, s in enumerate(speeds):
         if wall:
             b = [first[k + 1]]
-            lines.append("wall %s %.17g %.17g %.17g %.17g %.17g %.17g %d %.17g %.17g %.17g %.17g" % (
+            lines.append("wall %s %.17g %.17g %.17g %.17g %.17g %.17g %d 0 %.17g %.17g %.17g %.17g" % (
                 law, E, NU, W, e_n, mu, dt, steps, b[0]["radius"], b[0]["mass"], b[0]["z"], b[0]["vz"]))
         else:
             b = [first[2 * k + 1], first[2 * k + 2]]
-            lines.append("pair %s %.17g %.17g %.17g %.17g %.17g %.17g %d %s %s" % (
-                law, E, NU, W, e_n, mu, dt, steps,
+            lines.append("pair %s %.17g %.17g %.17g %.17g %.17g %.17g %d %.17g %s %s" % (
+                law, E, NU, W, e_n, mu, dt, steps, -pull_load(R / 2) if pulled else 0.0,
                 " ".join("%.17g" % b[0][c] for c in ("radius", "mass", "x", "vx")),
                 " ".join("%.17g" % b[1][c] for c in ("radius", "mass", "x", "vx"))))
         bodies.append(b)
@@ -189,6 +217,23 @@ def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, ne
     ok = True
     _, _, _, _, r_eff = plan(wall, law, e_n, speeds)
     rch = reach(law, r_eff)
+    if pulled:  # one pair, at rest relative to each other: positions and velocities against the reference
+        x1, v1, x2, v2, state = refs[0]
+        g = [last[1], last[2]]
+        scale_v = max(abs(g[0]["vx"]), 1e-300)
+        d_bits = max(rel(g[0]["x"], x1, R), rel(g[1]["x"], x2, R), rel(g[0]["vx"], v1, scale_v),
+                     rel(g[1]["vx"], v2, scale_v))
+        gap = g[1]["x"] - g[0]["x"] - 2 * R
+        msg = []
+        if not d_bits <= TOL_BITS:
+            msg.append("differs from the reference by %.3g (tolerance %g)" % (d_bits, TOL_BITS))
+        if not (0.0 < gap < rch and state == 1.0):  # separated, within the neck's reach
+            msg.append("not held by the neck at negative overlap (gap %.3g, |delta_c| %.3g, state %g)"
+                       % (gap, rch, state))
+        print("%s %-26s pulled by %.4g N: gap %.6g m (|delta_c| %.3g), ref state %g, |d| = %.2g%s" % (
+            "ok  " if not msg else "FAIL", tag, pull_load(R / 2), gap, rch, state, d_bits,
+            "" if not msg else ": " + "; ".join(msg)))
+        return not msg
     for k, s in enumerate(speeds):
         v = s * vs
         x1, v1, x2, v2, state = refs[k]
@@ -248,7 +293,7 @@ def main():
     for label, law, e_n, mu, speeds, outcome in CASES:
         for newton in a.newton:
             ok &= run_case(a, exe, env, mpirun, None, label, law, e_n, mu, speeds, outcome, newton, a.np)
-        if a.walls:
+        if a.walls and outcome != "P":
             for wall in ("zplane", "region"):
                 ok &= run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, "on", a.np)
     print("ok" if ok else "FAIL")

@@ -9,10 +9,13 @@
  * evaluates it where the law acts gives the same bits.
  *
  * One case per input line (stdin):
- *   pair LAW E nu w e_n mu dt nsteps  r1 m1 x1 v1  r2 m2 x2 v2
- *   wall LAW E nu w e_n mu dt nsteps  r1 m1 z1 v1
+ *   pair LAW E nu w e_n mu dt nsteps fext  r1 m1 x1 v1  r2 m2 x2 v2
+ *   wall LAW E nu w e_n mu dt nsteps fext  r1 m1 z1 v1
  *   LAW = jkr | dmt; e_n = 1: undamped (DC_DAMPING_NONE), else DC_DAMPING_RESTITUTION with e_n;
- *   mu > 0: with tangential Mindlin (e_t = 1, Coulomb mu), so the history holds springs too.
+ *   mu > 0: with tangential Mindlin (e_t = 1, Coulomb mu), so the history holds springs too;
+ *   fext: a constant external force on body 1 along the axis (body 2 of a pair: -fext), added
+ *   after the contact force as LAMMPS `fix addforce` adds it. The force of the step before the
+ *   first (LAMMPS's `run` setup) is the contact's on a copy of the fresh (zero) history.
  * Output, one line per case: "x1 v1 x2 v2 state" (%.17g; the wall: x2 = v2 = 0; state: the law's
  * history state at the end, JKR 1 = neck formed, -1 for DMT). Exit 1 naming the status on error.
  */
@@ -33,9 +36,10 @@ static int fail(const char *what, int32_t s)
 int main(void)
 {
     char kind[16], law[16];
-    double E, nu, w, e_n, mu, dt;
+    double E, nu, w, e_n, mu, dt, fext;
     long nsteps;
-    while (scanf("%15s %15s %lf %lf %lf %lf %lf %lf %ld", kind, law, &E, &nu, &w, &e_n, &mu, &dt, &nsteps) == 9) {
+    while (scanf("%15s %15s %lf %lf %lf %lf %lf %lf %ld %lf", kind, law, &E, &nu, &w, &e_n, &mu, &dt, &nsteps,
+                 &fext) == 10) {
         const int pair = strcmp(kind, "pair") == 0;
         double r1, m1, x1, v1, r2 = INFINITY, m2 = INFINITY, x2 = 0.0, v2 = 0.0;
         if (scanf("%lf %lf %lf %lf", &r1, &m1, &x1, &v1) != 4) return fail("input", DC_ERR_NULL_POINTER);
@@ -60,15 +64,17 @@ int main(void)
         size_t nh = 0;
         st = dc_contact_history_len(&m, &nh);
         if (st != DC_OK) return fail("dc_contact_history_len", st);
-        double h[DC_CONTACT_HISTORY_MAX] = {0.0};
+        double h[DC_CONTACT_HISTORY_MAX] = {0.0}, copy[DC_CONTACT_HISTORY_MAX] = {0.0};
         const double dtfm1 = 0.5 * dt / m1, dtfm2 = pair ? 0.5 * dt / m2 : 0.0;
-        double f = 0.0; /* on body 1 (body 2: -f); the spheres start apart (no force at setup) */
-        for (long n = 0; n < nsteps; n++) {
-            v1 += dtfm1 * f;
-            x1 += dt * v1;
-            if (pair) {
-                v2 += dtfm2 * -f;
-                x2 += dt * v2;
+        double f = 0.0; /* the contact force on body 1 (body 2: -f) */
+        for (long n = -1; n < nsteps; n++) {
+            if (n >= 0) { /* n = -1: the setup's force only */
+                v1 += dtfm1 * (f + fext);
+                x1 += dt * v1;
+                if (pair) {
+                    v2 += dtfm2 * (-f + -fext);
+                    x2 += dt * v2;
+                }
             }
             dc_contact_state c;
             memset(&c, 0, sizeof c);
@@ -88,11 +94,12 @@ int main(void)
             c.m1 = m1;
             c.m2 = m2;
             dc_contact_result out;
-            st = dc_contact_force(&m, &c, dt, h, nh, &out);
+            st = dc_contact_force(&m, &c, dt, n >= 0 ? h : copy, nh, &out);
             if (st != DC_OK) return fail("dc_contact_force", st);
             f = out.force[pair ? 0 : 2];
-            v1 += dtfm1 * f;
-            if (pair) v2 += dtfm2 * -f;
+            if (n < 0) continue;
+            v1 += dtfm1 * (f + fext);
+            if (pair) v2 += dtfm2 * (-f + -fext);
         }
         const double state = s.normal == DC_NORMAL_JKR ? h[nh - 1] : -1.0;
         printf("%.17g %.17g %.17g %.17g %.17g\n", x1, v1, x2, v2, state);
