@@ -177,7 +177,8 @@ protected:
     }
 
     /* The contact of owned atom i with the wall: normal n (unit, from the wall to the atom), overlap
-       (> 0, or <= 0 where an adhesive law acts), vwall the velocity of the wall's surface at the contact point, h the contact's nh doubles
+       (> 0, or <= 0 where an adhesive law acts), vwall the velocity of the wall's surface at the
+       contact point, h the contact's nh doubles
        of history (nullptr when nh = 0). Adds the force and torque to the atom. */
     void apply(int i, const double n[3], double overlap, const double vwall[3], double *h)
     {

@@ -27,7 +27,8 @@
  * held neck's slot is stamped each step like a touching contact's, so it is kept by compact(),
  * migrates and is exchanged between the owners (newton on) as every contact history.
  *
- * Neighbour list: half, size, with the global newton setting. Newton on (LAMMPS' default): each
+ * Neighbour list: half, size (by type cutoffs with an adhesive law, above), with the global newton
+ * setting. Newton on (LAMMPS' default): each
  * contact is evaluated once, its force and torques added to both atoms (a ghost's reach its owner
  * by LAMMPS' reverse communication); the contact history is kept by both atoms, the other owner's
  * copy brought up to date at every exchange (fix_demcontact_history.h, send_ghosts()). The
