@@ -4,7 +4,7 @@ fix demcontact/wall/region) against the library's own contact integrated with th
 velocity-Verlet steps (adhesion_ref, dc_contact_force):
 
   adhesion.py --plugin demcontactplugin.so --ref adhesion_ref [--lmp lmp] [--np 2]
-              [--newton on|off ...] [--walls] [--workdir DIR]
+              [--newton on|off ...] [--walls] [--drift] [--restart] [--workdir DIR]
 
 Silica-like spheres, R = 10 um, rho = 2500, E = 70 GPa, nu = 0.25, w = 0.2 J/m^2 (JKR sticking
 speed of a pair v_s = sqrt(2W/m*), W = (2 pi)^(5/3) (6 + 4^(-1/3))/20 (w^5 R*^4/E*^2)^(1/3),
@@ -18,7 +18,9 @@ per speed; the spheres start 3 reaches apart (JKR |delta_c|, DMT d_c), dt = t_H(
   dmt damped    e_n = 0.3, v/v_s = 0.05, 3 (captured), 10 (separate)
   jkr pulled    e_n = 0.5, a pair at rest just touching, pulled apart by 1.4 pi w R* (fix
                 addforce): held by the neck at negative overlap; on 2 ranks with --drift the
-                side that evaluates it changes while it is held (deck())
+                side that evaluates it changes while it is held (deck()); with --restart
+                also interrupted at half way by write_restart and continued after read_restart
+                in a new process: its positions within 1e-9 R of the uninterrupted run's
 
 Pairs: two spheres on the x axis, the first at x < 0 (with --np 2 and `processors 2 1 1` each
 sphere on its own rank: every contact across the rank boundary), with the given `newton` settings.
@@ -51,6 +53,7 @@ R, RHO, E, NU, W = 1e-5, 2500.0, 7e10, 0.25, 0.2
 TOL_BITS = 1e-12  # LAMMPS against the reference (relative; bit-identical expected)
 TOL_E_JKR = 2e-3  # undamped JKR rebound against the closed form of the continuous law
 TOL_E_DMT = 1e-3  # undamped DMT rebound against 1
+TOL_RESTART = 1e-9  # the pulled pair after write/read_restart against the uninterrupted run (R)
 SPAN = 1e-4       # distance between impacts (10 R; the cutoff is 2 R plus a few nm)
 
 CASES = [  # (label, law, e_n, mu, speeds / v_s, outcome per speed: S stuck, A apart)
@@ -217,6 +220,37 @@ def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, ne
     ok = True
     _, _, _, _, r_eff = plan(wall, law, e_n, speeds)
     rch = reach(law, r_eff)
+    if pulled and a.restart:
+        # the same run interrupted at half way: write_restart, then a new process reads it and
+        # runs to the end; the held neck must come back from the restart file (a lost one lets the
+        # load pull the pair apart). Not bit-exact: the second run's setup evaluates the contact
+        # with the velocities after the half step's kick (the damping force of a settled pair, ~0)
+        half = steps // 2
+        d2 = os.path.join(a.workdir, tag + "_restart")
+        os.makedirs(d2, exist_ok=True)
+        first_part = text[:text.rindex("run %d" % steps)] + "run %d\nwrite_restart r.bin\n" % half
+        open(os.path.join(d2, "in.write"), "w").write(first_part)
+        H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.write", "-log", "log.write"], d2, env)
+        keep = [l for l in text.splitlines() if l.split()[:1] in (["plugin"], ["pair_style"], ["pair_coeff"],
+                                                                    ["neighbor"], ["neigh_modify"],
+                                                                    ["comm_modify"], ["timestep"], ["dump"],
+                                                                    ["dump_modify"], ["thermo"])
+                or l.startswith("fix ") or l.startswith("atom_modify sort")]
+        second = ["processors %d 1 1" % np_ if np_ > 1 else "", "read_restart r.bin"] + keep + \
+            ["run %d" % (steps - half)]
+        open(os.path.join(d2, "in.read"), "w").write("\n".join(l for l in second if l) + "\n")
+        out, _ = H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.read", "-log", "log.read"], d2, env)
+        fin = frames(os.path.join(d2, "traj.dump"))[-1]
+        g = [last[1], last[2]]
+        gap_u = g[1]["x"] - g[0]["x"] - 2 * R
+        gap_r = fin[2]["x"] - fin[1]["x"] - 2 * R
+        d_x = max(rel(fin[i]["x"], last[i]["x"], R) for i in (1, 2))
+        good = 0.0 < gap_r < rch and d_x <= TOL_RESTART
+        print("%s %-26s restart at step %d: gap %.6g m (uninterrupted %.6g), positions within %.2g R of the "
+              "uninterrupted run (tolerance %g)" % ("ok  " if good else "FAIL", tag, half, gap_r, gap_u, d_x,
+                                                     TOL_RESTART))
+        if not good:
+            return False
     if pulled:  # one pair, at rest relative to each other: positions and velocities against the reference
         x1, v1, x2, v2, state = refs[0]
         g = [last[1], last[2]]
@@ -280,6 +314,8 @@ def main():
     ap.add_argument("--newton", nargs="+", default=["on"], choices=["on", "off"])
     ap.add_argument("--drift", action="store_true",
                     help="the pairs also drift along x through x = 0 (with --np 2: the rank boundary)")
+    ap.add_argument("--restart", action="store_true",
+                    help="the pulled pair also through write_restart / read_restart at half way")
     ap.add_argument("--walls", action="store_true", help="also the sphere-wall impacts (both wall fixes)")
     ap.add_argument("--workdir")
     a = ap.parse_args()
