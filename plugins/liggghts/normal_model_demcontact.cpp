@@ -3,7 +3,9 @@
  * (Debian libliggghts-dev) and loaded into the stock `liggghts` executable with LD_PRELOAD:
  *
  *   pair_style gran model demcontact tangential history [limitForce on] [exponent 1.5] [stepExact on]
+ *              [law KEYWORD]
  *   fix wall wall/gran model demcontact tangential history primitive type 1 zplane 0.0 [stepExact on]
+ *              [law KEYWORD]
  *
  * Force: F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn (power-law Tsuji) from demcontact's dc_pair
  * and dc_normal_force_inline (header-only, see ../common/tsuji_force.h): at the default p = 1.5 a dc_pair_hertz of the two
@@ -23,6 +25,19 @@
  * too, its own step slot in its block (friction_models_demcontact.h), so that its Coulomb limit
  * sees the same step-aware normal force. The step follows update->dt: set at each run's init
  * (connectToProperties) and again at the first contact after dt changed.
+ *
+ * law KEYWORD: the registry's normal law of that keyword (plugins/common/demcontact_laws.h,
+ * generated from src/force/registry.rs: hertz, powerlaw, linear, viscoelastic, elastic_plastic; a
+ * law added there is a keyword here without an edit), evaluated as stepExact's force is: demcontact's
+ * full contact with no sub-model (dc_contact_force_checked_inline), its history (the law's state,
+ * e.g. elastic_plastic's largest overlap, then the step slot with stepExact on) in LIGGGHTS'
+ * contact history ("dc_normal0", ...), zeroed when a contact starts. Its materials are
+ * youngsModulus/poissonsRatio; coefficientRestitution where the law takes a target (required only
+ * then); each other parameter a property/global named after its dc_contact_spec field in
+ * camelCase (yield_pressure -> yieldPressure, k_n -> kN, visco_A -> viscoA, p -> p,
+ * work_of_adhesion -> workOfAdhesion), peratomtypepair or scalar. The adhesive laws (dmt, jkr:
+ * never clamped) are refused: they act at negative overlap, which this model does not evaluate.
+ * With tangential/rolling_friction demcontact the sub-models' full models take the same law.
  *
  * Registration: LIGGGHTS selects a compiled template instance by a hash of the model ids
  * (normal | tangential << 6 | ...). A static initializer adds the name "demcontact" to the contact
@@ -390,10 +405,12 @@ public:
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
-    /* The step-aware normal force of one contact (stepExact on): demcontact's full contact with no
-       sub-model, on a state with the same overlap, normal speed, r_eff and m_eff (body 2 with
-       infinite radius and mass, at rest: r_eff, m_eff exact), its slot "dc_step" in LIGGGHTS'
-       contact history, advanced only when LIGGGHTS says so (computeflag && shearupdate). */
+    /* The normal force of one contact with stepExact on or law KEYWORD (step-aware or not, by
+       step_models[]): demcontact's full contact with no sub-model, on a state with the same
+       overlap, normal speed, r_eff and m_eff (body 2 with infinite radius and mass, at rest:
+       r_eff, m_eff exact), its law_nh doubles from step_offset in LIGGGHTS' contact history ("dc_step";
+       law KEYWORD: "dc_normal0", ...: the law's state, then the step slot), advanced only when
+       LIGGGHTS says so (computeflag && shearupdate). */
     double step_force(SurfacesIntersectData &sidata, double reff, double meff)
     {
         const double dt = update->dt;
