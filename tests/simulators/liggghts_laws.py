@@ -2,7 +2,8 @@
 """The registry's normal laws in LIGGGHTS (`model demcontact ... law KEYWORD`, parameters from
 property/global named after their dc_contact_spec fields in camelCase), head-on collisions.
 
-  liggghts_laws.py --plugin libdemcontact_liggghts.so [--workdir DIR] [--check]
+  liggghts_laws.py --plugin libdemcontact_liggghts.so [--workdir DIR] [--check] [--np 2]
+                   [--example plugins/liggghts/examples/in.elastic_plastic]
 
 R = 1 mm, rho = 2500 kg/m^3, E = 1e7 Pa, nu = 0.3 (spheres and walls); one LIGGGHTS run per
 geometry (two equal spheres; a sphere and a zplane wall of the same material), every collision in
@@ -44,6 +45,7 @@ P_Y = 2e5  # yield pressure [Pa]
 SPEEDS_OVER_VY = (2.0, 5.0, 20.0, 100.0)
 STEPS = 200  # time steps per elastic Hertz contact at the highest speed
 SPACING = 4 * R
+NP = 1  # MPI ranks (--np)
 G = 9.81  # gravity of the second-impact run [m/s^2]
 MODEL = "model demcontact tangential history"
 TOL_REF, TOL_CLOSED, TOL_SAME = 1e-12, 1e-4, 1e-12
@@ -179,7 +181,7 @@ class Library:
 def deck(geom, cols, dt, steps, model, settings, props, extra=()):
     """cols: [(atom ids, y, v, gap)]"""
     L = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
-         "communicate single vel yes", "units si",
+         "communicate single vel yes", "units si"] + (["processors 2 1 1"] if NP == 2 else []) + [
          "region box block -0.01 0.01 -0.01 %.17g -0.002 0.01 units box" % (cols[-1][1] + 0.01),
          "create_box 1 box", "neighbor 0.0002 bin", "neigh_modify delay 0",
          "fix m1 all property/global youngsModulus peratomtype %.17g" % E,
@@ -220,7 +222,7 @@ def run_collisions(plugin, workdir, label, geom, speeds, dt, settings, props, st
     d = os.path.join(workdir, "%s_%s" % (label, geom))
     os.makedirs(d, exist_ok=True)
     open(os.path.join(d, "in.laws"), "w").write(deck(geom, cols, dt, steps, MODEL, settings, props, extra))
-    H.run([exe, "-in", "in.laws", "-log", "log.liggghts"], d, env)
+    H.run(H.mpi_prefix(NP) + [exe, "-in", "in.laws", "-log", "log.liggghts"], d, env)
     final = H.read_last_dump(os.path.join(d, "final.dump"))
     out = {}
     for ids, y, v, gap in cols:
@@ -236,9 +238,13 @@ def main():
     ap.add_argument("--plugin", required=True)
     ap.add_argument("--workdir")
     ap.add_argument("--check", action="store_true")
+    ap.add_argument("--np", type=int, default=1, choices=(1, 2),
+                    help="2: mpirun -np 2, processors 2 1 1 (the pairs straddle the rank boundary)")
     ap.add_argument("--example", help="plugins/liggghts/examples/in.elastic_plastic: run it, its printed e "
                                       "within TOL_CLOSED of Thornton's at its 0.2 m/s")
     a = ap.parse_args()
+    global NP
+    NP = a.np
     workdir = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_laws_"))
     os.makedirs(workdir, exist_ok=True)
     lib = Library(a.plugin)
