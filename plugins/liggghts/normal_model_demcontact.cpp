@@ -82,7 +82,8 @@
    Settings offers on/off, yes/no and double settings only, its map of settings private: the map is
    reached through the standard's rule that an explicit instantiation may name a private member
    (Rob below), and the setting added to it is deleted by Settings' destructor as its own are. An
-   unknown keyword ends the run with LIGGGHTS' "Unknown argument" error, whose text lists the keywords. */
+   unknown keyword ends the run with LIGGGHTS' error "while parsing 'law' argument: unknown normal
+   law '...'", whose text lists the keywords. */
 namespace demcontact_law_setting {
 
 class LawSetting : public Setting {
