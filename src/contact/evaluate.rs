@@ -33,26 +33,36 @@ pub struct ContactForce {
 
 /// Checks a model built elsewhere (e.g. a `dc_contact_model` the caller may have edited).
 pub(crate) fn check_model(m: &ContactModel) -> Result<(), Error> {
+    // Every field by name (no `..`): a field added to the model is checked here or named as
+    // not, or this does not compile (the C model's checks: `model_fields!` in src/ffi/contact.rs).
+    let ContactModel {
+        normal,
+        tangential,
+        rolling,
+        twisting,
+        carry,
+        mu,
+        kt,
+        zeta_t,
+        kappa,
+        mu_r,
+        k_r,
+        eta_r,
+        mu_tw,
+        k_tw,
+        eta_tw,
+        layout,
+        step,
+    } = *m;
+    let c = normal.consts;
     check_model_parts(
-        m.normal.kernel,
-        [m.tangential, m.rolling, m.twisting, m.carry],
+        normal.kernel,
+        [tangential, rolling, twisting, carry],
         &[
-            m.normal.consts.k,
-            m.normal.consts.c,
-            m.normal.consts.h,
-            m.mu,
-            m.kt,
-            m.zeta_t,
-            m.kappa,
-            m.mu_r,
-            m.k_r,
-            m.eta_r,
-            m.mu_tw,
-            m.k_tw,
-            m.eta_tw,
+            c.k, c.c, c.h, mu, kt, zeta_t, kappa, mu_r, k_r, eta_r, mu_tw, k_tw, eta_tw,
         ],
-        m.layout,
-        m.step.on(),
+        layout,
+        step.on(),
     )
 }
 
