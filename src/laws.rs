@@ -225,7 +225,7 @@ pub(crate) use selectors;
 /// what [`selectors!`] does (the constants and the table `TABLE`) and a module `module` with
 /// * `valid(code)`: whether `code` is a law of this kind (the model and spec checks),
 /// * `history(code)`: the doubles of history the law keeps (0 for `NONE` and unknown codes;
-///   [`crate::contact::model::Layout`] is built from it),
+///   [`crate::contact::model::Layout`] is built from it) and `MAX_HISTORY`, their maximum,
 /// * `dispatch!(code, |X| body, otherwise)`: the one branch on the code, a `match` with one arm
 ///   per law in which `X` is bound to the law's implementation (`(type)`: a type alias, so
 ///   `body` calls a monomorphised generic such as `tangential_pass::<X>`; `(const bool)`: a
@@ -263,6 +263,19 @@ macro_rules! stages {
                     _ => 0,
                 }
             }
+
+            /// The longest history of a law of this kind.
+            pub const MAX_HISTORY: usize = {
+                let all = [$(0 $(+ $h)?),*];
+                let (mut i, mut max) = (0, 0);
+                while i < all.len() {
+                    if all[i] > max {
+                        max = all[i];
+                    }
+                    i += 1;
+                }
+                max
+            };
 
             /// The one branch on a code of this kind: `dispatch!(code, |X| body, otherwise)`
             /// evaluates `body` with `X` bound to the law's implementation, `otherwise` for
