@@ -266,13 +266,13 @@ macro_rules! stages {
 
             /// The longest history of a law of this kind.
             pub const MAX_HISTORY: usize = {
-                let all = [$(0 $(+ $h)?),*];
-                let (mut i, mut max) = (0, 0);
-                while i < all.len() {
-                    if all[i] > max {
-                        max = all[i];
+                let mut rest: &[usize] = &[$(0 $(+ $h)?),*];
+                let mut max = 0;
+                while let [h, tail @ ..] = rest {
+                    if *h > max {
+                        max = *h;
                     }
-                    i += 1;
+                    rest = tail;
                 }
                 max
             };

@@ -96,13 +96,17 @@ pub const HISTORY_MAX: usize = 12;
 
 // The largest model of the registries fits: the normal, the longest record of each stage and
 // the one double of the step-aware damping or of a normal law with state.
-const _: () = assert!(
-    3 + select::tangential::MAX_HISTORY
-        + select::rolling::MAX_HISTORY
-        + select::twisting::MAX_HISTORY
-        + 1
-        <= HISTORY_MAX
-);
+const _: () = {
+    let (normal, state) = (3, 1);
+    assert!(
+        normal
+            + select::tangential::MAX_HISTORY
+            + select::rolling::MAX_HISTORY
+            + select::twisting::MAX_HISTORY
+            + state
+            <= HISTORY_MAX
+    );
+};
 
 /// Where each sub-model keeps its state in the caller's history array (offsets in doubles).
 /// Only the parts a model uses are present, so a model's history is as short as it can be.
