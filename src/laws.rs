@@ -218,6 +218,95 @@ macro_rules! selectors {
 }
 pub(crate) use selectors;
 
+/// The registry of a sub-model kind whose laws are contact stages (tangential, rolling,
+/// twisting; carry, whose laws are flags): the lines of [`selectors!`], each law but `NONE`
+/// followed by `=> [implementation] history n;`. Invoked as
+/// `stages! { $ TABLE, module (binding): lines }` (the `$` lets it write a macro), it generates
+/// what [`selectors!`] does (the constants and the table `TABLE`) and a module `module` with
+/// * `valid(code)`: whether `code` is a law of this kind (the model and spec checks),
+/// * `history(code)`: the doubles of history the law keeps (0 for `NONE` and unknown codes;
+///   [`crate::contact::model::Layout`] is built from it) and `MAX_HISTORY`, their maximum,
+/// * `dispatch!(code, |X| body, otherwise)`: the one branch on the code, a `match` with one arm
+///   per law in which `X` is bound to the law's implementation (`(type)`: a type alias, so
+///   `body` calls a monomorphised generic such as `tangential_pass::<X>`; `(const bool)`: a
+///   constant), and `otherwise` for `NONE` and unknown codes.
+///
+/// A law added to the table is thereby dispatched in the scalar and batch paths, the energy
+/// ledger and the specification, checked and given its history, with no other hand edit.
+macro_rules! stages {
+    ($d:tt $table:ident, $module:ident $bind:tt: $(
+        $(#[$m:meta])*
+        $konst:ident ($name:ident) = $code:literal, $kw:literal, $doc:literal, $mat:literal,
+        [$($p:expr),* $(,)?] $(=> $imp:tt history $h:literal)?;
+    )*) => {
+        crate::laws::selectors! {
+            $table: $(
+                $(#[$m])*
+                $konst ($name) = $code, $kw, $doc, $mat, [$($p),*];
+            )*
+        }
+
+        #[doc = concat!("Checks, history and dispatch of the laws of [`", stringify!($table), "`].")]
+        pub mod $module {
+            /// Whether `code` is a law of this kind.
+            #[inline(always)]
+            #[allow(clippy::manual_range_patterns)]
+            pub const fn valid(code: i32) -> bool {
+                matches!(code, $($code)|*)
+            }
+
+            /// Doubles of history the law keeps (0: none, or not a law of this kind).
+            #[inline(always)]
+            pub const fn history(code: i32) -> usize {
+                match code {
+                    $($code => 0 $(+ $h)?,)*
+                    _ => 0,
+                }
+            }
+
+            /// The longest history of a law of this kind.
+            pub const MAX_HISTORY: usize = {
+                let mut rest: &[usize] = &[$(0 $(+ $h)?),*];
+                let mut max = 0;
+                while let [h, tail @ ..] = rest {
+                    if *h > max {
+                        max = *h;
+                    }
+                    rest = tail;
+                }
+                max
+            };
+
+            /// The one branch on a code of this kind: `dispatch!(code, |X| body, otherwise)`
+            /// evaluates `body` with `X` bound to the law's implementation, `otherwise` for
+            /// `NONE` and unknown codes.
+            #[allow(unused_macros)]
+            macro_rules! dispatch {
+                ($d sel:expr, |$d x:ident| $d body:expr, $d none:expr $d(,)?) => {
+                    match $d sel {
+                        $($(
+                            $code => {
+                                crate::laws::stages!(@bind $bind $d x $imp);
+                                $d body
+                            }
+                        )?)*
+                        _ => $d none,
+                    }
+                };
+            }
+            #[allow(unused_imports)]
+            pub(crate) use dispatch;
+        }
+    };
+    (@bind (type) $x:ident [$($i:tt)*]) => {
+        type $x = $($i)*;
+    };
+    (@bind (const $t:ty) $x:ident [$($i:tt)*]) => {
+        const $x: $t = $($i)*;
+    };
+}
+pub(crate) use stages;
+
 const fn p(field: &'static str, unit: &'static str, doc: &'static str) -> Param {
     Param { field, unit, doc }
 }

@@ -97,12 +97,17 @@ public:
     void register_history(IContactHistorySetup *hsetup, const NormalModel<DEMCONTACT> *normal)
     {
         dc_contact_spec s;
-        dc_contact_spec_init(&s);
-        s.normal = DC_NORMAL_HERTZ;
-        s.damping = DC_DAMPING_RESTITUTION;
-        s.e_n = 0.5;
-        s.E1 = s.E2 = 1e7;
-        s.nu1 = s.nu2 = 0.3;
+        // the normal model's law (law KEYWORD: its state is in this block too), else Hertz
+        if (normal) {
+            normal->law_placeholder(s);
+        } else {
+            dc_contact_spec_init(&s);
+            s.normal = DC_NORMAL_HERTZ;
+            s.damping = DC_DAMPING_RESTITUTION;
+            s.e_n = 0.5;
+            s.E1 = s.E2 = 1e7;
+            s.nu1 = s.nu2 = 0.3;
+        }
         s.mu = 0.5;
         s.mu_r = 0.1;
         if (rolling) s.rolling = DC_ROLLING_EPSD;
@@ -157,7 +162,8 @@ public:
             for (int j = 1; j <= ntypes; j++) {
                 dc_contact_spec &s = specs[i * (ntypes + 1) + j];
                 if (!normal->full_spec(i, j, s))
-                    error->all(FLERR, "tangential/rolling_friction demcontact need model demcontact with exponent 1.5");
+                    error->all(FLERR, "tangential/rolling_friction demcontact need model demcontact with exponent 1.5 "
+                                      "(or a law KEYWORD)");
                 if (rolling) {
                     s.rolling = rolling_constant ? DC_ROLLING_CONSTANT : DC_ROLLING_EPSD;
                     s.mu_r = coeff[i][j];

@@ -3,7 +3,9 @@
  * (Debian libliggghts-dev) and loaded into the stock `liggghts` executable with LD_PRELOAD:
  *
  *   pair_style gran model demcontact tangential history [limitForce on] [exponent 1.5] [stepExact on]
+ *              [law KEYWORD]
  *   fix wall wall/gran model demcontact tangential history primitive type 1 zplane 0.0 [stepExact on]
+ *              [law KEYWORD]
  *
  * Force: F = k d^p + alpha sqrt(m k) d^((p-1)/2) vn (power-law Tsuji) from demcontact's dc_pair
  * and dc_normal_force_inline (header-only, see ../common/tsuji_force.h): at the default p = 1.5 a dc_pair_hertz of the two
@@ -23,6 +25,19 @@
  * too, its own step slot in its block (friction_models_demcontact.h), so that its Coulomb limit
  * sees the same step-aware normal force. The step follows update->dt: set at each run's init
  * (connectToProperties) and again at the first contact after dt changed.
+ *
+ * law KEYWORD: the registry's normal law of that keyword (plugins/common/demcontact_laws.h,
+ * generated from src/force/registry.rs: hertz, powerlaw, linear, viscoelastic, elastic_plastic; a
+ * law added there is a keyword here without an edit), evaluated as stepExact's force is: demcontact's
+ * full contact with no sub-model (dc_contact_force_checked_inline), its history (the law's state,
+ * e.g. elastic_plastic's largest overlap, then the step slot with stepExact on) in LIGGGHTS'
+ * contact history ("dc_normal0", ...), zeroed when a contact starts. Its materials are
+ * youngsModulus/poissonsRatio; coefficientRestitution where the law takes a target (required only
+ * then); each other parameter a property/global named after its dc_contact_spec field in
+ * camelCase (yield_pressure -> yieldPressure, k_n -> kN, visco_A -> viscoA, p -> p,
+ * work_of_adhesion -> workOfAdhesion), peratomtypepair or scalar. The adhesive laws (dmt, jkr:
+ * never clamped) are refused: they act at negative overlap, which this model does not evaluate.
+ * With tangential/rolling_friction demcontact the sub-models' full models take the same law.
  *
  * Registration: LIGGGHTS selects a compiled template instance by a hash of the model ids
  * (normal | tangential << 6 | ...). A static initializer adds the name "demcontact" to the contact
@@ -47,8 +62,13 @@
 
 #include <demcontact.h>
 #include <demcontact_inline.h>
+#include "demcontact_laws.h"
 #include "tsuji_force.h"
+#include "fix_property_global.h"
+#include "modify.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -56,6 +76,86 @@
 #include <map>
 #include <string>
 #include <vector>
+
+/* `law KEYWORD`: a setting whose values are the registry's normal-law keywords (demcontact_laws.h,
+   generated), so that a law added to the registry is a keyword here without an edit. LIGGGHTS 3.8's
+   Settings offers on/off, yes/no and double settings only, its map of settings private: the map is
+   reached through the standard's rule that an explicit instantiation may name a private member
+   (Rob below), and the setting added to it is deleted by Settings' destructor as its own are. An
+   unknown keyword ends the run with LIGGGHTS' error "while parsing 'law' argument: unknown normal
+   law '...'", whose text lists the keywords. */
+namespace demcontact_law_setting {
+
+class LawSetting : public Setting {
+public:
+    typedef int value_type;
+    explicit LawSetting(const std::string &n) : Setting(n, 1) { current.setValue(-1); }
+    void registerTarget(int &target) { current.registerTarget(target); }
+    int parseArguments(char **args)
+    {
+        if (name != args[0]) return 0;
+        if (!args[1]) {
+            error_message = "while parsing 'law' argument: a normal-law keyword must follow (" DC_NORMAL_LAW_KEYWORDS ")";
+            return -1;
+        }
+        const dc_normal_law *law = dc_normal_law_find(args[1]);
+        if (!law) {
+            error_message = std::string("while parsing 'law' argument: unknown normal law '") + args[1] +
+                            "' (demcontact's laws: " DC_NORMAL_LAW_KEYWORDS ")";
+            return -1;
+        }
+        current.setValue(law->code);
+        return 2;
+    }
+    void print_value(FILE *out)
+    {
+        const dc_normal_law *law = dc_normal_law_of(current.getValue());
+        std::fputs(law ? law->keyword : "default", out);
+    }
+
+private:
+    ValuePropagator<int> current;
+};
+
+typedef std::map<std::string, Setting *> SettingMap;
+struct MapTag {
+    typedef SettingMap Settings::*type;
+    friend type settings_map(MapTag);
+};
+template <typename Tag, typename Tag::type M>
+struct Rob {
+    friend typename Tag::type settings_map(Tag) { return M; }
+};
+template struct Rob<MapTag, &Settings::settings>;
+
+// register `law` (once per Settings; every model of a contact model shares the value)
+inline void register_law(Settings &settings, int &target)
+{
+    SettingMap &m = settings.*settings_map(MapTag());
+    if (m.find("law") == m.end()) m["law"] = new LawSetting("law");
+    LawSetting *ls = dynamic_cast<LawSetting *>(m["law"]);
+    if (ls) ls->registerTarget(target);
+}
+
+/* The LIGGGHTS property of a law parameter: the dc_contact_spec field in camelCase (yield_pressure
+   -> yieldPressure, work_of_adhesion -> workOfAdhesion, visco_A -> viscoA, k_n -> kN, p -> p). */
+inline std::string property_name(const char *field)
+{
+    std::string out;
+    bool up = false;
+    for (const char *c = field; *c; c++) {
+        if (*c == '_') {
+            up = true;
+            continue;
+        }
+        out += up ? static_cast<char>(std::toupper(static_cast<unsigned char>(*c)))
+                  : (out.empty() ? static_cast<char>(std::tolower(static_cast<unsigned char>(*c))) : *c);
+        up = false;
+    }
+    return out;
+}
+
+} // namespace demcontact_law_setting
 
 namespace LIGGGHTS {
 namespace ContactModels {
@@ -84,13 +184,65 @@ public:
         settings.registerDoubleSetting("densityRef", rho_ref, 0.0);
         // stepExact on: dc_contact_model_set_step at LIGGGHTS' dt (see the top of this file)
         settings.registerOnOff("stepExact", step_exact, false);
+        // law KEYWORD: the registry's normal law of that keyword, through demcontact's full contact
+        demcontact_law_setting::register_law(settings, law_code);
     }
 
     // The tangential/rolling models of the same contact model find this normal model here.
     void postSettings(IContactHistorySetup *hsetup, ContactModelBase *)
     {
         demcontact_normals()[owner] = this;
-        if (step_exact) step_offset = hsetup->add_history_value("dc_step", "0");
+        if (law_code >= 0) {
+            // the law's own doubles (its state: elastic_plastic's largest overlap) and the step
+            // slot: the length of a placeholder model of the law (the values do not change it)
+            dc_contact_spec s;
+            law_placeholder(s);
+            dc_contact_model m;
+            size_t len = 0;
+            int32_t st = dc_contact_model_init(&s, &m);
+            if (st == DC_OK && step_exact) st = dc_contact_model_set_step(&m, 1.0, DC_INTEGRATOR_VELOCITY_VERLET);
+            if (st == DC_OK) st = dc_contact_history_len(&m, &len);
+            if (st != DC_OK) { // the run's own values are rejected with their names at init
+                const dc_normal_law *law = dc_normal_law_of(law_code);
+                len = (law && law->state ? 1 : 0) + (step_exact ? 1 : 0);
+            }
+            law_nh = static_cast<int>(len);
+            for (int k = 0; k < law_nh; k++) {
+                const int off = hsetup->add_history_value("dc_normal" + std::to_string(k), "0");
+                if (k == 0) step_offset = off;
+            }
+        } else if (step_exact) {
+            step_offset = hsetup->add_history_value("dc_step", "0");
+            law_nh = 1;
+        }
+    }
+
+    /* law KEYWORD: a spec of the law with placeholder values (materials 1e7 Pa, 0.3; e_n 0.5; every
+       parameter 1), for the history length and the sub-models' placeholders. */
+    void law_placeholder(dc_contact_spec &s) const
+    {
+        dc_contact_spec_init(&s);
+        const dc_normal_law *law = dc_normal_law_of(law_code);
+        if (!law) {
+            s.normal = DC_NORMAL_HERTZ;
+            s.damping = DC_DAMPING_RESTITUTION;
+            s.e_n = 0.5;
+            s.E1 = s.E2 = 1e7;
+            s.nu1 = s.nu2 = 0.3;
+            return;
+        }
+        s.normal = law->code;
+        s.criterion = DC_END_OVERLAP;
+        s.E1 = s.E2 = 1e7;
+        s.nu1 = s.nu2 = 0.3;
+        if (law->restitution) {
+            s.damping = DC_DAMPING_RESTITUTION;
+            s.e_n = 0.5;
+        } else {
+            s.damping = DC_DAMPING_NONE;
+        }
+        for (int k = 0; k < law->nparams; k++)
+            *reinterpret_cast<double *>(reinterpret_cast<char *>(&s) + law->params[k].offset) = 1.0;
     }
     ~NormalModel()
     {
@@ -101,6 +253,10 @@ public:
        this model's force (Hertz or viscoelastic Hertz; not other exponents). */
     bool full_spec(int i, int j, dc_contact_spec &s) const
     {
+        if (law_code >= 0) { // law KEYWORD: built and checked in calibrate_law
+            s = law_specs[i * (ntypes + 1) + j];
+            return true;
+        }
         if (exponent != 1.5) return false;
         const dc_pair &pr = pairs[i * (ntypes + 1) + j];
         dc_contact_spec_init(&s);
@@ -134,7 +290,11 @@ public:
         registry.connect("poissonsRatio", nu, "model demcontact");
         registry.connect("Yeff", Yeff, "model demcontact");
         registry.connect("Geff", Geff, "model demcontact");
-        registry.connect("coeffRest", coeffRest, "model demcontact");
+        // a law without a restitution target (elastic_plastic, viscoelastic: their loss is their
+        // own) does not read coefficientRestitution: not required then
+        const dc_normal_law *law = dc_normal_law_of(law_code);
+        if (!law || law->restitution) registry.connect("coeffRest", coeffRest, "model demcontact");
+        else coeffRest = NULL;
         deferred = false; // set again by rolling_friction demcontact's combine_into at this init
         // Called on every rank at each run's init, after the material fixes exist: calibrate here
         // (error->all is collective) rather than lazily at a first contact that not all ranks see.
@@ -176,8 +336,8 @@ public:
 
         // LIGGGHTS' vn is negative while approaching; demcontact's is positive while compressing.
         // (units si/cgs: nktv2p = 1, as the builtin models assume for the force itself.)
-        const double Fn = step_exact ? step_force(sidata, reff, meff)
-                                     : demcontact_sim::contact_force(pair, deltan, -sidata.vn, reff, meff);
+        const double Fn = (step_exact || law_code >= 0) ? step_force(sidata, reff, meff)
+                                           : demcontact_sim::contact_force(pair, deltan, -sidata.vn, reff, meff);
 
         // What the tangential model reads: identical to the builtin `model hertz`.
         const double sqrtval = std::sqrt(reff * deltan);
@@ -191,7 +351,8 @@ public:
         // with c = alpha sqrt(k0): the root the force kernel takes too (the same operands, so the
         // compiler computes it once; the exact value, rounded differently than three roots).
         // Viscoelastic pairs have no Tsuji damping (alpha = 0).
-        sidata.gamman = pair.model == DC_MODEL_HERTZ ? pair.c * std::sqrt(meff * sqrtval)
+        sidata.gamman = law_code >= 0 ? 0.0 // law KEYWORD: its own loss (no Tsuji coefficient)
+                        : pair.model == DC_MODEL_HERTZ ? pair.c * std::sqrt(meff * sqrtval)
                         : pair.model == DC_MODEL_POWERLAW
                             ? pair.alpha * std::sqrt(meff * demcontact_sim::contact_stiffness(pair, reff)) *
                                   std::pow(deltan, 0.5 * (pair.p - 1.0))
@@ -218,7 +379,7 @@ public:
     {
         if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
         if (step_offset >= 0 && scdata.contact_history) // a new contact starts from zero
-            scdata.contact_history[step_offset] = 0.0;
+            for (int k = 0; k < law_nh; k++) scdata.contact_history[step_offset + k] = 0.0;
     }
 
     /* stepExact on: the dt the step-aware models were set for; follows update->dt (error: the
@@ -238,19 +399,23 @@ public:
         error->one(FLERR, msg);
     }
     bool step_exact = false;
-    int step_offset = -1; // history index of "dc_step"; -1: off
+    int step_offset = -1; // history index of "dc_step" / "dc_normal0"; -1: neither stepExact nor law
+    int law_nh = 0;       // history doubles from step_offset on
+    int law_code = -1;    // law KEYWORD: its DC_NORMAL_*; -1: the default law (Hertz/exponent/viscoelastic)
     void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
-    /* The step-aware normal force of one contact (stepExact on): demcontact's full contact with no
-       sub-model, on a state with the same overlap, normal speed, r_eff and m_eff (body 2 with
-       infinite radius and mass, at rest: r_eff, m_eff exact), its slot "dc_step" in LIGGGHTS'
-       contact history, advanced only when LIGGGHTS says so (computeflag && shearupdate). */
+    /* The normal force of one contact with stepExact on or law KEYWORD (step-aware or not, by
+       step_models[]): demcontact's full contact with no sub-model, on a state with the same
+       overlap, normal speed, r_eff and m_eff (body 2 with infinite radius and mass, at rest:
+       r_eff, m_eff exact), its law_nh doubles from step_offset in LIGGGHTS' contact history ("dc_step";
+       law KEYWORD: "dc_normal0", ...: the law's state, then the step slot), advanced only when
+       LIGGGHTS says so (computeflag && shearupdate). */
     double step_force(SurfacesIntersectData &sidata, double reff, double meff)
     {
         const double dt = update->dt;
-        if (dt != step_dt) { // dt changed during the run (not at an init): follow it
+        if (step_exact && dt != step_dt) { // dt changed during the run (not at an init): follow it
             for (dc_contact_model &m : step_models) {
                 if (m.magic == 0) continue; // type 0 rows (unused)
                 const int32_t s = set_step(m, dt);
@@ -272,10 +437,11 @@ private:
         s.r2 = inf;
         s.m1 = meff;
         s.m2 = inf;
-        double *slot = &sidata.contact_history[step_offset], copy;
-        if (!(sidata.computeflag && sidata.shearupdate)) { // evaluate without advancing the history
-            copy = *slot;
-            slot = &copy;
+        double copy[MAX_LAW_NH];
+        double *slot = law_nh > 0 ? &sidata.contact_history[step_offset] : copy; // law_nh 0: no history read
+        if (law_nh > 0 && !(sidata.computeflag && sidata.shearupdate)) { // evaluate without advancing the history
+            for (int k = 0; k < law_nh; k++) copy[k] = slot[k];
+            slot = copy;
         }
         dc_contact_result r;
         const int32_t st =
@@ -300,6 +466,10 @@ private:
 
     void calibrate()
     {
+        if (law_code >= 0) {
+            calibrate_law();
+            return;
+        }
         const int n = atom->ntypes;
         const int32_t crit = limitForce ? DC_END_FORCE : DC_END_OVERLAP;
         double es = 0.0, a = 0.0;
@@ -396,6 +566,167 @@ private:
         }
         ntypes = n;
     }
+
+    /* law KEYWORD: one normal-only contact model per type pair (step_models, evaluated by
+       step_force) from the law's spec: materials youngsModulus/poissonsRatio, coefficientRestitution
+       where the law takes a target, and each parameter from the property/global named after its
+       field (law_property), peratomtypepair or scalar. Every value checked by demcontact, named. */
+    void calibrate_law()
+    {
+        const int n = atom->ntypes;
+        const dc_normal_law *law = dc_normal_law_of(law_code);
+        char msg[512];
+        if (!law) error->all(FLERR, "model demcontact: law: unknown law code"); // cannot happen: the setting checks
+        if (viscoelastic)
+            error->all(FLERR, "model demcontact: viscoelastic on is a normal law of its own: drop it, or give law "
+                              "viscoelastic (parameter viscoA) instead");
+        if (exponent != 1.5) {
+            std::snprintf(msg, sizeof msg,
+                          "model demcontact: exponent %g is the default law's: with law %s drop it (law powerlaw "
+                          "takes its exponent from the property p)",
+                          exponent, law->keyword);
+            error->all(FLERR, msg);
+        }
+        if (!law->clamp && limitForce) {
+            std::snprintf(msg, sizeof msg,
+                          "model demcontact: law %s is never clamped (DC_END_OVERLAP only): drop limitForce on",
+                          law->keyword);
+            error->all(FLERR, msg);
+        }
+        // An adhesive law (never clamped: a clamp would delete its attraction) acts at negative
+        // overlap: DMT's tail, JKR's neck down to its breakage overlap. This model computes a
+        // contact only while the spheres overlap (surfacesIntersect), so such a law would lose its
+        // attraction there (undamped JKR: no breakage loss, e = 1): refused, not approximated.
+        if (!law->clamp) {
+            std::snprintf(msg, sizeof msg,
+                          "model demcontact: law %s acts at negative overlap, which this plugin does not evaluate "
+                          "(it computes overlapping pairs only): not supported in LIGGGHTS",
+                          law->keyword);
+            error->all(FLERR, msg);
+        }
+        double es = 0.0;
+        for (int i = 1; i <= n; i++) {
+            int32_t s = dc_effective_modulus(Y[i], 0.25, Y[i], 0.25, &es);
+            if (s != DC_OK) reject("youngsModulus", i, Y[i], s);
+            s = dc_effective_modulus(1.0, nu[i], 1.0, nu[i], &es);
+            if (s != DC_OK) reject("poissonsRatio", i, nu[i], s);
+        }
+        // the parameters: [k][i * (n + 1) + j]
+        std::vector<std::vector<double> > par(law->nparams, std::vector<double>((n + 1) * (n + 1), 0.0));
+        for (int k = 0; k < law->nparams; k++) {
+            const std::string name = demcontact_law_setting::property_name(law->params[k].field);
+            FixPropertyGlobal *f = static_cast<FixPropertyGlobal *>(
+                modify->find_fix_property(name.c_str(), "property/global", "peratomtypepair", n, n, "model demcontact", false));
+            bool scalar = false;
+            if (!f) {
+                f = static_cast<FixPropertyGlobal *>(
+                    modify->find_fix_property(name.c_str(), "property/global", "scalar", 0, 0, "model demcontact", false));
+                scalar = f != NULL;
+            }
+            if (!f) {
+                std::snprintf(msg, sizeof msg,
+                              "model demcontact: law %s needs its parameter %s [%s] (%s): fix ID all property/global "
+                              "%s peratomtypepair %d v11 v12 ... (or scalar v)",
+                              law->keyword, name.c_str(), law->params[k].unit, law->params[k].field, name.c_str(), n);
+                error->all(FLERR, msg);
+            }
+            for (int i = 1; i <= n; i++)
+                for (int j = 1; j <= n; j++)
+                    par[k][i * (n + 1) + j] = scalar ? f->compute_scalar() : f->compute_array(i - 1, j - 1);
+        }
+        law_specs.assign((n + 1) * (n + 1), dc_contact_spec());
+        step_models.assign((n + 1) * (n + 1), dc_contact_model());
+        beta.assign((n + 1) * (n + 1), 0.0);
+        pairs.assign((n + 1) * (n + 1), dc_pair());
+        size_t len_max = 0;
+        for (int i = 1; i <= n; i++)
+            for (int j = 1; j <= n; j++) {
+                const int ij = i * (n + 1) + j;
+                dc_contact_spec &s = law_specs[ij];
+                dc_contact_spec_init(&s);
+                s.normal = law->code;
+                s.criterion = limitForce ? DC_END_FORCE : DC_END_OVERLAP;
+                s.E1 = Y[i];
+                s.nu1 = nu[i];
+                s.E2 = Y[j];
+                s.nu2 = nu[j];
+                if (law->restitution) {
+                    s.damping = DC_DAMPING_RESTITUTION;
+                    s.e_n = coeffRest[i][j];
+                    // the builtin `model hertz`'s tangential damping, as the default law's
+                    const double lne = std::log(coeffRest[i][j]);
+                    beta[ij] = lne / std::sqrt(lne * lne + M_PI * M_PI);
+                } else {
+                    s.damping = DC_DAMPING_NONE;
+                }
+                for (int k = 0; k < law->nparams; k++)
+                    *reinterpret_cast<double *>(reinterpret_cast<char *>(&s) + law->params[k].offset) = par[k][ij];
+                // each parameter on its own first (so that the message names it), in a copy whose
+                // other parameters are the placeholder's
+                for (int k = 0; k < law->nparams; k++) {
+                    dc_contact_spec one;
+                    law_placeholder(one);
+                    one.criterion = s.criterion;
+                    one.E1 = s.E1;
+                    one.nu1 = s.nu1;
+                    one.E2 = s.E2;
+                    one.nu2 = s.nu2;
+                    const size_t off = law->params[k].offset;
+                    *reinterpret_cast<double *>(reinterpret_cast<char *>(&one) + off) = par[k][ij];
+                    dc_contact_model m;
+                    const int32_t st = dc_contact_model_init(&one, &m);
+                    if (st != DC_OK && st != DC_ERR_RESTITUTION_RANGE) {
+                        std::snprintf(msg, sizeof msg,
+                                      "model demcontact: law %s: %s of types %d-%d = %g rejected by demcontact: %s",
+                                      law->keyword,
+                                      demcontact_law_setting::property_name(law->params[k].field).c_str(), i, j,
+                                      par[k][ij], dc_status_str(st));
+                        error->all(FLERR, msg);
+                    }
+                }
+                dc_contact_model &m = step_models[ij];
+                int32_t st = dc_contact_model_init(&s, &m);
+                if (st == DC_OK && step_exact) {
+                    st = set_step(m, update->dt);
+                    if (st != DC_OK) {
+                        std::snprintf(msg, sizeof msg,
+                                      "model demcontact: stepExact with law %s (types %d-%d, timestep %g) rejected by "
+                                      "demcontact: %s",
+                                      law->keyword, i, j, update->dt, dc_status_str(st));
+                        error->all(FLERR, msg);
+                    }
+                }
+                if (st == DC_OK) st = dc_contact_model_check_inline(&m);
+                size_t len = 0;
+                if (st == DC_OK) st = dc_contact_history_len(&m, &len);
+                if (st != DC_OK) {
+                    std::snprintf(msg, sizeof msg,
+                                  "model demcontact: law %s (types %d-%d, coefficientRestitution = %g) rejected by "
+                                  "demcontact: %s",
+                                  law->keyword, i, j, law->restitution ? coeffRest[i][j] : 1.0, dc_status_str(st));
+                    error->all(FLERR, msg);
+                }
+                len_max = std::max(len_max, len);
+            }
+        if (static_cast<int>(len_max) > law_nh || len_max > MAX_LAW_NH) {
+            std::snprintf(msg, sizeof msg, "model demcontact: law %s needs %d history doubles, %d registered",
+                          law->keyword, static_cast<int>(len_max), law_nh);
+            error->all(FLERR, msg);
+        }
+        step_dt = update->dt;
+        ntypes = n;
+        static bool reported = false; // one line per process, not one per wall/pair instance
+        if (comm->me == 0 && !reported) {
+            reported = true;
+            std::snprintf(msg, sizeof msg, "model demcontact: law %s, %d history double(s), limitForce %s, stepExact %s\n",
+                          law->keyword, law_nh, limitForce ? "on" : "off", step_exact ? "on" : "off");
+            if (screen) std::fputs(msg, screen);
+            if (logfile) std::fputs(msg, logfile);
+        }
+    }
+
+    static const int MAX_LAW_NH = 4;
+    std::vector<dc_contact_spec> law_specs; // law KEYWORD: per type pair (full_spec)
 
     const void *owner;
     double *Y, *nu;

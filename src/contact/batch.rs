@@ -17,9 +17,6 @@ use super::evaluate::{check_model, check_state};
 use super::kinematics::{ContactState, Kin, harmonic};
 use super::model::{ContactModel, HISTORY_MAX, select};
 use super::tangential::TangentialStage;
-use super::tangential_linear::Linear;
-use super::tangential_mindlin::Mindlin;
-use super::tangential_mindlin_rescale::MindlinRescale;
 use super::vec3::{
     V3, add, all_finite, all_positive, bits_finite, cross, dot, finite_bits, no_nan, normal_vector,
     scale, sub,
@@ -755,20 +752,10 @@ fn compute(
             t.fill([0.0; 3]);
         }
     }
-    match m.tangential {
-        select::TANGENTIAL_LINEAR => tangential_pass::<Linear>(m, inp, dt, out),
-        select::TANGENTIAL_MINDLIN => tangential_pass::<Mindlin>(m, inp, dt, out),
-        select::TANGENTIAL_MINDLIN_RESCALE => tangential_pass::<MindlinRescale>(m, inp, dt, out),
-        _ => {}
-    }
-    match m.rolling {
-        select::ROLLING_CONSTANT => rolling_pass::<false>(m, inp, dt, out),
-        select::ROLLING_EPSD => rolling_pass::<true>(m, inp, dt, out),
-        _ => {}
-    }
-    if m.twisting == select::TWISTING_SDS {
-        twisting_pass(m, inp, dt, out);
-    }
+    // One arm per registry line (`select`), each a monomorphised pass.
+    select::tangential::dispatch!(m.tangential, |T| tangential_pass::<T>(m, inp, dt, out), {});
+    select::rolling::dispatch!(m.rolling, |EPSD| rolling_pass::<EPSD>(m, inp, dt, out), {});
+    select::twisting::dispatch!(m.twisting, |_Sds| twisting_pass(m, inp, dt, out), {});
     frame_pass(m, inp, out);
     Ok(())
 }

@@ -40,14 +40,10 @@
 //! first-order error, measured in tests/passivity.rs.
 
 use super::evaluate::ContactForce;
-use super::frame::FrameStep;
 use super::kinematics::{ContactState, Kin};
 use super::model::{ContactModel, HISTORY_MAX, select};
 use super::rolling_constant;
-use super::tangential::{TangentialLaw, mass_factor};
-use super::tangential_linear::Linear;
-use super::tangential_mindlin::Mindlin;
-use super::tangential_mindlin_rescale::contact_radius;
+use super::tangential::{TangentialStage, mass_factor};
 use super::vec3::{V3, add, dot, norm2, scale};
 use crate::force::registry::normal_force_raw;
 use crate::force::stateful;
@@ -124,39 +120,6 @@ fn spring(e_before: f64, k: f64, s_c: V3, s_new: V3, delta: V3) -> (f64, f64) {
     (e_before - e_new + w_in, e_new)
 }
 
-/// The tangential record as a force S and its stiffness: (k_before, S_old, k, S_c, S_new), S_c
-/// the old force carried into the current frame (before any rescaling: the force the bodies
-/// felt at the start of the step).
-fn tangential_forces(
-    m: &ContactModel,
-    k: &Kin,
-    frame: &FrameStep,
-    old: &[f64; HISTORY_MAX],
-    new: &[f64; HISTORY_MAX],
-    at: usize,
-) -> (f64, V3, f64, V3, V3) {
-    if m.tangential == select::TANGENTIAL_MINDLIN_RESCALE {
-        let a = contact_radius(k);
-        let a_old = get1(old, at + 3);
-        let f_old = get3(old, at);
-        return (
-            m.kt * a_old,
-            f_old,
-            m.kt * a,
-            frame.carry(f_old),
-            get3(new, at),
-        );
-    }
-    let kt = if m.tangential == select::TANGENTIAL_MINDLIN {
-        Mindlin::stiffness(m, k)
-    } else {
-        Linear::stiffness(m, k)
-    };
-    let xi_old = get3(old, at);
-    let f = |xi: V3| scale(-kt, xi);
-    (kt, f(xi_old), kt, f(frame.carry(xi_old)), f(get3(new, at)))
-}
-
 /// The ledger of the step that took the history from `old` to `new` and gave `out`.
 pub(crate) fn ledger(
     m: &ContactModel,
@@ -199,24 +162,20 @@ pub(crate) fn ledger(
     };
     let frame = Kin::frame(s, get3(old, 0), dt, m.carry);
     if let Some(at) = m.layout.tangential {
-        let (k0, s_old, kt, s_c, s_new) = if touching {
-            tangential_forces(m, &k, &frame, old, new, at)
-        } else {
-            // The contact ended: the reset spring; its stiffness as it was stored (the
-            // current one of a linear spring, 8 G* a_old of the rescaled law, unknown: 0, of
-            // the total-form Mindlin spring).
-            let k0 = match m.tangential {
-                select::TANGENTIAL_LINEAR => m.kt,
-                select::TANGENTIAL_MINDLIN_RESCALE => m.kt * get1(old, at + 3),
-                _ => 0.0,
-            };
-            let s_old = if m.tangential == select::TANGENTIAL_MINDLIN_RESCALE {
-                get3(old, at)
+        let (old_rec, new_rec) = (old.get(at..).unwrap_or(&[]), new.get(at..).unwrap_or(&[]));
+        // Each law's view of its record (`TangentialStage::ledger_*`); a contact that ended: the
+        // reset spring, its stiffness as it was stored (the current one of a linear spring,
+        // 8 G* a_old of the rescaled law, unknown: 0, of the total-form Mindlin spring).
+        let (k0, s_old, kt, s_c, s_new) = select::tangential::dispatch!(
+            m.tangential,
+            |T| if touching {
+                T::ledger_forces(m, &k, &frame, old_rec, new_rec)
             } else {
-                scale(-k0, get3(old, at))
-            };
-            (k0, s_old, k0, frame.carry(s_old), [0.0; 3])
-        };
+                let (k0, s_old) = T::ledger_ended(m, old_rec);
+                (k0, s_old, k0, frame.carry(s_old), [0.0; 3])
+            },
+            (0.0, [0.0; 3], 0.0, [0.0; 3], [0.0; 3]),
+        );
         let (slip, el) = spring(stored(k0, s_old), kt, s_c, s_new, scale(dt, k.vt));
         let ct = if m.zeta_t > 0.0 {
             2.0 * m.zeta_t * (mass_factor(m.kappa) * k.m_eff * kt).sqrt()
@@ -227,12 +186,14 @@ pub(crate) fn ledger(
         e.tangential_elastic = el;
         e.tangential_damping = ct * norm2(k.vt) * dt;
     }
-    match (m.rolling, m.layout.rolling) {
-        (select::ROLLING_CONSTANT, _) if touching => {
+    // The rolling law's registry flag (EPSD or the constant torque), None for none.
+    let epsd = select::rolling::dispatch!(m.rolling, |EPSD| Some(EPSD), None);
+    match (epsd, m.layout.rolling) {
+        (Some(false), _) if touching => {
             let (t, _) = rolling_constant::torque(m, &k, f);
             e.rolling_slip = -dot(t, k.w_roll) * dt;
         }
-        (select::ROLLING_EPSD, Some(at)) => {
+        (Some(true), Some(at)) => {
             let kr = if m.k_r > 0.0 {
                 m.k_r
             } else if !touching {

@@ -6,9 +6,6 @@ use super::energy::{ContactEnergy, ledger};
 use super::kinematics::{ContactState, Kin};
 use super::model::{ContactModel, HISTORY_MAX, select};
 use super::tangential::{TangentialOut, TangentialStage};
-use super::tangential_linear::Linear;
-use super::tangential_mindlin::Mindlin;
-use super::tangential_mindlin_rescale::MindlinRescale;
 use super::vec3::{V3, add, all_finite, cross, none_negative, normal_vector, scale, sub};
 use super::{rolling_constant, rolling_epsd, step_exact, twisting_sds};
 use crate::Error;
@@ -36,26 +33,36 @@ pub struct ContactForce {
 
 /// Checks a model built elsewhere (e.g. a `dc_contact_model` the caller may have edited).
 pub(crate) fn check_model(m: &ContactModel) -> Result<(), Error> {
+    // Every field by name (no `..`): a field added to the model is checked here or named as
+    // not, or this does not compile (the C model's checks: `model_fields!` in src/ffi/contact.rs).
+    let ContactModel {
+        normal,
+        tangential,
+        rolling,
+        twisting,
+        carry,
+        mu,
+        kt,
+        zeta_t,
+        kappa,
+        mu_r,
+        k_r,
+        eta_r,
+        mu_tw,
+        k_tw,
+        eta_tw,
+        layout,
+        step,
+    } = *m;
+    let c = normal.consts;
     check_model_parts(
-        m.normal.kernel,
-        [m.tangential, m.rolling, m.twisting, m.carry],
+        normal.kernel,
+        [tangential, rolling, twisting, carry],
         &[
-            m.normal.consts.k,
-            m.normal.consts.c,
-            m.normal.consts.h,
-            m.mu,
-            m.kt,
-            m.zeta_t,
-            m.kappa,
-            m.mu_r,
-            m.k_r,
-            m.eta_r,
-            m.mu_tw,
-            m.k_tw,
-            m.eta_tw,
+            c.k, c.c, c.h, mu, kt, zeta_t, kappa, mu_r, k_r, eta_r, mu_tw, k_tw, eta_tw,
         ],
-        m.layout,
-        m.step.on(),
+        layout,
+        step.on(),
     )
 }
 
@@ -76,17 +83,10 @@ pub(crate) fn check_model_parts(
     if needs(kernel).is_none() && !has_state {
         return Err(Error::ContactModelInvalid);
     }
-    let codes_ok = matches!(
-        tangential,
-        select::TANGENTIAL_NONE
-            | select::TANGENTIAL_LINEAR
-            | select::TANGENTIAL_MINDLIN
-            | select::TANGENTIAL_MINDLIN_RESCALE
-    ) && matches!(
-        rolling,
-        select::ROLLING_NONE | select::ROLLING_CONSTANT | select::ROLLING_EPSD
-    ) && matches!(twisting, select::TWISTING_NONE | select::TWISTING_SDS)
-        && matches!(carry, select::CARRY_ROTATE | select::CARRY_PROJECT);
+    let codes_ok = select::tangential::valid(tangential)
+        && select::rolling::valid(rolling)
+        && select::twisting::valid(twisting)
+        && select::carry::valid(carry);
     // Integer reductions instead of a test and a branch per value (this runs on every call).
     let consts_ok = all_finite(consts) & none_negative(consts);
     let [.., kt, _, kappa, _, _, _, _, _, _] = *consts;
@@ -219,15 +219,14 @@ pub(crate) fn evaluate(
     let (mut t1, mut t2) = ([0.0; 3], [0.0; 3]);
     if let (Some(at), Some(frame)) = (m.layout.tangential, &frame) {
         let rec = h.get_mut(at..).unwrap_or(&mut []);
-        let t = match m.tangential {
-            select::TANGENTIAL_LINEAR => Linear::run(m, &k, f, dt, frame, rec),
-            select::TANGENTIAL_MINDLIN => Mindlin::run(m, &k, f, dt, frame, rec),
-            select::TANGENTIAL_MINDLIN_RESCALE => MindlinRescale::run(m, &k, f, dt, frame, rec),
-            _ => TangentialOut {
+        let t = select::tangential::dispatch!(
+            m.tangential,
+            |T| T::run(m, &k, f, dt, frame, rec),
+            TangentialOut {
                 ft: [0.0; 3],
                 sliding: false,
             },
-        };
+        );
         out.ft = t.ft;
         out.sliding = t.sliding;
         out.force = add(out.force, t.ft);
@@ -246,34 +245,32 @@ pub(crate) fn evaluate(
             t2 = sub(t2, mr);
         }
     };
-    match m.rolling {
-        select::ROLLING_CONSTANT => {
+    select::rolling::dispatch!(
+        m.rolling,
+        |EPSD| if !EPSD {
             let (t, on) = rolling_constant::torque(m, &k, f);
             moment(t);
             out.rolling_sliding = on;
-        }
-        select::ROLLING_EPSD => {
-            if let (Some(at), Some(frame)) = (m.layout.rolling, &frame) {
-                let kn = if m.k_r > 0.0 {
-                    0.0
-                } else if m.layout.normal_state.is_some() {
-                    // A law with state has no dashpot: its force is elastic; p F/δ as for the
-                    // others (the secant of the branch it is on, scaled as Hertz's tangent).
-                    pair.p * f / k.d
-                } else {
-                    // The normal law's elastic tangent stiffness p F_el/δ (vn = 0: no damping).
-                    let fe = normal_force_raw(pair.kernel, pair.consts, k.d, 0.0, k.r_eff, k.m_eff);
-                    pair.p * fe / k.d
-                };
-                let mut mk = get3(h, at);
-                let (t, lim) = rolling_epsd::step(m, &k, f, kn, dt, frame, &mut mk);
-                put3(h, at, mk);
-                moment(t);
-                out.rolling_sliding = lim;
-            }
-        }
-        _ => {}
-    }
+        } else if let (Some(at), Some(frame)) = (m.layout.rolling, &frame) {
+            let kn = if m.k_r > 0.0 {
+                0.0
+            } else if m.layout.normal_state.is_some() {
+                // A law with state has no dashpot: its force is elastic; p F/δ as for the
+                // others (the secant of the branch it is on, scaled as Hertz's tangent).
+                pair.p * f / k.d
+            } else {
+                // The normal law's elastic tangent stiffness p F_el/δ (vn = 0: no damping).
+                let fe = normal_force_raw(pair.kernel, pair.consts, k.d, 0.0, k.r_eff, k.m_eff);
+                pair.p * fe / k.d
+            };
+            let mut mk = get3(h, at);
+            let (t, lim) = rolling_epsd::step(m, &k, f, kn, dt, frame, &mut mk);
+            put3(h, at, mk);
+            moment(t);
+            out.rolling_sliding = lim;
+        },
+        {},
+    );
     if let Some(mk) = m.layout.twisting.and_then(|at| h.get_mut(at)) {
         let (t, lim) = twisting_sds::step(m, &k, f, dt, mk);
         moment(scale(t, k.n));

@@ -9,57 +9,68 @@ use crate::force::PairModel;
 /// cbindgen:ignore
 pub mod select {
     use crate::laws::{
-        P_E_T, P_ETA_R, P_ETA_TW, P_K_R, P_K_T, P_K_TW, P_MU, P_MU_R, P_MU_TW, selectors,
+        P_E_T, P_ETA_R, P_ETA_TW, P_K_R, P_K_T, P_K_TW, P_MU, P_MU_R, P_MU_TW, stages,
     };
 
-    selectors! {
-        TANGENTIAL:
+    // Each law: `=> [its TangentialStage] history <doubles of its record>`.
+    stages! {
+        $ TANGENTIAL, tangential (type):
         /// No tangential force.
         TANGENTIAL_NONE (NONE) = 0, "none", "Tangential: none.", false, [];
         /// Cundall–Strack linear history spring k_t with dashpot and Coulomb limit.
         TANGENTIAL_LINEAR (LINEAR) = 1, "linear",
             "Tangential: Cundall-Strack linear history spring k_t, dashpot from e_t, Coulomb limit.",
-            false, [P_MU, P_K_T, P_E_T];
+            false, [P_MU, P_K_T, P_E_T]
+            => [crate::contact::tangential_linear::Linear] history 3;
         /// Mindlin no-slip spring k_t = 8 G* a, a = √(R* δ), dashpot, Coulomb limit.
         TANGENTIAL_MINDLIN (MINDLIN) = 2, "mindlin",
             "Tangential: Mindlin k_t = 8 G* a, a = sqrt(R* d), dashpot from e_t, Coulomb limit. Kept as LAMMPS `mindlin` has it (total form k_t(d) xi); it creates energy when the contact grows (up to +0.27 % of the kinetic energy in an elastic oblique impact, docs/force.md): prefer DC_TANGENTIAL_MINDLIN_RESCALE.",
-            true, [P_MU, P_E_T];
+            true, [P_MU, P_E_T]
+            => [crate::contact::tangential_mindlin::Mindlin] history 3;
         /// Mindlin spring in incremental force form, its force history rescaled by a/a_old when
         /// the contact radius shrinks (Thornton et al. 2013, eq. 18b; LAMMPS
         /// `mindlin_rescale/force`): creates no energy. History: the force (3) and the contact
         /// radius of the last step (1).
         TANGENTIAL_MINDLIN_RESCALE (MINDLIN_RESCALE) = 3, "mindlin_rescale",
             "Tangential: Mindlin k_t = 8 G* a in incremental force form, the force history rescaled by a/a_old when the contact shrinks (Thornton et al. 2013; LAMMPS `mindlin_rescale/force`), dashpot from e_t, Coulomb limit: creates no energy. 4 doubles of tangential history.",
-            true, [P_MU, P_E_T];
+            true, [P_MU, P_E_T]
+            => [crate::contact::tangential_mindlin_rescale::MindlinRescale] history 4;
     }
 
-    selectors! {
-        ROLLING:
+    // Each law: `=> [EPSD] history <doubles>`, EPSD: whether it is the elastic-plastic spring
+    // (`rolling_pass::<EPSD>`; false: the constant torque of `rolling_constant`).
+    stages! {
+        $ ROLLING, rolling (const bool):
         /// No rolling resistance.
         ROLLING_NONE (NONE) = 0, "none", "Rolling resistance: none.", false, [];
         /// Constant directional torque μ_r R* |Fn| opposing the rolling angular velocity.
         ROLLING_CONSTANT (CONSTANT) = 1, "constant",
             "Rolling resistance: constant torque mu_r R* |Fn| opposing the rolling angular velocity.",
-            false, [P_MU_R];
+            false, [P_MU_R]
+            => [false] history 0;
         /// Elastic–plastic spring–dashpot (Ai et al. 2011, type C), own history, limit
         /// μ_r R* |Fn|.
         ROLLING_EPSD (EPSD) = 2, "epsd",
             "Rolling resistance: elastic-plastic spring-dashpot (Ai et al. 2011), limit mu_r R* |Fn|.",
-            false, [P_MU_R, P_K_R, P_ETA_R];
+            false, [P_MU_R, P_K_R, P_ETA_R]
+            => [true] history 3;
     }
 
-    selectors! {
-        TWISTING:
+    // Each law: `=> [its marker type] history <doubles>`.
+    stages! {
+        $ TWISTING, twisting (type):
         /// No twisting resistance.
         TWISTING_NONE (NONE) = 0, "none", "Twisting resistance: none.", false, [];
         /// Spring–dashpot–slider about the normal, limit μ_tw |Fn|.
         TWISTING_SDS (SDS) = 1, "sds",
             "Twisting resistance: spring-dashpot-slider about n, limit mu_tw |Fn|.",
-            false, [P_MU_TW, P_K_TW, P_ETA_TW];
+            false, [P_MU_TW, P_K_TW, P_ETA_TW]
+            => [crate::contact::twisting_sds::Sds] history 1;
     }
 
-    selectors! {
-        CARRY:
+    // Flags read by the frame step (`Kin::frame`): no stage, no history.
+    stages! {
+        $ CARRY, carry (type):
         /// History springs carried by the frame's rotation (spin, then tilt): objective.
         CARRY_ROTATE (ROTATE) = 0, "rotate",
             "History springs follow the contact frame by rotation (the bodies' mean spin, then the tilt of the normal): objective under any rigid rotation of the pair. Default.",
@@ -82,6 +93,20 @@ pub mod select {
 ///
 /// cbindgen:ignore
 pub const HISTORY_MAX: usize = 12;
+
+// The largest model of the registries fits: the normal, the longest record of each stage and
+// the one double of the step-aware damping or of a normal law with state.
+const _: () = {
+    let (normal, state) = (3, 1);
+    assert!(
+        normal
+            + select::tangential::MAX_HISTORY
+            + select::rolling::MAX_HISTORY
+            + select::twisting::MAX_HISTORY
+            + state
+            <= HISTORY_MAX
+    );
+};
 
 /// Where each sub-model keeps its state in the caller's history array (offsets in doubles).
 /// Only the parts a model uses are present, so a model's history is as short as it can be.
@@ -106,11 +131,13 @@ pub struct Layout {
 
 impl Layout {
     /// The layout for the given selectors: the normal of the last step first (at offset 0,
-    /// needed to rotate any vector spring), then each present spring in stage order.
+    /// needed to rotate any vector spring), then each present spring in stage order, each as
+    /// long as its registry line says (`select::<kind>::history`; an unknown code has none).
     pub fn of(tangential: i32, rolling: i32, twisting: i32) -> Layout {
-        let has_t = tangential != select::TANGENTIAL_NONE;
-        let has_r = rolling == select::ROLLING_EPSD;
-        let has_tw = twisting != select::TWISTING_NONE;
+        let t_len = select::tangential::history(tangential);
+        let r_len = select::rolling::history(rolling);
+        let tw_len = select::twisting::history(twisting);
+        let (has_t, has_r, has_tw) = (t_len > 0, r_len > 0, tw_len > 0);
         let mut len = if has_t || has_r || has_tw { 3 } else { 0 };
         let mut take = |on: bool, n: usize| {
             on.then(|| {
@@ -119,9 +146,9 @@ impl Layout {
                 at
             })
         };
-        let t = take(has_t, tangential_len(tangential));
-        let r = take(has_r, 3);
-        let tw = take(has_tw, 1);
+        let t = take(has_t, t_len);
+        let r = take(has_r, r_len);
+        let tw = take(has_tw, tw_len);
         Layout {
             len,
             tangential: t,
@@ -166,16 +193,6 @@ impl Layout {
     #[inline(always)]
     pub fn has_normal(&self) -> bool {
         self.tangential.is_some() || self.rolling.is_some() || self.twisting.is_some()
-    }
-}
-
-/// Doubles of the tangential spring's record: 4 for `TANGENTIAL_MINDLIN_RESCALE` (force and the
-/// last contact radius), else 3.
-pub(crate) fn tangential_len(tangential: i32) -> usize {
-    if tangential == select::TANGENTIAL_MINDLIN_RESCALE {
-        4
-    } else {
-        3
     }
 }
 

@@ -3,8 +3,7 @@
 //! parameters of sub-models that are not chosen are ignored (they may stay unset = NaN).
 
 use super::model::{ContactModel, Layout, select};
-use super::tangential::zeta_from_e_t;
-use super::tangential_mindlin::eight_g_star;
+use super::tangential::{TangentialStage, zeta_from_e_t};
 use crate::force::{PairModel, stateful};
 use crate::{EndCriterion, Error};
 
@@ -134,7 +133,7 @@ pub(crate) fn set(x: f64) -> Result<f64, Error> {
 }
 
 /// A finite parameter ≥ 0.
-fn non_negative(x: f64) -> Result<f64, Error> {
+pub(crate) fn non_negative(x: f64) -> Result<f64, Error> {
     let x = set(x)?;
     if !x.is_finite() {
         return Err(Error::NotFinite);
@@ -146,7 +145,7 @@ fn non_negative(x: f64) -> Result<f64, Error> {
 }
 
 /// A finite parameter > 0.
-fn positive(x: f64) -> Result<f64, Error> {
+pub(crate) fn positive(x: f64) -> Result<f64, Error> {
     let x = set(x)?;
     if !x.is_finite() {
         return Err(Error::NotFinite);
@@ -158,7 +157,7 @@ fn positive(x: f64) -> Result<f64, Error> {
 }
 
 /// One material: E > 0 (+∞ allowed: rigid), −1 < ν ≤ 1/2. Returns (1 − ν²)/E.
-fn compliance(e: f64, nu: f64) -> Result<f64, Error> {
+pub(crate) fn compliance(e: f64, nu: f64) -> Result<f64, Error> {
     let (e, nu) = (set(e)?, set(nu)?);
     if !nu.is_finite() {
         return Err(Error::NotFinite);
@@ -223,44 +222,44 @@ pub fn contact_model(s: &ContactSpec) -> Result<ContactModel, Error> {
         ),
         step: super::step_exact::StepExact::default(),
     };
-    if !matches!(s.carry, select::CARRY_ROTATE | select::CARRY_PROJECT) {
+    if !select::carry::valid(s.carry) {
         return Err(Error::SpecModel);
     }
-    match s.tangential {
-        select::TANGENTIAL_NONE => {}
-        select::TANGENTIAL_LINEAR
-        | select::TANGENTIAL_MINDLIN
-        | select::TANGENTIAL_MINDLIN_RESCALE => {
+    // Each chosen law reads its parameters (its registry line names it and its implementation).
+    select::tangential::dispatch!(
+        s.tangential,
+        |T| {
             m.mu = non_negative(s.mu)?;
             m.zeta_t = zeta_from_e_t(set(s.e_t)?)?;
-            m.kt = if s.tangential == select::TANGENTIAL_LINEAR {
-                positive(s.k_t)?
-            } else {
-                compliance(s.e1, s.nu1)?;
-                compliance(s.e2, s.nu2)?;
-                eight_g_star(s.e1, s.nu1, s.e2, s.nu2)?
-            };
-        }
-        _ => return Err(Error::SpecModel),
-    }
-    match s.rolling {
-        select::ROLLING_NONE => {}
-        select::ROLLING_CONSTANT => m.mu_r = non_negative(s.mu_r)?,
-        select::ROLLING_EPSD => {
+            m.kt = <T as TangentialStage>::stiffness_constant(s)?;
+        },
+        if s.tangential != select::TANGENTIAL_NONE {
+            return Err(Error::SpecModel);
+        },
+    );
+    select::rolling::dispatch!(
+        s.rolling,
+        |EPSD| {
             m.mu_r = non_negative(s.mu_r)?;
-            m.k_r = non_negative(s.k_r)?;
-            m.eta_r = non_negative(s.eta_r)?;
-        }
-        _ => return Err(Error::SpecModel),
-    }
-    match s.twisting {
-        select::TWISTING_NONE => {}
-        select::TWISTING_SDS => {
+            if EPSD {
+                m.k_r = non_negative(s.k_r)?;
+                m.eta_r = non_negative(s.eta_r)?;
+            }
+        },
+        if s.rolling != select::ROLLING_NONE {
+            return Err(Error::SpecModel);
+        },
+    );
+    select::twisting::dispatch!(
+        s.twisting,
+        |_Sds| {
             m.mu_tw = non_negative(s.mu_tw)?;
             m.k_tw = positive(s.k_tw)?;
             m.eta_tw = non_negative(s.eta_tw)?;
-        }
-        _ => return Err(Error::SpecModel),
-    }
+        },
+        if s.twisting != select::TWISTING_NONE {
+            return Err(Error::SpecModel);
+        },
+    );
     Ok(m)
 }

@@ -22,6 +22,7 @@
 use super::frame::FrameStep;
 use super::kinematics::Kin;
 use super::model::ContactModel;
+use super::spec::ContactSpec;
 use super::vec3::{V3, add, norm2, scale, sub};
 use crate::Error;
 
@@ -29,6 +30,25 @@ use crate::Error;
 pub(crate) trait TangentialLaw {
     /// k_t [N/m] of this contact (δ > 0).
     fn stiffness(m: &ContactModel, k: &Kin) -> f64;
+    /// The model's stiffness constant `ContactModel::kt` from the specification, checked.
+    fn stiffness_constant(s: &ContactSpec) -> Result<f64, Error>;
+    /// The stiffness a stored spring had, for the energy ledger of a contact that ended (the
+    /// overlap it was stored at is gone): `m.kt` for a constant k_t, 0 when unknown.
+    fn stored_stiffness(m: &ContactModel) -> f64;
+}
+
+/// The tangential record as a force S and its stiffness, for the energy ledger
+/// ([`super::energy`]): `(k_before, S_old, k, S_c, S_new)`, S_c the old force carried into the
+/// current frame (before any rescaling: the force the bodies felt at the start of the step).
+pub(crate) type LedgerForces = (f64, V3, f64, V3, V3);
+
+/// The first three doubles of a record (zeros past its end).
+#[inline(always)]
+pub(crate) fn rec3(h: &[f64], at: usize) -> V3 {
+    match h.get(at..at + 3) {
+        Some(&[a, b, c]) => [a, b, c],
+        _ => [0.0; 3],
+    }
 }
 
 /// The damping ratio ζ_t = L/√(π² + L²), L = −ln e_t, for a target tangential restitution
@@ -60,7 +80,7 @@ pub(crate) struct TangentialOut {
 }
 
 /// A tangential stage on its history record (the history from the stage's layout offset on; it
-/// reads and writes its own first [`super::model::tangential_len`] doubles). Every
+/// reads and writes its own first `select::tangential::history` doubles, its registry line's). Every
 /// [`TangentialLaw`] is one (the displacement spring ξ of [`step`]);
 /// [`super::tangential_mindlin_rescale`] stores a force and a radius instead.
 pub(crate) trait TangentialStage {
@@ -73,6 +93,24 @@ pub(crate) trait TangentialStage {
         frame: &FrameStep,
         h: &mut [f64],
     ) -> TangentialOut;
+
+    /// The model's stiffness constant `ContactModel::kt` from the specification, checked
+    /// (`μ` and `e_t`, common to every tangential law, are checked by the specification).
+    fn stiffness_constant(s: &ContactSpec) -> Result<f64, Error>;
+
+    /// The ledger's view of a step of a touching contact, from the records before (`old`) and
+    /// after (`new`) it: see [`LedgerForces`].
+    fn ledger_forces(
+        m: &ContactModel,
+        k: &Kin,
+        frame: &FrameStep,
+        old: &[f64],
+        new: &[f64],
+    ) -> LedgerForces;
+
+    /// The ledger's view of the record of a contact that ended: (its stiffness as stored, its
+    /// force S_old).
+    fn ledger_ended(m: &ContactModel, old: &[f64]) -> (f64, V3);
 }
 
 impl<T: TangentialLaw> TangentialStage for T {
@@ -95,6 +133,29 @@ impl<T: TangentialLaw> TangentialStage for T {
         let r = step::<T>(m, k, f_normal, dt, frame, &mut xi);
         [*x, *y, *z] = xi;
         r
+    }
+
+    fn stiffness_constant(s: &ContactSpec) -> Result<f64, Error> {
+        T::stiffness_constant(s)
+    }
+
+    /// The spring ξ as the force −k_t ξ at this contact's k_t.
+    fn ledger_forces(
+        m: &ContactModel,
+        k: &Kin,
+        frame: &FrameStep,
+        old: &[f64],
+        new: &[f64],
+    ) -> LedgerForces {
+        let kt = T::stiffness(m, k);
+        let xi_old = rec3(old, 0);
+        let f = |xi: V3| scale(-kt, xi);
+        (kt, f(xi_old), kt, f(frame.carry(xi_old)), f(rec3(new, 0)))
+    }
+
+    fn ledger_ended(m: &ContactModel, old: &[f64]) -> (f64, V3) {
+        let k0 = T::stored_stiffness(m);
+        (k0, scale(-k0, rec3(old, 0)))
     }
 }
 

@@ -4,6 +4,7 @@
 
 use super::kinematics::Kin;
 use super::model::ContactModel;
+use super::spec::{ContactSpec, compliance};
 use super::tangential::TangentialLaw;
 use crate::Error;
 
@@ -14,6 +15,18 @@ impl TangentialLaw for Mindlin {
     #[inline(always)]
     fn stiffness(m: &ContactModel, k: &Kin) -> f64 {
         m.kt * (k.r_eff * k.d).sqrt()
+    }
+
+    /// 8 G* of the spec's materials (each checked as the normal law checks it).
+    fn stiffness_constant(s: &ContactSpec) -> Result<f64, Error> {
+        compliance(s.e1, s.nu1)?;
+        compliance(s.e2, s.nu2)?;
+        eight_g_star(s.e1, s.nu1, s.e2, s.nu2)
+    }
+
+    /// Unknown: k_t depends on the overlap the spring was stored at.
+    fn stored_stiffness(_m: &ContactModel) -> f64 {
+        0.0
     }
 }
 

@@ -23,8 +23,13 @@
 use super::frame::FrameStep;
 use super::kinematics::Kin;
 use super::model::ContactModel;
-use super::tangential::{TangentialOut, TangentialStage, mass_factor};
-use super::vec3::{add, norm2, scale, sub};
+use super::spec::ContactSpec;
+use super::tangential::{
+    LedgerForces, TangentialLaw, TangentialOut, TangentialStage, mass_factor, rec3,
+};
+use super::tangential_mindlin::Mindlin;
+use super::vec3::{V3, add, norm2, scale, sub};
+use crate::Error;
 
 /// The rescaled incremental Mindlin stage.
 pub(crate) struct MindlinRescale;
@@ -83,5 +88,34 @@ impl TangentialStage for MindlinRescale {
                 sliding: false,
             }
         }
+    }
+
+    /// 8 G*, as [`Mindlin`].
+    fn stiffness_constant(s: &ContactSpec) -> Result<f64, Error> {
+        <Mindlin as TangentialLaw>::stiffness_constant(s)
+    }
+
+    /// The record is the force; its stiffness before the step is 8 G* a_old.
+    fn ledger_forces(
+        m: &ContactModel,
+        k: &Kin,
+        frame: &FrameStep,
+        old: &[f64],
+        new: &[f64],
+    ) -> LedgerForces {
+        let a = contact_radius(k);
+        let a_old = old.get(3).copied().unwrap_or(0.0);
+        let f_old = rec3(old, 0);
+        (
+            m.kt * a_old,
+            f_old,
+            m.kt * a,
+            frame.carry(f_old),
+            rec3(new, 0),
+        )
+    }
+
+    fn ledger_ended(m: &ContactModel, old: &[f64]) -> (f64, V3) {
+        (m.kt * old.get(3).copied().unwrap_or(0.0), rec3(old, 0))
     }
 }

@@ -9,6 +9,11 @@ use super::kinematics::Kin;
 use super::model::ContactModel;
 use super::vec3::dot;
 
+/// The law's name in the registry (`select::TWISTING_SDS`; its stage is [`step`]): a name the
+/// dispatch binds, never a value (the only twisting law needs no type to pick its code).
+#[allow(dead_code)]
+pub(crate) enum Sds {}
+
 /// One twisting step: `mk` is the stored spring torque; returns the torque about n on body 1
 /// and whether the spring is at its limit.
 #[inline(always)]

@@ -104,39 +104,66 @@ pub struct dc_contact_spec {
 /// sizeof(dc_contact_spec) before `yield_pressure` was appended (still accepted).
 const SPEC_SIZE_V1_DMT: usize = core::mem::offset_of!(dc_contact_spec, yield_pressure);
 
-impl From<&dc_contact_spec> for ContactSpec {
-    fn from(s: &dc_contact_spec) -> Self {
-        ContactSpec {
-            normal: s.normal,
-            damping: s.damping,
-            criterion: s.criterion,
-            tangential: s.tangential,
-            rolling: s.rolling,
-            twisting: s.twisting,
-            // Not in the C spec (its layout is fixed): dc_contact_model_set_carry.
-            carry: select::CARRY_ROTATE,
-            e1: s.E1,
-            nu1: s.nu1,
-            e2: s.E2,
-            nu2: s.nu2,
-            p: s.p,
-            k_n: s.k_n,
-            e_n: s.e_n,
-            visco_a: s.visco_A,
-            mu: s.mu,
-            k_t: s.k_t,
-            e_t: s.e_t,
-            mu_r: s.mu_r,
-            k_r: s.k_r,
-            eta_r: s.eta_r,
-            mu_tw: s.mu_tw,
-            k_tw: s.k_tw,
-            eta_tw: s.eta_tw,
-            inertia_factor: s.inertia_factor,
-            work_of_adhesion: s.work_of_adhesion,
-            yield_pressure: s.yield_pressure,
+/// The one list of the fields `dc_contact_spec` shares with [`ContactSpec`], as
+/// `c_name <=> rust_name`, from which both conversions are generated (C → Rust: what
+/// dc_contact_model_init reads; Rust → C: the defaults dc_contact_spec_init writes). Both are
+/// exhaustive struct literals and the Rust → C one an exhaustive destructuring, so a field added
+/// to either struct and not listed here (or listed and missing from one) does not compile. The
+/// fields not shared: `version`, `size` (C only) and `carry` (Rust only; set on the model with
+/// dc_contact_model_set_carry, the C layout being fixed).
+macro_rules! spec_fields {
+    ($($c:ident <=> $r:ident),* $(,)?) => {
+        impl From<&dc_contact_spec> for ContactSpec {
+            fn from(s: &dc_contact_spec) -> Self {
+                ContactSpec {
+                    $($r: s.$c,)*
+                    carry: select::CARRY_ROTATE,
+                }
+            }
         }
-    }
+
+        impl dc_contact_spec {
+            /// The C form of `d` (its `carry` has no C field), with this library's version and
+            /// size.
+            fn of_spec(d: &ContactSpec) -> dc_contact_spec {
+                let ContactSpec { $($r,)* carry: _ } = *d;
+                dc_contact_spec {
+                    version: DC_CONTACT_SPEC_VERSION,
+                    size: core::mem::size_of::<dc_contact_spec>() as u32,
+                    $($c: $r,)*
+                }
+            }
+        }
+    };
+}
+
+spec_fields! {
+    normal <=> normal,
+    damping <=> damping,
+    criterion <=> criterion,
+    tangential <=> tangential,
+    rolling <=> rolling,
+    twisting <=> twisting,
+    E1 <=> e1,
+    nu1 <=> nu1,
+    E2 <=> e2,
+    nu2 <=> nu2,
+    p <=> p,
+    k_n <=> k_n,
+    e_n <=> e_n,
+    visco_A <=> visco_a,
+    mu <=> mu,
+    k_t <=> k_t,
+    e_t <=> e_t,
+    mu_r <=> mu_r,
+    k_r <=> k_r,
+    eta_r <=> eta_r,
+    mu_tw <=> mu_tw,
+    k_tw <=> k_tw,
+    eta_tw <=> eta_tw,
+    inertia_factor <=> inertia_factor,
+    work_of_adhesion <=> work_of_adhesion,
+    yield_pressure <=> yield_pressure,
 }
 
 /// A composed contact model for one material pair: plain data built by dc_contact_model_init,
@@ -189,32 +216,65 @@ pub struct dc_contact_model {
 
 const MAGIC: u32 = 0x4443_4d31;
 
-impl From<ContactModel> for dc_contact_model {
-    fn from(m: ContactModel) -> Self {
-        dc_contact_model {
-            magic: MAGIC,
-            history_len: m.layout.len as u32,
-            tangential: m.tangential,
-            rolling: m.rolling,
-            twisting: m.twisting,
-            carry: m.carry,
-            normal: m.normal.into(),
-            mu: m.mu,
-            kt: m.kt,
-            zeta_t: m.zeta_t,
-            kappa: m.kappa,
-            mu_r: m.mu_r,
-            k_r: m.k_r,
-            eta_r: m.eta_r,
-            mu_tw: m.mu_tw,
-            k_tw: m.k_tw,
-            eta_tw: m.eta_tw,
-            reserved: {
-                let [c0, c1, c2, c3, c4] = m.step.coef;
-                [m.step.scale, c0, c1, c2, c3, c4]
-            },
+/// The one list of the fields `dc_contact_model` shares with [`ContactModel`] (same names), in
+/// two groups: the selectors (`i32`) and the constants (`f64`) the model checks read, in the
+/// order of [`check_model_parts`]. From it: both conversions and the checks' arrays of the C
+/// model. The fields not shared are written out here once: C `magic`, `history_len`
+/// (= `layout.len`), `normal` (a `dc_pair`) and `reserved` (the step-aware damping) against
+/// Rust `normal` (a `PairModel`), `layout` and `step`. Exhaustive struct literals and an
+/// exhaustive destructuring: a field added to either struct and not listed does not compile,
+/// and one added to a group changes the arrays' length, which [`check_model_parts`] fixes.
+macro_rules! model_fields {
+    (sel [$($s:ident),* $(,)?] consts [$($f:ident),* $(,)?] $(,)?) => {
+        impl From<ContactModel> for dc_contact_model {
+            fn from(m: ContactModel) -> Self {
+                let ContactModel {
+                    normal,
+                    layout,
+                    step,
+                    $($s,)*
+                    $($f,)*
+                } = m;
+                dc_contact_model {
+                    magic: MAGIC,
+                    history_len: layout.len as u32,
+                    normal: normal.into(),
+                    reserved: {
+                        let [c0, c1, c2, c3, c4] = step.coef;
+                        [step.scale, c0, c1, c2, c3, c4]
+                    },
+                    $($s,)*
+                    $($f,)*
+                }
+            }
         }
-    }
+
+        impl dc_contact_model {
+            /// The selectors and constants of the model checks ([`check_model_parts`]) as read
+            /// from the caller's struct, after the normal law's k, c, h.
+            #[inline(always)]
+            fn check_parts(&self, k: f64, c: f64, h: f64) -> ([i32; 4], [f64; 13]) {
+                ([$(self.$s,)*], [k, c, h, $(self.$f,)*])
+            }
+
+            /// The core model of these fields and the given non-shared ones.
+            #[inline(always)]
+            fn core(&self, normal: PairModel, layout: Layout, step: StepExact) -> ContactModel {
+                ContactModel {
+                    normal,
+                    layout,
+                    step,
+                    $($s: self.$s,)*
+                    $($f: self.$f,)*
+                }
+            }
+        }
+    };
+}
+
+model_fields! {
+    sel [tangential, rolling, twisting, carry]
+    consts [mu, kt, zeta_t, kappa, mu_r, k_r, eta_r, mu_tw, k_tw, eta_tw]
 }
 
 /// The core model of a C model, checked: structure here, values by the core's model checks
@@ -253,49 +313,24 @@ fn model_of(m: &dc_contact_model) -> Result<ContactModel, Error> {
     }
     // The core's model checks, on the caller's fields as read (the core model built below is
     // then not checked again: see contact_force_checked_model).
-    check_model_parts(
-        p.kernel,
-        [m.tangential, m.rolling, m.twisting, m.carry],
-        &[
-            p.k, p.c, p.h, m.mu, m.kt, m.zeta_t, m.kappa, m.mu_r, m.k_r, m.eta_r, m.mu_tw, m.k_tw,
-            m.eta_tw,
-        ],
-        layout,
-        step_on,
-    )?;
-    Ok(ContactModel {
-        normal: PairModel {
-            model: p.model,
-            kernel: p.kernel,
-            criterion,
-            p: p.p,
-            stiffness: p.stiffness,
-            alpha: p.alpha,
-            damping_a: p.damping_a,
-            e: p.e,
-            consts: Consts {
-                k: p.k,
-                c: p.c,
-                h: p.h,
-            },
+    let (sel, consts) = m.check_parts(p.k, p.c, p.h);
+    check_model_parts(p.kernel, sel, &consts, layout, step_on)?;
+    let normal = PairModel {
+        model: p.model,
+        kernel: p.kernel,
+        criterion,
+        p: p.p,
+        stiffness: p.stiffness,
+        alpha: p.alpha,
+        damping_a: p.damping_a,
+        e: p.e,
+        consts: Consts {
+            k: p.k,
+            c: p.c,
+            h: p.h,
         },
-        tangential: m.tangential,
-        rolling: m.rolling,
-        twisting: m.twisting,
-        carry: m.carry,
-        mu: m.mu,
-        kt: m.kt,
-        zeta_t: m.zeta_t,
-        kappa: m.kappa,
-        mu_r: m.mu_r,
-        k_r: m.k_r,
-        eta_r: m.eta_r,
-        mu_tw: m.mu_tw,
-        k_tw: m.k_tw,
-        eta_tw: m.eta_tw,
-        layout,
-        step,
-    })
+    };
+    Ok(m.core(normal, layout, step))
 }
 
 /// One contact's bodies. n is the unit normal pointing from body 2 to body 1; overlap > 0 in
@@ -455,41 +490,7 @@ pub unsafe extern "C" fn dc_contact_spec_init(spec: *mut dc_contact_spec) -> i32
 impl dc_contact_spec {
     /// What dc_contact_spec_init writes.
     fn from_default() -> dc_contact_spec {
-        {
-            {
-                let d = ContactSpec::default();
-                dc_contact_spec {
-                    version: DC_CONTACT_SPEC_VERSION,
-                    size: core::mem::size_of::<dc_contact_spec>() as u32,
-                    normal: d.normal,
-                    damping: d.damping,
-                    criterion: d.criterion,
-                    tangential: d.tangential,
-                    rolling: d.rolling,
-                    twisting: d.twisting,
-                    E1: d.e1,
-                    nu1: d.nu1,
-                    E2: d.e2,
-                    nu2: d.nu2,
-                    p: d.p,
-                    k_n: d.k_n,
-                    e_n: d.e_n,
-                    visco_A: d.visco_a,
-                    mu: d.mu,
-                    k_t: d.k_t,
-                    e_t: d.e_t,
-                    mu_r: d.mu_r,
-                    k_r: d.k_r,
-                    eta_r: d.eta_r,
-                    mu_tw: d.mu_tw,
-                    k_tw: d.k_tw,
-                    eta_tw: d.eta_tw,
-                    inertia_factor: d.inertia_factor,
-                    work_of_adhesion: d.work_of_adhesion,
-                    yield_pressure: d.yield_pressure,
-                }
-            }
-        }
+        dc_contact_spec::of_spec(&ContactSpec::default())
     }
 }
 
@@ -1155,4 +1156,107 @@ pub unsafe extern "C" fn dc_contact_force_batch_fused(
     };
     // SAFETY: forwarded caller contract.
     unsafe { batch_common(model, batch, run) }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The conversions generated by `spec_fields!` and `model_fields!` carry every field: a
+    //! value per field, distinct from every other, survives C → Rust → C (and Rust → C → Rust).
+    use super::*;
+
+    #[test]
+    fn spec_converts_every_field_both_ways() {
+        let mut c = dc_contact_spec::from_default();
+        // Distinct values in every field (an exchanged or dropped field changes the result).
+        let [a, b, d, e, f, g] = [1, 2, 0, 3, 2, 1];
+        (
+            c.normal,
+            c.damping,
+            c.criterion,
+            c.tangential,
+            c.rolling,
+            c.twisting,
+        ) = (a, b, d, e, f, g);
+        let xs = [
+            &mut c.E1,
+            &mut c.nu1,
+            &mut c.E2,
+            &mut c.nu2,
+            &mut c.p,
+            &mut c.k_n,
+            &mut c.e_n,
+            &mut c.visco_A,
+            &mut c.mu,
+            &mut c.k_t,
+            &mut c.e_t,
+            &mut c.mu_r,
+            &mut c.k_r,
+            &mut c.eta_r,
+            &mut c.mu_tw,
+            &mut c.k_tw,
+            &mut c.eta_tw,
+            &mut c.inertia_factor,
+            &mut c.work_of_adhesion,
+            &mut c.yield_pressure,
+        ];
+        for (i, x) in xs.into_iter().enumerate() {
+            *x = 10.0 + i as f64;
+        }
+        let r = ContactSpec::from(&c);
+        assert_eq!((r.e1, r.visco_a, r.yield_pressure), (10.0, 17.0, 29.0));
+        assert_eq!(r.carry, select::CARRY_ROTATE);
+        assert_eq!(dc_contact_spec::of_spec(&r), c);
+        // The defaults (NaN for unset: compared as text).
+        let d = ContactSpec::default();
+        let back = ContactSpec::from(&dc_contact_spec::from_default());
+        assert_eq!(format!("{back:?}"), format!("{d:?}"));
+    }
+
+    #[test]
+    fn model_converts_every_field_both_ways() {
+        let spec = ContactSpec {
+            normal: crate::contact::spec::normal::HERTZ,
+            damping: crate::contact::spec::damping::RESTITUTION,
+            tangential: select::TANGENTIAL_MINDLIN_RESCALE,
+            rolling: select::ROLLING_EPSD,
+            twisting: select::TWISTING_SDS,
+            e1: 7e10,
+            nu1: 0.3,
+            e2: 2e11,
+            nu2: 0.25,
+            e_n: 0.8,
+            mu: 0.5,
+            e_t: 0.7,
+            mu_r: 0.1,
+            k_r: 3.0,
+            eta_r: 0.2,
+            mu_tw: 1e-4,
+            k_tw: 5.0,
+            eta_tw: 0.3,
+            ..ContactSpec::default()
+        };
+        let m = contact_model(&spec).expect("valid spec");
+        let m = ContactModel {
+            carry: select::CARRY_PROJECT,
+            ..m
+        };
+        let c = dc_contact_model::from(m);
+        assert_eq!(
+            (c.tangential, c.rolling, c.twisting, c.carry),
+            (m.tangential, m.rolling, m.twisting, m.carry)
+        );
+        assert_eq!(c.history_len as usize, m.layout.len);
+        assert_eq!(model_of(&c), Ok(m));
+        // Every shared constant is read from its own field: each changed alone changes the
+        // core model's field of the same name and nothing else.
+        let (sel, consts) = c.check_parts(1.0, 2.0, 3.0);
+        assert_eq!(sel, [m.tangential, m.rolling, m.twisting, m.carry]);
+        assert_eq!(
+            consts,
+            [
+                1.0, 2.0, 3.0, m.mu, m.kt, m.zeta_t, m.kappa, m.mu_r, m.k_r, m.eta_r, m.mu_tw,
+                m.k_tw, m.eta_tw
+            ]
+        );
+    }
 }

@@ -167,7 +167,7 @@ def lammps_deck(plugin, style, coeff, wall, velocity=("velocity all set 0.1 0 0"
 # ------------------------------------------------------------------ LIGGGHTS
 LIGGGHTS_GOOD = dict(Y="5e6", nu="0.3", e="0.5", mu="0.5", mur="0.1", extra="", wall="",
                      model="model demcontact tangential demcontact rolling_friction demcontact",
-                     density="2500", velocity=["velocity all set 0.1 0 0"])
+                     density="2500", velocity=["velocity all set 0.1 0 0"], props=[])
 FULL_SURFACE = LIGGGHTS_GOOD["model"] + " surface demcontact"
 
 LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
@@ -207,6 +207,31 @@ LIGGGHTS_CASES = [  # (label, overrides, bad value as printed, status)
      STEP_UNREACHABLE),
     ("stepExact not on/off", dict(extra="stepExact yes"), "'stepExact' argument: "
      "unknown option or wrong keyword order: 'yes'", None),
+    # law KEYWORD (the registry's normal laws, plugins/common/demcontact_laws.h): a good law first
+    # (runs to the end: bad None), then an unknown keyword, a parameter missing or out of range, an
+    # adhesive law (not evaluated at negative overlap) and a law without a step-aware form
+    ("law elastic_plastic (good, runs)", dict(extra="law elastic_plastic tangentialRescale on",
+                                              props=["fix m6 all property/global yieldPressure scalar 1e5"]),
+     None, None),
+    ("law powerlaw (good, runs)", dict(model="model demcontact tangential history", extra="law powerlaw",
+                                       props=["fix m6 all property/global p scalar 1.2",
+                                              "fix m7 all property/global kN peratomtypepair 1 1e5"]), None, None),
+    ("law viscoelastic (good, runs)", dict(model="model demcontact tangential history", extra="law viscoelastic",
+                                           props=["fix m6 all property/global viscoA scalar 1e-5"]), None, None),
+    ("law unknown", dict(extra="law hooke"), "unknown normal law 'hooke' (demcontact's laws: hertz,", None),
+    ("law yieldPressure missing", dict(extra="law elastic_plastic"),
+     "law elastic_plastic needs its parameter yieldPressure [Pa] (yield_pressure)", None),
+    ("law yieldPressure < 0", dict(extra="law elastic_plastic",
+                                   props=["fix m6 all property/global yieldPressure peratomtypepair 1 -1e5"]),
+     "law elastic_plastic: yieldPressure of types 1-1 = -100000 rejected by demcontact", NOT_POSITIVE),
+    ("law linear kN = 0", dict(extra="law linear", props=["fix m6 all property/global kN scalar 0"]),
+     "law linear: kN of types 1-1 = 0 rejected by demcontact", NOT_POSITIVE),
+    ("law jkr (negative overlap)", dict(extra="law jkr", props=["fix m6 all property/global workOfAdhesion scalar 0.1"]),
+     "law jkr acts at negative overlap, which this plugin does not evaluate", None),
+    ("law elastic_plastic stepExact", dict(extra="law elastic_plastic stepExact on",
+                                           props=["fix m6 all property/global yieldPressure scalar 1e5"]),
+     "stepExact with law elastic_plastic (types 1-1, timestep 1e-07) rejected by demcontact", STEP_UNSUPPORTED),
+    ("law with exponent", dict(extra="law hertz exponent 2"), "exponent 2 is the default law's", None),
     # bad values met during the run, in the pair loop's deferred checks (friction_models_demcontact.h):
     # an atom's velocity not finite (the per-pass check of the atoms' arrays, naming the atom and
     # value); finite values whose contact results are not (heavy atoms sliding fast: the damped
@@ -229,7 +254,7 @@ def liggghts_deck(v):
          "fix m2 all property/global poissonsRatio peratomtype " + v["nu"],
          "fix m3 all property/global coefficientRestitution peratomtypepair 1 " + v["e"],
          "fix m4 all property/global coefficientFriction peratomtypepair 1 " + v["mu"],
-         "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 " + v["mur"],
+         "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 " + v["mur"]] + v["props"] + [
          "pair_style gran " + model, "pair_coeff * *",
          # the wall takes its own model settings: the plain model here
          ("fix w all wall/gran model demcontact tangential demcontact rolling_friction demcontact "
