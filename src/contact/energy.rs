@@ -49,7 +49,7 @@ use super::tangential_linear::Linear;
 use super::tangential_mindlin::Mindlin;
 use super::tangential_mindlin_rescale::contact_radius;
 use super::vec3::{V3, add, dot, norm2, scale};
-use crate::force::registry::normal_force_raw;
+use crate::force::registry::{critical_load, normal_force_raw};
 use crate::force::stateful;
 
 /// The ledger of one contact step [J] (the Rust form of `dc_contact_energy`).
@@ -229,7 +229,8 @@ pub(crate) fn ledger(
     }
     match (m.rolling, m.layout.rolling) {
         (select::ROLLING_CONSTANT, _) if touching => {
-            let (t, _) = rolling_constant::torque(m, &k, f);
+            let fc = critical_load(pair.kernel, &pair.consts, k.r_eff, f);
+            let (t, _) = rolling_constant::torque(m, &k, fc);
             e.rolling_slip = -dot(t, k.w_roll) * dt;
         }
         (select::ROLLING_EPSD, Some(at)) => {

@@ -65,6 +65,15 @@ fn tail(c: &Consts, d: f64, r: f64) -> f64 {
     if s > 0.0 { -c.h * r * s } else { 0.0 }
 }
 
+/// The critical load of the Coulomb limits (see [`Law::critical_load`]): |F + 2 F_po| with the
+/// pull-off force F_po = 2π w R* = h r and F the applied force (dashpot included): in contact
+/// the Hertz force (+ dashpot) + 2π w R*. The decision and LAMMPS's convention: docs/force.md,
+/// "Friction with adhesion".
+#[inline(always)]
+pub fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
+    (f + 2.0 * (c.h * r)).abs()
+}
+
 impl Law for DmtElastic {
     const NEEDS_VN: bool = false;
     const NEEDS_R: bool = true;
@@ -77,6 +86,10 @@ impl Law for DmtElastic {
         } else {
             tail(c, d, r)
         }
+    }
+    #[inline(always)]
+    fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
+        critical_load(c, r, f)
     }
 }
 
@@ -93,6 +106,10 @@ impl Law for DmtDamped {
         } else {
             tail(c, d, r)
         }
+    }
+    #[inline(always)]
+    fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
+        critical_load(c, r, f)
     }
 }
 

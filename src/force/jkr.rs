@@ -92,6 +92,10 @@ impl StateLaw for Jkr {
     fn dissipated(c: &Consts, r: f64, old: f64, new: f64) -> f64 {
         dissipated(c, r, old, new)
     }
+    #[inline(always)]
+    fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
+        critical_load(c, r, f)
+    }
 }
 
 /// u_c = 4^{−1/3}, the branch's end (the f64 nearest).
@@ -244,6 +248,15 @@ pub fn stored_energy(c: &Consts, d: f64, r: f64, state: f64) -> f64 {
 /// The pull-off force under load control [N]: −(3/2) π w R* (the branch's minimum force).
 pub fn pull_off_force(c: &Consts, r: f64) -> f64 {
     -0.75 * (0.75 * c.k * c.h) * r
+}
+
+/// The critical load of the Coulomb limits (see [`super::pair::Law::critical_load`]):
+/// |F + 2 F_po| with F_po = (3/2) π w R* (= −[`pull_off_force`]) and F the applied force
+/// (dashpot included): |F + 3π w R*|, ≥ (3/2) π w R* on the undamped branch. The decision and
+/// LAMMPS's convention: docs/force.md, "Friction with adhesion".
+#[inline(always)]
+pub fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
+    (f + 2.0 * (0.75 * (0.75 * c.k * c.h) * r)).abs()
 }
 
 /// The overlap δ_c [m] (< 0) below which a formed neck breaks: −(3/4) u_c δ₀.

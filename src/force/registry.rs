@@ -139,6 +139,24 @@ macro_rules! normal_laws {
             }
         }
 
+        /// The critical load [N] of the Coulomb limits (tangential, rolling, twisting) of a
+        /// touching contact of effective radius `r` with applied normal force `f`, from the
+        /// law's own [`Law::critical_load`] / [`StateLaw::critical_load`]: |f| for every law
+        /// without adhesion (and for an unknown code), |f + 2 F_po| for an adhesive one.
+        #[inline(always)]
+        #[deny(unreachable_patterns)]
+        #[allow(unused_variables)]
+        pub(crate) fn critical_load(kernel: i32, c: &Consts, r: f64, f: f64) -> f64 {
+            match kernel {
+                $($($(
+                    $code => <$kty as Law>::critical_load(c, r, f),
+                    $($clamped => <$kty as Law>::critical_load(c, r, f),)?
+                )*)?)*
+                $($($state => <$law as StateLaw>::critical_load(c, r, f),)?)*
+                _ => f.abs(),
+            }
+        }
+
         /// Normal-law selectors: the field `normal` of the specification (the C constants
         /// `DC_NORMAL_*`, generated from [`NORMAL`], equal these).
         ///
