@@ -28,7 +28,7 @@ use crate::{EndCriterion, Error};
 pub(crate) struct Dmt;
 
 impl SpecLaw for Dmt {
-    const DOC: &'static str = "Normal law: adhesive DMT, Hertz minus 2 pi w R* (w = work_of_adhesion), attraction also beyond touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of separation); never clamped: requires DC_END_OVERLAP.";
+    const DOC: &'static str = "Normal law: adhesive DMT, Hertz minus 2 pi w R* (w = work_of_adhesion), attraction also beyond touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of separation); never clamped: requires DC_END_OVERLAP. Coulomb, rolling and twisting limits (while d > 0) on the adhesion-corrected load |F_n + 4 pi w R*|.";
     const MATERIALS: bool = true;
     const PARAMS: &'static [crate::laws::Param] = &[crate::laws::Param {
         field: "work_of_adhesion",
