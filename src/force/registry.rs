@@ -15,6 +15,7 @@
 //!   code), [`unclamped`] and [`KERNEL_CODES`],
 //! * the dispatch of the laws with state ([`has_state`], [`state_force`], [`state_dissipated`],
 //!   [`STATEFUL_KERNEL_CODES`]),
+//! * [`critical_load`], the load of the Coulomb limits from each law's `critical_load` hook,
 //! * the selectors [`normal`] and the specification's normal-law validation ([`from_spec`]),
 //! * the metadata table [`NORMAL`] (= [`crate::laws::NORMAL`]), from which `xtask` writes the C
 //!   constants, the Python enum, the inline header's codes and dispatch and the plugins' table.
