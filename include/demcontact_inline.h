@@ -448,6 +448,12 @@ DC_INLINE_FN double dci_dmt_damped(double k, double c, double h, double d, doubl
     const double q = sqrt(r * d);
     return (DCI_M(k * q, d) + DCI_M(c * sqrt(m * q), vn)) - DCI_M(h, r);
 }
+/* DMT's critical load of the Coulomb limits for the applied force f: |f + 2 F_po|, F_po = h r
+ * (= 2 pi w R*). src/force/dmt.rs `critical_load` */
+DCI_ALWAYS_INLINE_FN double dci_dmt_critical_load(double h, double r, double f) {
+    DCI_NO_CONTRACT
+    return fabs(f + DCI_M(2.0, DCI_M(h, r)));
+}
 
 /* dc_normal_force_inline with the kernel code given separately (it must be pair->kernel, e.g.
  * DC_KERNEL_HERTZ_DAMPED_CLAMPED for a dc_pair_hertz(..., e < 1, DC_END_FORCE) pair): with a
@@ -1156,7 +1162,7 @@ DCI_ALWAYS_INLINE_FN dci_kin dci_kin_of(const dc_contact_state *s, dci_v3 n_old,
 /* Tangential stage (src/contact/tangential.rs `step`): spring carried, incremented by v_t dt, dashpot,
  * Coulomb truncation with LAMMPS's spring reset. kt: the law's stiffness of this contact. */
 DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_step(const dc_contact_model *m, const dci_kin *k,
-                                                double kt, double f_normal, double dt,
+                                                double kt, double f_crit, double dt,
                                                 const dci_frame *frame, dci_v3 *xi, int *sliding) {
     DCI_NO_CONTRACT
     const double ct = m->zeta_t > 0.0
@@ -1164,7 +1170,7 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_step(const dc_contact_model *m, const
                           : 0.0;
     const dci_v3 spring = dci_add(dci_carry(frame, *xi), dci_scale(dt, k->vt));
     const dci_v3 trial = dci_sub(dci_scale(-kt, spring), dci_scale(ct, k->vt));
-    const double limit = m->mu * fabs(f_normal);
+    const double limit = m->mu * f_crit;
     const double t2 = dci_norm2(trial);
     if (t2 > limit * limit) {
         const dci_v3 ft = dci_scale(limit / sqrt(t2), trial);
@@ -1181,7 +1187,7 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_step(const dc_contact_model *m, const
  * history fs carried, scaled by a/a_old when the contact radius shrank, incremented by
  * -k_t v_t dt; dashpot, Coulomb truncation with LAMMPS's reset; a_old <- a. */
 DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_rescale_step(const dc_contact_model *m,
-                                                        const dci_kin *k, double f_normal,
+                                                        const dci_kin *k, double f_crit,
                                                         double dt, const dci_frame *frame,
                                                         dci_v3 *fs, double *a_old, int *sliding) {
     DCI_NO_CONTRACT
@@ -1194,7 +1200,7 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_rescale_step(const dc_contact_model *
     if (a < *a_old) carried = dci_scale(a / *a_old, carried);
     const dci_v3 spring = dci_sub(carried, dci_scale(kt * dt, k->vt));
     const dci_v3 trial = dci_sub(spring, dci_scale(ct, k->vt));
-    const double limit = m->mu * fabs(f_normal);
+    const double limit = m->mu * f_crit;
     const double t2 = dci_norm2(trial);
     *a_old = a;
     if (t2 > limit * limit) {
@@ -1210,10 +1216,10 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_tangential_rescale_step(const dc_contact_model *
 
 /* Constant rolling torque (src/contact/rolling_constant.rs `torque`). */
 DCI_ALWAYS_INLINE_FN dci_v3 dci_rolling_constant(const dc_contact_model *m, const dci_kin *k,
-                                                 double f_normal, int *on) {
+                                                 double f_crit, int *on) {
     const double w2 = dci_norm2(k->w_roll);
     if (w2 > 0.0) {
-        const double mag = m->mu_r * k->r_eff * fabs(f_normal);
+        const double mag = m->mu_r * k->r_eff * f_crit;
         *on = 1;
         return dci_scale(-mag / sqrt(w2), k->w_roll);
     }
@@ -1223,13 +1229,13 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_rolling_constant(const dc_contact_model *m, cons
 
 /* EPSD rolling (src/contact/rolling_epsd.rs `step`); kn: the normal law's elastic tangent stiffness. */
 DCI_ALWAYS_INLINE_FN dci_v3 dci_rolling_epsd(const dc_contact_model *m, const dci_kin *k,
-                                             double f_normal, double kn, double dt,
+                                             double f_crit, double kn, double dt,
                                              const dci_frame *frame, dci_v3 *mk, int *lim) {
     DCI_NO_CONTRACT
     const dci_v3 wr = k->w_roll;
     const double kr = m->k_r > 0.0 ? m->k_r : 2.25 * kn * m->mu_r * m->mu_r * k->r_eff * k->r_eff;
     const dci_v3 spring = dci_add(dci_carry(frame, *mk), dci_scale(-kr * dt, wr));
-    const double limit = m->mu_r * k->r_eff * fabs(f_normal);
+    const double limit = m->mu_r * k->r_eff * f_crit;
     const double s2 = dci_norm2(spring);
     if (s2 > limit * limit) {
         const dci_v3 at = dci_scale(limit / sqrt(s2), spring);
@@ -1248,11 +1254,11 @@ DCI_ALWAYS_INLINE_FN dci_v3 dci_rolling_epsd(const dc_contact_model *m, const dc
 
 /* Twisting spring-dashpot-slider (src/contact/twisting_sds.rs `step`): torque about n on body 1. */
 DCI_ALWAYS_INLINE_FN double dci_twisting(const dc_contact_model *m, const dci_kin *k,
-                                         double f_normal, double dt, double *mk, int *lim) {
+                                         double f_crit, double dt, double *mk, int *lim) {
     DCI_NO_CONTRACT
     const double wt = dci_dot(k->w_rel, k->n);
     const double spring = *mk - DCI_M(m->k_tw * wt, dt);
-    const double limit = m->mu_tw * fabs(f_normal);
+    const double limit = m->mu_tw * f_crit;
     if (fabs(spring) > limit) {
         const double at = copysign(limit, spring);
         *mk = at;
@@ -1570,6 +1576,14 @@ DCI_ALWAYS_INLINE_FN double dci_jkr_force(const dc_pair *p, double d, double vn,
     return c > 0.0 ? f + DCI_M(c * sqrt(m_eff * a), vn) : f;
 }
 
+/* JKR's critical load of the Coulomb limits for the applied force f: |f + 2 F_po|,
+ * F_po = (3/2) pi w R* = 0.75 (0.75 k h) r. src/force/jkr.rs `critical_load` */
+DCI_ALWAYS_INLINE_FN double dci_jkr_critical_load(const dc_pair *p, double r, double f) {
+    DCI_NO_CONTRACT
+    const double po = DCI_M(0.75 * (0.75 * p->k * p->h), r);
+    return fabs(f + DCI_M(2.0, po));
+}
+
 /* BEGIN GENERATED state */
 /* Generated by `cargo run -p xtask -- all` from the registry of normal laws
  * (src/force/registry.rs): do not edit by hand. */
@@ -1585,6 +1599,19 @@ DCI_ALWAYS_INLINE_FN double dci_state_force(const dc_pair *p, int32_t kernel, do
     }
 }
 /* END GENERATED state */
+
+/* The load of the Coulomb limits (tangential mu F_c, rolling mu_r R* F_c, twisting mu_tw F_c)
+ * of a touching contact with applied normal force f: |f|, or |f + 2 F_po| for an adhesive law
+ * (docs/force.md, "Friction with adhesion"). src/force/registry.rs `critical_load` */
+DCI_ALWAYS_INLINE_FN double dci_critical_load(const dc_pair *p, int32_t kernel, double r,
+                                              double f) {
+    switch (kernel) {
+    case DC_KERNEL_DMT_ELASTIC:
+    case DC_KERNEL_DMT_DAMPED: return dci_dmt_critical_load(p->h, r, f);
+    case DC_KERNEL_JKR: return dci_jkr_critical_load(p, r, f);
+    default: return fabs(f);
+    }
+}
 
 /* A model's selectors: its normal kernel, sub-model codes and frame carry (the fields
  * normal.kernel, tangential, rolling, twisting, carry). The evaluation reads them from here, not
@@ -1650,14 +1677,16 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_sh
             h[2] = k.n.z;
         }
         force = dci_normal_vector(f, k.n);
+        /* the load of the Coulomb limits: |f|, or |f + 2 F_po| for an adhesive law */
+        const double fc = dci_critical_load(pair, sh.kernel, k.r_eff, f);
         if (lay.tangential >= 0) {
             dci_v3 xi = dci_v(h[lay.tangential], h[lay.tangential + 1], h[lay.tangential + 2]);
             const double kt = sh.tangential == DC_TANGENTIAL_MINDLIN ? m->kt * sqrt(k.r_eff * k.d)
                                                                     : m->kt;
             if (sh.tangential == DC_TANGENTIAL_LINEAR || sh.tangential == DC_TANGENTIAL_MINDLIN)
-                ft = dci_tangential_step(m, &k, kt, f, dt, &frame, &xi, &sliding);
+                ft = dci_tangential_step(m, &k, kt, fc, dt, &frame, &xi, &sliding);
             else if (sh.tangential == DC_TANGENTIAL_MINDLIN_RESCALE)
-                ft = dci_tangential_rescale_step(m, &k, f, dt, &frame, &xi,
+                ft = dci_tangential_rescale_step(m, &k, fc, dt, &frame, &xi,
                                                  &h[lay.tangential + 3], &sliding);
             h[lay.tangential] = xi.x;
             h[lay.tangential + 1] = xi.y;
@@ -1668,7 +1697,7 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_sh
             if (!k.wall) t2 = dci_scale(-k.a2, nft);
         }
         if (sh.rolling == DC_ROLLING_CONSTANT) {
-            const dci_v3 mr = dci_rolling_constant(m, &k, f, &rolling_sliding);
+            const dci_v3 mr = dci_rolling_constant(m, &k, fc, &rolling_sliding);
             t1 = dci_add(t1, mr);
             if (!k.wall) t2 = dci_sub(t2, mr);
         } else if (sh.rolling == DC_ROLLING_EPSD && lay.rolling >= 0) {
@@ -1678,7 +1707,7 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_sh
                 kn = pair->p * fe / k.d;
             }
             dci_v3 mk = dci_v(h[lay.rolling], h[lay.rolling + 1], h[lay.rolling + 2]);
-            const dci_v3 mr = dci_rolling_epsd(m, &k, f, kn, dt, &frame, &mk, &rolling_sliding);
+            const dci_v3 mr = dci_rolling_epsd(m, &k, fc, kn, dt, &frame, &mk, &rolling_sliding);
             h[lay.rolling] = mk.x;
             h[lay.rolling + 1] = mk.y;
             h[lay.rolling + 2] = mk.z;
@@ -1687,7 +1716,7 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_sh
         }
         if (lay.twisting >= 0) {
             int lim;
-            const double t = dci_twisting(m, &k, f, dt, &h[lay.twisting], &lim);
+            const double t = dci_twisting(m, &k, fc, dt, &h[lay.twisting], &lim);
             const dci_v3 mr = dci_scale(t, k.n);
             t1 = dci_add(t1, mr);
             if (!k.wall) t2 = dci_sub(t2, mr);

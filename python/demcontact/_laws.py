@@ -15,7 +15,8 @@ class Normal(_enum.IntEnum):
     VISCOELASTIC: Normal law: viscoelastic Hertz (Brilliantov et al.) with damping constant visco_A.
     DMT: Normal law: adhesive DMT, Hertz minus 2 pi w R* (w = work_of_adhesion), attraction also
     beyond touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of
-    separation); never clamped: requires DC_END_OVERLAP.
+    separation); never clamped: requires DC_END_OVERLAP. Coulomb, rolling and twisting limits (while
+    d > 0) on the adhesion-corrected load |F_n + 4 pi w R*|.
     ELASTIC_PLASTIC: Normal law: elastic-perfectly-plastic (Thornton 1997): Hertz up to the limiting
     contact pressure yield_pressure = p_y (yield overlap d_y = (pi p_y/(2 E*))^2 R*), then F = F_y +
     pi p_y R* (d - d_y); unloading and reloading along a Hertz curve of enlarged radius with a
@@ -27,8 +28,9 @@ class Normal(_enum.IntEnum):
     neck forms at d >= 0 and holds down to d_c = -(3/4)(pi^2 w^2 R* / E*^2)^(1/3) (force -(5/6) pi w
     R*), then breaks (loss W ~ 7.09 (w^5 R*^4/E*^2)^(1/3)); pull-off under load control -(3/2) pi w
     R*. One double of history (0 no neck, 1 formed). Optional Hertz dashpot with the JKR contact
-    radius (e_n calibrated for w -> 0). Never clamped: requires DC_END_OVERLAP. Contact models only:
-    no dc_pair constructor, no step-aware form (DC_ERR_STEP_UNSUPPORTED).
+    radius (e_n calibrated for w -> 0). Never clamped: requires DC_END_OVERLAP. Coulomb, rolling and
+    twisting limits (while d > 0) on the adhesion-corrected load |F_n + 3 pi w R*|. Contact models
+    only: no dc_pair constructor, no step-aware form (DC_ERR_STEP_UNSUPPORTED).
     """
 
     HERTZ = 1

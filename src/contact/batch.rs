@@ -23,7 +23,7 @@ use super::vec3::{
 };
 use super::{rolling_constant, rolling_epsd, step_exact, twisting_sds};
 use crate::force::pair::{Consts, Law, Visit, eval};
-use crate::force::registry::{dispatch, normal_force_raw, unclamped};
+use crate::force::registry::{critical_load, dispatch, normal_force_raw, unclamped};
 use crate::force::stateful;
 use crate::numerics::simd::{SimdLoop, vectorised};
 use crate::{EndCriterion, Error};
@@ -292,7 +292,8 @@ fn tangential_pass<T: TangentialStage>(
         let Some(rec) = h.get_mut(at..) else {
             continue;
         };
-        let r = T::run(m, &k, f, dt, &frame, rec);
+        let fc = critical_load(m.normal.kernel, &m.normal.consts, k.r_eff, f);
+        let r = T::run(m, &k, fc, dt, &frame, rec);
         *fv = add(*fv, r.ft);
         let nft = cross(k.n, r.ft);
         *t1 = scale(-k.a1, nft);
@@ -329,6 +330,7 @@ fn rolling_pass<const EPSD: bool>(
         let n_old = h.as_deref().and_then(|h| h.get(0..3)).map_or([0.0; 3], v3);
         let k = Kin::of(&s);
         let frame = Kin::frame(&s, n_old, dt, m.carry);
+        let fc = critical_load(pair.kernel, &pair.consts, k.r_eff, f);
         let mr = if EPSD {
             let Some(h) = h else { continue };
             let kn = if m.k_r > 0.0 {
@@ -344,11 +346,11 @@ fn rolling_pass<const EPSD: bool>(
                 continue;
             };
             let mut mk = v3(ms);
-            let (t, _) = rolling_epsd::step(m, &k, f, kn, dt, &frame, &mut mk);
+            let (t, _) = rolling_epsd::step(m, &k, fc, kn, dt, &frame, &mut mk);
             put(ms, mk);
             t
         } else {
-            rolling_constant::torque(m, &k, f).0
+            rolling_constant::torque(m, &k, fc).0
         };
         *t1 = add(*t1, mr);
         if !k.wall {
@@ -377,7 +379,8 @@ fn twisting_pass(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_
         }
         let k = Kin::of(&s);
         let Some(mk) = h.get_mut(at) else { continue };
-        let (t, _) = twisting_sds::step(m, &k, f, dt, mk);
+        let fc = critical_load(m.normal.kernel, &m.normal.consts, k.r_eff, f);
+        let (t, _) = twisting_sds::step(m, &k, fc, dt, mk);
         let mt = scale(t, k.n);
         *t1 = add(*t1, mt);
         if !k.wall {

@@ -45,7 +45,7 @@ use super::model::{ContactModel, HISTORY_MAX, select};
 use super::rolling_constant;
 use super::tangential::{TangentialStage, mass_factor};
 use super::vec3::{V3, add, dot, norm2, scale};
-use crate::force::registry::normal_force_raw;
+use crate::force::registry::{critical_load, normal_force_raw};
 use crate::force::stateful;
 
 /// The ledger of one contact step [J] (the Rust form of `dc_contact_energy`).
@@ -190,7 +190,8 @@ pub(crate) fn ledger(
     let epsd = select::rolling::dispatch!(m.rolling, |EPSD| Some(EPSD), None);
     match (epsd, m.layout.rolling) {
         (Some(false), _) if touching => {
-            let (t, _) = rolling_constant::torque(m, &k, f);
+            let fc = critical_load(pair.kernel, &pair.consts, k.r_eff, f);
+            let (t, _) = rolling_constant::torque(m, &k, fc);
             e.rolling_slip = -dot(t, k.w_roll) * dt;
         }
         (Some(true), Some(at)) => {

@@ -9,7 +9,7 @@ use super::tangential::{TangentialOut, TangentialStage};
 use super::vec3::{V3, add, all_finite, cross, none_negative, normal_vector, scale, sub};
 use super::{rolling_constant, rolling_epsd, step_exact, twisting_sds};
 use crate::Error;
-use crate::force::registry::{needs, normal_force_raw};
+use crate::force::registry::{critical_load, needs, normal_force_raw};
 use crate::force::stateful;
 
 /// Forces and torques of one contact.
@@ -216,12 +216,14 @@ pub(crate) fn evaluate(
     // Operations in the order of the batch passes, so that both give the same bits (down to
     // the sign of zero).
     out.force = normal_vector(f, k.n);
+    // The load of the Coulomb limits: |f|, or |f + 2 F_po| for an adhesive law.
+    let fc = critical_load(pair.kernel, &pair.consts, k.r_eff, f);
     let (mut t1, mut t2) = ([0.0; 3], [0.0; 3]);
     if let (Some(at), Some(frame)) = (m.layout.tangential, &frame) {
         let rec = h.get_mut(at..).unwrap_or(&mut []);
         let t = select::tangential::dispatch!(
             m.tangential,
-            |T| T::run(m, &k, f, dt, frame, rec),
+            |T| T::run(m, &k, fc, dt, frame, rec),
             TangentialOut {
                 ft: [0.0; 3],
                 sliding: false,
@@ -248,7 +250,7 @@ pub(crate) fn evaluate(
     select::rolling::dispatch!(
         m.rolling,
         |EPSD| if !EPSD {
-            let (t, on) = rolling_constant::torque(m, &k, f);
+            let (t, on) = rolling_constant::torque(m, &k, fc);
             moment(t);
             out.rolling_sliding = on;
         } else if let (Some(at), Some(frame)) = (m.layout.rolling, &frame) {
@@ -264,7 +266,7 @@ pub(crate) fn evaluate(
                 pair.p * fe / k.d
             };
             let mut mk = get3(h, at);
-            let (t, lim) = rolling_epsd::step(m, &k, f, kn, dt, frame, &mut mk);
+            let (t, lim) = rolling_epsd::step(m, &k, fc, kn, dt, frame, &mut mk);
             put3(h, at, mk);
             moment(t);
             out.rolling_sliding = lim;
@@ -272,7 +274,7 @@ pub(crate) fn evaluate(
         {},
     );
     if let Some(mk) = m.layout.twisting.and_then(|at| h.get_mut(at)) {
-        let (t, lim) = twisting_sds::step(m, &k, f, dt, mk);
+        let (t, lim) = twisting_sds::step(m, &k, fc, dt, mk);
         moment(scale(t, k.n));
         out.rolling_sliding |= lim;
     }

@@ -4,6 +4,7 @@
 //!   M_k ← R M_k − k_r ω_r dt,   |M_k| ≤ M_max = μ_r R* |Fn|   (truncated when exceeded),
 //!   M_d = −C_r ω_r while |M_k| < M_max, 0 when fully mobilised (Ai's f = 0),
 //!   M1 = M_k + M_d,  M2 = −M1,
+//! (|Fn|: the normal law's critical load, see [`super::tangential`]),
 //! with ω_r the rolling part of ω1 − ω2 (see [`super::rolling_constant`]),
 //! k_r given, or by Ai's rule k_r = 2.25 k_n μ_r² R*² with k_n = dF_el/dδ = p F_el/δ the normal
 //! law's elastic tangent stiffness, and C_r = 2 η_r √(I_r k_r),
@@ -21,7 +22,7 @@ use super::vec3::{V3, add, norm2, scale};
 pub(crate) fn step(
     m: &ContactModel,
     k: &Kin,
-    f_normal: f64,
+    f_crit: f64,
     kn: f64,
     dt: f64,
     frame: &FrameStep,
@@ -34,7 +35,7 @@ pub(crate) fn step(
         2.25 * kn * m.mu_r * m.mu_r * k.r_eff * k.r_eff
     };
     let spring = add(frame.carry(*mk), scale(-kr * dt, wr));
-    let limit = m.mu_r * k.r_eff * f_normal.abs();
+    let limit = m.mu_r * k.r_eff * f_crit;
     let s2 = norm2(spring);
     if s2 > limit * limit {
         let at = scale(limit / s2.sqrt(), spring);

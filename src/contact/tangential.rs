@@ -8,7 +8,9 @@
 //!   |F_t*| ≤ μ |Fn|: F_t = F_t*                       (sticking)
 //!   else:           F_t = μ |Fn| F_t*/|F_t*|,  ξ ← −(F_t + c_t v_t)/k_t   (sliding; LAMMPS's
 //!                   reset, so the spring alone plus the dashpot equals the applied force)
-//! Fn is the normal force actually applied (after clamping). A law only supplies k_t for the
+//! |Fn| is the normal law's critical load `f_crit` (`force::registry::critical_load`): the
+//! magnitude of the normal force actually applied (after clamping), or for an adhesive law the
+//! adhesion-corrected |Fn + 2 F_po| (docs/force.md, "Friction with adhesion"). A law only supplies k_t for the
 //! contact ([`TangentialLaw`]); the "total" form F = −k_t(δ) ξ is used for Mindlin's varying k_t
 //! (LAMMPS `mindlin`, LIGGGHTS `tangential history` with Hertz): see docs/force.md.
 //!
@@ -88,7 +90,7 @@ pub(crate) trait TangentialStage {
     fn run(
         m: &ContactModel,
         k: &Kin,
-        f_normal: f64,
+        f_crit: f64,
         dt: f64,
         frame: &FrameStep,
         h: &mut [f64],
@@ -118,7 +120,7 @@ impl<T: TangentialLaw> TangentialStage for T {
     fn run(
         m: &ContactModel,
         k: &Kin,
-        f_normal: f64,
+        f_crit: f64,
         dt: f64,
         frame: &FrameStep,
         h: &mut [f64],
@@ -130,7 +132,7 @@ impl<T: TangentialLaw> TangentialStage for T {
             };
         };
         let mut xi = [*x, *y, *z];
-        let r = step::<T>(m, k, f_normal, dt, frame, &mut xi);
+        let r = step::<T>(m, k, f_crit, dt, frame, &mut xi);
         [*x, *y, *z] = xi;
         r
     }
@@ -164,7 +166,7 @@ impl<T: TangentialLaw> TangentialStage for T {
 pub(crate) fn step<T: TangentialLaw>(
     m: &ContactModel,
     k: &Kin,
-    f_normal: f64,
+    f_crit: f64,
     dt: f64,
     frame: &FrameStep,
     xi: &mut V3,
@@ -177,7 +179,7 @@ pub(crate) fn step<T: TangentialLaw>(
     };
     let spring = add(frame.carry(*xi), scale(dt, k.vt));
     let trial = sub(scale(-kt, spring), scale(ct, k.vt));
-    let limit = m.mu * f_normal.abs();
+    let limit = m.mu * f_crit;
     let t2 = norm2(trial);
     if t2 > limit * limit {
         let ft = scale(limit / t2.sqrt(), trial);

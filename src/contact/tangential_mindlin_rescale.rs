@@ -46,7 +46,7 @@ impl TangentialStage for MindlinRescale {
     fn run(
         m: &ContactModel,
         k: &Kin,
-        f_normal: f64,
+        f_crit: f64,
         dt: f64,
         frame: &FrameStep,
         h: &mut [f64],
@@ -74,7 +74,7 @@ impl TangentialStage for MindlinRescale {
         };
         let spring = sub(carried, scale(kt * dt, k.vt));
         let trial = sub(spring, scale(ct, k.vt));
-        let limit = m.mu * f_normal.abs();
+        let limit = m.mu * f_crit;
         let t2 = norm2(trial);
         *a_old = a;
         if t2 > limit * limit {

@@ -3,6 +3,7 @@
 //!   M_k ← M_k − k_tw ω_tw dt,  ω_tw = (ω1 − ω2)·n,  |M_k| ≤ μ_tw |Fn| (μ_tw in metres),
 //!   M_d = −C_tw ω_tw while below the limit (0 at the limit),
 //!   M1 = (M_k + M_d) n,  M2 = −M1,
+//! (|Fn|: the normal law's critical load, see [`super::tangential`]),
 //! with C_tw = 2 η_tw √(I_tw k_tw), I_tw = 1/(1/(κ m1 r1²) + 1/(κ m2 r2²)).
 
 use super::kinematics::Kin;
@@ -17,10 +18,10 @@ pub(crate) enum Sds {}
 /// One twisting step: `mk` is the stored spring torque; returns the torque about n on body 1
 /// and whether the spring is at its limit.
 #[inline(always)]
-pub(crate) fn step(m: &ContactModel, k: &Kin, f_normal: f64, dt: f64, mk: &mut f64) -> (f64, bool) {
+pub(crate) fn step(m: &ContactModel, k: &Kin, f_crit: f64, dt: f64, mk: &mut f64) -> (f64, bool) {
     let wt = dot(k.w_rel, k.n);
     let spring = *mk - m.k_tw * wt * dt;
-    let limit = m.mu_tw * f_normal.abs();
+    let limit = m.mu_tw * f_crit;
     if spring.abs() > limit {
         let at = limit.copysign(spring);
         *mk = at;

@@ -28,7 +28,7 @@ use crate::{EndCriterion, Error};
 pub(crate) struct Dmt;
 
 impl SpecLaw for Dmt {
-    const DOC: &'static str = "Normal law: adhesive DMT, Hertz minus 2 pi w R* (w = work_of_adhesion), attraction also beyond touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of separation); never clamped: requires DC_END_OVERLAP.";
+    const DOC: &'static str = "Normal law: adhesive DMT, Hertz minus 2 pi w R* (w = work_of_adhesion), attraction also beyond touching (decaying linearly to 0 over d_c = (3 pi w sqrt(R*)/(2 E*))^(2/3) of separation); never clamped: requires DC_END_OVERLAP. Coulomb, rolling and twisting limits (while d > 0) on the adhesion-corrected load |F_n + 4 pi w R*|.";
     const MATERIALS: bool = true;
     const PARAMS: &'static [crate::laws::Param] = &[crate::laws::Param {
         field: "work_of_adhesion",
@@ -65,6 +65,15 @@ fn tail(c: &Consts, d: f64, r: f64) -> f64 {
     if s > 0.0 { -c.h * r * s } else { 0.0 }
 }
 
+/// The critical load of the Coulomb limits (see [`Law::critical_load`]): |F + 2 F_po| with the
+/// pull-off force F_po = 2π w R* = h r and F the applied force (dashpot included): in contact
+/// the Hertz force (+ dashpot) + 2π w R*. The decision and LAMMPS's convention: docs/force.md,
+/// "Friction with adhesion".
+#[inline(always)]
+pub fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
+    (f + 2.0 * (c.h * r)).abs()
+}
+
 impl Law for DmtElastic {
     const NEEDS_VN: bool = false;
     const NEEDS_R: bool = true;
@@ -77,6 +86,10 @@ impl Law for DmtElastic {
         } else {
             tail(c, d, r)
         }
+    }
+    #[inline(always)]
+    fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
+        critical_load(c, r, f)
     }
 }
 
@@ -93,6 +106,10 @@ impl Law for DmtDamped {
         } else {
             tail(c, d, r)
         }
+    }
+    #[inline(always)]
+    fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
+        critical_load(c, r, f)
     }
 }
 

@@ -58,7 +58,7 @@ use crate::{EndCriterion, Error};
 pub(crate) struct Jkr;
 
 impl SpecLaw for Jkr {
-    const DOC: &'static str = "Normal law: adhesive JKR (Johnson, Kendall & Roberts 1971) with w = work_of_adhesion: the stable branch of d = a^2/R* - sqrt(2 pi w a/E*), F = 4 E* a^3/(3 R*) - sqrt(8 pi w E* a^3); the neck forms at d >= 0 and holds down to d_c = -(3/4)(pi^2 w^2 R* / E*^2)^(1/3) (force -(5/6) pi w R*), then breaks (loss W ~ 7.09 (w^5 R*^4/E*^2)^(1/3)); pull-off under load control -(3/2) pi w R*. One double of history (0 no neck, 1 formed). Optional Hertz dashpot with the JKR contact radius (e_n calibrated for w -> 0). Never clamped: requires DC_END_OVERLAP. Contact models only: no dc_pair constructor, no step-aware form (DC_ERR_STEP_UNSUPPORTED).";
+    const DOC: &'static str = "Normal law: adhesive JKR (Johnson, Kendall & Roberts 1971) with w = work_of_adhesion: the stable branch of d = a^2/R* - sqrt(2 pi w a/E*), F = 4 E* a^3/(3 R*) - sqrt(8 pi w E* a^3); the neck forms at d >= 0 and holds down to d_c = -(3/4)(pi^2 w^2 R* / E*^2)^(1/3) (force -(5/6) pi w R*), then breaks (loss W ~ 7.09 (w^5 R*^4/E*^2)^(1/3)); pull-off under load control -(3/2) pi w R*. One double of history (0 no neck, 1 formed). Optional Hertz dashpot with the JKR contact radius (e_n calibrated for w -> 0). Never clamped: requires DC_END_OVERLAP. Coulomb, rolling and twisting limits (while d > 0) on the adhesion-corrected load |F_n + 3 pi w R*|. Contact models only: no dc_pair constructor, no step-aware form (DC_ERR_STEP_UNSUPPORTED).";
     const MATERIALS: bool = true;
     const PARAMS: &'static [crate::laws::Param] = &[crate::laws::Param {
         field: "work_of_adhesion",
@@ -91,6 +91,10 @@ impl StateLaw for Jkr {
     #[inline(always)]
     fn dissipated(c: &Consts, r: f64, old: f64, new: f64) -> f64 {
         dissipated(c, r, old, new)
+    }
+    #[inline(always)]
+    fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
+        critical_load(c, r, f)
     }
 }
 
@@ -244,6 +248,15 @@ pub fn stored_energy(c: &Consts, d: f64, r: f64, state: f64) -> f64 {
 /// The pull-off force under load control [N]: −(3/2) π w R* (the branch's minimum force).
 pub fn pull_off_force(c: &Consts, r: f64) -> f64 {
     -0.75 * (0.75 * c.k * c.h) * r
+}
+
+/// The critical load of the Coulomb limits (see [`super::pair::Law::critical_load`]):
+/// |F + 2 F_po| with F_po = (3/2) π w R* (= −[`pull_off_force`]) and F the applied force
+/// (dashpot included): |F + 3π w R*|, ≥ (3/2) π w R* on the undamped branch. The decision and
+/// LAMMPS's convention: docs/force.md, "Friction with adhesion".
+#[inline(always)]
+pub fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
+    (f + 2.0 * (0.75 * (0.75 * c.k * c.h) * r)).abs()
 }
 
 /// The overlap δ_c [m] (< 0) below which a formed neck breaks: −(3/4) u_c δ₀.

@@ -59,6 +59,15 @@ pub(crate) trait Law {
     /// repulsive law: the force is zero unless d > 0.
     const ADHESIVE: bool = false;
     fn raw(c: &Consts, d: f64, vn: f64, r: f64, m: f64) -> f64;
+    /// The critical load [N] of the Coulomb limits (tangential μ F_c, rolling μ_r R* F_c,
+    /// twisting μ_tw F_c) of a touching contact of effective radius r whose applied normal
+    /// force is f: |f| for a law without adhesion (this default); an adhesive law overrides it
+    /// with the adhesion-corrected load |f + 2 F_po|, F_po its pull-off force (docs/force.md,
+    /// "Friction with adhesion"). Dispatched by [`super::registry`]'s `critical_load`.
+    #[inline(always)]
+    fn critical_load(_c: &Consts, _r: f64, f: f64) -> f64 {
+        f.abs()
+    }
     /// True for a law whose raw force needs the power s = d^h ([`crate::numerics::pow_dd`]):
     /// a batch then computes s in separate loops ([`super::batch`]) and calls [`Law::raw_pow`].
     const POW: bool = false;
@@ -186,6 +195,12 @@ pub(crate) trait StateLaw {
     fn force(c: &Consts, d: f64, vn: f64, r: f64, m: f64, state: &mut f64) -> f64;
     /// The energy the law removed in a step that took its state from `old` to `new` [J] (≥ 0).
     fn dissipated(c: &Consts, r: f64, old: f64, new: f64) -> f64;
+    /// The critical load [N] of the Coulomb limits for applied normal force f: |f| unless the
+    /// law is adhesive (see [`Law::critical_load`]).
+    #[inline(always)]
+    fn critical_load(_c: &Consts, _r: f64, f: f64) -> f64 {
+        f.abs()
+    }
 }
 
 /// The codes the registry line of a law gives it: its `dc_pair.model` and (laws with state) its

@@ -15,6 +15,7 @@
 //!   code), [`unclamped`] and [`KERNEL_CODES`],
 //! * the dispatch of the laws with state ([`has_state`], [`state_force`], [`state_dissipated`],
 //!   [`STATEFUL_KERNEL_CODES`]),
+//! * [`critical_load`], the load of the Coulomb limits from each law's `critical_load` hook,
 //! * the selectors [`normal`] and the specification's normal-law validation ([`from_spec`]),
 //! * the metadata table [`NORMAL`] (= [`crate::laws::NORMAL`]), from which `xtask` writes the C
 //!   constants, the Python enum, the inline header's codes and dispatch and the plugins' table.
@@ -136,6 +137,24 @@ macro_rules! normal_laws {
             match kernel {
                 $($($state => <$law as StateLaw>::dissipated(c, r, old, new),)?)*
                 _ => 0.0,
+            }
+        }
+
+        /// The critical load [N] of the Coulomb limits (tangential, rolling, twisting) of a
+        /// touching contact of effective radius `r` with applied normal force `f`, from the
+        /// law's own [`Law::critical_load`] / [`StateLaw::critical_load`]: |f| for every law
+        /// without adhesion (and for an unknown code), |f + 2 F_po| for an adhesive one.
+        #[inline(always)]
+        #[deny(unreachable_patterns)]
+        #[allow(unused_variables)]
+        pub(crate) fn critical_load(kernel: i32, c: &Consts, r: f64, f: f64) -> f64 {
+            match kernel {
+                $($($(
+                    $code => <$kty as Law>::critical_load(c, r, f),
+                    $($clamped => <$kty as Law>::critical_load(c, r, f),)?
+                )*)?)*
+                $($($state => <$law as StateLaw>::critical_load(c, r, f),)?)*
+                _ => f.abs(),
             }
         }
 
