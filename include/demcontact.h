@@ -1847,6 +1847,24 @@ int32_t dc_contact_model_set_step(struct dc_contact_model *model, double dt, int
 int32_t dc_contact_history_len(const struct dc_contact_model *model, size_t *len_out);
 
 /**
+ * How far beyond touching this model's normal law acts [m], for a contact of effective radius
+ * r_eff [m] (R1 R2/(R1 + R2); a sphere on a wall: its radius): the largest gap (−δ) at which
+ * its force can be nonzero. 0 for a law that acts only while touching; DC_NORMAL_DMT: its
+ * tail's length d_c = (3π w √R* / (2 E*))^(2/3); DC_NORMAL_JKR: |δ_c| = (3/4)(π² w² R* / E*²)^(1/3),
+ * where a formed neck breaks. A host extends its neighbour search by this much (the value
+ * grows with R*, as R*^(1/3), so the reach at the largest radii bounds every pair).
+ *
+ * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_NOT_FINITE (r_eff
+ * NaN or ±inf), DC_ERR_NOT_POSITIVE (r_eff ≤ 0); `reach_out` is written only on DC_OK.
+ *
+ * # Safety
+ * `model` NULL or readable; `reach_out` NULL or writable for a double.
+ */
+int32_t dc_contact_model_reach(const struct dc_contact_model *model,
+                               double r_eff,
+                               double *reach_out);
+
+/**
  * Force and torques of one sphere-sphere or sphere-wall contact, with the sub-models of
  * `model`, advancing its history by one step of the host's time step dt.
  *

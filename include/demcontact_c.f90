@@ -471,6 +471,13 @@ module demcontact_c
       integer(c_size_t), intent(out) :: len_out
       integer(c_int32_t) :: dc_contact_history_len
     end function dc_contact_history_len
+    function dc_contact_model_reach(model, r_eff, reach_out) bind(c, name='dc_contact_model_reach')
+      import
+      type(dc_contact_model), intent(in) :: model
+      real(c_double), value, intent(in) :: r_eff
+      real(c_double), intent(out) :: reach_out
+      integer(c_int32_t) :: dc_contact_model_reach
+    end function dc_contact_model_reach
     function dc_contact_force(model, state, dt, history, history_len, out) bind(c, &
         name='dc_contact_force')
       import
@@ -1074,6 +1081,18 @@ contains
     s = dc_contact_model_init(spec, out)
     if (present(stat)) stat = s
   end subroutine contact_model_init
+
+  !> Elemental form of dc_contact_model_reach: on error `reach_out` is NaN (numeric) and `stat` the status.
+  impure elemental subroutine contact_model_reach(model, r_eff, reach_out, stat)
+    type(dc_contact_model), intent(in) :: model
+    real(c_double), intent(in) :: r_eff
+    real(c_double), intent(out) :: reach_out
+    integer(c_int32_t), intent(out), optional :: stat
+    integer(c_int32_t) :: s
+    s = dc_contact_model_reach(model, r_eff, reach_out)
+    if (present(stat)) stat = s
+    if (s /= DC_OK) reach_out = ieee_value(reach_out, ieee_quiet_nan)
+  end subroutine contact_model_reach
 
   !> Elemental form of dc_pair_powerlaw: on error `out` is NaN (numeric) and `stat` the status.
   impure elemental subroutine pair_powerlaw(p, k, e, criterion, out, stat)

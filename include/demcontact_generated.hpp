@@ -168,6 +168,17 @@ inline status contact_model_init(const ::dc_contact_spec& spec, ::dc_contact_mod
     return static_cast<status>(::dc_contact_model_init(&spec, &out));
 }
 
+/// dc_contact_model_reach: throws demcontact::error on a non-OK status.
+inline double contact_model_reach(const ::dc_contact_model& model, double r_eff) {
+    double out{};
+    detail::check(::dc_contact_model_reach(&model, r_eff, &out));
+    return out;
+}
+/// dc_contact_model_reach: returns the status; `out` is written only on status::ok.
+inline status contact_model_reach(const ::dc_contact_model& model, double r_eff, double& out) noexcept {
+    return static_cast<status>(::dc_contact_model_reach(&model, r_eff, &out));
+}
+
 /// dc_contact_force_batch (no status: see the C documentation).
 inline std::int32_t contact_force_batch(const ::dc_contact_model& model, const ::dc_contact_batch& batch, double dt) noexcept {
     return ::dc_contact_force_batch(&model, &batch, dt);

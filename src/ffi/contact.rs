@@ -658,6 +658,47 @@ pub unsafe extern "C" fn dc_contact_history_len(
     }
 }
 
+/// How far beyond touching this model's normal law acts [m], for a contact of effective radius
+/// r_eff [m] (R1 R2/(R1 + R2); a sphere on a wall: its radius): the largest gap (−δ) at which
+/// its force can be nonzero. 0 for a law that acts only while touching; DC_NORMAL_DMT: its
+/// tail's length d_c = (3π w √R* / (2 E*))^(2/3); DC_NORMAL_JKR: |δ_c| = (3/4)(π² w² R* / E*²)^(1/3),
+/// where a formed neck breaks. A host extends its neighbour search by this much (the value
+/// grows with R*, as R*^(1/3), so the reach at the largest radii bounds every pair).
+///
+/// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_NOT_FINITE (r_eff
+/// NaN or ±inf), DC_ERR_NOT_POSITIVE (r_eff ≤ 0); `reach_out` is written only on DC_OK.
+///
+/// # Safety
+/// `model` NULL or readable; `reach_out` NULL or writable for a double.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn dc_contact_model_reach(
+    model: *const dc_contact_model,
+    r_eff: f64,
+    reach_out: *mut f64,
+) -> i32 {
+    // SAFETY: null checked; any bit pattern of dc_contact_model is a valid value.
+    let Some(m) = (unsafe { model.as_ref() }) else {
+        return DC_ERR_NULL_POINTER;
+    };
+    // SAFETY: forwarded caller contract on reach_out.
+    unsafe {
+        write_result(reach_out, || {
+            let cm = model_of(m)?;
+            if !r_eff.is_finite() {
+                return Err(Error::NotFinite);
+            }
+            if !(r_eff > 0.0) {
+                return Err(Error::NotPositive);
+            }
+            Ok(crate::force::registry::reach(
+                cm.normal.kernel,
+                &cm.normal.consts,
+                r_eff,
+            ))
+        })
+    }
+}
+
 /// Shared body of dc_contact_force and dc_contact_force_spheres.
 ///
 /// # Safety

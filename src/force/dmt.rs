@@ -60,9 +60,16 @@ pub(crate) struct DmtDamped;
 /// and for NaN d.
 #[inline(always)]
 fn tail(c: &Consts, d: f64, r: f64) -> f64 {
-    let dc = (c.h * r.sqrt() / c.k).powf(2.0 / 3.0);
+    let dc = reach(c, r);
     let s = 1.0 + d / dc;
     if s > 0.0 { -c.h * r * s } else { 0.0 }
+}
+
+/// The tail's length d_c = (h √r/k)^{2/3} = (3π w √R*/(2E*))^{2/3} [m]: the law's reach
+/// beyond touching (0 for w = 0).
+#[inline(always)]
+pub fn reach(c: &Consts, r: f64) -> f64 {
+    (c.h * r.sqrt() / c.k).powf(2.0 / 3.0)
 }
 
 /// The critical load of the Coulomb limits (see [`Law::critical_load`]): |F + 2 F_po| with the
@@ -91,6 +98,9 @@ impl Law for DmtElastic {
     fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
         critical_load(c, r, f)
     }
+    fn reach(c: &Consts, r: f64) -> f64 {
+        reach(c, r)
+    }
 }
 
 impl Law for DmtDamped {
@@ -110,6 +120,9 @@ impl Law for DmtDamped {
     #[inline(always)]
     fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
         critical_load(c, r, f)
+    }
+    fn reach(c: &Consts, r: f64) -> f64 {
+        reach(c, r)
     }
 }
 

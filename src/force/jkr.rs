@@ -96,6 +96,9 @@ impl StateLaw for Jkr {
     fn critical_load(c: &Consts, r: f64, f: f64) -> f64 {
         critical_load(c, r, f)
     }
+    fn reach(c: &Consts, r: f64) -> f64 {
+        -break_overlap(c, r)
+    }
 }
 
 /// u_c = 4^{−1/3}, the branch's end (the f64 nearest).

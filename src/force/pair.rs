@@ -68,6 +68,12 @@ pub(crate) trait Law {
     fn critical_load(_c: &Consts, _r: f64, f: f64) -> f64 {
         f.abs()
     }
+    /// The reach [m] of a contact of effective radius r: the largest gap (−δ) at which the
+    /// law's force can be nonzero; 0 for a law that acts only while touching (this default).
+    /// Dispatched by [`super::registry`]'s `reach` (`dc_contact_model_reach`).
+    fn reach(_c: &Consts, _r: f64) -> f64 {
+        0.0
+    }
     /// True for a law whose raw force needs the power s = d^h ([`crate::numerics::pow_dd`]):
     /// a batch then computes s in separate loops ([`super::batch`]) and calls [`Law::raw_pow`].
     const POW: bool = false;
@@ -200,6 +206,10 @@ pub(crate) trait StateLaw {
     #[inline(always)]
     fn critical_load(_c: &Consts, _r: f64, f: f64) -> f64 {
         f.abs()
+    }
+    /// The reach [m] beyond touching (see [`Law::reach`]): 0 unless the law acts at δ < 0.
+    fn reach(_c: &Consts, _r: f64) -> f64 {
+        0.0
     }
 }
 

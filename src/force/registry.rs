@@ -16,6 +16,7 @@
 //! * the dispatch of the laws with state ([`has_state`], [`state_force`], [`state_dissipated`],
 //!   [`STATEFUL_KERNEL_CODES`]),
 //! * [`critical_load`], the load of the Coulomb limits from each law's `critical_load` hook,
+//! * [`reach`], how far beyond touching each law acts (its `reach` hook),
 //! * the selectors [`normal`] and the specification's normal-law validation ([`from_spec`]),
 //! * the metadata table [`NORMAL`] (= [`crate::laws::NORMAL`]), from which `xtask` writes the C
 //!   constants, the Python enum, the inline header's codes and dispatch and the plugins' table.
@@ -155,6 +156,23 @@ macro_rules! normal_laws {
                 )*)?)*
                 $($($state => <$law as StateLaw>::critical_load(c, r, f),)?)*
                 _ => f.abs(),
+            }
+        }
+
+        /// The reach [m] of a contact of effective radius `r`: the largest gap (−δ) at which
+        /// the law's force can be nonzero, from the law's own [`Law::reach`] /
+        /// [`StateLaw::reach`]: 0 for every law that acts only while touching (and for an
+        /// unknown code).
+        #[deny(unreachable_patterns)]
+        #[allow(unused_variables)]
+        pub(crate) fn reach(kernel: i32, c: &Consts, r: f64) -> f64 {
+            match kernel {
+                $($($(
+                    $code => <$kty as Law>::reach(c, r),
+                    $($clamped => <$kty as Law>::reach(c, r),)?
+                )*)?)*
+                $($($state => <$law as StateLaw>::reach(c, r),)?)*
+                _ => 0.0,
             }
         }
 
