@@ -1855,7 +1855,8 @@ int32_t dc_contact_history_len(const struct dc_contact_model *model, size_t *len
  * grows with R*, as R*^(1/3), so the reach at the largest radii bounds every pair).
  *
  * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_NOT_FINITE (r_eff
- * NaN or ±inf), DC_ERR_NOT_POSITIVE (r_eff ≤ 0); `reach_out` is written only on DC_OK.
+ * NaN or ±inf), DC_ERR_NOT_POSITIVE (r_eff ≤ 0), DC_ERR_RESULT_RANGE (the reach overflows);
+ * `reach_out` is written only on DC_OK.
  *
  * # Safety
  * `model` NULL or readable; `reach_out` NULL or writable for a double.

@@ -73,6 +73,9 @@ fn contact_exports_do_not_allocate() {
                             }
                             let mut len = 0usize;
                             black_box(dc_contact_history_len(&model, &mut len));
+                            let mut reach = 0.0;
+                            black_box(dc_contact_model_reach(&model, x, &mut reach));
+                            calls += 1;
                             // Both carries in the loop below (and set_carry counted).
                             black_box(dc_contact_model_set_carry(
                                 &mut model,

@@ -62,7 +62,7 @@ static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t
     case 0: { /* spec: fuzzed selectors and parameters */
         dc_contact_spec sp;
         if (dc_contact_spec_init(&sp) != DC_OK) abort();
-        sp.normal = sel[0] % 7 - 1, sp.damping = sel[1] % 4 - 1, sp.criterion = sel[2] % 4 - 1;
+        sp.normal = sel[0] % 9 - 1, sp.damping = sel[1] % 4 - 1, sp.criterion = sel[2] % 4 - 1;
         sp.tangential = sel[3] % 5 - 1, sp.rolling = sel[4] % 5 - 1, sp.twisting = sel[5] % 4 - 1;
         double *f = &sp.E1; /* the 18 consecutive doubles E1 .. inertia_factor */
         for (int i = 0; i < 18; i++)
@@ -74,6 +74,12 @@ static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t
         if (s == DC_OK) {
             size_t len = 99;
             if (dc_contact_history_len(&m, &len) != DC_OK || len > DC_CONTACT_HISTORY_MAX) abort();
+            /* the reach at a fuzzed radius: finite and >= 0, or a status with nothing written */
+            double reach = 12345.0;
+            const int32_t sr = dc_contact_model_reach(&m, y[2], &reach);
+            if (!known(sr)) abort();
+            if (sr == DC_OK ? !(isfinite(reach) && reach >= 0.0) : reach != 12345.0) abort();
+            if ((sr == DC_ERR_NOT_FINITE) != !isfinite(y[2])) abort();
             /* the frame carry: any code; accepted (0, 1) or refused with the model untouched */
             dc_contact_model mc = m;
             const int32_t carry = sel[5] / 4;

@@ -666,7 +666,8 @@ pub unsafe extern "C" fn dc_contact_history_len(
 /// grows with R*, as R*^(1/3), so the reach at the largest radii bounds every pair).
 ///
 /// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_NOT_FINITE (r_eff
-/// NaN or ±inf), DC_ERR_NOT_POSITIVE (r_eff ≤ 0); `reach_out` is written only on DC_OK.
+/// NaN or ±inf), DC_ERR_NOT_POSITIVE (r_eff ≤ 0), DC_ERR_RESULT_RANGE (the reach overflows);
+/// `reach_out` is written only on DC_OK.
 ///
 /// # Safety
 /// `model` NULL or readable; `reach_out` NULL or writable for a double.
@@ -690,11 +691,11 @@ pub unsafe extern "C" fn dc_contact_model_reach(
             if !(r_eff > 0.0) {
                 return Err(Error::NotPositive);
             }
-            Ok(crate::force::registry::reach(
-                cm.normal.kernel,
-                &cm.normal.consts,
-                r_eff,
-            ))
+            let reach = crate::force::registry::reach(cm.normal.kernel, &cm.normal.consts, r_eff);
+            if !reach.is_finite() {
+                return Err(Error::ResultRange);
+            }
+            Ok(reach)
         })
     }
 }
