@@ -394,24 +394,19 @@ struct Model {
     demcontact_shaped::Eval eval = &demcontact_shaped::eval_fn<demcontact_shaped::Generic>;
 };
 
-/* How far beyond touching (a separation, > 0) the normal law of m between materials a and b acts
-   for the effective radius reff (a wall: the particle's radius); 0 for a law that acts only while
-   the bodies overlap. The laws' own lengths (docs/force.md; src/force/dmt.rs, jkr.rs), with E*
-   from dc_effective_modulus and w the contact's work of adhesion:
-     dmt: its tail ends at d_c = (3 pi w sqrt(R*) / (2 E*))^(2/3);
-     jkr: its neck breaks at delta_c = -(3/4) (pi^2 w^2 R* / E*^2)^(1/3), the reach |delta_c|.
-   Both grow with R* (as R*^(1/3)), so the reach at the largest radii of a type pair bounds every
-   pair of those types. Given 1e-6 larger: a bound, used to keep pairs in the neighbour list and
-   to pick the pairs and wall contacts evaluated beyond touching (demcontact itself decides the
-   force there, 0 beyond the law's range). NaN: a material demcontact refuses. */
-inline double law_reach(const Coeff &a, const Coeff &b, const Coeff &m, double reff)
+/* How far beyond touching (a separation, > 0) the normal law of a built contact model acts for
+   the effective radius reff (a wall: the particle's radius); 0 for a law that acts only while the
+   bodies overlap. The library's answer (dc_contact_model_reach): dmt: its tail's length d_c;
+   jkr: |delta_c|, where its neck breaks. Both grow with R* (as R*^(1/3)), so the reach at the
+   largest radii of a type pair bounds every pair of those types. Given 1e-6 larger: a bound, used
+   to keep pairs in the neighbour list and to pick the pairs and wall contacts evaluated beyond
+   touching (demcontact itself decides the force there, 0 beyond the law's range). NaN: the
+   library refused (its status is not expected for a model make_model built). */
+inline double law_reach(const Model &mod, double reff)
 {
-    if (m.damping == DAMP_VISCOELASTIC || (m.normal != DC_NORMAL_DMT && m.normal != DC_NORMAL_JKR)) return 0.0;
-    double es = 0.0;
-    if (dc_effective_modulus(a.E, a.nu, b.E, b.nu, &es) != DC_OK || !(reff >= 0.0)) return NAN;
-    const double w = m.normal_param[0];
-    const double r = m.normal == DC_NORMAL_DMT ? std::pow(3.0 * M_PI * w * std::sqrt(reff) / (2.0 * es), 2.0 / 3.0)
-                                               : 0.75 * std::cbrt(M_PI * M_PI * w * w * reff / (es * es));
+    if (mod.adhesive == ADH_NONE || reff == 0.0) return 0.0; // reff 0: no particle of the types yet
+    double r = NAN;
+    if (!mod.full || dc_contact_model_reach(&mod.cm, reff, &r) != DC_OK) return NAN;
     return r * (1.0 + 1e-6);
 }
 

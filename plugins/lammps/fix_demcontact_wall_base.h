@@ -206,7 +206,7 @@ protected:
 
     /* How far beyond touching the wall's law acts on a particle of radius r (law_reach, R* = r);
        0 for a law that acts only while overlapping. */
-    double reach(double r) const { return model.adhesive == ADH_NONE ? 0.0 : law_reach(coeff, coeff, coeff, r); }
+    double reach(double r) const { return model.adhesive == ADH_NONE ? 0.0 : law_reach(model, r); }
 
     /* A contact with overlap <= 0 (or NaN), history slot h of the last step or nullptr (none, or
        not current): whether the law still acts on it through that history (JKR: at overlap 0 the

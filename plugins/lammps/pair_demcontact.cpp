@@ -248,18 +248,15 @@ void PairDemcontact::build_models()
 }
 
 /* The cutoff of types i, j: their largest radii, plus (adhesive laws) how far beyond touching
-   their law acts at those radii (law_reach, the model's materials and work of adhesion), which
+   their law acts at those radii (law_reach: dc_contact_model_reach on the type pair's model), which
    the force loop also reads. */
 double PairDemcontact::init_one(int i, int j)
 {
     const int N = n1();
     double r = 0.0;
     if (models[i * N + j].adhesive != ADH_NONE) {
-        const Coeff &m = coeffs[std::min(i, j) * N + std::max(i, j)];
-        const bool mixed = !setflag[std::min(i, j)][std::max(i, j)];
-        const Coeff &a = mixed ? coeffs[i * N + i] : m, &b = mixed ? coeffs[j * N + j] : m;
         const double ri = onerad[i], rj = onerad[j];
-        r = law_reach(a, b, m, ri > 0.0 && rj > 0.0 ? ri * rj / (ri + rj) : 0.0);
+        r = law_reach(models[i * N + j], ri > 0.0 && rj > 0.0 ? ri * rj / (ri + rj) : 0.0);
         if (!std::isfinite(r))
             error->all(FLERR, "pair_style demcontact: types {} {}: the adhesive law's reach is {}", i, j, r);
     }
