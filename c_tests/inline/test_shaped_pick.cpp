@@ -3,8 +3,8 @@
  * viscoelastic, linear; every tangential, rolling, twisting and carry code), the evaluation eval_for(m)
  * picks (and pick<V> through a visitor) gives dc_contact_force's status, result and history bits
  * at every step of a contact's trajectory; a model of an instantiated shape (Hertz kernel,
- * tangential linear or Mindlin, twisting none; linear kernel damped, tangential none or linear,
- * rolling and twisting none) gets its instantiation, any other the generic
+ * tangential linear or Mindlin, twisting none; linear kernel damped with tangential, rolling and
+ * twisting none) gets its instantiation, any other the generic
  * entry. pick_common (the LIGGGHTS plugin's choice for all its type pairs): a set of models of
  * one instantiated shape gets it, whatever their parameters; a set with two shapes, or with one
  * model of no instantiated shape, gets the generic entry. The deferred evaluation picked the
@@ -107,8 +107,7 @@ int main(int argc, char **argv)
         }
         // what pick must choose
         const int32_t k = m.normal.kernel;
-        const bool linear_shape = k == DC_KERNEL_LIN_DAMPED &&
-                                  (m.tangential == DC_TANGENTIAL_NONE || m.tangential == DC_TANGENTIAL_LINEAR) &&
+        const bool linear_shape = k == DC_KERNEL_LIN_DAMPED && m.tangential == DC_TANGENTIAL_NONE &&
                                   m.rolling == DC_ROLLING_NONE && m.twisting == DC_TWISTING_NONE;
         const bool instantiated = ((k == DC_KERNEL_HERTZ_DAMPED || k == DC_KERNEL_HERTZ_DAMPED_CLAMPED) &&
                                    m.tangential != DC_TANGENTIAL_NONE && m.twisting == DC_TWISTING_NONE) ||
