@@ -17,8 +17,12 @@
  *
  * Instantiated: the Hertz kernel damped, or damped and force-clamped (hertz/material with
  * coeff_restitution, LIGGGHTS' model demcontact with exponent 1.5), tangential Mindlin or
- * linear, rolling none, constant or EPSD, twisting none, either carry: 24 shapes. The others
- * (viscoelastic, twisting, general p) take the generic entry, at its cost.
+ * linear, rolling none, constant or EPSD, twisting none, either carry: 24 shapes; the linear
+ * kernel damped alone (hertz/material's `linear` spring-dashpot, gran/hooke's normal law, with no
+ * tangential, rolling or twisting), either carry: 2 shapes. The others (viscoelastic, twisting,
+ * general p, the linear kernel undamped, clamped or with a tangential or rolling stage) take the
+ * generic entry, at its cost (the linear kernel with tangential linear, instantiated, measured no
+ * faster than the generic entry on the box deck's wall: docs/lammps_examples.md).
  */
 #ifndef DEMCONTACT_SHAPED_H
 #define DEMCONTACT_SHAPED_H
@@ -92,6 +96,10 @@ typename V::type for_tangential(int32_t tangential, int32_t rolling, int32_t car
 inline bool instantiated(const dc_contact_model &m)
 {
     const int32_t k = m.normal.kernel;
+    if (k == DC_KERNEL_LIN_DAMPED) { // the linear spring-dashpot alone (no tangential, rolling, twisting)
+        const int32_t c = m.carry == DC_CARRY_PROJECT ? DC_CARRY_PROJECT : DC_CARRY_ROTATE;
+        return dc_contact_model_shape_inline(&m, k, DC_TANGENTIAL_NONE, DC_ROLLING_NONE, DC_TWISTING_NONE, c) == DC_OK;
+    }
     if (k != DC_KERNEL_HERTZ_DAMPED && k != DC_KERNEL_HERTZ_DAMPED_CLAMPED) return false;
     const int32_t t = m.tangential == DC_TANGENTIAL_LINEAR ? DC_TANGENTIAL_LINEAR : DC_TANGENTIAL_MINDLIN;
     const int32_t r = m.rolling == DC_ROLLING_NONE       ? DC_ROLLING_NONE
@@ -107,6 +115,8 @@ template <class V>
 typename V::type pick(const dc_contact_model &m)
 {
     if (!instantiated(m)) return V::template get<Generic>();
+    if (m.normal.kernel == DC_KERNEL_LIN_DAMPED)
+        return for_carry<V, DC_KERNEL_LIN_DAMPED, DC_TANGENTIAL_NONE, DC_ROLLING_NONE>(m.carry);
     if (m.normal.kernel == DC_KERNEL_HERTZ_DAMPED)
         return for_tangential<V, DC_KERNEL_HERTZ_DAMPED>(m.tangential, m.rolling, m.carry);
     return for_tangential<V, DC_KERNEL_HERTZ_DAMPED_CLAMPED>(m.tangential, m.rolling, m.carry);
