@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Like-for-like loop time on LAMMPS's granular examples box, drum, funnel and mixer (Debian
 package lammps-examples): the builtin deck against demcontact with the same physics where demcontact
-has it (issue 33's speed measure; example_timing.py does flatwall):
+has it (the like-for-like table of docs/lammps_examples.md; example_timing.py does flatwall):
 
   example_matched.py --plugin demcontactplugin.so [--example box,drum,funnel,mixer] [--np 2]
                      [--reps 3] [--project] [--workdir DIR] [--lmp lmp]

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Loop time of LAMMPS's own granular example examples/granular/in.pour.flatwall (Debian package
 lammps-examples) without rolling resistance, demcontact against the builtin `pair_style granular`
-with the same parameters (issue 33's speed measure):
+with the same parameters (the speed rows of docs/lammps_examples.md):
 
   example_timing.py --plugin demcontactplugin.so [--before LABEL=old.so ...] [--np 2] [--reps 3]
                     [--steps N] [--workdir DIR] [--lmp lmp] [--deck in.pour.flatwall] [--count]
