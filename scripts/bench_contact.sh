@@ -2,7 +2,7 @@
 # Full-contact benchmark: builds examples_cpp/bench/contact_bench (CMake, Release) and prints its
 # markdown table: dc_contact_force_batch normal-only, + Mindlin tangential, + EPSD rolling, in ns
 # per contact, against hand-written C loops of the same formulas (-O3 and -O3 -fno-math-errno)
-# and today's normal-force path, all in the same run, with the ratios.
+# and the plain normal-force path, all in the same run, with the ratios.
 #   scripts/bench_contact.sh            portable build
 #   scripts/bench_contact.sh --native   RUSTFLAGS=-C target-cpu=native and -march=native
 set -euo pipefail
