@@ -30,6 +30,9 @@ pub struct KernelInfo {
     pub code: i32,
     /// Code of the clamped twin; 0 when there is none.
     pub clamped: i32,
+    /// The kernel's Rust type as written in the registry (`"hertz::HertzElastic"`, spaces as
+    /// `stringify!` leaves them): `xtask` translates its `raw` into the inline header.
+    pub rust_type: &'static str,
 }
 
 /// One law of one kind.

@@ -325,3 +325,49 @@ fn hertz_slides_at_mu_times_its_normal_force() {
         assert!(sticking > 100);
     }
 }
+
+/// EPSD rolling with Ai's stiffness rule (k_r = 0: k_r = 2.25 k_n μ_r² R*², k_n = p F/δ) on an
+/// adhesive law: where the neck pulls (F_n < 0 at δ > 0) p F/δ is negative, and a negative
+/// spring would drive the rolling it should resist (with η_r > 0 its dashpot would be NaN).
+/// The library takes k_n = 0 there (docs/force.md, JKR): no rolling torque while F_n < 0, a
+/// resisting one once the load is compressive. Through the C ABI, scalar and batch bit for bit.
+#[test]
+fn epsd_by_ais_rule_never_drives_rolling_where_the_neck_pulls() {
+    for (normal, d, f_ref) in cases() {
+        for eta_r in [0.0, 0.3] {
+            let m = adhesive_model(normal, |s| {
+                s.rolling = DC_ROLLING_EPSD;
+                s.mu_r = 0.1;
+                s.k_r = 0.0;
+                s.eta_r = eta_r;
+            });
+            let w_roll = 10.0;
+            let st = wall_state(d, [0.0; 3], [0.0, 0.0, w_roll]);
+            let (mut hs, mut hb) = ([0.0; DC_CONTACT_HISTORY_MAX], [0.0; DC_CONTACT_HISTORY_MAX]);
+            let tag = format!("law {normal} eta_r {eta_r} d {d:e} F_n {f_ref:e}");
+            for step in 0..50 {
+                let r = step2(&m, &st, &mut hs, &mut hb);
+                let t = r.torque1;
+                assert!(t.iter().all(|x| x.is_finite()), "{tag} step {step}: {t:?}");
+                // The rolling torque's work rate on body 1 (spin about z).
+                let power = t[2] * w_roll;
+                if f_ref < 0.0 {
+                    assert_eq!(
+                        t, [0.0; 3],
+                        "{tag} step {step}: torque where the neck pulls"
+                    );
+                } else if f_ref > 1e-3 * pull_off(normal) {
+                    assert!(
+                        power < 0.0,
+                        "{tag} step {step}: torque {t:?} does not resist"
+                    );
+                } else {
+                    assert!(
+                        power <= 0.0,
+                        "{tag} step {step}: torque {t:?} drives rolling"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -42,9 +42,9 @@
 use super::evaluate::ContactForce;
 use super::kinematics::{ContactState, Kin};
 use super::model::{ContactModel, HISTORY_MAX, select};
-use super::rolling_constant;
 use super::tangential::{TangentialStage, mass_factor};
 use super::vec3::{V3, add, dot, norm2, scale};
+use super::{rolling_constant, rolling_epsd};
 use crate::force::registry::{critical_load, normal_force_raw};
 use crate::force::stateful;
 
@@ -200,7 +200,7 @@ pub(crate) fn ledger(
             } else if !touching {
                 0.0
             } else {
-                2.25 * (pair.p * fe / k.d) * m.mu_r * m.mu_r * k.r_eff * k.r_eff
+                rolling_epsd::stiffness(m, pair.p * fe / k.d, k.r_eff)
             };
             let m_old = get3(old, at);
             let m_c = frame.carry(m_old);

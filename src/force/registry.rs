@@ -221,6 +221,7 @@ macro_rules! normal_laws {
                     name: stringify!($kname),
                     code: $code,
                     clamped: normal_laws!(@or0 $($clamped)?),
+                    rust_type: stringify!($kty),
                 },)*)?],
             },
         )*];

@@ -14,6 +14,7 @@ pub mod cpp;
 pub mod fortran;
 pub mod header;
 pub mod inline;
+pub mod kernels;
 pub mod probe;
 pub mod shape;
 
@@ -44,7 +45,13 @@ pub fn law_files(root: &Path) -> Result<Vec<(&'static str, String)>, String> {
         ),
         (
             inline::INLINE,
-            inline::inline_header(&read(inline::INLINE)?)?,
+            codes::splice(
+                &inline::inline_header(&read(inline::INLINE)?)?,
+                "/* BEGIN GENERATED kernels */",
+                "/* END GENERATED kernels */",
+                &kernels::block(root)?,
+                inline::INLINE,
+            )?,
         ),
     ])
 }
