@@ -32,7 +32,10 @@ the run (with 2 ranks: on rank 0, then split across the boundary, then both migr
 the stuck necks held through every reneighbouring; the reference integrates the same
 velocities).
 --walls: a sphere on the plane z = 0 by fix demcontact/wall zplane and by fix
-demcontact/wall/region on a `region plane` (the region's distance is z itself: the same bits);
+demcontact/wall/region on a `region plane` (the region's distance is z itself: the same bits),
+each case also with a bystander of radius 3 R at rest 2 R off the plane (tag _big): the fixes
+bound where an adhesive law is looked for (DMT's tail, the region's faces) by the reach at the
+group's largest radius, the bystander's, and the impacts must keep the reference's bits;
 the JKR impacts (jkr, jkr damped) also on the inside of fix demcontact/wall zcylinder Rc
 (Rc = 5 R): the sphere at (Rc - R - gap, 0, z) moving along +x, against adhesion_ref's zcyl case,
 which builds the contact as the fix does (rxy = |x|, n = -x/rxy, overlap = r - (Rc - rxy)), so
@@ -121,7 +124,7 @@ def pull_load(r_eff):
     return 1.4 * math.pi * W * r_eff
 
 
-def deck(plugin, wall, law, e_n, mu, speeds, newton, np_, drift, pulled=False):
+def deck(plugin, wall, law, e_n, mu, speeds, newton, np_, drift, pulled=False, big=False):
     vs, dt, steps, gap, r_eff = plan(wall, law, e_n, speeds)
     if pulled:
         gap = -1e-3 * reach(law, r_eff)
@@ -165,6 +168,9 @@ def deck(plugin, wall, law, e_n, mu, speeds, newton, np_, drift, pulled=False):
                   "set atom %d diameter %.17g density %.17g vx %.17g" % (n + 1, 2 * R, RHO, u + v / 2),
                   "set atom %d diameter %.17g density %.17g vx %.17g" % (n + 2, 2 * R, RHO, u - v / 2)]
             n += 2
+    if big:  # a flat wall's bystander of radius 3 R at rest, 2 R off the plane (the last atom ID)
+        L += ["create_atoms 1 single %.17g %.17g %.17g units box" % (-SPAN / 2, -SPAN / 2, 5 * R),
+              "set atom %d diameter %.17g density %.17g" % (n + 1, 6 * R, RHO)]
     if pulled and wall:  # the sphere pulled off the wall (+z) by the load
         L += ["group pa id 1", "fix pa pa addforce 0 0 %.17g" % pull_load(r_eff)]
     elif pulled:
@@ -200,13 +206,14 @@ def rel(a, b, scale):
     return abs(a - b) / scale
 
 
-def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, newton, np_):
-    tag = "%s_%s_%s_np%d%s" % (wall or "pair", label.replace(" ", "_"), newton, np_,
-                               "_drift" if a.drift and not wall else "")
+def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, newton, np_, big=False):
+    tag = "%s_%s_%s_np%d%s%s" % (wall or "pair", label.replace(" ", "_"), newton, np_,
+                                 "_drift" if a.drift and not wall else "", "_big" if big else "")
     d = os.path.join(a.workdir, tag)
     os.makedirs(d, exist_ok=True)
     pulled = outcome == "P"
-    text, dt, steps, vs = deck(a.plugin, wall, law, e_n, mu, speeds, newton, np_, a.drift and not wall, pulled)
+    text, dt, steps, vs = deck(a.plugin, wall, law, e_n, mu, speeds, newton, np_, a.drift and not wall, pulled,
+                               big)
     open(os.path.join(d, "in.deck"), "w").write(text)
     H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.deck", "-log", "log.lammps"], d, env)
     fr = frames(os.path.join(d, "traj.dump"))
@@ -369,6 +376,12 @@ def main():
             walls = ("zplane", "region") + (("zcyl",) if law == "jkr" and outcome != "P" else ())
             for wall in walls:
                 ok &= run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, "on", a.np)
+            # the impacts again with a larger bystander in the group: the wall fixes' reach bound
+            # (the group's largest radius) is then the bystander's, and the impacts' bits must not
+            # change (the library gives no force beyond an atom's own reach)
+            for wall in ("zplane", "region") if outcome != "P" else ():
+                ok &= run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, "on", a.np,
+                               big=True)
     print("ok" if ok else "FAIL")
     sys.exit(0 if ok else 1)
 
