@@ -394,6 +394,22 @@ struct Model {
     demcontact_shaped::Eval eval = &demcontact_shaped::eval_fn<demcontact_shaped::Generic>;
 };
 
+/* law_reach() below with the library's status: DC_OK and out = the reach (finite), or the status of
+   dc_contact_model_reach (out NaN; DC_ERR_SPEC_MODEL for an adhesive law without a full contact
+   model, which make_model never builds), so that a caller can name why there is no reach. */
+inline int32_t law_reach_status(const Model &mod, double reff, double &out)
+{
+    out = 0.0;
+    if (mod.adhesive == ADH_NONE || reff == 0.0) return DC_OK; // reff 0: no particle of the types yet
+    out = NAN;
+    if (!mod.full) return DC_ERR_SPEC_MODEL;
+    double r = NAN;
+    const int32_t s = dc_contact_model_reach(&mod.cm, reff, &r);
+    if (s != DC_OK) return s;
+    out = r * (1.0 + 1e-6);
+    return std::isfinite(out) ? DC_OK : DC_ERR_RESULT_RANGE;
+}
+
 /* How far beyond touching (a separation, > 0) the normal law of a built contact model acts for
    the effective radius reff (a wall: the particle's radius); 0 for a law that acts only while the
    bodies overlap. The library's answer (dc_contact_model_reach): dmt: its tail's length d_c;
@@ -404,10 +420,8 @@ struct Model {
    library refused (its status is not expected for a model make_model built). */
 inline double law_reach(const Model &mod, double reff)
 {
-    if (mod.adhesive == ADH_NONE || reff == 0.0) return 0.0; // reff 0: no particle of the types yet
     double r = NAN;
-    if (!mod.full || dc_contact_model_reach(&mod.cm, reff, &r) != DC_OK) return NAN;
-    return r * (1.0 + 1e-6);
+    return law_reach_status(mod, reff, r) == DC_OK ? r : NAN;
 }
 
 /* Build the model of a contact between materials a (body 1) and b (body 2), per-pair values from m;

@@ -18,6 +18,15 @@
  * step_exact (as in pair_coeff): the model is made step-aware for update->dt when the fix is
  * defined (which fixes its history length), again at every run's init and in reset_dt() (fix
  * dt/reset, timestep during a run): fix_demcontact_wall_base.h, for both wall fixes.
+ *
+ * Adhesive laws (dmt, jkr): the reach that bounds where DMT's tail is looked for (the region fix:
+ * the faces asked for) is dc_contact_model_reach at the group's largest radius, computed at every
+ * run's init (an error naming the radius and the status if it is not a finite double), not per
+ * atom and step: the library gives no force beyond an atom's own reach, so the bound of a larger
+ * radius changes no force (and the same radius gives the same bits). A radius grown past that
+ * one during the run (fix adapt, fix pour/deposit) makes the owning rank compute it again at that
+ * radius (reach_of in fix_demcontact_wall_base.h), the same error if it is not finite; shrinking
+ * radii keep the larger bound.
  */
 #ifndef DEMCONTACT_LAMMPS_FIX_WALL_H
 #define DEMCONTACT_LAMMPS_FIX_WALL_H
@@ -94,7 +103,7 @@ public:
                     !held(overlap, nh > 0 && key[i][face] == face ? hist[i] + face * nh : nullptr)) {
                     if (nh > 0 && advance) key[i][face] = -1;
                     // DMT's tail: its attraction up to d_c beyond touching
-                    if (model.adhesive == ADH_DMT && overlap > -reach(radius[i])) apply_tail(i, n, overlap, still);
+                    if (model.adhesive == ADH_DMT && overlap > -reach_of(i)) apply_tail(i, n, overlap, still);
                     continue;
                 }
                 double *h = nullptr;

@@ -21,11 +21,13 @@
 #include "comm.h"
 #include "error.h"
 #include "fix.h"
+#include "group.h"
 #include "memory.h"
 #include "update.h"
 
 #include "dc_coeff.h"
 
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -55,6 +57,7 @@ public:
         if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
             error->all(FLERR, "fix {} {} requires atom_style sphere", id, style);
         apply_dt();
+        init_reach();
     }
 
     /* fix dt/reset, or timestep between runs: a step_exact model follows the new dt. */
@@ -204,9 +207,48 @@ protected:
         }
     }
 
-    /* How far beyond touching the wall's law acts on a particle of radius r (law_reach, R* = r);
-       0 for a law that acts only while overlapping. */
-    double reach(double r) const { return model.adhesive == ADH_NONE ? 0.0 : law_reach(model, r); }
+    /* How far beyond touching the wall's law may act on owned atom i: the reach (law_reach, R* =
+       the radius) at the largest radius of the group, computed at init (init_reach) and again on
+       this rank when atom i is larger still (a radius grown during the run: fix adapt, a
+       particle inserted by fix pour/deposit), never per atom and step. A bound: demcontact gives
+       no force beyond the atom's own reach (DMT's tail ends at its d_c, a JKR neck breaks at its
+       |delta_c|), so a bound from a larger radius changes no force. 0 for a law that acts only
+       while overlapping. */
+    double reach_of(int i)
+    {
+        if (model.adhesive == ADH_NONE) return 0.0;
+        const double r = atom->radius[i];
+        if (r > reach_radius) {
+            const double rch = reach_at(r);
+            if (!std::isfinite(rch))
+                error->one(FLERR, "fix {} {}: atom {}: the adhesive law's reach at its radius {} is not a finite double: {}",
+                           id, style, atom->tag[i], r, dc_status_str(reach_status));
+            reach_radius = r;
+            reach_bound = rch;
+        }
+        return reach_bound;
+    }
+
+    /* The reach at the group's largest radius (MPI max over the ranks; 0 for an empty group):
+       every run's init. A reach that is not finite (the library's status: a radius or a work of
+       adhesion too large for the law's length to be a double) is an error naming the radius. */
+    void init_reach()
+    {
+        reach_radius = reach_bound = 0.0;
+        if (model.adhesive == ADH_NONE) return;
+        const double *radius = atom->radius;
+        const int *mask = atom->mask;
+        double r = 0.0, rall = 0.0;
+        for (int i = 0; i < atom->nlocal; i++)
+            if ((mask[i] & groupbit) && radius[i] > r) r = radius[i];
+        MPI_Allreduce(&r, &rall, 1, MPI_DOUBLE, MPI_MAX, world);
+        const double rch = reach_at(rall);
+        if (!std::isfinite(rch))
+            error->all(FLERR, "fix {} {}: the adhesive law's reach at radius {} (the largest of group {}) is not a finite "
+                                  "double: {}", id, style, rall, group->names[igroup], dc_status_str(reach_status));
+        reach_radius = rall;
+        reach_bound = rch;
+    }
 
     /* A contact with overlap <= 0 (or NaN), history slot h of the last step or nullptr (none, or
        not current): whether the law still acts on it through that history (JKR: at overlap 0 the
@@ -225,6 +267,14 @@ protected:
         apply(i, n, overlap, vwall, nh > 0 ? zero : nullptr);
     }
 
+    /* law_reach at radius r, its status kept in reach_status (NaN: not DC_OK). */
+    double reach_at(double r)
+    {
+        double out = NAN;
+        reach_status = law_reach_status(model, r, out);
+        return reach_status == DC_OK ? out : NAN;
+    }
+
     void clear(int i)
     {
         for (int s = 0; s < nslot; s++) key[i][s] = -1;
@@ -232,7 +282,10 @@ protected:
     }
 
     Model model;
-    Coeff coeff; // the wall's contact arguments (law_reach)
+    Coeff coeff; // the wall's contact arguments
+    // reach_of(): the reach bound and the radius it was computed at; the last law_reach_status
+    double reach_radius = 0.0, reach_bound = 0.0;
+    int32_t reach_status = DC_OK;
     int nh = 0, nslot = 0;
     double **hist = nullptr; // [nmax][nslot * nh]
     int **key = nullptr;     // [nmax][nslot]: the wall face of each slot, -1 = free

@@ -23,6 +23,10 @@
  * The region is looked up by its ID at every run's init: it may be deleted and defined again
  * between runs (LAMMPS' in.granregion.box does so to start and stop its rotation); the histories
  * are kept while the new region has as many wall faces, cleared otherwise.
+ *
+ * Adhesive laws: the faces are asked for within the radius plus the law's reach at the group's
+ * largest radius, fixed at init and raised when an atom grows past it (reach_of, as in fix
+ * demcontact/wall: fix_demcontact_wall.h).
  */
 #ifndef DEMCONTACT_LAMMPS_FIX_WALL_REGION_H
 #define DEMCONTACT_LAMMPS_FIX_WALL_REGION_H
@@ -96,7 +100,7 @@ public:
             int nc = 0;
             // the faces within the radius, plus an adhesive law's reach (as fix wall/gran/region
             // asks the region for its JKR pull-off distance)
-            const double cut = radius[i] + reach(radius[i]);
+            const double cut = radius[i] + reach_of(i);
             if (region->match(x[i][0], x[i][1], x[i][2])) nc = region->surface(x[i][0], x[i][1], x[i][2], cut);
             if (nc > region->tmax)
                 error->one(FLERR, "fix {} demcontact/wall/region: atom {} touches {} faces of region {} (at most {})",
@@ -111,7 +115,7 @@ public:
                     const int s = nh > 0 ? slot_of(i, c.iwall) : -1;
                     if (!held(overlap, s >= 0 ? hist[i] + s * nh : nullptr)) {
                         if (s >= 0 && advance) key[i][s] = -1; // the contact ended
-                        if (model.adhesive == ADH_DMT && overlap > -reach(radius[i])) {
+                        if (model.adhesive == ADH_DMT && overlap > -reach_of(i)) {
                             if (moving) region->velocity_contact(vwall, x[i], ic);
                             apply_tail(i, n, overlap, vwall); // DMT's tail
                         }

@@ -39,6 +39,13 @@
  * contact is always evaluated with body 1 = the atom of smaller ID, so both evaluations are
  * bitwise equal.
  *
+ * Diagnostics: the partner-heal path (heal_from_partner: the list owner has no copy of a contact
+ * history that its partner's copy holds, not met in a normal run) is counted per rank in the
+ * pair's two extra values, read (summed over the ranks) by `compute ID all pair demcontact`:
+ * c_ID[1] the copies healed into a new slot at a step, c_ID[2] the setup evaluations that read the
+ * partner's copy. Both count from the pair style's definition (tests/simulators/partner_heal.py
+ * checks that its scene takes the path). Extensive values: `thermo_modify norm no` to read counts.
+ *
  * step_exact: every step_exact model is made step-aware for update->dt when it is built (each
  * run's init_style) and again in reset_dt(), which LAMMPS calls when dt changes during a run (fix
  * dt/reset; `timestep` once a run has happened). Its extra history double counts in nh, the
@@ -73,6 +80,9 @@ PairDemcontact::PairDemcontact(LAMMPS *lmp) : Pair(lmp)
     restartinfo = 0; // pair_style/pair_coeff are given again after read_restart (contact histories: fix demcontact/history)
     no_virial_fdotr_compute = 1;
     finitecutflag = 1;
+    // the partner-heal counters (heal_from_partner), read by `compute ID all pair demcontact`
+    nextra = 2;
+    pvector = new double[2]();
 }
 
 PairDemcontact::~PairDemcontact()
@@ -86,6 +96,8 @@ PairDemcontact::~PairDemcontact()
         delete[] reach;
     }
     if (history && modify->get_fix_by_id("DEMCONTACT_HISTORY")) modify->delete_fix("DEMCONTACT_HISTORY");
+    delete[] pvector;
+    pvector = nullptr;
 }
 
 void PairDemcontact::settings(int narg, char **arg)
@@ -327,6 +339,7 @@ int PairDemcontact::heal_from_partner(int i, int si, int j, int sj)
     FixDemcontactHistory &H = *history;
     std::memcpy(H.slot(i, si), H.slot(j, sj), sizeof(double) * H.stride());
     H.set_partner(i, si, atom->tag[j]);
+    pvector[0] += 1.0;
     return sj;
 }
 
@@ -500,6 +513,7 @@ void PairDemcontact::compute_loop()
                 } else { // setup, no slot yet: a new contact (or j's copy alone, if current)
                     const int sj0 = j < nlocal ? H->find(j, tag[i]) : -1;
                     const bool cur = sj0 >= 0 && H->stamp(j, sj0) == tick;
+                    if (cur) pvector[1] += 1.0; // the partner's copy read at setup (counter 2)
                     for (int k = 0; k < nhh; k++) scratch[k] = cur ? H->history(j, sj0)[k] : 0.0;
                     h = scratch;
                 }

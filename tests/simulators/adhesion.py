@@ -20,7 +20,10 @@ per speed; the spheres start 3 reaches apart (JKR |delta_c|, DMT d_c), dt = t_H(
                 addforce): held by the neck at negative overlap; on 2 ranks with --drift the
                 side that evaluates it changes while it is held (deck()); with --restart
                 also interrupted at half way by write_restart and continued after read_restart
-                in a new process: its positions within 1e-9 R of the uninterrupted run's
+                in a new process: its positions within 1e-9 R of the uninterrupted run's.
+                With --walls also a sphere pulled off each flat wall the same way (R* = R),
+                through the same restart (the fix and, for the region, its region defined again
+                with the same IDs: the held neck comes back from the file's per-atom record)
 
 Pairs: two spheres on the x axis, the first at x < 0 (with --np 2 and `processors 2 1 1` each
 sphere on its own rank: every contact across the rank boundary), with the given `newton` settings.
@@ -29,7 +32,15 @@ the run (with 2 ranks: on rank 0, then split across the boundary, then both migr
 the stuck necks held through every reneighbouring; the reference integrates the same
 velocities).
 --walls: a sphere on the plane z = 0 by fix demcontact/wall zplane and by fix
-demcontact/wall/region on a `region plane` (the region's distance is z itself: the same bits).
+demcontact/wall/region on a `region plane` (the region's distance is z itself: the same bits),
+each case also with a bystander of radius 3 R at rest 2 R off the plane (tag _big): the fixes
+bound where an adhesive law is looked for (DMT's tail, the region's faces) by the reach at the
+group's largest radius, the bystander's, and the impacts must keep the reference's bits;
+the JKR impacts (jkr, jkr damped) also on the inside of fix demcontact/wall zcylinder Rc
+(Rc = 5 R): the sphere at (Rc - R - gap, 0, z) moving along +x, against adhesion_ref's zcyl case,
+which builds the contact as the fix does (rxy = |x|, n = -x/rxy, overlap = r - (Rc - rxy)), so
+the same bits again (the cylinder's curvature is not used by the fix: the wall is flat at the
+contact, r2 = inf).
 
 Checks: (a) every impact's final position and velocity equal the reference's to 1e-12 relative
 (the realised restitution too; measured: 0, bit-identical); (b, c) JKR: the impacts below v_s
@@ -55,6 +66,7 @@ TOL_E_JKR = 2e-3  # undamped JKR rebound against the closed form of the continuo
 TOL_E_DMT = 1e-3  # undamped DMT rebound against 1
 TOL_RESTART = 1e-9  # the pulled pair after write/read_restart against the uninterrupted run (R)
 SPAN = 1e-4       # distance between impacts (10 R; the cutoff is 2 R plus a few nm)
+RCYL = SPAN / 2   # --walls: the z cylinder's radius (fix demcontact/wall zcylinder)
 
 CASES = [  # (label, law, e_n, mu, speeds / v_s, outcome per speed: S stuck, A apart)
     ("jkr", "jkr", 1.0, 0.0, (0.5, 0.9, 1.5, 3.0, 10.0), "SSAAA"),
@@ -112,21 +124,24 @@ def pull_load(r_eff):
     return 1.4 * math.pi * W * r_eff
 
 
-def deck(plugin, wall, law, e_n, mu, speeds, newton, np_, drift, pulled=False):
+def deck(plugin, wall, law, e_n, mu, speeds, newton, np_, drift, pulled=False, big=False):
     vs, dt, steps, gap, r_eff = plan(wall, law, e_n, speeds)
     if pulled:
         gap = -1e-3 * reach(law, r_eff)
     # --drift: both spheres of a pair also move at U along x, from x = -X0 to +X0 over the run
     x0 = 0.3 * SPAN if drift else 0.0
     u = 2 * x0 / (steps * dt)
+    # zcyl: the spheres one above the other along the cylinder's axis (z), each moving along x
+    ybox, zbox = (SPAN, SPAN * (len(speeds) + 1)) if wall == "zcyl" else (SPAN * (len(speeds) + 1), SPAN)
     L = ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f", "comm_modify vel yes",
          "newton %s" % newton, "processors %d 1 1" % np_ if np_ > 1 else "",
-         "region box block %g %g %g %g %g %g units box" % (-SPAN, SPAN, -SPAN, SPAN * (len(speeds) + 1),
-                                                          -SPAN, SPAN),
+         "region box block %g %g %g %g %g %g units box" % (-SPAN, SPAN, -SPAN, ybox, -SPAN, zbox),
          "create_box 1 box", "plugin load %s" % os.path.abspath(plugin), "neighbor %g bin" % (R / 10),
          "neigh_modify delay 0"]
     if wall == "zplane":
         L.append("fix w all demcontact/wall %s zplane 0 NULL" % coeff(law, e_n, mu))
+    elif wall == "zcyl":
+        L.append("fix w all demcontact/wall %s zcylinder %.17g" % (coeff(law, e_n, mu), RCYL))
     elif wall == "region":
         L += ["region fl plane 0 0 0 0 0 1 side in units box",
               "fix w all demcontact/wall/region %s region fl" % coeff(law, e_n, mu)]
@@ -136,20 +151,29 @@ def deck(plugin, wall, law, e_n, mu, speeds, newton, np_, drift, pulled=False):
     for k, s in enumerate(speeds):
         v = s * vs
         y = SPAN * k
-        if wall:
+        if pulled:
+            v = 0.0
+        if wall == "zcyl":  # at (Rc - R - gap, 0, z), moving along +x towards the wall at Rc
+            L += ["create_atoms 1 single %.17g 0 %.17g units box" % (RCYL - R - gap, y),
+                  "set atom %d diameter %.17g density %.17g vx %.17g" % (n + 1, 2 * R, RHO, v)]
+            n += 1
+        elif wall:
             L += ["create_atoms 1 single %.17g %.17g %.17g units box" % (SPAN / 2, y, R + gap),
                   "set atom %d diameter %.17g density %.17g vz %.17g" % (n + 1, 2 * R, RHO, -v)]
             n += 1
         else:
             x = R + gap / 2
-            if pulled:
-                v = 0.0
             L += ["create_atoms 1 single %.17g %.17g 0 units box" % (-x0 - x, y),
                   "create_atoms 1 single %.17g %.17g 0 units box" % (-x0 + x, y),
                   "set atom %d diameter %.17g density %.17g vx %.17g" % (n + 1, 2 * R, RHO, u + v / 2),
                   "set atom %d diameter %.17g density %.17g vx %.17g" % (n + 2, 2 * R, RHO, u - v / 2)]
             n += 2
-    if pulled:
+    if big:  # a flat wall's bystander of radius 3 R at rest, 2 R off the plane (the last atom ID)
+        L += ["create_atoms 1 single %.17g %.17g %.17g units box" % (-SPAN / 2, -SPAN / 2, 5 * R),
+              "set atom %d diameter %.17g density %.17g" % (n + 1, 6 * R, RHO)]
+    if pulled and wall:  # the sphere pulled off the wall (+z) by the load
+        L += ["group pa id 1", "fix pa pa addforce 0 0 %.17g" % pull_load(r_eff)]
+    elif pulled:
         p = pull_load(r_eff)
         L += ["group pa id 1", "group pb id 2", "fix pa pa addforce %.17g 0 0" % -p,
               "fix pb pb addforce %.17g 0 0" % p,
@@ -182,13 +206,14 @@ def rel(a, b, scale):
     return abs(a - b) / scale
 
 
-def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, newton, np_):
-    tag = "%s_%s_%s_np%d%s" % (wall or "pair", label.replace(" ", "_"), newton, np_,
-                               "_drift" if a.drift and not wall else "")
+def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, newton, np_, big=False):
+    tag = "%s_%s_%s_np%d%s%s" % (wall or "pair", label.replace(" ", "_"), newton, np_,
+                                 "_drift" if a.drift and not wall else "", "_big" if big else "")
     d = os.path.join(a.workdir, tag)
     os.makedirs(d, exist_ok=True)
     pulled = outcome == "P"
-    text, dt, steps, vs = deck(a.plugin, wall, law, e_n, mu, speeds, newton, np_, a.drift and not wall, pulled)
+    text, dt, steps, vs = deck(a.plugin, wall, law, e_n, mu, speeds, newton, np_, a.drift and not wall, pulled,
+                               big)
     open(os.path.join(d, "in.deck"), "w").write(text)
     H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.deck", "-log", "log.lammps"], d, env)
     fr = frames(os.path.join(d, "traj.dump"))
@@ -199,12 +224,14 @@ def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, ne
         raise SystemExit("FAIL: %s: the pairs did not drift through x = 0" % tag)
     # the reference: the same bodies from LAMMPS's own step-0 values (mass as LAMMPS computed it)
     lines, bodies = [], []
-    ax = "z" if wall else "x"
+    ax = "z" if wall in ("zplane", "region") else "x"
     for k, s in enumerate(speeds):
         if wall:
             b = [first[k + 1]]
-            lines.append("wall %s %.17g %.17g %.17g %.17g %.17g %.17g %d 0 %.17g %.17g %.17g %.17g" % (
-                law, E, NU, W, e_n, mu, dt, steps, b[0]["radius"], b[0]["mass"], b[0]["z"], b[0]["vz"]))
+            lines.append("%s %s %.17g %.17g %.17g %.17g %.17g %.17g %d %.17g %.17g %.17g %.17g %.17g%s" % (
+                "zcyl" if wall == "zcyl" else "wall", law, E, NU, W, e_n, mu, dt, steps,
+                pull_load(R) if pulled else 0.0, b[0]["radius"], b[0]["mass"], b[0][ax], b[0]["v" + ax],
+                " %.17g" % RCYL if wall == "zcyl" else ""))
         else:
             b = [first[2 * k + 1], first[2 * k + 2]]
             lines.append("pair %s %.17g %.17g %.17g %.17g %.17g %.17g %d %.17g %s %s" % (
@@ -231,33 +258,43 @@ def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, ne
         first_part = text[:text.rindex("run %d" % steps)] + "run %d\nwrite_restart r.bin\n" % half
         open(os.path.join(d2, "in.write"), "w").write(first_part)
         H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.write", "-log", "log.write"], d2, env)
+        # (regions are not in restart files: the wall's region is defined again before its fix)
         keep = [l for l in text.splitlines() if l.split()[:1] in (["plugin"], ["pair_style"], ["pair_coeff"],
                                                                     ["neighbor"], ["neigh_modify"],
                                                                     ["comm_modify"], ["timestep"], ["dump"],
                                                                     ["dump_modify"], ["thermo"])
-                or l.startswith("fix ") or l.startswith("atom_modify sort")]
+                or l.startswith("fix ") or l.startswith("atom_modify sort") or l.startswith("region fl ")]
         second = ["processors %d 1 1" % np_ if np_ > 1 else "", "read_restart r.bin"] + keep + \
             ["run %d" % (steps - half)]
         open(os.path.join(d2, "in.read"), "w").write("\n".join(l for l in second if l) + "\n")
         out, _ = H.run(H.mpi_prefix(np_, mpirun) + [exe, "-in", "in.read", "-log", "log.read"], d2, env)
         fin = frames(os.path.join(d2, "traj.dump"))[-1]
-        g = [last[1], last[2]]
-        gap_u = g[1]["x"] - g[0]["x"] - 2 * R
-        gap_r = fin[2]["x"] - fin[1]["x"] - 2 * R
-        d_x = max(rel(fin[i]["x"], last[i]["x"], R) for i in (1, 2))
+        if wall:  # the sphere's gap to the plane z = 0
+            gap_u, gap_r = last[1]["z"] - R, fin[1]["z"] - R
+            d_x = rel(fin[1]["z"], last[1]["z"], R)
+        else:
+            gap_u = last[2]["x"] - last[1]["x"] - 2 * R
+            gap_r = fin[2]["x"] - fin[1]["x"] - 2 * R
+            d_x = max(rel(fin[i]["x"], last[i]["x"], R) for i in (1, 2))
         good = 0.0 < gap_r < rch and d_x <= TOL_RESTART
         print("%s %-26s restart at step %d: gap %.6g m (uninterrupted %.6g), positions within %.2g R of the "
               "uninterrupted run (tolerance %g)" % ("ok  " if good else "FAIL", tag, half, gap_r, gap_u, d_x,
                                                      TOL_RESTART))
         if not good:
             return False
-    if pulled:  # one pair, at rest relative to each other: positions and velocities against the reference
-        x1, v1, x2, v2, state = refs[0]
-        g = [last[1], last[2]]
-        scale_v = max(abs(g[0]["vx"]), 1e-300)
-        d_bits = max(rel(g[0]["x"], x1, R), rel(g[1]["x"], x2, R), rel(g[0]["vx"], v1, scale_v),
-                     rel(g[1]["vx"], v2, scale_v))
-        gap = g[1]["x"] - g[0]["x"] - 2 * R
+    if pulled:
+        if wall:  # one sphere at rest on the wall: position and velocity against the reference
+            x1, v1, _, _, state = refs[0]
+            g = last[1]
+            d_bits = max(rel(g["z"], x1, R), rel(g["vz"], v1, max(abs(g["vz"]), 1e-300)))
+            gap = g["z"] - R
+        else:  # one pair, at rest relative to each other: positions and velocities against the reference
+            x1, v1, x2, v2, state = refs[0]
+            g = [last[1], last[2]]
+            scale_v = max(abs(g[0]["vx"]), 1e-300)
+            d_bits = max(rel(g[0]["x"], x1, R), rel(g[1]["x"], x2, R), rel(g[0]["vx"], v1, scale_v),
+                         rel(g[1]["vx"], v2, scale_v))
+            gap = g[1]["x"] - g[0]["x"] - 2 * R
         msg = []
         if not d_bits <= TOL_BITS:
             msg.append("differs from the reference by %.3g (tolerance %g)" % (d_bits, TOL_BITS))
@@ -265,7 +302,7 @@ def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, ne
             msg.append("not held by the neck at negative overlap (gap %.3g, |delta_c| %.3g, state %g)"
                        % (gap, rch, state))
         print("%s %-26s pulled by %.4g N: gap %.6g m (|delta_c| %.3g), ref state %g, |d| = %.2g%s" % (
-            "ok  " if not msg else "FAIL", tag, pull_load(R / 2), gap, rch, state, d_bits,
+            "ok  " if not msg else "FAIL", tag, pull_load(r_eff), gap, rch, state, d_bits,
             "" if not msg else ": " + "; ".join(msg)))
         return not msg
     for k, s in enumerate(speeds):
@@ -277,9 +314,13 @@ def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, ne
         if not wall:
             d_bits = max(d_bits, rel(g[1]["x"], x2, R), rel(g[1]["vx"], v2, v))
         # realised restitution (relative speed after over before) and the final surface gap
-        e_lmp = (g[0]["vz"] if wall else g[1]["vx"] - g[0]["vx"]) / v
-        e_ref = (v1 if wall else v2 - v1) / v
-        gap = g[0]["z"] - R if wall else g[1]["x"] - g[0]["x"] - 2 * R
+        if wall == "zcyl":  # moving along +x into the wall at Rc
+            e_lmp, e_ref = -g[0]["vx"] / v, -v1 / v
+            gap = RCYL - g[0]["x"] - R
+        else:
+            e_lmp = (g[0]["vz"] if wall else g[1]["vx"] - g[0]["vx"]) / v
+            e_ref = (v1 if wall else v2 - v1) / v
+            gap = g[0]["z"] - R if wall else g[1]["x"] - g[0]["x"] - 2 * R
         d_e = abs(e_lmp - e_ref) / max(abs(e_ref), 1e-300)
         stuck = gap <= rch and state != 0.0 if law == "jkr" else gap <= rch
         apart = gap > rch and e_lmp > 0
@@ -329,9 +370,18 @@ def main():
     for label, law, e_n, mu, speeds, outcome in CASES:
         for newton in a.newton:
             ok &= run_case(a, exe, env, mpirun, None, label, law, e_n, mu, speeds, outcome, newton, a.np)
-        if a.walls and outcome != "P":
-            for wall in ("zplane", "region"):
+        if a.walls:
+            # every case on both flat walls (the pulled sphere held by its neck, through a restart
+            # with --restart); the JKR impacts also on the inside of the z cylinder
+            walls = ("zplane", "region") + (("zcyl",) if law == "jkr" and outcome != "P" else ())
+            for wall in walls:
                 ok &= run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, "on", a.np)
+            # the impacts again with a larger bystander in the group: the wall fixes' reach bound
+            # (the group's largest radius) is then the bystander's, and the impacts' bits must not
+            # change (the library gives no force beyond an atom's own reach)
+            for wall in ("zplane", "region") if outcome != "P" else ():
+                ok &= run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, "on", a.np,
+                               big=True)
     print("ok" if ok else "FAIL")
     sys.exit(0 if ok else 1)
 

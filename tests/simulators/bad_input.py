@@ -133,6 +133,13 @@ LAMMPS_CASES = [
     ("jkr no value", "", "hertz/material 5e6 0.5 0.3 jkr", None, "missing value for work_of_adhesion", None),
     ("jkr limit_damping", "", "hertz/material 5e6 0.5 0.3 limit_damping jkr 0.01", None,
      "normal law 'jkr' is never clamped", None),
+    # a wall's adhesive reach (dc_contact_model_reach at the group's largest radius, at init) that
+    # is not a double: DMT's d_c = (3 pi w sqrt(R)/(2 E*))^(2/3) overflows for E = 1e-300, w = 1e10
+    ("wall dmt reach not finite", "", LAMMPS_GOOD, "hertz/material 1e-300 1 0.3 dmt 1e10 zplane -0.01 NULL",
+     "reach at radius 0.001 (the largest of group all) is not a finite double", RESULT_RANGE),
+    ("region wall: dmt reach not finite", "", LAMMPS_GOOD,
+     "region:hertz/material 1e-300 1 0.3 dmt 1e10 region wallreg",
+     "reach at radius 0.001 (the largest of group all) is not a finite double", RESULT_RANGE),
 ]
 
 # bad values met during the run (pair_demcontact.cpp): an atom's velocity not finite (the pass
@@ -144,11 +151,23 @@ LAMMPS_RUN_CASES = [  # (label, pair_coeff, deck overrides, bad value as printed
                                                             "velocity all set v_big 0 0"]), "atoms 1 2", NOT_FINITE),
     ("results not finite (run time)", FULL.replace("NULL 1.0", "NULL 0.5"),
      dict(density="1e30", velocity=["group one id 1", "velocity one set 0 1e300 0"]), "step 0", RESULT_RANGE),
+    # a wall's reach bound follows a radius grown during the run (fix adapt: 0.001 -> 10, at the
+    # setup): DMT's d_c, finite at 0.001 for E = 1e-300, w = 1e7, overflows at 10 (the walls apart:
+    # the atoms beyond touching, where the DMT tail is looked for)
+    ("wall dmt reach of a grown radius", LAMMPS_GOOD,
+     dict(wall="hertz/material 1e-300 1 0.3 dmt 1e7 zplane -20 NULL", sphere="sphere 1",
+          velocity=["variable d equal 20", "fix ad all adapt 1 atom diameter v_d"]),
+     "atom 1: the adhesive law's reach at its radius 10 is not a finite double", RESULT_RANGE),
+    ("region wall: dmt reach of a grown radius", LAMMPS_GOOD,
+     dict(wall="region:hertz/material 1e-300 1 0.3 dmt 1e7 region wallreg", sphere="sphere 1",
+          velocity=["variable d equal 20", "fix ad all adapt 1 atom diameter v_d"]),
+     "atom 1: the adhesive law's reach at its radius 10 is not a finite double", RESULT_RANGE),
 ]
 
 
-def lammps_deck(plugin, style, coeff, wall, velocity=("velocity all set 0.1 0 0",), density="2500"):
-    L = ["units si", "atom_style sphere", "boundary f f f", "comm_modify vel yes",
+def lammps_deck(plugin, style, coeff, wall, velocity=("velocity all set 0.1 0 0",), density="2500",
+                sphere="sphere"):
+    L = ["units si", "atom_style " + sphere, "boundary f f f", "comm_modify vel yes",
          "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box", "create_box 1 box",
          "plugin load %s" % os.path.abspath(plugin), ("pair_style demcontact " + style).strip(),
          "pair_coeff 1 1 " + coeff,
@@ -288,7 +307,8 @@ def main():
         exe = lammps_runs.find_lmp(a.lmp)
         env = H.mpi_env()
         cases = [(lab, lammps_deck(a.plugin, st, co, wa), bad, code) for lab, st, co, wa, bad, code in LAMMPS_CASES]
-        cases += [(lab, lammps_deck(a.plugin, "", co, None, **kw), bad, code) for lab, co, kw, bad, code in LAMMPS_RUN_CASES]
+        cases += [(lab, lammps_deck(a.plugin, "", co, kw.get("wall"), **{k: v for k, v in kw.items() if k != "wall"}),
+                   bad, code) for lab, co, kw, bad, code in LAMMPS_RUN_CASES]
         # (both carry values, both Mindlin laws and step_exact accepted)
         control = lammps_deck(a.plugin, "", FULL + " carry project step_exact",
                               FULL_RESCALE + " carry rotate step_exact zplane -0.01 NULL")

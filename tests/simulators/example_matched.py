@@ -15,8 +15,10 @@ short, as its table), with these contact lines (MATCHED below says why each):
           tangential dashpot: the builtin evaluates one more capped dashpot per contact), wall
           `tangential linear_history 1142.857 1 0.5` (kt as the builtin's, undamped, mu 0.5).
   drum    builtin `pair_style granular` hertz/material + mindlin + tsuji damping, type 2 without
-          its JKR cohesion, rolling and twisting (demcontact's LAMMPS plugin computes overlapping
-          pairs only, no adhesion): hertz/material with tsuji on every type pair and wall.
+          its JKR cohesion, rolling and twisting (twisting marshall has no demcontact
+          counterpart; demcontact's JKR neck breaks at delta_c, 9^(1/3) times farther than
+          LAMMPS's JKR pull-off distance, so the two JKR laws are not like for like;
+          docs/lammps_examples.md): hertz/material with tsuji on every type pair and wall.
           demcontact: hertz/material with the restitution the builtin's tsuji damping realises
           (measured, per type), mindlin, e_t = 1.
   funnel  builtin gran/hertz/history (kn = 4G/(3(1-nu)) is Hertz's 4/3 E*, kt = 4G/(2-nu) is

@@ -45,8 +45,11 @@ DECK = EX_DIR + "/granular/in.pour.flatwall"  # (--deck: another copy of a deck)
 # (coeffRes, tsuji's e), else the one of its linear damping (box: gamma_n = 100 between two unit
 # spheres, e = exp(-pi z / sqrt(1 - z^2)), z = gamma_n / (2 sqrt(kn / m_eff)): 0.25 pair, 0.11
 # wall); friction mu as the example's; tangential mindlin (k_t from E, nu), e_t = 1 (the examples'
-# tangential damping has no restitution counterpart). Cohesion (JKR) and twisting have no
-# demcontact counterpart and are left out.
+# tangential damping has no restitution counterpart). Twisting (marshall) has no demcontact
+# counterpart and is left out. Cohesion (JKR) is left out too although demcontact has a JKR law
+# (pair_coeff ... jkr w): its neck breaks at delta_c, 9^(1/3) times farther than LAMMPS's JKR
+# contact ends (its pull-off distance), so the two decks would not compute the same physics
+# (docs/lammps_examples.md).
 EXAMPLES = {
     "flatwall": dict(
         deck="granular/in.pour.flatwall",

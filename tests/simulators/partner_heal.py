@@ -20,10 +20,14 @@ E = 1e5, nu = 0.3, e = 0.5, Mindlin, e_t = 1, mu = 0.5) overlap 0.1 along z, ato
 atom 2 (the lower) owns the pair in LAMMPS' half list (the atom that lacks the copy must be the
 list owner, or the path is not taken). Run A: `run 10`, atom 2 deleted and re-created with the same
 ID, diameter, density and velocity, `run 10`. Reference: `run 10`, the same `set` lines, `run 10`.
-Checks: every thermo row of the second run (its setup and 10 steps: the forces on both atoms)
-equals the reference's bit for bit (printed %.17g); and the tangential force at the end of the
-second run is twice that at the end of the first within 1e-6 (the history carried on: a history
-restarted at zero would give 1). Exit 77 (ctest SKIP) when LAMMPS is missing.
+Checks: the path is taken: the pair's counters (`compute heal all pair demcontact`, the copies
+healed at a step and the setup evaluations that read the partner's copy) are (0, 1) at the second
+run's setup and (1, 1) at each of its steps, (0, 0) throughout the first run and the reference (a
+scene whose list owner keeps its own copy would pass the comparisons below without the path);
+every thermo row of the second run (its setup and 10 steps: the forces on both atoms) equals the
+reference's bit for bit (printed %.17g); and the tangential force at the end of the second run is
+twice that at the end of the first within 1e-6 (the history carried on: a history restarted at
+zero would give 1). Exit 1 on any failure, 77 (ctest SKIP) when LAMMPS is missing.
 """
 import argparse
 import os
@@ -48,8 +52,11 @@ def deck(plugin, recreate):
         "velocity all set 0 0 0", "set atom 1 vx 0.01",
         "neighbor 0.3 bin", "timestep 0.001",
         "thermo 1"] + ["variable f%s%d equal f%s[%d]" % (c, i, c, i) for i in (1, 2) for c in "xyz"] + [
-        "thermo_style custom step atoms v_fx1 v_fy1 v_fz1 v_fx2 v_fy2 v_fz2",
-        "thermo_modify format float %.17g",
+        # the pair's partner-heal counters (pair_demcontact.cpp): [1] copies healed at a step,
+        # [2] setup evaluations that read the partner's copy; counts, not normalised by atoms
+        "compute heal all pair demcontact",
+        "thermo_style custom step atoms v_fx1 v_fy1 v_fz1 v_fx2 v_fy2 v_fz2 c_heal[1] c_heal[2]",
+        "thermo_modify format float %.17g norm no",
         "run 10",
         RECREATE if recreate else "",
         "set atom 2 diameter 1.0", "set atom 2 density 1.0", "set atom 2 vx 0 vy 0 vz 0",
@@ -89,6 +96,22 @@ def main():
             "%s %s%s" % (k, r1[k], "" if r0[k] == r1[k] else " (reference %s)" % r0[k]) for k in cols)))
     if diff:
         print("FAIL partner_heal: %d of 11 rows of the run after the re-creation differ from the reference" % diff)
+        ok = False
+    # the path itself: the pair's counters (compute pair demcontact) say the partner's copy was
+    # read at the second run's setup and healed into the list owner's new slot at its first step,
+    # once, and never in the first run or the reference (a scene whose list owner has its own copy,
+    # e.g. other binning, passes the comparisons above without taking the path: this fails it)
+    def counts(rows):
+        return [(int(float(r["c_heal[1]"])), int(float(r["c_heal[2]"]))) for r in rows]
+    want = [(0, 0)] * 11, [(0, 1)] + [(1, 1)] * 10
+    got = counts(rec[0]), counts(rec[1])
+    seen = [c for r in ref for c in counts(r)]
+    reached = got[0] == want[0] and got[1] == want[1] and set(seen) == {(0, 0)}
+    print("%s heal path (compute pair demcontact: healed at a step, read at setup): second run %s, expected %s; "
+          "first run %s; reference %s" % ("ok  " if reached else "FAIL", got[1], want[1], sorted(set(got[0])),
+                                          sorted(set(seen))))
+    if not reached:
+        print("FAIL partner_heal: the plugin's heal_from_partner path was not taken as expected")
         ok = False
     f1, f2 = float(rec[0][-1]["v_fx1"]), float(rec[1][-1]["v_fx1"])
     growth = f2 / f1 if f1 else float("nan")
