@@ -8,7 +8,9 @@ the same way:
 The materials of adhesion.py (the LAMMPS test): R = 10 um, rho = 2500, E = 70 GPa, nu = 0.25,
 w = 0.2 J/m^2, v_s the JKR sticking speed of the geometry (adhesion.sticking_speed), dt =
 t_H(20 v_s)/200, each impact starting 3 reaches apart. One LIGGGHTS run per case and geometry (two
-equal spheres; a sphere on a zplane wall/gran of the same law), its impacts far apart:
+equal spheres, both also moving at DRIFT = 10 m/s along y so that LIGGGHTS reneighbours during
+the impacts, the stuck necks held through it; a sphere on a zplane wall/gran of the same law), its
+impacts far apart:
 
   jkr          coefficientRestitution 1 (undamped), v/v_s 0.5, 0.9 (stick), 1.5, 3, 10 (apart)
   jkr damped   coefficientRestitution 0.5, v/v_s 0.5 (stick), 2 (stick), 5, 20 (apart)   (pairs)
@@ -32,6 +34,7 @@ import argparse
 import ctypes as C
 import math
 import os
+import re
 import sys
 import tempfile
 
@@ -43,6 +46,7 @@ R, RHO, E, NU, W = A.R, A.RHO, A.E, A.NU, A.W
 TOL_REF = 1e-12
 TOL_E_JKR, TOL_E_DMT = A.TOL_E_JKR, A.TOL_E_DMT
 SPAN = A.SPAN
+DRIFT = 10.0  # common speed of both spheres of a pair along y [m/s]: LIGGGHTS reneighbours during the impacts
 DC_NORMAL_DMT, DC_NORMAL_JKR, DC_DAMPING_RESTITUTION, DC_END_OVERLAP = 5, 7, 1, 0
 NP = 1
 
@@ -133,8 +137,8 @@ def deck(geom, law, e_n, cols, dt, steps):
             x = R + gap / 2
             L += ["create_atoms 1 single %.17g %.17g 0 units box" % (-x, y),
                   "create_atoms 1 single %.17g %.17g 0 units box" % (x, y),
-                  "set atom %d diameter %.17g density %.17g vx %.17g" % (ids[0], 2 * R, RHO, v / 2),
-                  "set atom %d diameter %.17g density %.17g vx %.17g" % (ids[1], 2 * R, RHO, -v / 2)]
+                  "set atom %d diameter %.17g density %.17g vx %.17g vy %.17g" % (ids[0], 2 * R, RHO, v / 2, DRIFT),
+                  "set atom %d diameter %.17g density %.17g vx %.17g vy %.17g" % (ids[1], 2 * R, RHO, -v / 2, DRIFT)]
         else:
             L += ["create_atoms 1 single 0 %.17g %.17g units box" % (y, R + gap),
                   "set atom %d diameter %.17g density %.17g vz %.17g" % (ids[0], 2 * R, RHO, -v)]
@@ -166,9 +170,13 @@ def run_case(plugin, workdir, label, law, e_n, speeds, outcomes, geom, check):
     os.makedirs(d, exist_ok=True)
     open(os.path.join(d, "in.adhesion"), "w").write(deck(geom, law, e_n, cols, dt, steps))
     exe, env = H.liggghts_cmd(plugin)
-    H.run(H.mpi_prefix(NP) + [exe, "-in", "in.adhesion", "-log", "log.liggghts"], d, env)
+    out, _ = H.run(H.mpi_prefix(NP) + [exe, "-in", "in.adhesion", "-log", "log.liggghts"], d, env)
     final = H.read_last_dump(os.path.join(d, "final.dump"))
-    print("## %s, %s: v_s %.6g m/s, reach %.4g m, dt %.4g s, %d steps" % (label, geom, vs, reach, dt, steps))
+    builds = int(re.search(r"Neighbor list builds = (\d+)", out).group(1))
+    print("## %s, %s: v_s %.6g m/s, reach %.4g m, dt %.4g s, %d steps, %d reneighbourings"
+          % (label, geom, vs, reach, dt, steps, builds))
+    if geom == "pair":  # the drift reneighbours while the necks are held
+        check(builds >= 5, "%s %s: %d reneighbourings, the drift is too slow" % (label, geom, builds))
     for (ids, y, v, g), x, want in zip(cols, speeds, outcomes):
         if geom == "pair":
             a, b = final[ids[0]], final[ids[1]]
