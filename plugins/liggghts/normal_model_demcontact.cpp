@@ -27,17 +27,32 @@
  * (connectToProperties) and again at the first contact after dt changed.
  *
  * law KEYWORD: the registry's normal law of that keyword (plugins/common/demcontact_laws.h,
- * generated from src/force/registry.rs: hertz, powerlaw, linear, viscoelastic, elastic_plastic; a
- * law added there is a keyword here without an edit), evaluated as stepExact's force is: demcontact's
+ * generated from src/force/registry.rs: hertz, powerlaw, linear, viscoelastic, dmt, elastic_plastic,
+ * jkr; a law added there is a keyword here without an edit), evaluated as stepExact's force is: demcontact's
  * full contact with no sub-model (dc_contact_force_checked_inline), its history (the law's state,
  * e.g. elastic_plastic's largest overlap, then the step slot with stepExact on) in LIGGGHTS'
  * contact history ("dc_normal0", ...), zeroed when a contact starts. Its materials are
  * youngsModulus/poissonsRatio; coefficientRestitution where the law takes a target (required only
  * then); each other parameter a property/global named after its dc_contact_spec field in
  * camelCase (yield_pressure -> yieldPressure, k_n -> kN, visco_A -> viscoA, p -> p,
- * work_of_adhesion -> workOfAdhesion), peratomtypepair or scalar. The adhesive laws (dmt, jkr:
- * never clamped) are refused: they act at negative overlap, which this model does not evaluate.
- * With tangential/rolling_friction demcontact the sub-models' full models take the same law.
+ * work_of_adhesion -> workOfAdhesion), peratomtypepair or scalar. With tangential/rolling_friction
+ * demcontact the sub-models' full models take the same law.
+ *
+ * The adhesive laws (dmt, jkr: dc_contact_model_reach > 0) act beyond touching (DMT's tail, JKR's
+ * formed neck): the model grows LIGGGHTS' contact distance factor to twice their reach at each
+ * type's smallest radius (setup_reach) and evaluates the law in surfacesClose (close_adhesive) on
+ * the same state as a touching contact, the neck state surviving the gap in the contact history
+ * (kept across reneighbouring while set; the library zeroes it where the neck breaks). Pairs and
+ * primitive walls (ctests liggghts_adhesion, liggghts_adhesion_mpi:
+ *   python3 tests/simulators/liggghts_adhesion.py --check --plugin build/simulators/libdemcontact_liggghts.so [--np 2]).
+ * With LIGGGHTS' tangential history the tangential force acts only while the spheres overlap, its
+ * Coulomb limit LIGGGHTS' mu |Fn| (this model's Fn, attractive at small JKR overlaps), not the
+ * library's adhesion-corrected limit; tangential/rolling_friction demcontact (whose full model
+ * carries that limit) are refused with an adhesive law, their contact not being evaluated in the gap.
+ *
+ * Settings lines: the pair styles and walls registered here hand LIGGGHTS' parser a copy of the
+ * line ended by a marker (checked_words): a keyword given last reads the marker, not a stale word
+ * past the end (law: "a normal-law keyword must follow"; numeric settings end the run naming it).
  *
  * Registration: LIGGGHTS selects a compiled template instance by a hash of the model ids
  * (normal | tangential << 6 | ...). A static initializer adds the name "demcontact" to the contact
