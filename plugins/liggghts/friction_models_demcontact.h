@@ -149,6 +149,17 @@ public:
         if (!normal)
             error->all(FLERR, rolling ? "rolling_friction demcontact needs model demcontact"
                                       : "tangential demcontact needs model demcontact");
+        // an adhesive law acts beyond touching, where LIGGGHTS calls the normal model's
+        // surfacesClose only: the sub-models' full model (its tangential force and the Coulomb limit
+        // with the adhesion-corrected load) would be left out there, so the combination is refused
+        if (normal->is_adhesive())
+            error->all(FLERR, rolling ? "rolling_friction demcontact with an adhesive law (law dmt, law jkr): not "
+                                        "supported (the sub-models are evaluated only while the spheres overlap; "
+                                        "the law acts beyond touching): use LIGGGHTS' tangential history and rolling "
+                                        "models"
+                                      : "tangential demcontact with an adhesive law (law dmt, law jkr): not "
+                                        "supported (the sub-models are evaluated only while the spheres overlap; "
+                                        "the law acts beyond touching): use tangential history");
         const size_t np = (ntypes + 1) * (ntypes + 1);
         specs.assign(np, dc_contact_spec());
         models.assign(np, dc_contact_model());

@@ -27,17 +27,32 @@
  * (connectToProperties) and again at the first contact after dt changed.
  *
  * law KEYWORD: the registry's normal law of that keyword (plugins/common/demcontact_laws.h,
- * generated from src/force/registry.rs: hertz, powerlaw, linear, viscoelastic, elastic_plastic; a
- * law added there is a keyword here without an edit), evaluated as stepExact's force is: demcontact's
+ * generated from src/force/registry.rs: hertz, powerlaw, linear, viscoelastic, dmt, elastic_plastic,
+ * jkr; a law added there is a keyword here without an edit), evaluated as stepExact's force is: demcontact's
  * full contact with no sub-model (dc_contact_force_checked_inline), its history (the law's state,
  * e.g. elastic_plastic's largest overlap, then the step slot with stepExact on) in LIGGGHTS'
  * contact history ("dc_normal0", ...), zeroed when a contact starts. Its materials are
  * youngsModulus/poissonsRatio; coefficientRestitution where the law takes a target (required only
  * then); each other parameter a property/global named after its dc_contact_spec field in
  * camelCase (yield_pressure -> yieldPressure, k_n -> kN, visco_A -> viscoA, p -> p,
- * work_of_adhesion -> workOfAdhesion), peratomtypepair or scalar. The adhesive laws (dmt, jkr:
- * never clamped) are refused: they act at negative overlap, which this model does not evaluate.
- * With tangential/rolling_friction demcontact the sub-models' full models take the same law.
+ * work_of_adhesion -> workOfAdhesion), peratomtypepair or scalar. With tangential/rolling_friction
+ * demcontact the sub-models' full models take the same law.
+ *
+ * The adhesive laws (dmt, jkr: dc_contact_model_reach > 0) act beyond touching (DMT's tail, JKR's
+ * formed neck): the model grows LIGGGHTS' contact distance factor to twice their reach at each
+ * type's smallest radius (setup_reach) and evaluates the law in surfacesClose (close_adhesive) on
+ * the same state as a touching contact, the neck state surviving the gap in the contact history
+ * (kept across reneighbouring while set; the library zeroes it where the neck breaks). Pairs and
+ * primitive walls (ctests liggghts_adhesion, liggghts_adhesion_mpi:
+ *   python3 tests/simulators/liggghts_adhesion.py --check --plugin build/simulators/libdemcontact_liggghts.so [--np 2]).
+ * With LIGGGHTS' tangential history the tangential force acts only while the spheres overlap, its
+ * Coulomb limit LIGGGHTS' mu |Fn| (this model's Fn, attractive at small JKR overlaps), not the
+ * library's adhesion-corrected limit; tangential/rolling_friction demcontact (whose full model
+ * carries that limit) are refused with an adhesive law, their contact not being evaluated in the gap.
+ *
+ * Settings lines: the pair styles and walls registered here hand LIGGGHTS' parser a copy of the
+ * line ended by a marker (checked_words): a keyword given last reads the marker, not a stale word
+ * past the end (law: "a normal-law keyword must follow"; numeric settings end the run naming it).
  *
  * Registration: LIGGGHTS selects a compiled template instance by a hash of the model ids
  * (normal | tangential << 6 | ...). A static initializer adds the name "demcontact" to the contact
@@ -66,6 +81,8 @@
 #include "tsuji_force.h"
 #include "fix_property_global.h"
 #include "modify.h"
+#include "fix.h"
+#include "neighbor.h"
 
 #include <algorithm>
 #include <cctype>
@@ -86,6 +103,13 @@
    law '...'", whose text lists the keywords. */
 namespace demcontact_law_setting {
 
+/* What the settings parsers of model demcontact see after the last word of the line
+   (settings_checked below): LIGGGHTS' Settings reads the word after a keyword without knowing how
+   many words there are, and the arrays LIGGGHTS hands it end without a terminator (the word past
+   the end is whatever an earlier, longer command left there). */
+static const char MISSING_VALUE[] = "(missing value)";
+
+
 class LawSetting : public Setting {
 public:
     typedef int value_type;
@@ -94,7 +118,7 @@ public:
     int parseArguments(char **args)
     {
         if (name != args[0]) return 0;
-        if (!args[1]) {
+        if (!args[1] || !std::strcmp(args[1], MISSING_VALUE)) { // `law` the last word (settings_checked)
             error_message = "while parsing 'law' argument: a normal-law keyword must follow (" DC_NORMAL_LAW_KEYWORDS ")";
             return -1;
         }
@@ -168,7 +192,7 @@ class NormalModel<DEMCONTACT> : public NormalModelBase
 {
 public:
     NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c)
-        : NormalModelBase(lmp, hsetup, c), owner(c), Y(NULL), nu(NULL), Yeff(NULL), Geff(NULL), coeffRest(NULL),
+        : NormalModelBase(lmp, hsetup, c), is_wall_model(c->is_wall()), owner(c), Y(NULL), nu(NULL), Yeff(NULL), Geff(NULL), coeffRest(NULL),
           tangential_damping(true), limitForce(false), exponent(1.5), ntypes(0) {}
 
     void registerSettings(Settings &settings)
@@ -333,6 +357,10 @@ public:
         const double meff = sidata.meff;
         const double deltan = sidata.deltan;
         const dc_pair &pair = pairs[itype * (ntypes + 1) + jtype];
+        if (adhesive) {
+            check_radius(sidata.i, sidata.radi, itype);
+            if (!sidata.is_wall) check_radius(sidata.j, sidata.radj, jtype);
+        }
 
         // LIGGGHTS' vn is negative while approaching; demcontact's is positive while compressing.
         // (units si/cgs: nktv2p = 1, as the builtin models assume for the force itself.)
@@ -375,8 +403,12 @@ public:
         }
     }
 
-    void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)
+    void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
     {
+        if (adhesive) {
+            close_adhesive(scdata, i_forces, j_forces);
+            return;
+        }
         if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
         if (step_offset >= 0 && scdata.contact_history) // a new contact starts from zero
             for (int k = 0; k < law_nh; k++) scdata.contact_history[step_offset + k] = 0.0;
@@ -398,6 +430,68 @@ public:
         if (all) error->all(FLERR, msg);
         error->one(FLERR, msg);
     }
+    /* An adhesive law in the gap (setup_reach): the law's force at the negative overlap, on the
+       same state as a touching contact's (step_force), its history advanced as there. LIGGGHTS 3.8's
+       pair loop and wall fix both hand surfacesClose their SurfacesIntersectData: the wall has
+       filled its geometry (en, deltan < 0, m_eff) before the call; the pair loop has not, so the
+       geometry is computed here as its loop and surface model compute it for a touching pair (r,
+       en from delta; deltan = radsum - r; vn from v_i - v_j; m_eff from the atoms' masses and fix
+       freeze, not from a fix rigid's bodies) and written into it for LIGGGHTS' later readers. The
+       pair keeps its contact history (CONTACT_NORMAL_MODEL) while the law's state is set (JKR's
+       formed neck), else lets LIGGGHTS drop it. */
+    __attribute__((noinline)) void close_adhesive(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
+    {
+        SurfacesIntersectData &sd = static_cast<SurfacesIntersectData &>(scdata);
+        const int itype = sd.itype, jtype = sd.jtype;
+        double reff;
+        check_radius(sd.i, sd.radi, itype);
+        if (sd.is_wall) {
+            reff = sd.radi;
+        } else {
+            check_radius(sd.j, sd.radj, jtype);
+            reff = sd.radi * sd.radj / (sd.radi + sd.radj);
+            const double r = std::sqrt(sd.rsq), rinv = 1.0 / r;
+            sd.r = r;
+            sd.rinv = rinv;
+            sd.en[0] = sd.delta[0] * rinv;
+            sd.en[1] = sd.delta[1] * rinv;
+            sd.en[2] = sd.delta[2] * rinv;
+            sd.deltan = sd.radsum - r;
+            const double *rmass = atom->rmass;
+            const double mi = rmass ? rmass[sd.i] : atom->mass[itype];
+            const double mj = rmass ? rmass[sd.j] : atom->mass[jtype];
+            double meff = mi * mj / (mi + mj);
+            if (atom->mask[sd.i] & freeze_bit) meff = mj;
+            if (atom->mask[sd.j] & freeze_bit) meff = mi;
+            sd.mi = mi;
+            sd.mj = mj;
+            sd.meff = meff;
+        }
+        const double vr1 = sd.v_i[0] - sd.v_j[0];
+        const double vr2 = sd.v_i[1] - sd.v_j[1];
+        const double vr3 = sd.v_i[2] - sd.v_j[2];
+        sd.vn = vr1 * sd.en[0] + vr2 * sd.en[1] + vr3 * sd.en[2];
+        const double Fn = step_force(sd, reff, sd.meff);
+        sd.Fn = Fn;
+        if (sd.contact_flags) {
+            bool held = false;
+            for (int k = 0; k < law_nh; k++) held = held || sd.contact_history[step_offset + k] != 0.0;
+            if (held) *sd.contact_flags |= CONTACT_NORMAL_MODEL;
+            else *sd.contact_flags &= ~CONTACT_NORMAL_MODEL;
+        }
+        if (Fn == 0.0) return;
+        sd.has_force_update = true;
+        const double Fn_ = sd.is_wall ? Fn * sd.area_ratio : Fn;
+        i_forces.delta_F[0] += Fn_ * sd.en[0];
+        i_forces.delta_F[1] += Fn_ * sd.en[1];
+        i_forces.delta_F[2] += Fn_ * sd.en[2];
+        if (!sd.is_wall) {
+            j_forces.delta_F[0] -= Fn * sd.en[0];
+            j_forces.delta_F[1] -= Fn * sd.en[1];
+            j_forces.delta_F[2] -= Fn * sd.en[2];
+        }
+    }
+    bool is_adhesive() const { return adhesive; }
     bool step_exact = false;
     int step_offset = -1; // history index of "dc_step" / "dc_normal0"; -1: neither stepExact nor law
     int law_nh = 0;       // history doubles from step_offset on
@@ -593,17 +687,6 @@ private:
                           law->keyword);
             error->all(FLERR, msg);
         }
-        // An adhesive law (never clamped: a clamp would delete its attraction) acts at negative
-        // overlap: DMT's tail, JKR's neck down to its breakage overlap. This model computes a
-        // contact only while the spheres overlap (surfacesIntersect), so such a law would lose its
-        // attraction there (undamped JKR: no breakage loss, e = 1): refused, not approximated.
-        if (!law->clamp) {
-            std::snprintf(msg, sizeof msg,
-                          "model demcontact: law %s acts at negative overlap, which this plugin does not evaluate "
-                          "(it computes overlapping pairs only): not supported in LIGGGHTS",
-                          law->keyword);
-            error->all(FLERR, msg);
-        }
         double es = 0.0;
         for (int i = 1; i <= n; i++) {
             int32_t s = dc_effective_modulus(Y[i], 0.25, Y[i], 0.25, &es);
@@ -715,6 +798,7 @@ private:
         }
         step_dt = update->dt;
         ntypes = n;
+        setup_reach(law);
         static bool reported = false; // one line per process, not one per wall/pair instance
         if (comm->me == 0 && !reported) {
             reported = true;
@@ -725,8 +809,96 @@ private:
         }
     }
 
+    /* An adhesive law (dmt, jkr: dc_contact_model_reach > 0 on the built model) acts up to its
+       reach beyond touching (DMT's tail d_c, JKR's formed neck down to |delta_c|). LIGGGHTS calls
+       surfacesClose for the pairs closer than f (r_i + r_j) that do not overlap, and for the wall
+       contacts whose gap is below (f - 1) r_i, f = neighbor->contactDistanceFactor (the largest any
+       model registered; the pair style's neighbour cutoff and the history kept across
+       reneighbouring scale with it): f is grown here to cover the reach. The reach grows as
+       R*^(1/3) while f is relative to the radii, so reach / (r_i + r_j) is largest for the two
+       smallest spheres (reach / r_i for a wall): each type's smallest radius (its atoms at this
+       init, and what the insertion fixes will insert: Fix::min_rad) sizes f, with a margin of 2:
+       a formed neck is evaluated at some step past its breakage gap (where the library zeroes its
+       state) as long as the spheres' relative normal displacement per step stays below the reach.
+       A sphere smaller than its type's smallest radius at init is refused when it touches
+       (check_radius), since f does not cover its reach. */
+    void setup_reach(const dc_normal_law *law)
+    {
+        const int n = atom->ntypes;
+        const double inf = std::numeric_limits<double>::infinity();
+        double need = 0.0;
+        std::vector<double> reach((n + 1) * (n + 1), 0.0);
+        adhesive = false;
+        for (int i = 1; i <= n; i++)
+            for (int j = 1; j <= n; j++) {
+                // the reach at r_eff 1 m only tells whether the law acts beyond touching at all
+                const int32_t st = dc_contact_model_reach(&step_models[i * (n + 1) + j], 1.0, &reach[i * (n + 1) + j]);
+                if (st != DC_OK) reject("reach (dc_contact_model_reach) at r_eff 1 m", i, 1.0, st);
+                if (reach[i * (n + 1) + j] > 0.0) adhesive = true;
+            }
+        if (!adhesive) return;
+        std::vector<double> mine(n + 1, inf);
+        rad_floor.assign(n + 1, inf);
+        for (int i = 0; i < atom->nlocal; i++) mine[atom->type[i]] = std::min(mine[atom->type[i]], atom->radius[i]);
+        for (int k = 0; k < modify->nfix; k++) {
+            Fix *f = modify->fix[k];
+            if (!f->use_rad_for_cut_neigh_and_ghost()) continue;
+            for (int t = 1; t <= n; t++) {
+                const double r = f->min_rad(t);
+                if (r > 0.0) mine[t] = std::min(mine[t], r);
+            }
+        }
+        MPI_Allreduce(&mine[1], &rad_floor[1], n, MPI_DOUBLE, MPI_MIN, world);
+        freeze_bit = 0;
+        for (int k = 0; k < modify->nfix; k++)
+            if (std::strcmp(modify->fix[k]->style, "freeze") == 0) {
+                freeze_bit = modify->fix[k]->groupbit;
+                break;
+            }
+        for (int i = 1; i <= n; i++)
+            for (int j = 1; j <= n; j++) {
+                const double ri = rad_floor[i], rj = is_wall_model ? ri : rad_floor[j];
+                if (!(ri < inf) || !(rj < inf)) continue; // no sphere of the type: any that comes is refused
+                const double reff = is_wall_model ? ri : ri * rj / (ri + rj);
+                double r = 0.0;
+                const int32_t st = dc_contact_model_reach(&step_models[i * (n + 1) + j], reff, &r);
+                if (st != DC_OK) reject("reach (dc_contact_model_reach) at the smallest radius", i, ri, st);
+                need = std::max(need, r / (is_wall_model ? ri : ri + rj));
+            }
+        dist_factor = 1.0 + 2.0 * need;
+        neighbor->register_contact_dist_factor(dist_factor);
+        if (comm->me == 0) {
+            char msg[300];
+            std::snprintf(msg, sizeof msg,
+                          "model demcontact: law %s (%s) acts beyond touching: contact distance factor %.9g "
+                          "(twice its reach at the smallest radii), LIGGGHTS' now %.9g\n",
+                          law->keyword, is_wall_model ? "wall" : "pairs", dist_factor, neighbor->contactDistanceFactor);
+            if (screen) std::fputs(msg, screen);
+            if (logfile) std::fputs(msg, logfile);
+        }
+    }
+
+    // adhesive law: a sphere below its type's smallest radius at init (setup_reach) is refused
+    void check_radius(int i, double rad, int type) const
+    {
+        if (rad < rad_floor[type]) {
+            char msg[320];
+            std::snprintf(msg, sizeof msg,
+                          "model demcontact: atom %ld of type %d (radius %g) is smaller than the type's smallest radius "
+                          "at the run's init (%g), which sized the contact distance of the adhesive law: start the "
+                          "run with it (or an insertion fix that inserts it) present",
+                          (long)atom->tag[i], type, rad, rad_floor[type]);
+            error->one(FLERR, msg);
+        }
+    }
+
     static const int MAX_LAW_NH = 4;
     std::vector<dc_contact_spec> law_specs; // law KEYWORD: per type pair (full_spec)
+    bool is_wall_model;                     // this model is a wall's (fix wall/gran)
+    bool adhesive = false;                  // law KEYWORD of a law that acts beyond touching (setup_reach)
+    std::vector<double> rad_floor;          // adhesive: each type's smallest radius at init
+    double dist_factor = 1.0;               // adhesive: the contact distance factor registered
+    int freeze_bit = 0;                     // fix freeze's group (m_eff of a pair, as LIGGGHTS' pair loop)
 
     const void *owner;
     double *Y, *nu;
@@ -755,16 +927,67 @@ namespace {
 using namespace LIGGGHTS;
 using namespace LIGGGHTS::ContactModels;
 
+/* The words of a settings line (after `pair_style gran` / the wall's model words) as LIGGGHTS'
+   Settings parse them: a copy ended by MISSING_VALUE, so that a keyword given last reads that
+   word, not a stale one past the end (an on/off keyword: LIGGGHTS' error "unknown option or wrong
+   keyword order: '(missing value)'"; law: "a normal-law keyword must follow"). Our keywords whose
+   value is a number end the run here when given last, naming the keyword: a number parser (atof)
+   would read the marker as 0. */
+std::vector<char *> checked_words(LAMMPS_NS::Error *error, int nargs, char **args)
+{
+    static const char *const numeric[] = {"exponent", "vRef", "rRef", "densityRef", "tangentialRestitution",
+                                          "rollingStiffness", "rollingDamping"};
+    if (nargs > 0)
+        for (const char *kw : numeric)
+            if (!std::strcmp(args[nargs - 1], kw)) {
+                char msg[200];
+                std::snprintf(msg, sizeof msg, "model demcontact: '%s' is the last word of the line: its value is missing",
+                              kw);
+                error->all(FLERR, msg);
+            }
+    std::vector<char *> words(args, args + std::max(nargs, 0));
+    words.push_back(const_cast<char *>(demcontact_law_setting::MISSING_VALUE));
+    return words;
+}
+
+template<typename Base>
+class CheckedPair : public Base {
+public:
+    CheckedPair(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *parent, int64_t hash) : Base(lmp, parent, hash), lmp_(lmp) {}
+    void settings(int nargs, char **args, IContactHistorySetup *hsetup)
+    {
+        std::vector<char *> words = checked_words(lmp_->error, nargs, args);
+        Base::settings(nargs, words.data(), hsetup);
+    }
+
+private:
+    LAMMPS_NS::LAMMPS *lmp_;
+};
+
+template<typename Base>
+class CheckedWall : public Base {
+public:
+    CheckedWall(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::FixWallGran *parent, int64_t hash) : Base(lmp, parent, hash), lmp_(lmp) {}
+    void settings(int nargs, char **args, IContactHistorySetup *hsetup)
+    {
+        std::vector<char *> words = checked_words(lmp_->error, nargs, args);
+        Base::settings(nargs, words.data(), hsetup);
+    }
+
+private:
+    LAMMPS_NS::LAMMPS *lmp_;
+};
+
 template<typename T>
 PairStyles::IGranularPairStyle *create_pair(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *parent, int64_t hash)
 {
-    return new T(lmp, parent, hash);
+    return new CheckedPair<T>(lmp, parent, hash);
 }
 
 template<typename T>
 Walls::IGranularWall *create_wall(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::FixWallGran *parent, int64_t hash)
 {
-    return new T(lmp, parent, hash);
+    return new CheckedWall<T>(lmp, parent, hash);
 }
 
 template<int TANGENTIAL, int ROLLING, int SURFACE = SURFACE_DEFAULT>
