@@ -42,7 +42,7 @@ import tempfile
 
 import adhesion as A
 import harness as H
-from liggghts_laws import V3, Result, Spec, State
+from harness.laws import V3, Result, Spec, State
 
 R, RHO, E, NU, W = A.R, A.RHO, A.E, A.NU, A.W
 TOL_REF = 1e-12

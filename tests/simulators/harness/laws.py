@@ -3,6 +3,8 @@ lammps_laws.py): the material and speeds, the library's own contact (ctypes: dc_
 the state the plugins build, stepped in fix nve/sphere's velocity-Verlet order), Thornton's closed
 form, and the comparisons of checks 1 (impacts at SPEEDS_OVER_VY times the yield speed, two
 spheres and a sphere on a wall) and 3 (a second impact on the wall starts from fresh history).
+Spec, State, Result: the C structs dc_contact_spec, dc_contact_state, dc_contact_result (also
+used by liggghts_adhesion.py).
 
 R = 1 mm, rho = 2500 kg/m^3, E = 1e7 Pa, nu = 0.3 (spheres and walls), yield pressure P_Y.
 """
