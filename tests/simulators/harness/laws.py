@@ -200,5 +200,5 @@ def compare(lib, run, name, check, geoms=("pair", "wall"), second=True):
     print("%s %.15f  library (history reset) %.15f  |diff| %.3g  library (history kept) %.15f"
           % (name, got[v], ref, abs(got[v] - ref), keep))
     check(abs(got[v] - ref) <= TOL_REF, "second impact: %s vs library %.3g > %g" % (name, abs(got[v] - ref), TOL_REF))
-    check(abs(got[v] - keep) > 1e-3, "second impact: the kept-history reference is not distinguishable")
+    check(abs(got[v] - keep) > 1e-3, "second impact: %s within 1e-3 of the kept-history reference" % name)
     check(got[v] > 0, "second impact: not rebounding at the end (v_z/v = %g)" % got[v])
