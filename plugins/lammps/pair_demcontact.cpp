@@ -416,21 +416,30 @@ void PairDemcontact::compute_loop()
         tick = H->tick;
     }
     double scratch[32];
+    // read once, not per list pair: the loop's stores (forces, torques, histories) might alias
+    // them as far as the compiler knows
+    const bool adh = adhesive;
+    const int inum = list->inum;
+    const int *ilist = list->ilist, *numneigh = list->numneigh;
+    int **firstneigh = list->firstneigh;
 
-    for (int ii = 0; ii < list->inum; ii++) {
-        const int i = list->ilist[ii];
-        const int *jlist = list->firstneigh[i];
+    for (int ii = 0; ii < inum; ii++) {
+        const int i = ilist[ii];
+        const int jnum = numneigh[i];
+        if (jnum == 0) continue; // no list neighbours (most atoms of a pour while they fall)
+        const int *jlist = firstneigh[i];
         int *cache = H ? &pslot[2 * (size_t)pofs[ii]] : nullptr;
-        for (int jj = 0; jj < list->numneigh[i]; jj++) {
+        const double xi0 = x[i][0], xi1 = x[i][1], xi2 = x[i][2], radi = radius[i];
+        for (int jj = 0; jj < jnum; jj++) {
             const int j = jlist[jj] & NEIGHMASK;
             // the distance test first, on i - j: most list pairs do not touch (no ID loads for them)
-            const double dxi = x[i][0] - x[j][0], dyi = x[i][1] - x[j][1], dzi = x[i][2] - x[j][2];
+            const double dxi = xi0 - x[j][0], dyi = xi1 - x[j][1], dzi = xi2 - x[j][2];
             const double rsq = dxi * dxi + dyi * dyi + dzi * dzi;
-            const double radsum = radius[i] + radius[j];
+            const double radsum = radi + radius[j];
             // not touching: only an adhesive law may act (its type pair's reach > 0)
             double beyond = 0.0;
             if (rsq >= radsum * radsum) {
-                if (!adhesive) continue;
+                if (!adh) continue;
                 beyond = reach[type[i] * N + type[j]];
                 if (!(beyond > 0.0)) continue;
             }
