@@ -411,6 +411,7 @@ impl Visit for StepPass<'_, '_, '_> {
 /// Contacts per chunk of [`step_pass`]: its mask of contacts for the exact path lives on the
 /// stack (one byte each).
 const STEP_CHUNK: usize = 256;
+const _: () = assert!(STEP_CHUNK.is_power_of_two() && STEP_CHUNK <= 1 << 16);
 
 #[inline(never)]
 fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_>, at: usize) {
@@ -471,7 +472,8 @@ fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOu
         let mut idx = [0u16; STEP_CHUNK];
         let mut cnt = 0usize;
         for (i, &mk) in mask.iter().enumerate() {
-            if let Some(x) = idx.get_mut(cnt) {
+            // cnt ≤ i < STEP_CHUNK: the mask only shows the compiler that it is in bounds.
+            if let Some(x) = idx.get_mut(cnt & (STEP_CHUNK - 1)) {
                 *x = i as u16;
             }
             cnt += (mk != 0) as usize;
