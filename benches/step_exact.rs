@@ -2,7 +2,9 @@
 //! (`contact_force_batch`) of N = 1024 contacts of a Hertz + Mindlin model (normal-only too), the
 //! histories in their steady state (every contact past its onset: the step slot holds R), a few
 //! contacts per step at onset (fresh history) as in a host where a contact lasts ~20 steps; the
-//! set-up of those histories is timed in both variants.
+//! set-up of those histories is timed in both variants. `*_physical`: the same with the onset
+//! overlaps a drift gives (δ₁ ≤ v dt), where the random overlaps put a = δ₁/(v dt) above 1
+//! (median 15).
 //! Divan reports items/s; the ratio step-aware / plain is the cost of the option.
 //! Run: `cargo bench --bench step_exact`.
 
@@ -30,7 +32,7 @@ struct Data {
     m: Vec<f64>,
 }
 
-fn data() -> Data {
+fn data(physical: bool) -> Data {
     let mut s = 0x243F6A8885A308D3u64;
     let mut u = move || {
         s ^= s << 13;
@@ -51,10 +53,24 @@ fn data() -> Data {
         let r = 1e-3 * (1.0 + u());
         let (z, ph) = (2.0 * u() - 1.0, 6.283185307179586 * u());
         let q = (1.0 - z * z).sqrt();
-        x.n.push([q * ph.cos(), q * ph.sin(), z]);
-        x.d.push(r * 1e-3 * (0.1 + u()));
-        x.v1.push([u() - 0.5, u() - 0.5, u() - 0.5]);
-        x.v2.push([u() - 0.5, u() - 0.5, u() - 0.5]);
+        let n = [q * ph.cos(), q * ph.sin(), z];
+        x.n.push(n);
+        let d = r * 1e-3 * (0.1 + u());
+        let (v1, v2) = (
+            [u() - 0.5, u() - 0.5, u() - 0.5],
+            [u() - 0.5, u() - 0.5, u() - 0.5],
+        );
+        // The overlap rate as the kernel computes it (> 0 approaching).
+        let vn = -((v1[0] - v2[0]) * n[0] + (v1[1] - v2[1]) * n[1] + (v1[2] - v2[2]) * n[2]);
+        // Physical onsets: the first overlap of an approaching contact is reached within one
+        // drift, δ₁ = a·v·dt with a ∈ (0, 1] (a = 0.05 … 1 here).
+        x.d.push(if physical && vn > 0.0 {
+            vn * DT * (0.05 + 0.95 * u())
+        } else {
+            d
+        });
+        x.v1.push(v1);
+        x.v2.push(v2);
         x.w.push([10.0 * (u() - 0.5), 10.0 * (u() - 0.5), 10.0 * (u() - 0.5)]);
         x.r.push(r);
         x.m.push(2500.0 * 4.18879 * r * r * r);
@@ -84,8 +100,8 @@ fn model(tangential: i32, step: bool) -> ContactModel {
     }
 }
 
-fn run(bencher: Bencher, tangential: i32, step: bool, onsets: bool) {
-    let x = data();
+fn run(bencher: Bencher, tangential: i32, step: bool, onsets: bool, physical: bool) {
+    let x = data(physical);
     let m = model(tangential, step);
     let len = m.layout.len;
     let mut hist = vec![0.0; N * STRIDE];
@@ -138,32 +154,55 @@ fn run(bencher: Bencher, tangential: i32, step: bool, onsets: bool) {
 
 #[divan::bench]
 fn hertz_plain(b: Bencher) {
-    run(b, select::TANGENTIAL_NONE, false, true);
+    run(b, select::TANGENTIAL_NONE, false, true, false);
 }
 
 #[divan::bench]
 fn hertz_step_aware(b: Bencher) {
-    run(b, select::TANGENTIAL_NONE, true, true);
+    run(b, select::TANGENTIAL_NONE, true, true, false);
 }
 
 #[divan::bench]
 fn hertz_mindlin_plain(b: Bencher) {
-    run(b, select::TANGENTIAL_MINDLIN, false, true);
+    run(b, select::TANGENTIAL_MINDLIN, false, true, false);
 }
 
 #[divan::bench]
 fn hertz_mindlin_step_aware(b: Bencher) {
-    run(b, select::TANGENTIAL_MINDLIN, true, true);
+    run(b, select::TANGENTIAL_MINDLIN, true, true, false);
 }
 
 /// Enduring contacts only (no onset in the batch: a settled bed): the step-aware model's
 /// steady-state cost.
 #[divan::bench]
 fn hertz_step_aware_enduring(b: Bencher) {
-    run(b, select::TANGENTIAL_NONE, true, false);
+    run(b, select::TANGENTIAL_NONE, true, false, false);
 }
 
 #[divan::bench]
 fn hertz_mindlin_step_aware_enduring(b: Bencher) {
-    run(b, select::TANGENTIAL_MINDLIN, true, false);
+    run(b, select::TANGENTIAL_MINDLIN, true, false, false);
+}
+
+/// Physical onsets (δ₁ ≤ v dt, as a drift gives them: a ≤ 1) in place of the random overlaps
+/// of the benches above (there a = δ₁/(v dt) > 1 at all but one, median 15): the same batch
+/// otherwise.
+#[divan::bench]
+fn hertz_plain_physical(b: Bencher) {
+    run(b, select::TANGENTIAL_NONE, false, true, true);
+}
+
+#[divan::bench]
+fn hertz_step_aware_physical(b: Bencher) {
+    run(b, select::TANGENTIAL_NONE, true, true, true);
+}
+
+#[divan::bench]
+fn hertz_mindlin_plain_physical(b: Bencher) {
+    run(b, select::TANGENTIAL_MINDLIN, false, true, true);
+}
+
+#[divan::bench]
+fn hertz_mindlin_step_aware_physical(b: Bencher) {
+    run(b, select::TANGENTIAL_MINDLIN, true, true, true);
 }

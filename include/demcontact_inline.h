@@ -1366,12 +1366,17 @@ DCI_ALWAYS_INLINE_FN double dci_pow_b(double x, double b) {
     return b > 0.0 ? dc_pow_inline(x, b) : 1.0;
 }
 
-/* Hurwitz zeta(-b, x), x >= 1, 0 <= b <= 1 (hurwitz_neg) */
-DCI_ALWAYS_INLINE_FN double dci_hurwitz_neg(double b, double x) {
+/* P(t) by Horner's rule (horner14) */
+DCI_ALWAYS_INLINE_FN double dci_horner14(const double *c, double t) {
     DCI_NO_CONTRACT
-    double acc = dci_pow_b(x, b) + dci_pow_b(x + 1.0, b) + dci_pow_b(x + 2.0, b);
-    acc += dci_pow_b(x + 3.0, b);
-    const double xx = x + 4.0;
+    double r = 0.0;
+    for (int i = 13; i >= 0; i--) r = c[i] + DCI_M(t, r);
+    return r;
+}
+
+/* acc + zeta(-b, X) by Euler-Maclaurin at X (euler_maclaurin) */
+DCI_ALWAYS_INLINE_FN double dci_euler_maclaurin(double b, double acc, double xx) {
+    DCI_NO_CONTRACT
     const double xb = dci_pow_b(xx, b);
     acc += -DCI_M(xx, xb) / (1.0 + b) + DCI_M(0.5, xb);
     const double s = -b;
@@ -1390,6 +1395,50 @@ DCI_ALWAYS_INLINE_FN double dci_hurwitz_neg(double b, double x) {
     pw *= inv2;
     acc += DCI_M(DCI_M(-1.0 / 1209600.0, poch), pw);
     return acc;
+}
+
+/* Hurwitz zeta(-b, x), x >= 1, 0 <= b <= 1 (hurwitz_neg) */
+DCI_ALWAYS_INLINE_FN double dci_hurwitz_neg(double b, double x) {
+    DCI_NO_CONTRACT
+    /* zeta(-1/4, x) and zeta(-1/2, x) ~ P(2x - 3) on x in [1, 2] (HURWITZ_Q, HURWITZ_H) */
+    DCI_TABLE double dci_hurwitz_q[14] = {
+        -0.7899114703787721,
+        -0.5035045668819903,
+        -0.029871702822718397,
+        0.003350820175184365,
+        -0.0006291463053583874,
+        0.00014330484309451767,
+        -3.603711518903692e-05,
+        9.61171113531629e-06,
+        -2.6718054638719184e-06,
+        7.606060861039445e-07,
+        -2.088381669309575e-07,
+        6.139160979448287e-08,
+        -2.6962573574681468e-08,
+        8.154777349940339e-09,
+    };
+    DCI_TABLE double dci_hurwitz_h[14] = {
+        -0.6462183156061935,
+        -0.5047780514486088,
+        -0.06087846318918256,
+        0.004611378001305343,
+        -0.0007497468708554522,
+        0.00015652782761019915,
+        -3.69837684257766e-05,
+        9.39590269177627e-06,
+        -2.5082644438857636e-06,
+        6.901610637606485e-07,
+        -1.849878904556762e-07,
+        5.295304614101252e-08,
+        -2.229009773544556e-08,
+        6.602811603891717e-09,
+    };
+    if (x <= 2.0 && b == 0.25) return dci_horner14(dci_hurwitz_q, 2.0 * x - 3.0);
+    if (x <= 2.0 && b == 0.5) return dci_horner14(dci_hurwitz_h, 2.0 * x - 3.0);
+    if (x >= 5.0) return dci_euler_maclaurin(b, 0.0, x);
+    double acc = dci_pow_b(x, b) + dci_pow_b(x + 1.0, b) + dci_pow_b(x + 2.0, b);
+    acc += dci_pow_b(x + 3.0, b);
+    return dci_euler_maclaurin(b, acc, x + 4.0);
 }
 
 /* the damping factor R(h) (r_of_h) */

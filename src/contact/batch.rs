@@ -411,6 +411,7 @@ impl Visit for StepPass<'_, '_, '_> {
 /// Contacts per chunk of [`step_pass`]: its mask of contacts for the exact path lives on the
 /// stack (one byte each).
 const STEP_CHUNK: usize = 256;
+const _: () = assert!(STEP_CHUNK.is_power_of_two() && STEP_CHUNK <= 1 << 16);
 
 #[inline(never)]
 fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOut<'_>, at: usize) {
@@ -422,7 +423,7 @@ fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOu
         let (Some(ci), Some(mut co)) = (sub_in(b, a, e), sub_out(o, len, a, e)) else {
             // Unreachable after check_call (the slices have their lengths): the rest by the
             // exact path.
-            step_exact_path::<L>(m, b, dt, o, at, a, &[]);
+            step_exact_path::<L>(m, b, dt, o, at, a, None);
             return;
         };
         // 1 = this contact takes the exact path (a contact the steady loop does not reach
@@ -466,7 +467,19 @@ fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOu
                 law: PhantomData,
             });
         }
-        step_exact_path::<L>(m, &ci, dt, &mut co, at, 0, mask);
+        // The marked contacts' indices, gathered without a branch (a loop that tests each
+        // mask entry mispredicts at every marked contact).
+        let mut idx = [0u16; STEP_CHUNK];
+        let mut cnt = 0usize;
+        for (i, &mk) in mask.iter().enumerate() {
+            // cnt ≤ i < STEP_CHUNK: the mask only shows the compiler that it is in bounds.
+            if let Some(x) = idx.get_mut(cnt & (STEP_CHUNK - 1)) {
+                *x = i as u16;
+            }
+            cnt += (mk != 0) as usize;
+        }
+        let idx = idx.get(..cnt).unwrap_or(&[]);
+        step_exact_path::<L>(m, &ci, dt, &mut co, at, 0, Some(idx));
         a = e;
     }
 }
@@ -543,8 +556,7 @@ impl<L: Law, const OVERLAP: bool> SimdLoop for StepSteady<'_, '_, L, OVERLAP> {
     }
 }
 
-/// The contacts from `from` on that `mask` marks (`mask[i - from]`; all of them where `mask`
-/// ends) as the scalar path computes
+/// The contacts `idx` lists (all from `from` on for None) as the scalar path computes
 /// them ([`step_exact::contact_normal_with`] with the law's monomorphised kernel in contact,
 /// the law's own force otherwise), bit for bit.
 #[inline(never)]
@@ -555,38 +567,57 @@ fn step_exact_path<L: Law>(
     o: &mut BatchOut<'_>,
     at: usize,
     from: usize,
-    mask: &[u64],
+    idx: Option<&[u16]>,
+) {
+    match idx {
+        Some(list) => {
+            for &i in list {
+                exact_one::<L>(m, b, dt, o, at, usize::from(i));
+            }
+        }
+        None => {
+            for i in from..b.overlap.len() {
+                exact_one::<L>(m, b, dt, o, at, i);
+            }
+        }
+    }
+}
+
+/// Contact `i` of [`step_exact_path`].
+#[inline(always)]
+fn exact_one<L: Law>(
+    m: &ContactModel,
+    b: &BatchIn<'_>,
+    dt: f64,
+    o: &mut BatchOut<'_>,
+    at: usize,
+    i: usize,
 ) {
     let pair = &m.normal;
     let stride = o.stride;
-    for i in from..b.overlap.len() {
-        if mask.get(i - from).is_some_and(|&x| x == 0) {
-            continue;
+    let (Some(&n), Some(&d), Some(&v1), Some(&v2)) =
+        (b.normal.get(i), b.overlap.get(i), b.v1.get(i), b.v2.get(i))
+    else {
+        return;
+    };
+    let (Some(&r1), Some(&r2), Some(&m1), Some(&m2)) =
+        (b.r1.get(i), b.r2.get(i), b.m1.get(i), b.m2.get(i))
+    else {
+        return;
+    };
+    let vn = -dot(sub(v1, v2), n);
+    let (r, mm) = (harmonic(r1, r2), harmonic(m1, m2));
+    let f = match o.history.get_mut(i * stride + at) {
+        Some(slot) if d > 0.0 => {
+            step_exact::contact_normal_with(m, d, vn, r, mm, dt, slot, |c, d, v, r, mm| {
+                eval::<L, false>(&c, d, v, r, mm)
+            })
         }
-        let (Some(&n), Some(&d), Some(&v1), Some(&v2)) =
-            (b.normal.get(i), b.overlap.get(i), b.v1.get(i), b.v2.get(i))
-        else {
-            continue;
-        };
-        let (Some(&r1), Some(&r2), Some(&m1), Some(&m2)) =
-            (b.r1.get(i), b.r2.get(i), b.m1.get(i), b.m2.get(i))
-        else {
-            continue;
-        };
-        let vn = -dot(sub(v1, v2), n);
-        let (r, mm) = (harmonic(r1, r2), harmonic(m1, m2));
-        let f = match o.history.get_mut(i * stride + at) {
-            Some(slot) if d > 0.0 => {
-                step_exact::contact_normal_with(m, d, vn, r, mm, dt, slot, |c, d, v, r, mm| {
-                    eval::<L, false>(&c, d, v, r, mm)
-                })
-            }
-            _ => normal_force_raw(pair.kernel, pair.consts, d, vn, r, mm),
-        };
-        if let (Some(fo), Some(fv)) = (o.f_n.get_mut(i), o.force.get_mut(i)) {
-            *fo = f;
-            *fv = normal_vector(f, n);
-        }
+        _ => normal_force_raw(pair.kernel, pair.consts, d, vn, r, mm),
+    };
+    if let (Some(fo), Some(fv)) = (o.f_n.get_mut(i), o.force.get_mut(i)) {
+        *fo = f;
+        *fv = normal_vector(f, n);
     }
 }
 
