@@ -101,10 +101,22 @@ fn model(tangential: i32, step: bool) -> ContactModel {
 }
 
 fn run(bencher: Bencher, tangential: i32, step: bool, onsets: bool, physical: bool) {
+    run_with(bencher, tangential, step, onsets, physical, STRIDE);
+}
+
+/// [`run`] with the history records `stride` doubles apart.
+fn run_with(
+    bencher: Bencher,
+    tangential: i32,
+    step: bool,
+    onsets: bool,
+    physical: bool,
+    stride: usize,
+) {
     let x = data(physical);
     let m = model(tangential, step);
     let len = m.layout.len;
-    let mut hist = vec![0.0; N * STRIDE];
+    let mut hist = vec![0.0; N * stride];
     let (mut f_n, mut force, mut t1, mut t2) = (
         vec![0.0; N],
         vec![[0.0; 3]; N],
@@ -113,14 +125,14 @@ fn run(bencher: Bencher, tangential: i32, step: bool, onsets: bool, physical: bo
     );
     // The steady-state set-up runs in both variants (the same stores; the plain model's
     // slot is a host value past its history), so the ratio is the option's cost alone.
-    let at = m.layout.step.unwrap_or(STRIDE - 1);
-    assert!(m.layout.step.is_some() || len < STRIDE);
+    let at = m.layout.step.unwrap_or(stride - 1);
+    assert!(m.layout.step.is_some() || len < stride);
     let mut tick = 0usize;
     bencher.counter(ItemsCount::new(N)).bench_local(|| {
         // Steady state: the step slot of every contact holds R, except 1 in 20 (onsets) unless
         // `onsets` is false (enduring contacts only).
         let mut k = tick;
-        for h in hist.chunks_exact_mut(STRIDE) {
+        for h in hist.chunks_exact_mut(stride) {
             if let Some(slot) = h.get_mut(at) {
                 *slot = if onsets && k == 0 { 0.0 } else { 0.97 };
             }
@@ -145,7 +157,7 @@ fn run(bencher: Bencher, tangential: i32, step: bool, onsets: bool, physical: bo
             torque1: Some(&mut t1),
             torque2: Some(&mut t2),
             history: &mut hist,
-            stride: STRIDE,
+            stride,
         };
         black_box(contact_force_batch(&m, black_box(&inp), DT, &mut out)).ok();
         black_box(len);
@@ -205,4 +217,33 @@ fn hertz_mindlin_plain_physical(b: Bencher) {
 #[divan::bench]
 fn hertz_mindlin_step_aware_physical(b: Bencher) {
     run(b, select::TANGENTIAL_MINDLIN, true, true, true);
+}
+
+/// Normal-only with the history as a host lays it out for that model: records of
+/// `dc_contact_history_len` (one double) back to back, stride 1 (the benches above keep the
+/// full-contact stride of 12 for every model). The plain model has no history; its slot is the
+/// host's, written by the set-up as in the step-aware runs.
+#[divan::bench]
+fn hertz_plain_dense(b: Bencher) {
+    run_with(b, select::TANGENTIAL_NONE, false, true, false, 1);
+}
+
+#[divan::bench]
+fn hertz_step_aware_dense(b: Bencher) {
+    run_with(b, select::TANGENTIAL_NONE, true, true, false, 1);
+}
+
+#[divan::bench]
+fn hertz_step_aware_enduring_dense(b: Bencher) {
+    run_with(b, select::TANGENTIAL_NONE, true, false, false, 1);
+}
+
+#[divan::bench]
+fn hertz_plain_physical_dense(b: Bencher) {
+    run_with(b, select::TANGENTIAL_NONE, false, true, true, 1);
+}
+
+#[divan::bench]
+fn hertz_step_aware_physical_dense(b: Bencher) {
+    run_with(b, select::TANGENTIAL_NONE, true, true, true, 1);
 }

@@ -433,14 +433,21 @@ fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOu
         // The history doubles gathered first (a strided load in the steady loop would keep it
         // from vectorising).
         let mut slots = [0.0f64; STEP_CHUNK];
-        let held = co
-            .history
-            .get(at..)
-            .unwrap_or(&[])
-            .iter()
-            .step_by(co.stride);
-        for (s, &x) in slots.iter_mut().zip(held) {
-            *s = x;
+        if co.stride == 1 {
+            // Records of one double back to back: one copy.
+            if let (Some(s), Some(h)) = (slots.get_mut(..e - a), co.history.get(..e - a)) {
+                s.copy_from_slice(h);
+            }
+        } else {
+            let held = co
+                .history
+                .get(at..)
+                .unwrap_or(&[])
+                .iter()
+                .step_by(co.stride);
+            for (s, &x) in slots.iter_mut().zip(held) {
+                *s = x;
+            }
         }
         let slots = slots.get(..e - a).unwrap_or(&[]);
         let (c, f_n, force) = (m.normal.consts, &mut *co.f_n, &mut *co.force);
@@ -467,16 +474,22 @@ fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOu
                 law: PhantomData,
             });
         }
-        // The marked contacts' indices, gathered without a branch (a loop that tests each
-        // mask entry mispredicts at every marked contact).
+        // The marked contacts' indices, gathered without a branch per contact (a loop that
+        // tests each mask entry mispredicts at every marked contact); groups of 8 contacts
+        // with none marked (every group of a settled bed) are skipped whole.
         let mut idx = [0u16; STEP_CHUNK];
         let mut cnt = 0usize;
-        for (i, &mk) in mask.iter().enumerate() {
-            // cnt ≤ i < STEP_CHUNK: the mask only shows the compiler that it is in bounds.
-            if let Some(x) = idx.get_mut(cnt & (STEP_CHUNK - 1)) {
-                *x = i as u16;
+        for (j, group) in mask.chunks(8).enumerate() {
+            if group.iter().fold(0, |acc, &mk| acc | mk) == 0 {
+                continue;
             }
-            cnt += (mk != 0) as usize;
+            for (k, &mk) in group.iter().enumerate() {
+                // cnt ≤ i < STEP_CHUNK: the mask only shows the compiler that it is in bounds.
+                if let Some(x) = idx.get_mut(cnt & (STEP_CHUNK - 1)) {
+                    *x = (8 * j + k) as u16;
+                }
+                cnt += (mk != 0) as usize;
+            }
         }
         let idx = idx.get(..cnt).unwrap_or(&[]);
         step_exact_path::<L>(m, &ci, dt, &mut co, at, 0, Some(idx));
@@ -652,6 +665,14 @@ fn stateful_pass(m: &ContactModel, b: &BatchIn<'_>, o: &mut BatchOut<'_>, at: us
 fn frame_pass(m: &ContactModel, b: &BatchIn<'_>, o: &mut BatchOut<'_>) {
     let len = m.layout.len;
     if len == 0 {
+        return;
+    }
+    if len == 1 && !m.layout.has_normal() && m.layout.normal_state.is_none() {
+        // One value per contact (a step-aware normal-only model): zeroed where separated, by
+        // a branch-free select (the same values as the general loop below).
+        for (h, &d) in o.history.iter_mut().step_by(o.stride).zip(b.overlap) {
+            *h = if d > 0.0 { *h } else { 0.0 };
+        }
         return;
     }
     let it = b
@@ -881,11 +902,13 @@ fn compute_guarded(
     // The zeroed stack buffer is paid on every call: a short batch gets a short one.
     // A record of one or two doubles (a step-aware normal-only model) is saved in a buffer of
     // that width (value by value): the full-width buffer would cost a 48 KB fill per call.
-    match (n <= SHORT, m.layout.len <= 2) {
-        (true, true) => guarded_with_history::<SHORT, 2>(m, inp, dt, out),
-        (true, false) => guarded_with_history::<SHORT, HISTORY_MAX>(m, inp, dt, out),
-        (false, true) => guarded_with_history::<GUARD, 2>(m, inp, dt, out),
-        (false, false) => guarded_with_history::<GUARD, HISTORY_MAX>(m, inp, dt, out),
+    match (n <= SHORT, m.layout.len) {
+        (true, 1) => guarded_with_history::<SHORT, 1>(m, inp, dt, out),
+        (true, 2) => guarded_with_history::<SHORT, 2>(m, inp, dt, out),
+        (true, _) => guarded_with_history::<SHORT, HISTORY_MAX>(m, inp, dt, out),
+        (false, 1) => guarded_with_history::<GUARD, 1>(m, inp, dt, out),
+        (false, 2) => guarded_with_history::<GUARD, 2>(m, inp, dt, out),
+        (false, _) => guarded_with_history::<GUARD, HISTORY_MAX>(m, inp, dt, out),
     }
 }
 
