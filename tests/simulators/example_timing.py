@@ -5,6 +5,7 @@ with the same parameters (the speed rows of docs/lammps_examples.md):
 
   example_timing.py --plugin demcontactplugin.so [--before LABEL=old.so ...] [--np 2] [--reps 3]
                     [--steps N] [--workdir DIR] [--lmp lmp] [--deck in.pour.flatwall] [--count]
+                    [--step-exact]
 
 Decks (only the pair and wall lines of the example change; printed):
   granular            pair_style granular; pair_coeff * * hertz/material 1000.0 0.5 0.3 tangential
@@ -25,6 +26,9 @@ Decks (only the pair and wall lines of the example change; printed):
                       printed: pair 0.998, wall 0.640), so that both runs dissipate alike and
                       evaluate as many contacts (see --count). The pair's e is checked against
                       builtin_restitution() (within 1e-4: exit 1 otherwise).
+  matched_step_exact  (--step-exact) matched with `step_exact` on the pair and wall lines: the
+                      deck's own step, the cost of the step-aware option in a pour (its ratio to
+                      matched is printed; docs/timestep.md, "Cost in a scene")
 
 --count: one more (untimed) run per model with `compute contact/atom` every 10 steps: the contact
 evaluations of the run (touching pairs summed over the sampled steps, x 10) in the table.
@@ -125,11 +129,11 @@ def builtin_collisions(exe, d, env, deck_text):
     return float(m.group(1)), float(m.group(2))
 
 
-def decks(text, plugin, carry, steps, pair=PAIR, wall=WALL):
+def decks(text, plugin, carry, steps, pair=PAIR, wall=WALL, step_exact=False):
     """(builtin deck, our deck) of the example: only the pair and wall lines (and `run` with
     --steps) changed; `pair` and `wall` are our lines' coefficients."""
     b, o = [], []
-    extra = " carry %s" % carry if carry else ""
+    extra = (" carry %s" % carry if carry else "") + (" step_exact" if step_exact else "")
     for line in text.splitlines():
         f = line.split()
         if f[:1] == ["pair_style"]:
@@ -202,6 +206,8 @@ def main():
     ap.add_argument("--lmp")
     ap.add_argument("--deck", default=DECK)
     ap.add_argument("--count", action="store_true", help="count the contact evaluations (one untimed run per model)")
+    ap.add_argument("--step-exact", action="store_true",
+                    help="also time matched with step_exact on the pair and wall lines")
     a = ap.parse_args()
     if a.reps < 1 or a.steps < 0 or a.np < 1:
         raise SystemExit("example_timing: --reps and --np must be >= 1, --steps >= 0")
@@ -244,6 +250,9 @@ def main():
     for carry in (None, "project"):
         models.append(("matched" + ("_" + carry if carry else ""),
                        decks(text, a.plugin, carry, a.steps, MATCHED % e_pair, MATCHED_WALL % e_wall)[1]))
+    if a.step_exact:
+        models.append(("matched_step_exact",
+                       decks(text, a.plugin, None, a.steps, MATCHED % e_pair, MATCHED_WALL % e_wall, True)[1]))
     for lab, deck in models:
         open(os.path.join(d, "in.%s" % lab), "w").write(deck)
     print("Decks in %s; lines changed against %s:" % (d, a.deck))
@@ -285,6 +294,12 @@ def main():
             print("| %s | %d | %.3f | %.3f | %.3f | %.3f | %d | %d | %.3f | %.3f | %.3f |"
                   % (lab, np_, b[0], b[1], b[2], b[3], b[4], b[5], b[0] / ref, b[6], b[6] / uref)
                   + (" %.2f |" % (count[lab] / 1e6) if a.count else ""))
+    if a.step_exact:
+        print()
+        for np_ in nps:
+            s, m = best[("matched_step_exact", np_)], best[("matched", np_)]
+            print("step_exact / matched, %d rank(s): loop %.3f, pair %.3f, modify %.3f, user %.3f"
+                  % (np_, s[0] / m[0], s[1] / m[1], s[3] / m[3], s[6] / m[6]))
 
 
 if __name__ == "__main__":
