@@ -484,7 +484,7 @@ fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOu
                 continue;
             }
             for (k, &mk) in group.iter().enumerate() {
-                // cnt ≤ i < STEP_CHUNK: the mask only shows the compiler that it is in bounds.
+                // cnt ≤ 8j + k < STEP_CHUNK: the mask only shows the compiler that it is in bounds.
                 if let Some(x) = idx.get_mut(cnt & (STEP_CHUNK - 1)) {
                     *x = (8 * j + k) as u16;
                 }
