@@ -843,6 +843,48 @@ fn batch_statuses_leave_everything_untouched() {
         unsafe { dc_contact_force_batch(&normal_only, &b, 1e-7) },
         DC_OK
     );
+    // A normal-only model with a history (step-aware, one double): spins and torques may be
+    // NULL as well, and the forces and histories are those of the call that gives them.
+    let mut step = all_models()[1]; // Hertz, e_n 0.6, DC_END_FORCE, normal only
+    assert_eq!(step.tangential, DC_TANGENTIAL_NONE);
+    assert_eq!(
+        unsafe { dc_contact_model_set_step(&mut step, 1e-7, DC_INTEGRATOR_VELOCITY_VERLET) },
+        DC_OK
+    );
+    let mut len = 0usize;
+    assert_eq!(unsafe { dc_contact_history_len(&step, &mut len) }, DC_OK);
+    assert_eq!(len, 1);
+    let (mut fa, mut fb) = (
+        (vec![7.0; nc], vec![7.0; 3 * nc]),
+        (vec![8.0; nc], vec![8.0; 3 * nc]),
+    );
+    let (mut ha, mut hb) = (vec![0.0; nc], vec![0.0; nc]);
+    let (mut ta, mut tb) = (vec![9.0; 3 * nc], vec![9.0; 3 * nc]);
+    let mut with = a.batch((ha.as_mut_ptr(), 1), &mut fa.0, &mut fa.1, &mut ta, &mut tb);
+    let mut without = with;
+    without.w1 = std::ptr::null();
+    without.w2 = std::ptr::null();
+    without.torque1 = std::ptr::null_mut();
+    without.torque2 = std::ptr::null_mut();
+    without.history = hb.as_mut_ptr();
+    without.f_n = fb.0.as_mut_ptr();
+    without.force = fb.1.as_mut_ptr();
+    for _ in 0..3 {
+        with.history = ha.as_mut_ptr();
+        assert_eq!(unsafe { dc_contact_force_batch(&step, &with, 1e-7) }, DC_OK);
+        assert_eq!(
+            unsafe { dc_contact_force_batch(&step, &without, 1e-7) },
+            DC_OK
+        );
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&fa.0), bits(&fb.0));
+        assert_eq!(bits(&fa.1), bits(&fb.1));
+        assert_eq!(bits(&ha), bits(&hb));
+    }
+    assert!(
+        ha.iter().any(|&x| x != 0.0),
+        "the step-aware history is in use"
+    );
 }
 
 #[test]

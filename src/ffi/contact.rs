@@ -1003,7 +1003,9 @@ where
         Err(e) => return dc_status::of(e).code(),
     };
     let len = cm.layout.len;
-    let normal_only = len == 0 && cm.rolling == select::ROLLING_NONE;
+    // Normal-only by its selectors (no tangential, rolling or twisting stage), whatever its
+    // history: a step-aware model or a law with state keeps one double and is still normal-only.
+    let normal_only = !cm.layout.has_normal() && cm.rolling == select::ROLLING_NONE;
     let n = b.n;
     let (w1, w2) = if normal_only && (b.w1.is_null() || b.w2.is_null()) {
         (b.v1, b.v1) // never read by a normal-only model
