@@ -1,7 +1,12 @@
 /* Full-contact benchmark: dc_contact_force_batch (normal only, + Mindlin tangential, + EPSD
  * rolling), called from C through the ABI, against hand-written C loops of the same formulas
  * (contact_baseline.c, -O3 and -O3 -fno-math-errno) and against today's normal-force path
- * (host computes vn, R*, m* + dc_normal_force_batch + host forms F n), all in the same run.
+ * (host computes vn, R*, m* + dc_normal_force_batch + host forms F n), all in the same run; and
+ * the step-aware models (dc_contact_model_set_step at the run's dt, velocity Verlet) against the
+ * plain ones, batch and per contact, normal-only and Mindlin, each on its own histories laid out
+ * as dc_contact_history_len says (the inputs do not change between calls, so after the first
+ * call every contact is past its onset: the steady cost, which a contact pays on all its steps
+ * but the first; benches/step_exact.rs adds contacts at their onset).
  *
  *   contact_bench            full run, prints a markdown table (ns per contact, ratios)
  *   contact_bench --smoke    small sizes: checks that the C loops and the ABI agree
@@ -33,7 +38,9 @@ typedef struct {
 DECL(plain)
 DECL(fast)
 
-static const dc_contact_model *MODELS[3];
+static const dc_contact_model *MODELS[5]; /* normal, Mindlin, Mindlin + EPSD; step-aware normal, Mindlin */
+static size_t STEP_LEN[2];                 /* their history lengths (the strides of their own buffers) */
+static double *STEP_HIST[2];
 static hmc_params P;
 
 typedef struct {
@@ -58,6 +65,10 @@ enum {
     R_BATCH,
     R_FUSED,
     R_SCALAR,
+    NS_BATCH,
+    NS_SCALAR,
+    TS_BATCH,
+    TS_SCALAR,
     NVAR
 };
 static const char *NAMES[NVAR] = {
@@ -77,6 +88,10 @@ static const char *NAMES[NVAR] = {
     "+ Mindlin + EPSD rolling: dc_contact_force_batch",
     "+ Mindlin + EPSD rolling: dc_contact_force_batch_fused",
     "+ Mindlin + EPSD rolling: dc_contact_force per contact",
+    "normal, step-aware: dc_contact_force_batch",
+    "normal, step-aware: dc_contact_force per contact",
+    "+ Mindlin tangential, step-aware: dc_contact_force_batch",
+    "+ Mindlin tangential, step-aware: dc_contact_force per contact",
 };
 
 /* One dc_contact_force call per contact, as a host's pair loop does: state from the arrays,
@@ -140,6 +155,30 @@ static void run(int var, const arrays *a) {
     case N_SCALAR: scalar_loop(MODELS[0], a, 0); break;
     case T_SCALAR: scalar_loop(MODELS[1], a, 6); break;
     case R_SCALAR: scalar_loop(MODELS[2], a, DC_CONTACT_HISTORY_MAX); break;
+    case NS_SCALAR:
+    case TS_SCALAR: {
+        const int k = var == NS_SCALAR ? 0 : 1;
+        arrays d = *a;
+        d.hist = STEP_HIST[k];
+        scalar_loop(MODELS[3 + k], &d, STEP_LEN[k]);
+        break;
+    }
+    case NS_BATCH:
+    case TS_BATCH: {
+        const int k = var == NS_BATCH ? 0 : 1;
+        b.history = STEP_HIST[k];
+        b.history_stride = STEP_LEN[k];
+        if (k == 0) {
+            b.w1 = b.w2 = NULL;
+            b.torque1 = b.torque2 = NULL;
+        }
+        const int32_t s = dc_contact_force_batch(MODELS[3 + k], &b, P.dt);
+        if (s != DC_OK) {
+            fprintf(stderr, "%s: %s\n", NAMES[var], dc_status_str(s));
+            abort();
+        }
+        break;
+    }
     case T_C_PLAIN:
     case T_C_FAST: {
         /* the C loops keep a 6-double history: use the tail of the same buffer layout */
@@ -213,8 +252,20 @@ int main(int argc, char **argv) {
     MODELS[0] = &normal, MODELS[1] = &hm, MODELS[2] = &hmr;
     P = (hmc_params){.kf = hm.normal.k, .c = hm.normal.c, .g8 = hm.kt, .zeta = hm.zeta_t,
                      .mt = hm.kappa / (1.0 + hm.kappa), .mu = hm.mu, .dt = 1e-8};
+    dc_contact_model normal_step = normal, hm_step = hm;
+    if (dc_contact_model_set_step(&normal_step, P.dt, DC_INTEGRATOR_VELOCITY_VERLET) != DC_OK ||
+        dc_contact_model_set_step(&hm_step, P.dt, DC_INTEGRATOR_VELOCITY_VERLET) != DC_OK ||
+        dc_contact_history_len(&normal_step, &STEP_LEN[0]) != DC_OK ||
+        dc_contact_history_len(&hm_step, &STEP_LEN[1]) != DC_OK) {
+        fprintf(stderr, "step-aware model construction failed\n");
+        return 1;
+    }
+    MODELS[3] = &normal_step, MODELS[4] = &hm_step;
     const size_t sizes[2] = {smoke ? 37 : 1024, smoke ? 1000 : (size_t)1 << 18};
     const size_t nmax = sizes[1];
+    STEP_HIST[0] = calloc(STEP_LEN[0] * nmax, sizeof(double));
+    STEP_HIST[1] = calloc(STEP_LEN[1] * nmax, sizeof(double));
+    if (!STEP_HIST[0] || !STEP_HIST[1]) return 1;
     /* one allocation, arrays staggered by 72 doubles against 4K aliasing */
     const size_t per[18] = {3, 1, 3, 3, 3, 3, 1, 1, 1, 1, DC_CONTACT_HISTORY_MAX, 1, 3, 3, 3, 1, 1, 1};
     size_t total = 0;
@@ -292,6 +343,46 @@ int main(int argc, char **argv) {
                     return 1;
                 }
         }
+        /* The step-aware batch and per-contact paths: the same bits over 3 steps from zero
+         * history (the first step is every contact's onset), each on its own histories. */
+        for (int k = 0; k < 2; k++) {
+            double *hb = calloc(STEP_LEN[k] * n, sizeof(double)), *hs = calloc(STEP_LEN[k] * n, sizeof(double));
+            double *fb = malloc(3 * n * sizeof(double));
+            if (!hb || !hs || !fb) return 1;
+            double *keep = STEP_HIST[k];
+            for (int step = 0; step < 3; step++) {
+                arrays d = a;
+                d.n = n;
+                STEP_HIST[k] = hb;
+                run(k == 0 ? NS_BATCH : TS_BATCH, &d);
+                memcpy(fb, d.force, 3 * n * sizeof(double));
+                STEP_HIST[k] = hs;
+                run(k == 0 ? NS_SCALAR : TS_SCALAR, &d);
+                if (memcmp(fb, d.force, 3 * n * sizeof(double)) != 0 ||
+                    memcmp(hb, hs, STEP_LEN[k] * n * sizeof(double)) != 0) {
+                    fprintf(stderr, "step %d: %s and %s differ\n", step, NAMES[k == 0 ? NS_BATCH : TS_BATCH],
+                            NAMES[k == 0 ? NS_SCALAR : TS_SCALAR]);
+                    return 1;
+                }
+            }
+            /* the step-aware model acts: its onset force differs from the plain model's */
+            arrays d = a;
+            d.n = n;
+            memset(hb, 0, STEP_LEN[k] * n * sizeof(double));
+            STEP_HIST[k] = hb;
+            run(k == 0 ? NS_BATCH : TS_BATCH, &d);
+            memcpy(fb, d.force, 3 * n * sizeof(double));
+            memset(a.hist, 0, DC_CONTACT_HISTORY_MAX * n * sizeof(double));
+            run(k == 0 ? N_BATCH : T_BATCH, &d);
+            if (memcmp(fb, d.force, 3 * n * sizeof(double)) == 0) {
+                fprintf(stderr, "%s: the same forces as the plain model at the onset\n", NAMES[k == 0 ? NS_BATCH : TS_BATCH]);
+                return 1;
+            }
+            STEP_HIST[k] = keep;
+            free(hb);
+            free(hs);
+            free(fb);
+        }
         free(ref);
         free(hist);
         free(hist2);
@@ -303,8 +394,11 @@ int main(int argc, char **argv) {
             d.n = sizes[1];
             run(v, &d);
         }
-        printf("contact_bench --smoke: the C loops and the ABI agree\n");
+        printf("contact_bench --smoke: the C loops and the ABI agree, the step-aware batch and per-contact calls "
+               "agree bit for bit\n");
         free(buf);
+        free(STEP_HIST[0]);
+        free(STEP_HIST[1]);
         return 0;
     }
     const int TRIALS = 7;
@@ -330,7 +424,7 @@ int main(int argc, char **argv) {
            sizes[1]);
     printf("|---|---|---|---|---|\n");
     for (int v = 0; v < NVAR; v++) {
-        int base = v < T_C_PLAIN ? N_C_FAST : T_C_FAST;
+        int base = (v < T_C_PLAIN || v == NS_BATCH || v == NS_SCALAR) ? N_C_FAST : T_C_FAST;
         printf("| %s | %.2f | %.2f | %.2f | %.2f |\n", NAMES[v], best[0][v], best[0][v] / best[0][base], best[1][v],
                best[1][v] / best[1][base]);
     }
@@ -346,6 +440,14 @@ int main(int argc, char **argv) {
            "dc_contact_force Mindlin / C loop: %.2f in-cache, %.2f streaming\n",
            best[0][N_SCALAR] / best[0][N_SCALAR_TODAY], best[1][N_SCALAR] / best[1][N_SCALAR_TODAY],
            best[0][T_SCALAR] / best[0][T_C_FAST], best[1][T_SCALAR] / best[1][T_C_FAST]);
+    printf("step-aware / plain (same entry, steady contacts): normal batch %.3f / %.3f, normal per contact %.3f / %.3f, "
+           "Mindlin batch %.3f / %.3f, Mindlin per contact %.3f / %.3f (in-cache / streaming)\n",
+           best[0][NS_BATCH] / best[0][N_BATCH], best[1][NS_BATCH] / best[1][N_BATCH],
+           best[0][NS_SCALAR] / best[0][N_SCALAR], best[1][NS_SCALAR] / best[1][N_SCALAR],
+           best[0][TS_BATCH] / best[0][T_BATCH], best[1][TS_BATCH] / best[1][T_BATCH],
+           best[0][TS_SCALAR] / best[0][T_SCALAR], best[1][TS_SCALAR] / best[1][T_SCALAR]);
     free(buf);
+    free(STEP_HIST[0]);
+    free(STEP_HIST[1]);
     return 0;
 }

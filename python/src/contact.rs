@@ -214,9 +214,13 @@ pub struct ContactModel {
 }
 
 impl ContactModel {
-    /// The batch may be given no angular velocities and no torques (C: normal_only).
+    /// The batch may be given no angular velocities and no torques (C: normal_only): no
+    /// tangential, rolling or twisting stage, whatever the history (a step-aware model or a law
+    /// with state keeps one double and is still normal-only).
     fn normal_only(&self) -> bool {
-        self.history_len == 0 && self.raw.rolling == c::contact::DC_ROLLING_NONE
+        self.raw.tangential == c::contact::DC_TANGENTIAL_NONE
+            && self.raw.rolling == c::contact::DC_ROLLING_NONE
+            && self.raw.twisting == c::contact::DC_TWISTING_NONE
     }
 }
 

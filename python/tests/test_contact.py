@@ -631,6 +631,24 @@ def test_batch_shape_and_type_errors():
     assert r1.force.tobytes() == r2.force.tobytes()
 
 
+def test_normal_only_models_with_history_need_no_spins():
+    # Normal-only by its sub-models, whatever the history: a step-aware normal-only model keeps
+    # one double and still takes w1 = w2 = None, with the forces of the call that gives them.
+    m = model("powerlaw_normal_only_step")
+    assert m.history_len == 1
+    n = 12
+    a = batch_args(n, 3)
+    ha, hb = np.zeros((n, 1)), np.zeros((n, 1))
+    for _ in range(3):
+        ra = dc.contact_force_batch(m, *a, DT, ha)
+        rb = dc.contact_force_batch(m, *a[:4], None, None, *a[6:], DT, hb)
+        assert ra.f_n.tobytes() == rb.f_n.tobytes() and ra.force.tobytes() == rb.force.tobytes()
+        assert ha.tobytes() == hb.tobytes()
+    assert (ha != 0).any()  # the step-aware history is in use
+    with pytest.raises(TypeError, match="w1.*required"):  # a tangential stage still needs them
+        dc.contact_force_batch(model("hertz_full_step_euler"), *a[:4], None, None, *a[6:], DT, np.zeros((n, model("hertz_full_step_euler").history_len)))
+
+
 def test_empty_batch_gives_empty_results():
     m = model("hertz_full")
     e1, e3 = np.empty(0), np.empty((0, 3))
