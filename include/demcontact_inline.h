@@ -1477,6 +1477,8 @@ DCI_ALWAYS_INLINE_FN double dci_step_raw(const dc_pair *pair, int32_t kernel, do
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
+/* src/contact/step_exact.rs ONSET_A_MAX */
+#define DCI_ONSET_A_MAX 2.0
 /* The step-aware normal force of one contact in contact (contact_normal + normal_force);
  * slot: its history double (0 fresh, +R, -R after the end correction). */
 DCI_ALWAYS_INLINE_FN double dci_step_normal(const dc_contact_model *m, double d, double v,
@@ -1486,8 +1488,11 @@ DCI_ALWAYS_INLINE_FN double dci_step_normal(const dc_contact_model *m, double d,
     const int32_t kernel = dci_unclamped(pair->kernel);
     const double beta = 0.5 * (pair->p - 1.0);
     const int first = *slot == 0.0;
+    /* an onset: a = d/(v dt) <= DCI_ONSET_A_MAX (a drift from outside gives a <= 1); a pair
+     * created deeper takes R = 1 and no onset correction */
+    const int onset = first && v > 0.0 && d <= DCI_ONSET_A_MAX * v * dt;
     if (first) {
-        if (v > 0.0) {
+        if (onset) {
             const double kc = pair->model == DC_MODEL_HERTZ ? pair->k * sqrt(r_eff) : pair->k;
             const double h = m->reserved[0] * v /
                              dc_pow_inline(m_eff * v * v / kc, 1.0 / (pair->p + 1.0));
@@ -1499,7 +1504,7 @@ DCI_ALWAYS_INLINE_FN double dci_step_normal(const dc_contact_model *m, double d,
     const double r = fabs(*slot);
     const int flagged = *slot < 0.0;
     double f;
-    if (first && v > 0.0) {
+    if (onset) {
         const double fel = dci_step_raw(pair, kernel, r, d, 0.0, r_eff, m_eff);
         const double fdv = dci_step_raw(pair, kernel, r, d, v, r_eff, m_eff) - fel;
         const double a = d / (v * dt);

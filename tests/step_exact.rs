@@ -588,3 +588,54 @@ fn tangential_damping_alone_can_correct_e_t() {
         );
     }
 }
+
+/// A pair whose first contact step is no onset (created overlapping: a = δ/(v dt) ≫ 1, or
+/// receding) takes R = 1 and no onset correction: its force is the plain model's (relative
+/// 1e-12) and its step slot holds 1. A true onset (a = 1/2) does get the correction. Linear,
+/// Hertz and p = 2, both criteria, e_n 0.1; a = 1e4 at 1e-3 m/s (once 1.8e2 N against the
+/// plain 20 N for the linear law).
+#[test]
+fn a_pair_created_overlapping_gets_no_onset_kick() {
+    use demcontact::contact::{ContactState, contact_force};
+    for law in [Law::Linear, Law::Hertz, Law::P2] {
+        for crit in [0, 1] {
+            let plain = contact_model(&spec(law, 0.1, crit)).unwrap();
+            let dt = 1e-5;
+            let m = set_step(&plain, dt, 0).unwrap();
+            let at = m.layout.len as usize - 1;
+            let state = |d: f64, v: f64| ContactState {
+                n: [0.0, 0.0, 1.0],
+                overlap: d,
+                v1: [0.0, 0.0, -v],
+                v2: [0.0; 3],
+                w1: [0.0; 3],
+                w2: [0.0; 3],
+                r1: harness::R,
+                r2: f64::INFINITY,
+                m1: harness::M,
+                m2: f64::INFINITY,
+            };
+            // (overlap, approach speed, an onset?)
+            for (d, v, onset) in [
+                (1e-4, 1e-3, false),
+                (1e-4, -1e-3, false),
+                (3e-5, 1.0, false),
+                (0.5 * 1e-3 * dt, 1e-3, true),
+                (1.5 * 1.0 * dt, 1.0, true),
+            ] {
+                let s = state(d, v);
+                let mut hp = [0.0; 16];
+                let mut hs = [0.0; 16];
+                let fp = contact_force(&plain, &s, dt, &mut hp).unwrap().fn_;
+                let fs = contact_force(&m, &s, dt, &mut hs).unwrap().fn_;
+                let what = format!("{law:?} crit {crit} d {d:e} v {v:e}: plain {fp}, step {fs}");
+                if onset {
+                    assert!(hs[at] != 1.0 && (fs - fp).abs() > 1e-6 * fp.abs(), "{what}");
+                } else {
+                    assert_eq!(hs[at], 1.0, "{what}");
+                    assert!((fs - fp).abs() <= 1e-12 * fp.abs(), "{what}");
+                }
+            }
+        }
+    }
+}

@@ -286,8 +286,10 @@ static int deferred_step(const dc_contact_model *m, const dc_contact_state *s, d
 }
 
 /* One contact evolved over `steps` steps of `m`; counts of regimes seen added to `seen`. */
-/* step-aware steps compared, first contact steps (onset correction), end corrections fired */
-static long n_step_steps = 0, n_step_onsets = 0, n_step_ends = 0;
+/* step-aware steps compared, first contact steps with the onset correction (R from the impact
+ * speed), first contact steps without it (inserted overlapping or receding: R = 1), end
+ * corrections fired */
+static long n_step_steps = 0, n_step_onsets = 0, n_step_deep = 0, n_step_ends = 0;
 /* elastic-plastic steps in contact, and those on the unloading/reloading curve after yield */
 static long n_ep_steps = 0, n_ep_unload = 0;
 /* JKR steps with the neck formed at overlap <= 0, and steps on which the neck broke */
@@ -387,7 +389,8 @@ static void trajectory(const dc_contact_model *m, long steps, long *seen) {
         if (dci_bits(m->reserved[0]) != 0 && sl == DC_OK) {
             const int at = (int)m->history_len - 1; /* the step slot is last */
             n_step_steps++;
-            n_step_onsets += h0[at] == 0.0 && s.overlap > 0.0;
+            n_step_onsets += h0[at] == 0.0 && s.overlap > 0.0 && hl[at] != 1.0;
+            n_step_deep += h0[at] == 0.0 && s.overlap > 0.0 && hl[at] == 1.0;
             n_step_ends += hl[at] < 0.0;
         }
         if (m->normal.kernel == DC_KERNEL_ELASTIC_PLASTIC && sl == DC_OK && s.overlap > 0.0) {
@@ -847,7 +850,8 @@ int main(int argc, char **argv) {
     printf("test_inline_contact[%s]: %ld of the trajectories with the projection carry\n", LANG,
            projected);
     printf("test_inline_contact[%s]: step-aware: %ld trajectories, %ld steps (%ld contact onsets, "
-           "%ld end corrections)\n", LANG, stepped, n_step_steps, n_step_onsets, n_step_ends);
+           "%ld first steps too deep or receding for one, %ld end corrections)\n", LANG, stepped,
+           n_step_steps, n_step_onsets, n_step_deep, n_step_ends);
     printf("test_inline_contact[%s]: elastic-plastic: %ld steps in contact, %ld on the "
            "unloading/reloading curve after yield\n", LANG, n_ep_steps, n_ep_unload);
     printf("test_inline_contact[%s]: JKR: %ld steps with the neck at overlap <= 0, %ld breakages\n",
@@ -867,7 +871,7 @@ int main(int argc, char **argv) {
     /* the comparison must have exercised every regime */
     if (!(seen[1] > 1000 && seen[2] > 1000 && seen[3] > 1000 && seen[4] > 1000 && seen[6] > 1000 &&
           seen[7] > 1000 && specs_bad > 1000 && projected * 4 > models &&
-          n_step_steps > 1000 && n_step_onsets > 10 && n_step_ends > 10 && n_ep_unload > 1000 &&
+          n_step_steps > 1000 && n_step_onsets > 10 && n_step_deep > 10 && n_step_ends > 10 && n_ep_unload > 1000 &&
           n_jkr_neck > 1000 && n_jkr_break > 100 &&
           n_shaped_const * 10 > n_shaped_runtime && n_shaped_runtime > 1000 &&
           n_deferred * 2 > seen[0] && n_deferred_bad[0] > 0 && n_deferred_bad[1] > 0 &&

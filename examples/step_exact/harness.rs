@@ -9,8 +9,8 @@ use demcontact::contact::{ContactModel, ContactSpec, ContactState, contact_force
 
 /// Contact-onset phases per case.
 pub const PHASES: usize = 64;
-const M: f64 = 2.0e-3; // kg
-const R: f64 = 2.0e-3; // m
+pub const M: f64 = 2.0e-3; // kg
+pub const R: f64 = 2.0e-3; // m
 
 /// The normal laws of the study.
 #[derive(Clone, Copy, Debug)]

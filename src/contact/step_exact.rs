@@ -32,6 +32,11 @@ pub(crate) const PHASES: usize = 64;
 ///
 /// cbindgen:ignore
 pub const H_MAX: f64 = 0.1;
+/// A first contact step is an onset when a = δ/(v dt) ≤ this: a drift from outside gives a ≤ 1
+/// (δ grows by at most v dt in one step); the margin covers rounding and curved normals.
+///
+/// cbindgen:ignore
+pub const ONSET_A_MAX: f64 = 2.0;
 /// R is kept within these bounds (the fit is not designed beyond its nodes).
 const R_MIN: f64 = 0.25;
 const R_MAX: f64 = 2.0;
@@ -191,7 +196,8 @@ pub(crate) struct StepIn {
 /// The step-aware normal force of one contact in contact (δ > 0), repulsive positive.
 /// `raw(v)` is the law's unclamped force at this overlap with overlap rate v and the damping
 /// already scaled by R; `slot` is the contact's history double (0 fresh, +R, −R flagged);
-/// `r_new` gives R for the impact speed v (called on the first contact step only).
+/// `r_new` gives R for the impact speed v (called at an onset only: a first contact step with
+/// 0 < δ ≤ [`ONSET_A_MAX`]·v·dt; any other first step takes R = 1).
 #[inline(always)]
 pub(crate) fn normal_force(
     x: StepIn,
@@ -200,13 +206,17 @@ pub(crate) fn normal_force(
     raw: impl Fn(f64, f64) -> f64,
 ) -> f64 {
     let first = *slot == 0.0;
+    // An onset: the pair approaches and the overlap is one a drift from outside reaches
+    // (a = δ/(v dt) ≤ 1, with margin). A pair created deeper (inserted overlapping) gets R = 1 and
+    // no onset correction: a ≫ 1 is no onset, and its a^(−β) ζ(−β, 1 + a) term grows with a.
+    let onset = first && x.v > 0.0 && x.d <= ONSET_A_MAX * x.v * x.dt;
     if first {
-        *slot = if x.v > 0.0 { r_new(x.v) } else { 1.0 };
+        *slot = if onset { r_new(x.v) } else { 1.0 };
     }
     let r = slot.abs();
     let flagged = *slot < 0.0;
     let dt = x.dt;
-    let f = if first && x.v > 0.0 {
+    let f = if onset {
         // (B) onset: the dashpot of the first kick.
         let fel = raw(r, 0.0);
         let fdv = raw(r, x.v) - fel;
