@@ -245,8 +245,8 @@
 /**
  * Doubles of history per contact for the largest contact model
  * (dc_contact_history_len gives the exact, usually smaller, figure of one model). A normal law
- * with state (DC_NORMAL_ELASTIC_PLASTIC) adds one double; it has no step-aware form, so its
- * double and the step-aware one never meet and 12 still bounds every model.
+ * with state (DC_NORMAL_ELASTIC_PLASTIC, DC_NORMAL_JKR) adds one double; it has no step-aware
+ * form, so its double and the step-aware one never meet and 12 still bounds every model.
  */
 #define DC_CONTACT_HISTORY_MAX 12
 
@@ -620,8 +620,8 @@ enum dc_status
      */
     DC_ERR_INTEGRATOR = 6135,
     /**
-     * The model's normal law has no step-aware form (viscoelastic, DMT): see
-     * dc_contact_model_set_step.
+     * The model's normal law has no step-aware form (only Tsuji power laws and Hertz have one;
+     * viscoelastic, DMT, elastic-plastic and JKR do not): see dc_contact_model_set_step.
      */
     DC_ERR_STEP_UNSUPPORTED = 6136,
     /**
@@ -1813,17 +1813,22 @@ int32_t dc_contact_model_set_carry(struct dc_contact_model *model, int32_t carry
  * 0.2 % of e_n for dt up to t_H/10 (plain: 16 % low at t_H/20, e_n = 0.1); derivation and
  * measurements: docs/timestep.md. DC_INTEGRATOR_VELOCITY_VERLET (LAMMPS, LIGGGHTS: the force
  * from the new position and the half-step velocity) and DC_INTEGRATOR_SYMPLECTIC_EULER are one
- * map and get the same correction. The history grows by one double (dc_contact_history_len):
- * call this at set-up, before contacts exist, and again when the host changes dt (cheap then:
- * the calibration depends on p, the criterion and e_n only; the first call takes about 20 ms).
- * An undamped normal law (e_n = 1) has nothing to correct and is returned unchanged.
- * Binary collisions are exact; an enduring contact keeps its static overlap (the correction
- * acts on the dashpot only).
+ * map and get the same correction. Making a model step-aware adds one double to its history
+ * (dc_contact_history_len): call this at set-up, before contacts exist. Call it again, on the
+ * step-aware model, whenever the host changes dt: that call keeps the calibration (it depends
+ * on p, the criterion and e_n only, not on dt), stores the new dt and leaves the history length
+ * as it is. The force calls must then be given this same dt: R is calibrated for the dt given
+ * here, while the dt of each force call sets the onset test and the onset and end corrections
+ * (see dc_contact_force). An undamped normal law (e_n = 1) has nothing to correct and is
+ * returned unchanged (not step-aware, the same history length). Binary collisions are exact; an
+ * enduring contact keeps its static overlap (the correction acts on the dashpot only).
  *
  * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_NOT_FINITE (dt),
- *         DC_ERR_NOT_POSITIVE (dt <= 0), DC_ERR_INTEGRATOR, DC_ERR_STEP_UNSUPPORTED (viscoelastic
- *         or DMT normal law), DC_ERR_STEP_UNREACHABLE (the explicit step cannot realise e_n:
- *         strong damping, e_n well below 0.1). `model` is untouched on error.
+ *         DC_ERR_NOT_POSITIVE (dt <= 0), DC_ERR_INTEGRATOR, DC_ERR_STEP_UNSUPPORTED (a normal
+ *         law other than a Tsuji power law or Hertz: viscoelastic, DMT, elastic-plastic, JKR),
+ *         DC_ERR_STEP_UNREACHABLE (the explicit step cannot realise e_n: strong damping, e_n well
+ *         below 0.1), DC_ERR_RESULT_RANGE (dt so small that dt over the t_H prefactor underflows
+ *         to 0, e.g. a subnormal dt such as 5e-324). `model` is untouched on error.
  *
  * # Safety
  * `model` NULL or readable and writable for one dc_contact_model.
@@ -1832,7 +1837,8 @@ int32_t dc_contact_model_set_step(struct dc_contact_model *model, double dt, int
 
 /**
  * The number of doubles of history one contact of this model needs (0 for a normal-only or
- * constant-rolling model of a stateless normal law; at most DC_CONTACT_HISTORY_MAX). Layout
+ * constant-rolling model of a stateless normal law that is not step-aware; at most
+ * DC_CONTACT_HISTORY_MAX). Layout
  * (for inspection only): normal of the last step (3), tangential spring [m] (3;
  * DC_TANGENTIAL_MINDLIN_RESCALE: its force [N] (3) and the last contact radius [m] (1)),
  * rolling spring torque [N m] (3), twisting spring torque [N m] (1), the state of a normal law
@@ -1877,7 +1883,13 @@ int32_t dc_contact_model_reach(const struct dc_contact_model *model,
  *
  * @param model        from dc_contact_model_init.
  * @param state        the two bodies of this contact.
- * @param dt           the host's time step [s], finite > 0.
+ * @param dt           the host's time step [s], finite > 0. For a step-aware model
+ *                     (dc_contact_model_set_step) pass the dt given to set_step: the damping
+ *                     factor R is calibrated for that dt (stored in the model, reserved[0]),
+ *                     while this dt sets the onset test (a = overlap/(vn dt) <= 2) and the onset
+ *                     and end corrections. A different dt is not detected: the force then mixes
+ *                     R for one step with corrections for the other, and the realised e_n is not
+ *                     the calibrated one. When the host's dt changes, call set_step again.
  * @param history      this contact's history: history_len doubles, all zero for a new contact;
  *                     updated in place on success (reset to zero when overlap <= 0). May be NULL
  *                     when the model needs none (dc_contact_history_len = 0).
@@ -1948,6 +1960,8 @@ int32_t dc_contact_force_spheres(const struct dc_contact_model *model,
  * and a contact whose force, torque or history overflowed has NaN outputs and its history
  * untouched (find it by its NaN f_n; the fused batch also returns its index).
  *
+ * @param dt  the host's time step [s], finite > 0, as for dc_contact_force (a step-aware model:
+ *            the dt given to dc_contact_model_set_step).
  * @return DC_OK, DC_ERR_NULL_POINTER (model, batch, a required array),
  *         DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_BUFFER_TOO_SHORT (n = 0, history_stride too small),
  *         DC_ERR_BUFFER_LAYOUT (a misaligned array, n too large, or an output overlapping an input
@@ -1969,10 +1983,14 @@ int32_t dc_contact_force_batch(const struct dc_contact_model *model,
  * overflows (DC_ERR_RESULT_RANGE, as dc_contact_force_batch): the other contacts are
  * still computed (exactly, bit for bit as dc_contact_force_batch), the bad contact's f_n,
  * force and torques are set to NaN and its history is left untouched, and the call returns
- * the status of the first bad contact with its index in *first_bad. Check the status: a
- * returned error always means "some outputs are NaN". Errors of the call itself (NULL, model,
- * buffer sizes or layout, dt) leave everything untouched, as dc_contact_force_batch.
+ * the status of the first bad contact with its index in *first_bad. Errors of the call itself
+ * (NULL, model, buffer sizes or layout, a NaN, infinite or non-positive dt) are found before
+ * any contact is computed and leave everything untouched, as dc_contact_force_batch: then no
+ * output is NaN and *first_bad is not written. DC_ERR_NOT_FINITE and DC_ERR_NOT_POSITIVE can
+ * be either kind; a caller that reads *first_bad on every error presets it (e.g. to SIZE_MAX)
+ * and treats an unchanged value as a call-level error.
  *
+ * @param dt         as for dc_contact_force_batch.
  * @param first_bad  NULL, or receives the index of the first bad contact (written only when a
  *                   per-contact status is returned).
  * @return DC_OK, or the statuses of dc_contact_force_batch: DC_ERR_NOT_FINITE,

@@ -148,9 +148,14 @@ enum class integrator : std::int32_t {
 };
 
 /// `model` made to realise its target e_n at the host's step `dt` in `integ`
-/// (dc_contact_model_set_step), returned as a new model; the argument is unchanged. Its history
-/// is one double longer (contact_history_len). Throws demcontact::error (not_finite,
-/// not_positive, integrator, step_unsupported, step_unreachable, contact_model_invalid).
+/// (dc_contact_model_set_step), returned as a new model; the argument is unchanged. Making a
+/// model step-aware makes its history one double longer (contact_history_len); calling set_step
+/// again on a step-aware model, as a host does when its dt changes, keeps the calibration and
+/// the history length and stores the new dt. An undamped law (e_n = 1) is returned unchanged.
+/// Pass the force calls this same dt (see contact_force). Throws demcontact::error (not_finite,
+/// not_positive, integrator, step_unsupported: a normal law other than a Tsuji power law or
+/// Hertz, i.e. viscoelastic, DMT, elastic-plastic, JKR; step_unreachable; result_range: dt so
+/// small that dt over the t_H prefactor underflows, e.g. 5e-324; contact_model_invalid).
 inline ::dc_contact_model set_step(const ::dc_contact_model& model, double dt,
                                    integrator integ = integrator::velocity_verlet) {
     ::dc_contact_model m = model;
@@ -177,6 +182,10 @@ inline std::size_t contact_history_len(const ::dc_contact_model& model) {
 
 /// One contact (dc_contact_force): `history` is this contact's state (zeros for a new contact),
 /// updated in place. Throws demcontact::error on a non-OK status (history then untouched).
+/// `dt` for a step-aware model (set_step) and in every force call below: the dt given to
+/// set_step. R is calibrated for that dt, while this call's dt sets the onset test and the onset
+/// and end corrections; a different dt is not detected and the realised e_n is then not the
+/// calibrated one. Call set_step again when the host's dt changes.
 inline ::dc_contact_result contact_force(const ::dc_contact_model& model, const ::dc_contact_state& state,
                                          double dt, span<double> history) {
     ::dc_contact_result r{};
@@ -226,8 +235,11 @@ inline void contact_force_batch_checked(const ::dc_contact_model& model, const :
 
 /// n contacts, each input read from memory once (dc_contact_force_batch_fused). Returns the
 /// status: on a per-contact status (not_finite, not_positive, not_unit, result_range) every other contact is
-/// computed, the bad ones' outputs are NaN and `first_bad` is the first bad index; on any other
-/// error nothing is written. noexcept: a non-OK status always needs the caller's attention.
+/// computed, the bad ones' outputs are NaN and `first_bad` is the first bad index; on an error
+/// of the call itself (a NULL array, the model, buffer sizes or layout, a non-finite or
+/// non-positive dt) nothing is written, `first_bad` included. not_finite and not_positive can be
+/// either kind: preset `first_bad` (e.g. to SIZE_MAX) to tell them apart. noexcept: a non-OK
+/// status always needs the caller's attention.
 inline status contact_force_batch_fused(const ::dc_contact_model& model, const ::dc_contact_batch& batch, double dt,
                                         std::size_t& first_bad) noexcept {
     return static_cast<status>(::dc_contact_force_batch_fused(&model, &batch, dt, &first_bad));

@@ -208,7 +208,9 @@ pub fn contact_spec_init() -> ContactSpec {
 #[pyclass(frozen, module = "demcontact", name = "ContactModel")]
 pub struct ContactModel {
     raw: dc_contact_model,
-    /// Doubles of history per contact (0 for a normal-only or constant-rolling model).
+    /// Doubles of history per contact (0 for a normal-only or constant-rolling model of a
+    /// stateless normal law that is not step-aware; set_step and a law with state such as
+    /// elastic-plastic or JKR add one double each).
     #[pyo3(get)]
     history_len: usize,
 }
@@ -309,11 +311,17 @@ impl ContactModel {
     /// This model made to realise its target e_n at the host's step `dt` [s] in the host's
     /// `integrator` (C: dc_contact_model_set_step): Integrator.VELOCITY_VERLET (default; also
     /// the string "velocity_verlet") or Integrator.SYMPLECTIC_EULER ("symplectic_euler"). Returns
-    /// a new ContactModel (this one is immutable); its history_len is one double longer. An
-    /// undamped normal law (e_n = 1) comes back unchanged. Raises NotFiniteError or
-    /// NotPositiveError (dt), IntegratorError (unknown integrator), StepUnsupportedError
-    /// (viscoelastic or DMT normal law), StepUnreachableError (the explicit step cannot realise
-    /// e_n: strong damping at a large step). Call it again with the base model when dt changes.
+    /// a new ContactModel (this one is immutable); making a model step-aware makes its
+    /// history_len one double longer. An undamped normal law (e_n = 1) comes back unchanged.
+    /// When the host's dt changes, call set_step again, on this model or on the step-aware one:
+    /// a step-aware model keeps its calibration (it depends on p, the criterion and e_n only),
+    /// takes the new dt and keeps its history_len. Pass the force calls the same dt: R is
+    /// calibrated for the dt given here, the force call's dt sets the onset and end corrections
+    /// (see contact_force). Raises NotFiniteError or NotPositiveError (dt), IntegratorError
+    /// (unknown integrator), StepUnsupportedError (a normal law other than a Tsuji power law or
+    /// Hertz: viscoelastic, DMT, elastic-plastic, JKR), StepUnreachableError (the explicit step
+    /// cannot realise e_n: strong damping at a large step), ResultRangeError (dt so small that
+    /// dt over the t_H prefactor underflows, e.g. 5e-324).
     #[pyo3(signature = (dt, integrator = None))]
     fn set_step(
         slf: &Bound<'_, Self>,
@@ -673,9 +681,11 @@ fn describe_state(s: &dc_contact_state) -> String {
 /// n: unit normal from body 2 to body 1; overlap [m] (> 0 in contact; <= 0 resets the history);
 /// v1, v2, w1, w2: centre and angular velocities (3-vectors); r1, r2 radii [m] and m1, m2
 /// masses [kg] (a wall: r2 = m2 = math.inf, v2 its velocity at the contact point, w2 its
-/// angular velocity); dt the host's time step [s]. history: this contact's numpy float64 array
-/// (at least model.history_len doubles, zeros for a new contact), updated in place on success;
-/// None only for a model without history. On error nothing is written.
+/// angular velocity); dt the host's time step [s] (a step-aware model: the dt given to set_step;
+/// R is calibrated for that dt and this dt sets the onset and end corrections, a mismatch is not
+/// detected and the realised e_n is then not the calibrated one). history: this contact's numpy
+/// float64 array (at least model.history_len doubles, zeros for a new contact), updated in place
+/// on success; None only for a model without history. On error nothing is written.
 #[pyfunction]
 #[pyo3(signature = (model, n, overlap, v1, v2, w1, w2, r1, r2, m1, m2, dt, history=None))]
 #[allow(clippy::too_many_arguments)]
@@ -968,6 +978,8 @@ impl Job {
 /// whose result overflows, e.g. an overlap of 1e300 m): every other contact is computed and its
 /// history advanced, and the overflowing contacts get NaN outputs (in `out`, if given) and keep
 /// their history; the error names the first one. An empty batch (n = 0) returns empty arrays.
+/// dt: the host's time step [s], as for contact_force (a step-aware model: the dt given to
+/// set_step).
 #[pyfunction]
 #[pyo3(signature = (model, normal, overlap, v1, v2, w1, w2, r1, r2, m1, m2, dt, history=None, *, out=None))]
 #[allow(clippy::too_many_arguments)]
