@@ -1,14 +1,15 @@
 //! The step-aware contact model (`dc_contact_model_set_step`) realises the target e_n at the
 //! host's step: sphere–wall collisions through the library's `contact_force`, velocity Verlet in
 //! the LAMMPS order and symplectic Euler, 64 contact-onset phases, Hertz, p = 1 and p = 2, both
-//! criteria, impact speeds over three decades, dt = t_H/10, /20, /50 with t_H the elastic
+//! criteria, impact speeds over three decades, dt = t_H/10, /20, /50, /100 with t_H the elastic
 //! contact duration at the impact speed, computed here by RK4 integration of the elastic
 //! contact (independent of the library's closed form).
 //!
-//! Claims (docs/timestep.md): mean over phases within 0.2 % of e_n at t_H/20 and t_H/10 (plain:
-//! up to 16 % and 33 % low); worst phase ≤ 1.5 % at t_H/20, ≤ 0.25 % at t_H/50, ≤ 0.06 % at
-//! t_H/100. Enduring contacts: a sphere resting on a wall and a column of spheres settling under
-//! gravity keep their static overlaps with the option on.
+//! Asserted (docs/timestep.md): mean over phases within 0.2 % of e_n at t_H/10 and t_H/20,
+//! 0.1 % at t_H/50, 0.05 % at t_H/100; worst phase ≤ 25 % at t_H/10, ≤ 1.5 % at t_H/20,
+//! ≤ 0.25 % at t_H/50, ≤ 0.06 % at t_H/100; the plain model's mean at t_H/20 more than 10 % off
+//! somewhere. Enduring contacts: a column of spheres settling under gravity on a wall keeps its
+//! static overlaps (relative 1e-6) and comes to rest (below 1e-6 m/s), plain and step-aware.
 
 #[path = "../examples/step_exact/harness.rs"]
 mod harness;
@@ -145,9 +146,9 @@ fn settle(
 
 #[test]
 fn enduring_contacts_keep_their_static_overlaps() {
-    // Hertz, both criteria, e_n 0.1 and 0.5: a column of 10 spheres (the lowest one a sphere on a
-    // wall, i.e. the resting sphere of the issue) settles; the static overlap of contact i carries
-    // the weight of the n − i spheres above: δ = ((n − i) m g / k)^(2/3), k = (4/3) E* √R*.
+    // Hertz, both criteria, e_n 0.1 and 0.5: a column of 10 spheres (the lowest one resting on a
+    // wall) settles; the static overlap of contact i carries the weight of the n − i spheres
+    // above: δ = ((n − i) m g / k)^(2/3), k = (4/3) E* √R*.
     let n = 10;
     for crit in [0, 1] {
         for e in [0.1, 0.5] {
@@ -591,9 +592,9 @@ fn tangential_damping_alone_can_correct_e_t() {
 
 /// A pair whose first contact step is no onset (created overlapping: a = δ/(v dt) ≫ 1, or
 /// receding) takes R = 1 and no onset correction: its force is the plain model's (relative
-/// 1e-12) and its step slot holds 1. A true onset (a = 1/2) does get the correction. Linear,
-/// Hertz and p = 2, both criteria, e_n 0.1; a = 1e4 at 1e-3 m/s (once 1.8e2 N against the
-/// plain 20 N for the linear law).
+/// 1e-12) and its step slot holds 1. A true onset (a = 1/2 and a = 3/2, both ≤ ONSET_A_MAX = 2)
+/// does get the correction. Linear, Hertz and p = 2, both criteria, e_n 0.1; a = 1e4 at
+/// 1e-3 m/s.
 #[test]
 fn a_pair_created_overlapping_gets_no_onset_kick() {
     use demcontact::contact::{ContactState, contact_force};

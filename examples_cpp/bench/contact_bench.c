@@ -1,6 +1,6 @@
 /* Full-contact benchmark: dc_contact_force_batch (normal only, + Mindlin tangential, + EPSD
  * rolling), called from C through the ABI, against hand-written C loops of the same formulas
- * (contact_baseline.c, -O3 and -O3 -fno-math-errno) and against today's normal-force path
+ * (contact_baseline.c, -O3 and -O3 -fno-math-errno) and against the normal-force-only path
  * (host computes vn, R*, m* + dc_normal_force_batch + host forms F n), all in the same run; and
  * the step-aware models (dc_contact_model_set_step at the run's dt, velocity Verlet) against the
  * plain ones, batch and per contact, normal-only and Mindlin, each on its own histories laid out
