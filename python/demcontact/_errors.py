@@ -149,7 +149,8 @@ class IntegratorError(InputError):
 
 
 class StepUnsupportedError(InputError):
-    """ContactModel.set_step on a normal law with no step-aware form (viscoelastic, DMT; 6136)."""
+    """ContactModel.set_step on a normal law with no step-aware form (viscoelastic, DMT,
+    elastic-plastic, JKR; 6136)."""
 
     status = 6136
 
