@@ -290,6 +290,8 @@ static int deferred_step(const dc_contact_model *m, const dc_contact_state *s, d
  * speed), first contact steps without it (inserted overlapping or receding: R = 1), end
  * corrections fired */
 static long n_step_steps = 0, n_step_onsets = 0, n_step_deep = 0, n_step_ends = 0;
+/* bad-input cases with the step fields set on a law with state */
+static long n_step_fields_state = 0;
 /* elastic-plastic steps in contact, and those on the unloading/reloading curve after yield */
 static long n_ep_steps = 0, n_ep_unload = 0;
 /* JKR steps with the neck formed at overlap <= 0, and steps on which the neck broke */
@@ -431,7 +433,7 @@ static void bad_inputs(const dc_contact_model *m) {
     double hbuf[DC_CONTACT_HISTORY_MAX + 1] = {0};
     const double dt = 1e-6;
     /* each case: (model, state, dt, history, len) */
-    for (int c = 0; c < 53; c++) {
+    for (int c = 0; c < 54; c++) {
         dc_contact_model mm = *m;
         dc_contact_state ss = s;
         double hist[DC_CONTACT_HISTORY_MAX + 1];
@@ -509,6 +511,15 @@ static void bad_inputs(const dc_contact_model *m) {
          * fast with a tiny overlap (|trial force|^2 = inf, so F_t = 0; the spring kept with the
          * damping, -(F_t + c_t v_t)/k_t, beyond 1e308): DC_ERR_RESULT_RANGE from the history */
         case 52: ss.m1 = ss.m2 = 1e10; ss.overlap = 1e-18; ss.v1[0] = 1e303; break;
+        /* the step fields set on a model that is not yet step-aware: valid for a damped Tsuji
+         * law (R = 1), invalid for a law with state (elastic-plastic, JKR) and for the others */
+        case 53:
+            if (dci_bits(mm.reserved[0]) == 0) {
+                mm.reserved[0] = 1e-9;
+                mm.history_len += 1;
+                n_step_fields_state += dci_has_state(mm.normal.kernel);
+            }
+            break;
         default: len = 0; break;
         }
         double hl[DC_CONTACT_HISTORY_MAX + 1], hi2[DC_CONTACT_HISTORY_MAX + 1];
@@ -871,7 +882,7 @@ int main(int argc, char **argv) {
     /* the comparison must have exercised every regime */
     if (!(seen[1] > 1000 && seen[2] > 1000 && seen[3] > 1000 && seen[4] > 1000 && seen[6] > 1000 &&
           seen[7] > 1000 && specs_bad > 1000 && projected * 4 > models &&
-          n_step_steps > 1000 && n_step_onsets > 10 && n_step_deep > 10 && n_step_ends > 10 && n_ep_unload > 1000 &&
+          n_step_steps > 1000 && n_step_onsets > 10 && n_step_deep > 10 && n_step_ends > 10 && n_step_fields_state > 0 && n_ep_unload > 1000 &&
           n_jkr_neck > 1000 && n_jkr_break > 100 &&
           n_shaped_const * 10 > n_shaped_runtime && n_shaped_runtime > 1000 &&
           n_deferred * 2 > seen[0] && n_deferred_bad[0] > 0 && n_deferred_bad[1] > 0 &&
