@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Checks too long for every CI run (scripts/test.sh), for a release or after a change to the CMake
-# graph: more clean parallel CMake builds in a row than CI's one. CI runs one clean -j4 build
-# (step parallel_builds) after its own clean -j2 build (step cmake_build); a race between targets
-# that fails a given build with probability p is caught by one CI run with probability about
-# 1 - (1 - p)^2, by this script with 1 - (1 - p)^(N + 1). Exits non-zero at the first failure.
+# graph: more clean parallel CMake builds in a row than CI's one. CI's build (step cmake_build) is
+# one clean -j4 build on a fresh clone; a race between targets that fails a given build with
+# probability p is caught by one CI run with probability p, by this script with
+# 1 - (1 - p)^N. Exits non-zero at the first failure.
 #
 #   scripts/long_checks.sh [N]     (default N = 5 clean builds, -j4)
 # Environment: as scripts/parallel_builds.sh (DC_PB_DIR, DC_PB_CARGO_DIR).

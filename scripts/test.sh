@@ -60,9 +60,11 @@ step report env DC_REPORT_DIR="$(mktemp -d)" cargo run --profile ci --locked --e
 # Benchmarks are measured by `cargo bench`; here they only have to run (a few samples each).
 step bench_smoke bash -c 'cargo bench --profile ci --locked --benches -- --sample-count 3 --sample-size 1 >/dev/null'
 # The shipped library (release profile, thin LTO) is built once, into target/release: CMake's
-# cargo step, the Python tests' C reference and the clean parallel builds below all use it.
+# cargo step, the Python tests' C reference and scripts/parallel_builds.sh all use it.
 step cmake_configure bash -c 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDEMCONTACT_CARGO_TARGET_DIR="$PWD/target" -DDEMCONTACT_CUDA_VENV="${DC_CUDA_VENV:-$PWD/.venv-cuda}" >/dev/null'
-step cmake_build cmake --build build -j2
+# -j4 on a fresh clone: a clean parallel build, where a missing dependency between targets shows
+# as a race (more clean builds in a row: scripts/parallel_builds.sh, scripts/long_checks.sh).
+step cmake_build cmake --build build -j4
 step ctest bash -c 'set -o pipefail; ctest --test-dir build --output-on-failure -j2 2>&1 | tee build-ctest.log'
 # ctest tests that cannot run here exit 77 (SKIP_RETURN_CODE): collect their names and reasons.
 step ctest_skips bash -c 'scripts/ctest_skips.sh build build-ctest.log >>"$DC_SKIP_LOG"'
@@ -74,10 +76,6 @@ step fuzz_selftest scripts/fuzz_selftest.sh
 step python scripts/test_python.sh
 # The step-aware calibration study (docs/timestep.md): its self-check on the Hertz subset.
 step step_exact_study bash -c '.venv-python/bin/python -m pip install -q scipy mpmath && .venv-python/bin/python scripts/step_exact_study.py --quick --check'
-# A clean parallel CMake build at -j4 (a race between targets fails it). With cmake_build above
-# (itself a clean -j2 build on a fresh clone) that makes two clean parallel builds per run; more
-# in a row: scripts/long_checks.sh.
-step parallel_builds env DC_PB_CARGO_DIR="$PWD/target" scripts/parallel_builds.sh 1
 step_table
 echo "== skipped steps =="
 if [ -s "$DC_SKIP_LOG" ]; then
