@@ -344,7 +344,8 @@ int main(int argc, char **argv) {
                 }
         }
         /* The step-aware batch and per-contact paths: the same bits over 3 steps from zero
-         * history (the first step is every contact's onset), each on its own histories. */
+         * history (the first step is every contact's first: deep random overlaps, which take
+         * R = 1 and no onset correction), each on its own histories. */
         for (int k = 0; k < 2; k++) {
             double *hb = calloc(STEP_LEN[k] * n, sizeof(double)), *hs = calloc(STEP_LEN[k] * n, sizeof(double));
             double *fb = malloc(3 * n * sizeof(double));
@@ -365,9 +366,19 @@ int main(int argc, char **argv) {
                     return 1;
                 }
             }
-            /* the step-aware model acts: its onset force differs from the plain model's */
+            /* the step-aware model acts: its onset force differs from the plain model's, with
+             * each approaching contact at an overlap a drift reaches (a = overlap/(vn dt) = 1/2,
+             * an onset; the random overlaps are far deeper) */
+            double *onset_ov = malloc(n * sizeof(double));
+            if (!onset_ov) return 1;
+            for (size_t i = 0; i < n; i++) {
+                const double *e = a.nv + 3 * i, *x = a.v1 + 3 * i, *y = a.v2 + 3 * i;
+                const double vn = (y[0] - x[0]) * e[0] + (y[1] - x[1]) * e[1] + (y[2] - x[2]) * e[2];
+                onset_ov[i] = vn > 0.0 ? 0.5 * vn * P.dt : a.ov[i];
+            }
             arrays d = a;
             d.n = n;
+            d.ov = onset_ov;
             memset(hb, 0, STEP_LEN[k] * n * sizeof(double));
             STEP_HIST[k] = hb;
             run(k == 0 ? NS_BATCH : TS_BATCH, &d);
@@ -379,6 +390,7 @@ int main(int argc, char **argv) {
                 return 1;
             }
             STEP_HIST[k] = keep;
+            free(onset_ov);
             free(hb);
             free(hs);
             free(fb);
