@@ -298,7 +298,8 @@ proptest! {
     }
 
     /// set_step with any dt and integrator on a step-aware model: accepted exactly for a finite
-    /// dt > 0 and a known integrator (the calibration kept), otherwise refused with the model
+    /// dt > 0 and a known integrator (the calibration kept), except a dt so small that dt over
+    /// the t_H prefactor underflows to 0 (DC_ERR_RESULT_RANGE); otherwise refused with the model
     /// untouched and a documented status.
     #[test]
     fn set_step_any_bits(dt in any_f64(), integrator in -2i32..4, crit in 0i32..2) {
@@ -315,7 +316,10 @@ proptest! {
         let s = unsafe { dc_contact_model_set_step(&mut m, dt, integrator) };
         prop_assert!(known(s));
         let valid = dt.is_finite() && dt > 0.0 && (integrator == 0 || integrator == 1);
-        if valid {
+        if valid && s == DC_ERR_RESULT_RANGE {
+            prop_assert!(dt < 1e-300, "DC_ERR_RESULT_RANGE at dt {dt:e}");
+            prop_assert!(bytes(&m) == bytes(&base), "refused set_step touched the model");
+        } else if valid {
             prop_assert_eq!(s, DC_OK);
             prop_assert_eq!(m.history_len, base.history_len);
             prop_assert!(m.reserved[0] > 0.0);

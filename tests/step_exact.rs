@@ -640,3 +640,23 @@ fn a_pair_created_overlapping_gets_no_onset_kick() {
         }
     }
 }
+
+/// A dt so small that dt over the t_H prefactor underflows to 0 (a subnormal dt) is refused with
+/// DC_ERR_RESULT_RANGE (`Error::ResultRange`), on a plain model and on a step-aware one; the
+/// smallest normal dt is accepted.
+#[test]
+fn subnormal_dt_is_a_range_error() {
+    use demcontact::Error;
+    for law in [Law::Hertz, Law::Linear, Law::P2] {
+        let plain = contact_model(&spec(law, 0.5, 0)).unwrap();
+        let stepped = set_step(&plain, 1e-6, 0).unwrap();
+        for m in [&plain, &stepped] {
+            assert!(
+                matches!(set_step(m, 5e-324, 0), Err(Error::ResultRange)),
+                "{law:?}"
+            );
+        }
+        let ok = set_step(&stepped, f64::MIN_POSITIVE, 1).unwrap();
+        assert!(ok.step.scale > 0.0, "{law:?}");
+    }
+}
