@@ -3,7 +3,7 @@
 //! histories in their steady state (every contact past its onset: the step slot holds R), a few
 //! contacts per step at onset (fresh history) as in a host where a contact lasts ~20 steps; the
 //! set-up of those histories is timed in both variants. The fresh contacts' random overlaps put
-//! a = δ₁/(v dt) above 2 at most approaching contacts (median 15): first steps too deep for an
+//! a = δ₁/(v dt) above 2 at most approaching contacts: first steps too deep for an
 //! onset (a pair created overlapping), which take R = 1 and no correction. `*_physical`: the same
 //! with the onset overlaps a drift gives (δ₁ ≤ v dt), every approaching fresh contact at onset.
 //! Divan reports items/s; the ratio step-aware / plain is the cost of the option.
@@ -198,7 +198,7 @@ fn hertz_mindlin_step_aware_enduring(b: Bencher) {
 }
 
 /// Physical onsets (δ₁ ≤ v dt, as a drift gives them: a ≤ 1) in place of the random overlaps
-/// of the benches above (there a = δ₁/(v dt) > 1 at all but one, median 15): the same batch
+/// of the benches above (there mostly far deeper than a drift reaches): the same batch
 /// otherwise.
 #[divan::bench]
 fn hertz_plain_physical(b: Bencher) {

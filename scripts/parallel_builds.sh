@@ -10,8 +10,8 @@
 #
 #   scripts/parallel_builds.sh [N] [JOBS]     (default N = 3, JOBS = 4)
 # Environment: DC_PB_DIR (scratch directory, default build-parallel) is removed at the start;
-# DC_PB_CARGO_DIR (cargo target directory, default DC_PB_DIR/cargo; scripts/test.sh passes the
-# repository's target/, where the release library is already built) is kept.
+# DC_PB_CARGO_DIR (cargo target directory, default DC_PB_DIR/cargo; pass the repository's
+# target/ to reuse its release library) is kept.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 n="${1:-3}"
