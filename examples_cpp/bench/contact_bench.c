@@ -48,6 +48,12 @@ typedef struct {
     double *nv, *ov, *v1, *v2, *w1, *w2, *r1, *r2, *m1, *m2, *hist, *f_n, *force, *t1, *t2, *vn, *reff, *meff;
 } arrays;
 
+/* Contact i's overlap rate as the library computes it ((v2 - v1) . n, > 0 approaching). */
+static double overlap_rate(const arrays *a, size_t i) {
+    const double *e = a->nv + 3 * i, *x = a->v1 + 3 * i, *y = a->v2 + 3 * i;
+    return (y[0] - x[0]) * e[0] + (y[1] - x[1]) * e[1] + (y[2] - x[2]) * e[2];
+}
+
 enum {
     N_C_PLAIN,
     N_C_FAST,
@@ -129,8 +135,7 @@ static void run(int var, const arrays *a) {
     case N_C_FAST: normal_loop_fast(n, &P, a->nv, a->ov, a->v1, a->v2, a->r1, a->r2, a->m1, a->m2, a->f_n, a->force); break;
     case N_TODAY:
         for (size_t i = 0; i < n; i++) {
-            const double *e = a->nv + 3 * i, *x = a->v1 + 3 * i, *y = a->v2 + 3 * i;
-            a->vn[i] = (y[0] - x[0]) * e[0] + (y[1] - x[1]) * e[1] + (y[2] - x[2]) * e[2];
+            a->vn[i] = overlap_rate(a, i);
             a->reff[i] = 1.0 / (1.0 / a->r1[i] + 1.0 / a->r2[i]);
             a->meff[i] = 1.0 / (1.0 / a->m1[i] + 1.0 / a->m2[i]);
         }
@@ -143,8 +148,8 @@ static void run(int var, const arrays *a) {
         break;
     case N_SCALAR_TODAY:
         for (size_t i = 0; i < n; i++) {
-            const double *e = a->nv + 3 * i, *x = a->v1 + 3 * i, *y = a->v2 + 3 * i;
-            double vn = (y[0] - x[0]) * e[0] + (y[1] - x[1]) * e[1] + (y[2] - x[2]) * e[2];
+            const double *e = a->nv + 3 * i;
+            double vn = overlap_rate(a, i);
             double reff = 1.0 / (1.0 / a->r1[i] + 1.0 / a->r2[i]);
             double meff = 1.0 / (1.0 / a->m1[i] + 1.0 / a->m2[i]);
             double f = dc_normal_force(&MODELS[0]->normal, a->ov[i], vn, reff, meff);
@@ -372,8 +377,7 @@ int main(int argc, char **argv) {
             double *onset_ov = malloc(n * sizeof(double));
             if (!onset_ov) return 1;
             for (size_t i = 0; i < n; i++) {
-                const double *e = a.nv + 3 * i, *x = a.v1 + 3 * i, *y = a.v2 + 3 * i;
-                const double vn = (y[0] - x[0]) * e[0] + (y[1] - x[1]) * e[1] + (y[2] - x[2]) * e[2];
+                const double vn = overlap_rate(&a, i);
                 onset_ov[i] = vn > 0.0 ? 0.5 * vn * P.dt : a.ov[i];
             }
             arrays d = a;
