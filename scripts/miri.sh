@@ -29,11 +29,32 @@ done
 # Deterministic floats: Miri otherwise perturbs libm results by a few ulps on purpose, which
 # breaks the bit-for-bit comparisons (batch vs scalar) that the contract tests make.
 export MIRIFLAGS="${MIRIFLAGS:--Zmiri-strict-provenance -Zmiri-deterministic-floats}"
+# Both groups must exist: an empty one would run every test file (cargo test with no --test).
+if [ ${#group_a[@]} = 0 ] || [ ${#group_b[@]} = 0 ]; then
+  echo "miri: a group is empty (a: ${group_a[*]:-none}; b: ${group_b[*]:-none})" >&2
+  exit 1
+fi
 miri=(cargo +nightly miri test --locked --target-dir target/miri)
 # Build once (cargo holds its build lock while compiling, not while the tests run).
 "${miri[@]}" --no-run "${all[@]}"
 "${miri[@]}" --no-run --lib
 log_a=$(mktemp) log_b=$(mktemp)
+pid_a='' pid_b=''
+# Killed or interrupted: stop both groups and print what they had written.
+on_signal() {
+  local p
+  for p in $pid_a $pid_b; do
+    pkill -TERM -P "$p" 2>/dev/null || true
+    kill "$p" 2>/dev/null || true
+  done
+  echo "== miri interrupted; group a so far:"
+  cat "$log_a"
+  echo "== group b so far:"
+  cat "$log_b"
+  rm -f "$log_a" "$log_b"
+  exit 130
+}
+trap on_signal INT TERM
 { "${miri[@]}" "${group_a[@]}" && "${miri[@]}" --lib ffi::; } >"$log_a" 2>&1 &
 pid_a=$!
 "${miri[@]}" "${group_b[@]}" >"$log_b" 2>&1 &

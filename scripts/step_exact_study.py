@@ -283,13 +283,16 @@ def kernel_force(hist, p, m, k, alpha, crit, e, dt, tab, d, v):
         return 0.0
     beta = (p - 1) / 2
     first = not hist
+    # An onset: approaching, at an overlap one drift from outside reaches (a = d/(v dt) <= 2, the
+    # library's ONSET_A_MAX); any other first step (a pair created overlapping) takes R = 1.
+    onset = first and v > 0 and d <= 2.0 * v * dt
     if first:  # fresh history: store v_imp and alpha_step (A)
         hist["vimp"], hist["ended"] = v, False
-        r = r_of(tab, E_NODES, N_NODES, p, crit, e, dt / t_hertz(p, m, k, v)) if v > 0 else 1.0
+        r = r_of(tab, E_NODES, N_NODES, p, crit, e, dt / t_hertz(p, m, k, v)) if onset else 1.0
         hist["alpha"] = alpha * r
     c0 = hist["alpha"] * math.sqrt(m * k)
     fel = k * d**p
-    if first and v > 0:  # (B) onset
+    if onset:  # (B) onset
         fd = -c0 * v * (v * dt) ** beta * hurwitz_em(beta, 1 + d / (v * dt))
     else:
         fd = c0 * d**beta * v

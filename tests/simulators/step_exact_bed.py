@@ -198,6 +198,7 @@ def bed(a, exe, workdir):
     print()
     bad = []
     p, s = res["plain"], res["step_exact"]
+    print("step_exact / plain after settling: mean overlap %.4f, largest %.4f" % (s["mean"] / p["mean"], s["max"] / p["max"]))
     if abs(s["mean"] / p["mean"] - 1) > 0.02:
         bad.append("mean overlap step_exact/plain = %.4f" % (s["mean"] / p["mean"]))
     if abs(s["max"] / p["max"] - 1) > 0.10:
