@@ -431,48 +431,30 @@ fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOu
         let mut mask = [1u64; STEP_CHUNK];
         let mask = mask.get_mut(..e - a).unwrap_or(&mut []);
         // The history doubles gathered first (a strided load in the steady loop would keep it
-        // from vectorising).
-        let mut slots = [0.0f64; STEP_CHUNK];
-        if co.stride == 1 {
-            // Records of one double back to back: one copy.
-            if let (Some(s), Some(h)) = (slots.get_mut(..e - a), co.history.get(..e - a)) {
-                s.copy_from_slice(h);
-            }
-        } else {
-            let held = co
-                .history
-                .get(at..)
-                .unwrap_or(&[])
-                .iter()
-                .step_by(co.stride);
-            for (s, &x) in slots.iter_mut().zip(held) {
-                *s = x;
+        // from vectorising); records of one double back to back are read in place.
+        let (c, f_n, force) = (m.normal.consts, &mut *co.f_n, &mut *co.force);
+        let overlap = m.normal.criterion == EndCriterion::Overlap;
+        match co.history.get(..e - a).filter(|_| co.stride == 1) {
+            Some(slots) => steady::<L>(overlap, c, &ci, dt, f_n, force, slots, mask),
+            None => {
+                let mut gathered = [0.0f64; STEP_CHUNK];
+                let held = co
+                    .history
+                    .get(at..)
+                    .unwrap_or(&[])
+                    .iter()
+                    .step_by(co.stride);
+                for (s, &x) in gathered.iter_mut().zip(held) {
+                    *s = x;
+                }
+                let slots = gathered.get(..e - a).unwrap_or(&[]);
+                steady::<L>(overlap, c, &ci, dt, f_n, force, slots, mask);
             }
         }
-        let slots = slots.get(..e - a).unwrap_or(&[]);
-        let (c, f_n, force) = (m.normal.consts, &mut *co.f_n, &mut *co.force);
-        if m.normal.criterion == EndCriterion::Overlap {
-            vectorised(StepSteady::<L, true> {
-                consts: c,
-                b: &ci,
-                dt,
-                f_n,
-                force,
-                slots,
-                mask,
-                law: PhantomData,
-            });
-        } else {
-            vectorised(StepSteady::<L, false> {
-                consts: c,
-                b: &ci,
-                dt,
-                f_n,
-                force,
-                slots,
-                mask,
-                law: PhantomData,
-            });
+        // No contact marked (a settled bed's every chunk): nothing for the exact path.
+        if mask.iter().fold(0, |acc, &mk| acc | mk) == 0 {
+            a = e;
+            continue;
         }
         // The marked contacts' indices, gathered without a branch per contact (a loop that
         // tests each mask entry mispredicts at every marked contact); groups of 8 contacts
@@ -494,6 +476,45 @@ fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOu
         let idx = idx.get(..cnt).unwrap_or(&[]);
         step_exact_path::<L>(m, &ci, dt, &mut co, at, 0, Some(idx));
         a = e;
+    }
+}
+
+/// [`StepSteady`] for the model's end criterion (`overlap`: DC_END_OVERLAP), through
+/// [`vectorised`].
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn steady<L: Law>(
+    overlap: bool,
+    consts: Consts,
+    b: &BatchIn<'_>,
+    dt: f64,
+    f_n: &mut [f64],
+    force: &mut [[f64; 3]],
+    slots: &[f64],
+    mask: &mut [u64],
+) {
+    if overlap {
+        vectorised(StepSteady::<L, true> {
+            consts,
+            b,
+            dt,
+            f_n,
+            force,
+            slots,
+            mask,
+            law: PhantomData,
+        });
+    } else {
+        vectorised(StepSteady::<L, false> {
+            consts,
+            b,
+            dt,
+            f_n,
+            force,
+            slots,
+            mask,
+            law: PhantomData,
+        });
     }
 }
 
@@ -669,9 +690,16 @@ fn frame_pass(m: &ContactModel, b: &BatchIn<'_>, o: &mut BatchOut<'_>) {
     }
     if len == 1 && !m.layout.has_normal() && m.layout.normal_state.is_none() {
         // One value per contact (a step-aware normal-only model): zeroed where separated, by
-        // a branch-free select (the same values as the general loop below).
-        for (h, &d) in o.history.iter_mut().step_by(o.stride).zip(b.overlap) {
-            *h = if d > 0.0 { *h } else { 0.0 };
+        // a branch-free select (the same values as the general loop below); records back to
+        // back by a contiguous loop, which vectorises (a strided one does not).
+        if o.stride == 1 {
+            for (h, &d) in o.history.iter_mut().zip(b.overlap) {
+                *h = if d > 0.0 { *h } else { 0.0 };
+            }
+        } else {
+            for (h, &d) in o.history.iter_mut().step_by(o.stride).zip(b.overlap) {
+                *h = if d > 0.0 { *h } else { 0.0 };
+            }
         }
         return;
     }
