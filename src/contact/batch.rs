@@ -451,11 +451,6 @@ fn step_pass<L: Law>(m: &ContactModel, b: &BatchIn<'_>, dt: f64, o: &mut BatchOu
                 steady::<L>(overlap, c, &ci, dt, f_n, force, slots, mask);
             }
         }
-        // No contact marked (a settled bed's every chunk): nothing for the exact path.
-        if mask.iter().fold(0, |acc, &mk| acc | mk) == 0 {
-            a = e;
-            continue;
-        }
         // The marked contacts' indices, gathered without a branch per contact (a loop that
         // tests each mask entry mispredicts at every marked contact); groups of 8 contacts
         // with none marked (every group of a settled bed) are skipped whole.
