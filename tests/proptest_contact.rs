@@ -230,13 +230,28 @@ proptest! {
     }
 
     #[test]
-    fn limits_hold_and_batch_equals_scalar(c in choice_valid(), mu in 0.0f64..2.0, e in 0.05f64..1.0, sts in prop::collection::vec(state_valid(), 1..6), steps in 1usize..6, step_aware in prop::bool::weighted(0.1)) {
+    fn limits_hold_and_batch_equals_scalar(c in choice_valid(), mu in 0.0f64..2.0, e in 0.05f64..1.0, sts in prop::collection::vec(state_valid(), 1..6), steps in 1usize..6, step_aware in prop::bool::weighted(0.1), onset in prop::option::weighted(0.5, 0.05f64..2.0)) {
         let mut m = model_valid(c, mu, e);
+        let mut sts = sts;
+        let mut at_onset = false;
         if step_aware {
             // Step-aware where the law has the form (else refused with the model untouched).
             let m0 = m;
             let s = unsafe { dc_contact_model_set_step(&mut m, 1e-7, DC_INTEGRATOR_VELOCITY_VERLET) };
             prop_assert!(s == DC_OK || bytes(&m) == bytes(&m0), "refused set_step touched the model");
+            at_onset = s == DC_OK && onset.is_some();
+            // Half the step-aware cases start each approaching contact at the overlap a drift
+            // reaches, δ = a·v·dt with a in (0, 2]: a true onset at the first step (the random
+            // overlaps above are mostly far deeper, first steps that take no onset correction).
+            if let Some(a) = onset {
+                for st in sts.iter_mut() {
+                    let vn = -((st.v1[0] - st.v2[0]) * st.n[0] + (st.v1[1] - st.v2[1]) * st.n[1] + (st.v1[2] - st.v2[2]) * st.n[2]);
+                    let d = a * vn * 1e-7;
+                    if vn > 0.0 && d.is_normal() {
+                        st.overlap = d;
+                    }
+                }
+            }
         }
         let nc = sts.len();
         let stride = DC_CONTACT_HISTORY_MAX;
@@ -293,6 +308,8 @@ proptest! {
             if !any_over {
                 prop_assert_eq!(sb, DC_OK);
             }
+            // The onset correction of a valid state is finite (no overflow to report).
+            prop_assert!(!(any_over && at_onset), "a step-aware contact overflowed at its onset");
             prop_assert!(hs.iter().zip(&hb).all(|(a, b)| a.to_bits() == b.to_bits()));
         }
     }
