@@ -21,13 +21,19 @@ add_executable(test_inline_contact_fma c_tests/inline/test_inline_contact.c)
 target_compile_definitions(test_inline_contact_fma PRIVATE DC_TEST_CONTRACTED)
 target_compile_options(test_inline_contact_fma PRIVATE -std=gnu11 -O3 -march=native
                                                        -ffp-contract=fast -Wall -Wextra -Werror)
+# DEMCONTACT_INLINE_PLAIN_PRODUCTS (plain products, no per-product barrier) in a build with
+# contraction off and FMA available: the library's bits (the plugins build this way).
+add_executable(test_inline_contact_plain c_tests/inline/test_inline_contact.c)
+target_compile_definitions(test_inline_contact_plain PRIVATE DEMCONTACT_INLINE_PLAIN_PRODUCTS)
+target_compile_options(test_inline_contact_plain PRIVATE -std=gnu11 -O3 -march=native
+                                                         -ffp-contract=off -Wall -Wextra -Werror)
 # The plugins' choice of the shaped entry (plugins/common/demcontact_shaped.h): the right
 # instantiation per model shape, the library's bits along trajectories.
 add_executable(test_shaped_pick c_tests/inline/test_shaped_pick.cpp)
 target_include_directories(test_shaped_pick PRIVATE plugins/common)
 target_compile_options(test_shaped_pick PRIVATE -std=c++17 -Wall -Wextra -Werror -O2)
 foreach(t test_inline_c test_inline_cpp test_inline_fma test_inline_contact_c
-          test_inline_contact_cpp test_inline_contact_fma test_shaped_pick)
+          test_inline_contact_cpp test_inline_contact_fma test_inline_contact_plain test_shaped_pick)
   target_link_libraries(${t} PRIVATE demcontact::demcontact ${DC_LIBM})
 endforeach()
 add_test(NAME inline_c COMMAND test_inline_c 10000000)
@@ -36,6 +42,7 @@ add_test(NAME inline_fma COMMAND test_inline_fma 2000000)
 add_test(NAME inline_contact_c COMMAND test_inline_contact_c 10000000)
 add_test(NAME inline_contact_cpp COMMAND test_inline_contact_cpp 10000000)
 add_test(NAME inline_contact_fma COMMAND test_inline_contact_fma 2000000)
+add_test(NAME inline_contact_plain COMMAND test_inline_contact_plain 2000000)
 add_test(NAME inline_shaped_pick COMMAND test_shaped_pick 20000)
 # The LIGGGHTS plugin's per-pass scan of atom arrays (plugins/common/scan_bad_values.h): each
 # variant this CPU runs (baseline, AVX2) against std::isfinite and > 0.
