@@ -3,8 +3,9 @@
  * history; 2: the spheres helper with fuzzed centres; 3: the batch of 2 contacts (checked or
  * fused) with fuzzed arrays, history stride and NULL masks; 4: arbitrary bytes as a
  * dc_contact_model; 5: dc_contact_model_set_step with a fuzzed dt and integrator on a
- * step-aware model (cases 1-3 also run the step-aware model when d[8] is odd). Inputs are 40
- * raw doubles (zero-padded), their first bytes also read as selectors. */
+ * step-aware model (cases 1-3 also run the step-aware model when d[8] is odd; cases 1 and 3 then,
+ * when d[9] is odd, start each approaching contact fresh at a true onset: see at_onset). Inputs
+ * are 40 raw doubles (zero-padded), their first bytes also read as selectors. */
 #define FUZZ_CASES 6
 #include "fuzz_common.h"
 
@@ -36,6 +37,17 @@ static int step_model(dc_contact_model *m, int32_t crit) {
     }
     *m = cache[i];
     return 1;
+}
+
+/* A fresh contact at its onset, as a host's drift makes it: overlap a·v·dt, v the approach speed
+ * along the normal n (v1, v2: the bodies' velocities), a in (0, 2] from the byte `code`. Raw
+ * fuzzed overlaps are rarely that shallow, so without this the step-aware onset correction
+ * (docs/timestep.md, "Derivation") would seldom run. Leaves the overlap as it was where the
+ * contact recedes or a·v·dt is not a normal double. */
+static void at_onset(const double *n, const double *v1, const double *v2, double dt, uint8_t code, double *overlap) {
+    const double vn = -((v1[0] - v2[0]) * n[0] + (v1[1] - v2[1]) * n[1] + (v1[2] - v2[2]) * n[2]);
+    const double d = ((double)code + 1.0) / 128.0 * vn * dt;
+    if (vn > 0.0 && isnormal(d)) *overlap = d;
 }
 
 static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t n) {
@@ -95,6 +107,11 @@ static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t
     case 2: /* the spheres helper, fuzzed centres */
         if (!((d[8] & 1) ? step_model(&m, d[0] & 1) : full_model(&m, d[0] & 1))) abort();
         if ((d[7] & 1) && dc_contact_model_set_carry(&m, DC_CARRY_PROJECT) != DC_OK) abort();
+        if (which == 1 && (d[8] & 1) && (d[9] & 1)) { /* a fresh contact at its onset */
+            at_onset(st.n, st.v1, st.v2, y[30], d[10], &st.overlap);
+            memset(h, 0, sizeof h);
+            memcpy(h0, h, sizeof h);
+        }
         if (which == 1)
             s = dc_contact_force(&m, &st, y[30], (d[1] & 1) ? h : NULL, (size_t)(d[2] % 12), &r);
         else
@@ -113,6 +130,10 @@ static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t
         double out[2 + 6 + 6 + 6], out0[20], hb[22];
         for (int i = 0; i < 20; i++) out[i] = SENTINEL;
         for (int i = 0; i < 22; i++) hb[i] = y[i];
+        if ((d[8] & 1) && (d[9] & 1)) { /* both contacts fresh, each at its onset (arrays below) */
+            for (int c = 0; c < 2; c++) at_onset(y + 3 * c, y + 8 + 3 * c, y + 14 + 3 * c, y[39], d[10 + c], y + 6 + c);
+            memset(hb, 0, sizeof hb);
+        }
         memcpy(out0, out, sizeof out);
         double hb0[22];
         memcpy(hb0, hb, sizeof hb);
