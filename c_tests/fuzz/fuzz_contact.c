@@ -39,15 +39,42 @@ static int step_model(dc_contact_model *m, int32_t crit) {
     return 1;
 }
 
-/* A fresh contact at its onset, as a host's drift makes it: overlap a·v·dt, v the approach speed
- * along the normal n (v1, v2: the bodies' velocities), a in (0, 2] from the byte `code`. Raw
- * fuzzed overlaps are rarely that shallow, so without this the step-aware onset correction
- * (docs/timestep.md, "Derivation") would seldom run. Leaves the overlap as it was where the
- * contact recedes or a·v·dt is not a normal double. */
-static void at_onset(const double *n, const double *v1, const double *v2, double dt, uint8_t code, double *overlap) {
-    const double vn = -((v1[0] - v2[0]) * n[0] + (v1[1] - v2[1]) * n[1] + (v1[2] - v2[2]) * n[2]);
+/* A fuzzed value made usable: x where finite, else `dflt`; for `positive`, |x| and `dflt` for 0. */
+static double usable(double x, double dflt, int positive) {
+    if (!isfinite(x)) return dflt;
+    if (positive) return x == 0.0 ? dflt : fabs(x);
+    return x;
+}
+
+/* A fresh contact at its onset, as a host's drift makes it, in place in the arrays a state is
+ * read from (n, v1, v2: 3 doubles each; w1, w2: spins; r, m: the two radii and the two masses,
+ * each pair `gap` doubles apart): every value made usable (the normal a unit vector), then the
+ * overlap a·v·dt, v the approach speed along the normal (1 where the fuzzed pair recedes), a in
+ * (0, 2] from the byte `code`. Raw fuzzed states are rarely valid and their overlaps rarely that
+ * shallow, so without this the step-aware onset correction (docs/timestep.md, "Derivation") would
+ * seldom run. The overlap stays as it was where a·v·dt is not a normal double. */
+static void at_onset(double *n, double *v1, double *v2, double *w1, double *w2, double *r, double *m, size_t gap,
+                     double dt, uint8_t code, double *overlap) {
+    double nn = 0.0;
+    for (int k = 0; k < 3; k++) {
+        n[k] = usable(n[k], 0.0, 0);
+        v1[k] = usable(v1[k], 0.0, 0);
+        v2[k] = usable(v2[k], 0.0, 0);
+        w1[k] = usable(w1[k], 0.0, 0);
+        w2[k] = usable(w2[k], 0.0, 0);
+        nn += n[k] * n[k];
+    }
+    nn = sqrt(nn);
+    for (int k = 0; k < 3; k++) n[k] = isnormal(nn) && isfinite(nn) ? n[k] / nn : (k == 2 ? 1.0 : 0.0);
+    r[0] = usable(r[0], 1e-3, 1), r[gap] = usable(r[gap], 1e-3, 1);
+    m[0] = usable(m[0], 1e-5, 1), m[gap] = usable(m[gap], 1e-5, 1);
+    double vn = -((v1[0] - v2[0]) * n[0] + (v1[1] - v2[1]) * n[1] + (v1[2] - v2[2]) * n[2]);
+    if (!(vn > 0.0) || !isfinite(vn)) { /* receding (or too fast): approach speed 1 along n */
+        for (int k = 0; k < 3; k++) v2[k] = 0.0, v1[k] = -n[k];
+        vn = 1.0;
+    }
     const double d = ((double)code + 1.0) / 128.0 * vn * dt;
-    if (vn > 0.0 && isnormal(d)) *overlap = d;
+    if (isnormal(d)) *overlap = d;
 }
 
 static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t n) {
@@ -107,8 +134,9 @@ static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t
     case 2: /* the spheres helper, fuzzed centres */
         if (!((d[8] & 1) ? step_model(&m, d[0] & 1) : full_model(&m, d[0] & 1))) abort();
         if ((d[7] & 1) && dc_contact_model_set_carry(&m, DC_CARRY_PROJECT) != DC_OK) abort();
-        if (which == 1 && (d[8] & 1) && (d[9] & 1)) { /* a fresh contact at its onset */
-            at_onset(st.n, st.v1, st.v2, y[30], d[10], &st.overlap);
+        if (which == 1 && (d[8] & 1) && (d[9] & 1)) { /* a fresh contact at its onset, at a usable dt */
+            y[30] = usable(y[30], 1e-7, 1);
+            at_onset(st.n, st.v1, st.v2, st.w1, st.w2, &st.r1, &st.m1, 1, y[30], d[10], &st.overlap);
             memset(h, 0, sizeof h);
             memcpy(h0, h, sizeof h);
         }
@@ -131,7 +159,10 @@ static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t
         for (int i = 0; i < 20; i++) out[i] = SENTINEL;
         for (int i = 0; i < 22; i++) hb[i] = y[i];
         if ((d[8] & 1) && (d[9] & 1)) { /* both contacts fresh, each at its onset (arrays below) */
-            for (int c = 0; c < 2; c++) at_onset(y + 3 * c, y + 8 + 3 * c, y + 14 + 3 * c, y[39], d[10 + c], y + 6 + c);
+            y[39] = usable(y[39], 1e-7, 1); /* dt, also the second contact's m2 */
+            for (int c = 0; c < 2; c++)
+                at_onset(y + 3 * c, y + 8 + 3 * c, y + 14 + 3 * c, y + 20 + 3 * c, y + 26 + 3 * c, y + 32 + c,
+                         y + 36 + c, 2, y[39], d[10 + c], y + 6 + c);
             memset(hb, 0, sizeof hb);
         }
         memcpy(out0, out, sizeof out);
