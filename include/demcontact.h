@@ -490,6 +490,15 @@
 #define DC_DISPATCH_AVX512 2
 
 /**
+ * The most steps per contact (the fastest pair's duration over dt) a plan accepts: a step below
+ * the contact duration over 2^22 is one no scene can afford (and the plan's check would
+ * simulate 64 collisions of that many steps: seconds to minutes). Reached by e → 0 with
+ * DC_END_OVERLAP (near-critical damping: e = 1e-6 needs 6.3·10^5 steps per contact at
+ * e_tol 1e-2, e = 1e-7 8·10^6), refused as infeasible at the e tolerance.
+ */
+#define MAX_STEPS_PER_CONTACT 4194304.0
+
+/**
  * Status of a demcontact call: DC_OK (0) or a DC_ERR_* code in 6101..6199.
  * Functions return it as int32_t; dc_status_str() gives its message.
  */
@@ -2359,7 +2368,8 @@ int32_t dc_plan_input_init(struct dc_plan_input *input);
  * dc_dt_static, and velocity-Verlet collisions at 64 onset phases).
  *
  * Cost: one dc_dt_for_accuracy (up to ~200 ms for e ~ 0.1, e_tol ~ 1e-3) and 64 simulated
- * collisions; allocation-free, thread-safe. Call it at set-up.
+ * collisions of at most 2^22 steps each (a plan needing more steps per contact is refused:
+ * DC_ERR_PLAN_INFEASIBLE); allocation-free, thread-safe. Call it at set-up.
  *
  * @param input      the scene (dc_plan_input_init, then the members set by name).
  * @param out        receives the plan on DC_OK; untouched on error.
@@ -2371,7 +2381,9 @@ int32_t dc_plan_input_init(struct dc_plan_input *input);
  *         DC_ERR_PLAN_RANGE (version or size not this library's (field NONE), radius_max < radius_min, solid_fraction outside (0, 1), a
  *         tolerance >= 1, load_factor < 1, stability_fraction outside (0, 1], conventional_divisor
  *         < 1, walls not 0/1), DC_ERR_PLAN_INFEASIBLE (the real material misses the tolerance
- *         named by field_out), DC_ERR_RESULT_RANGE.
+ *         named by field_out, or the e tolerance needs a step shorter than the contact duration
+ *         over 2^22, DC_PLAN_FIELD_E_TOL: e → 0 with DC_END_OVERLAP, below about 1e-6 at e_tol
+ *         1e-2), DC_ERR_RESULT_RANGE.
  *
  * # Safety
  * `input` must be NULL or readable for one dc_plan_input; `out` NULL or writable for one
@@ -2602,8 +2614,14 @@ int32_t dc_status_known(int32_t status);
  *
  * Accuracy (tests/step_accuracy.rs: p in {1, 1.5, 2, 3}, e in {0.1, 0.5, 0.9}, both criteria,
  * tol in {1e-2, 1e-3}, v0 = 0.7, omega0 = 13): at the returned dt a collision integrated
- * independently meets tol at each of 61 other start phases; at 2 dt it fails at some phase.
- * Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
+ * independently meets tol at each of 61 other start phases; at 2 dt it fails at some phase;
+ * the same for strongly damped contacts under DC_END_FORCE (p in {1, 1.5}, e in {1e-2, 1e-3},
+ * tol 1e-2: the force ends long before the bodies separate, and the search stops each
+ * collision at the force's end, after which the exit velocity no longer changes). e → 0 with
+ * DC_END_OVERLAP (near-critical damping) needs ever finer steps: below about e = 1e-9 (tol
+ * 1e-2) the answers come from the extrapolated regime, not verified, and erratic below about
+ * 1e-14; a collision whose fine reference run does not end returns DC_ERR_NO_CONVERGENCE
+ * (e = 1e-20). Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
  * damped contacts reach the tau/8 cap at loose tolerances.
  *
  * Cost: up to ~6e6 force evaluations (tens of ms; more on a loaded machine); allocation-free;
@@ -2619,7 +2637,7 @@ int32_t dc_status_known(int32_t status);
  * @param dt_out     receives the step [s] on success; untouched on error.
  * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
  *         DC_ERR_RESTITUTION_RANGE, DC_ERR_NOT_POSITIVE, DC_ERR_CRITERION, DC_ERR_RESULT_RANGE,
- *         DC_ERR_NO_CONVERGENCE (never seen; report it).
+ *         DC_ERR_NO_CONVERGENCE (the reference collision does not end: see above).
  *
  * # Safety
  * `dt_out` must be NULL or point to writable memory for one double.
@@ -2640,7 +2658,8 @@ int32_t dc_dt_for_accuracy(double p,
  * step some 20 times smaller (t_H: the elastic contact duration at v0). Searched on steps t_H/N,
  * N >= 10 (t_H/10 is returned when it passes: the correction is not designed beyond it); about
  * 0.1-1 s of set-up work; allocation-free. An undamped law (e = 1) gets dc_dt_for_accuracy's
- * answer.
+ * answer. e -> 0 with DC_END_OVERLAP (near-critical damping) costs more: 0.3 s at e = 1e-6,
+ * 22 s at 1e-12, 96 s at 6e-212 (refused: DC_ERR_STEP_UNREACHABLE), Hertz, tol 0.05.
  *
  * @return as dc_dt_for_accuracy; DC_ERR_STEP_UNREACHABLE when no step down to t_H/8192 meets
  *         tol (or the step-aware damping cannot realise e at all).

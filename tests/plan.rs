@@ -748,3 +748,62 @@ fn step_aware_step_holds_200_scenes() {
     );
     assert!(checked >= 150, "too few scenes reached: {checked}");
 }
+
+/// e → 0 with DC_END_OVERLAP (near-critical damping) needs ever finer steps for the e tolerance:
+/// 6.3·10^5 steps per contact at e = 1e-6, 8·10^6 at 1e-7 (e_tol 1e-2). A plan needing more
+/// than `MAX_STEPS_PER_CONTACT` (2^22) is refused at once as infeasible at the e tolerance,
+/// instead of simulating 64 collisions of that many steps (12 s at 1e-7, 86 s at 1e-8); below
+/// about 1e-12 the search's fine run does not end at all (refused the same way). With
+/// DC_END_FORCE e = 1e-6 and 1e-9 need under 2000 steps and are planned, their realised e
+/// within e_tol of the target.
+#[test]
+fn vanishing_restitution_is_planned_or_refused_at_once() {
+    use demcontact::Error;
+    use demcontact::plan::{MAX_STEPS_PER_CONTACT, PlanField};
+    let scene = |e: f64, criterion| PlanInput {
+        youngs: 7e10,
+        poisson: 0.22,
+        density: 2500.0,
+        restitution: e,
+        radius_min: 1e-3,
+        radius_max: 4e-3,
+        v_max: 2.0,
+        depth: 0.5,
+        overlap_tol: 0.01,
+        e_tol: 0.01,
+        duration_tol: 3.0,
+        criterion,
+        ..PlanInput::new()
+    };
+    let pl = plan(&scene(1e-6, EndCriterion::Overlap)).unwrap();
+    assert!(
+        pl.steps_per_contact > 1e5 && pl.steps_per_contact <= MAX_STEPS_PER_CONTACT,
+        "{}",
+        pl.steps_per_contact
+    );
+    for e in [1e-7, 1e-9, 1e-20] {
+        let err = plan(&scene(e, EndCriterion::Overlap)).unwrap_err();
+        assert_eq!(
+            (err.field, err.error),
+            (PlanField::ETol, Error::PlanInfeasible),
+            "e {e}"
+        );
+    }
+    // e = 1e-20 with DC_END_FORCE: α ≈ 1e10, a step of 1e-27 s: refused the same way.
+    let err = plan(&scene(1e-20, EndCriterion::Force)).unwrap_err();
+    assert_eq!(
+        (err.field, err.error),
+        (PlanField::ETol, Error::PlanInfeasible)
+    );
+    for e in [1e-6, 1e-9] {
+        let pl = plan(&scene(e, EndCriterion::Force)).unwrap();
+        assert!(
+            pl.steps_per_contact < 3000.0,
+            "e {e}: {}",
+            pl.steps_per_contact
+        );
+        for x in [pl.e_plain_min, pl.e_plain_max] {
+            assert!((x / e - 1.0).abs() <= 0.01, "e {e}: realised {x}");
+        }
+    }
+}

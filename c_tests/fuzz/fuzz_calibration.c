@@ -1,9 +1,10 @@
 /* libFuzzer target: the calibration exports. Cases 0-4: damping from restitution and back, the
  * critical step, Hertz stiffness and the effective modulus; 5: the status strings, the version
  * and a NULL output; 6-9: the viscoelastic calibration (e(b) by the fast tiers, b from e, beta, a
- * and the speed from e, k and gamma, e(b) by the reference integrator). Inputs are eight raw
+ * and the speed from e, k and gamma, e(b) by the reference integrator); 10: the elastic-plastic
+ * restitution and yield speed. Inputs are eight raw
  * doubles and a criterion (fuzz_scalars). */
-#define FUZZ_CASES 10
+#define FUZZ_CASES 11
 #include "fuzz_common.h"
 
 static void fuzz_case(unsigned which, uint8_t sel, const uint8_t *data, size_t n) {
@@ -32,6 +33,12 @@ static void fuzz_case(unsigned which, uint8_t sel, const uint8_t *data, size_t n
     /* The reference integrator only for b <= 10: its cost grows with b (50 us at b = 1, 350 us
      * at b = 10 instrumented; a host calibrates against it offline, at moderate b, and the other
      * tiers cover every b). A case of its own, so that its cost does not ride on theirs. */
+    case 10: /* the elastic-plastic law's restitution and yield speed */
+        verdict(dc_elastic_plastic_restitution(x[0], &out), out);
+        if (out != SENTINEL && !(out > 0.0 && out <= 1.0)) abort();
+        out = SENTINEL;
+        verdict(dc_elastic_plastic_yield_speed(x[1], x[2], x[3], x[4], &out), out);
+        break;
     case 9:
         if (!(isfinite(x[0]) && x[0] > 10.0)) verdict(dc_viscoelastic_e_reference(x[0], c, &out), out);
         break;

@@ -3,10 +3,10 @@
  * history; 2: the spheres helper with fuzzed centres; 3: the batch of 2 contacts (checked or
  * fused) with fuzzed arrays, history stride and NULL masks; 4: arbitrary bytes as a
  * dc_contact_model; 5: dc_contact_model_set_step with a fuzzed dt and integrator on a
- * step-aware model (cases 1-3 also run the step-aware model when d[8] is odd; cases 1 and 3 then,
+ * step-aware model; 6: dc_contact_force_energy as case 1 (cases 1-3 also run the step-aware model when d[8] is odd; cases 1 and 3 then,
  * when d[9] is odd, start each approaching contact fresh at a true onset: see at_onset). Inputs
  * are 40 raw doubles (zero-padded), their first bytes also read as selectors. */
-#define FUZZ_CASES 6
+#define FUZZ_CASES 7
 #include "fuzz_common.h"
 
 /* A model with every stage switched on (history length 10), from valid parameters. */
@@ -226,6 +226,23 @@ static void fuzz_case(unsigned which, uint8_t byte0, const uint8_t *data, size_t
         } else if (memcmp(&ms, &m, sizeof m) != 0) {
             abort();
         }
+        break;
+    }
+    case 6: { /* the energy ledger: one contact as case 1 (plain or step-aware model) */
+        if (!((d[8] & 1) ? step_model(&m, d[0] & 1) : full_model(&m, d[0] & 1))) abort();
+        dc_contact_energy en, en0;
+        memset(&en, 0x44, sizeof en);
+        en0 = en;
+        s = dc_contact_force_energy(&m, &st, y[30], (d[1] & 1) ? h : NULL, (size_t)(d[2] % 12), &r,
+                                    (d[3] & 1) ? NULL : &en);
+        if (!known(s)) abort();
+        if ((d[3] & 1) && s != DC_ERR_NULL_POINTER) abort();
+        if (s != DC_OK && (memcmp(&r, &r0, sizeof r) != 0 || memcmp(h, h0, sizeof h) != 0 ||
+                           memcmp(&en, &en0, sizeof en) != 0))
+            abort();
+        if (s == DC_OK && !(all_finite(r.force, 3) && all_finite(&en.dissipated, sizeof en / sizeof(double)) &&
+                            all_finite(h, DC_CONTACT_HISTORY_MAX)))
+            abort();
         break;
     }
     case 4: /* arbitrary bytes as a model: rejected or computed, never a crash */

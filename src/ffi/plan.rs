@@ -263,7 +263,8 @@ pub unsafe extern "C" fn dc_plan_input_init(input: *mut dc_plan_input) -> i32 {
 /// dc_dt_static, and velocity-Verlet collisions at 64 onset phases).
 ///
 /// Cost: one dc_dt_for_accuracy (up to ~200 ms for e ~ 0.1, e_tol ~ 1e-3) and 64 simulated
-/// collisions; allocation-free, thread-safe. Call it at set-up.
+/// collisions of at most 2^22 steps each (a plan needing more steps per contact is refused:
+/// DC_ERR_PLAN_INFEASIBLE); allocation-free, thread-safe. Call it at set-up.
 ///
 /// @param input      the scene (dc_plan_input_init, then the members set by name).
 /// @param out        receives the plan on DC_OK; untouched on error.
@@ -275,7 +276,9 @@ pub unsafe extern "C" fn dc_plan_input_init(input: *mut dc_plan_input) -> i32 {
 ///         DC_ERR_PLAN_RANGE (version or size not this library's (field NONE), radius_max < radius_min, solid_fraction outside (0, 1), a
 ///         tolerance >= 1, load_factor < 1, stability_fraction outside (0, 1], conventional_divisor
 ///         < 1, walls not 0/1), DC_ERR_PLAN_INFEASIBLE (the real material misses the tolerance
-///         named by field_out), DC_ERR_RESULT_RANGE.
+///         named by field_out, or the e tolerance needs a step shorter than the contact duration
+///         over 2^22, DC_PLAN_FIELD_E_TOL: e → 0 with DC_END_OVERLAP, below about 1e-6 at e_tol
+///         1e-2), DC_ERR_RESULT_RANGE.
 ///
 /// # Safety
 /// `input` must be NULL or readable for one dc_plan_input; `out` NULL or writable for one
@@ -287,6 +290,11 @@ pub unsafe extern "C" fn dc_plan(
     field_out: *mut i32,
 ) -> i32 {
     if out.is_null() {
+        // An error status like any other: field_out says no single member is at fault.
+        if !field_out.is_null() {
+            // SAFETY: non-null; writability is the caller's contract.
+            unsafe { field_out.write_unaligned(PlanField::None as i32) };
+        }
         return dc_status::DC_ERR_NULL_POINTER.code();
     }
     let mut field = PlanField::None;
@@ -552,6 +560,18 @@ mod tests {
                 dc_plan(&inp, core::ptr::null_mut(), core::ptr::null_mut()),
                 dc_status::DC_ERR_NULL_POINTER.code()
             );
+            // An error status names its field (none for a NULL pointer), NULL out included.
+            for (input, o) in [
+                (core::ptr::null(), &mut out as *mut dc_plan_result),
+                (&inp as *const dc_plan_input, core::ptr::null_mut()),
+            ] {
+                let mut f = -1;
+                assert_eq!(
+                    dc_plan(input, o, &mut f),
+                    dc_status::DC_ERR_NULL_POINTER.code()
+                );
+                assert_eq!(f, DC_PLAN_FIELD_NONE);
+            }
         }
     }
 }

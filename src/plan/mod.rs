@@ -73,6 +73,12 @@ const LEVEL: u32 = 4;
 ///
 /// cbindgen:ignore
 pub const N_PHASE: u32 = 64;
+/// The most steps per contact (the fastest pair's duration over dt) a plan accepts: a step below
+/// the contact duration over 2^22 is one no scene can afford (and the plan's check would
+/// simulate 64 collisions of that many steps: seconds to minutes). Reached by e → 0 with
+/// DC_END_OVERLAP (near-critical damping: e = 1e-6 needs 6.3·10^5 steps per contact at
+/// e_tol 1e-2, e = 1e-7 8·10^6), refused as infeasible at the e tolerance.
+pub const MAX_STEPS_PER_CONTACT: f64 = 4_194_304.0;
 
 /// What the planner is told about the scene. See the module docs for the model.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -788,7 +794,12 @@ pub fn plan(inp: &PlanInput) -> Result<Plan, PlanError> {
         fast.omega0,
         inp.e_tol,
     )
-    .map_err(&none)?;
+    .map_err(|e| match e {
+        // The collision does not end within the search's fine run (e → 0 with DC_END_OVERLAP,
+        // below about 1e-12): no step resolves it.
+        Error::NoConvergence => infeasible(PlanField::ETol),
+        e => none(e),
+    })?;
     let mut dt_stab = f64::INFINITY;
     for p in pairs.iter().flatten() {
         if p.force > 0.0 {
@@ -808,6 +819,13 @@ pub fn plan(inp: &PlanInput) -> Result<Plan, PlanError> {
     let (mut e_min, mut e_max, mut e_sum, mut e_far) =
         (f64::INFINITY, f64::NEG_INFINITY, 0.0, inp.restitution);
     let tau_fast = duration(&fast, alpha, inp.v_max, inp.criterion).map_err(&none)?;
+    if !(tau_fast / dt <= MAX_STEPS_PER_CONTACT) {
+        let field = match binding_dt {
+            StepBinding::Restitution => PlanField::ETol,
+            StepBinding::Stability => PlanField::StabilityFraction,
+        };
+        return Err(infeasible(field));
+    }
     let budget = (64.0 * tau_fast / dt + 64.0).min(4.0e9) as u32;
     let last = f64::from(N_PHASE - 1);
     for i in 0..N_PHASE {

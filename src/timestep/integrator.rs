@@ -39,7 +39,8 @@ pub struct Collision {
     pub delta_max: f64,
     /// Contact duration [s] to the end event of the pair's criterion (interpolated).
     pub duration: f64,
-    /// Steps taken (from the start of the run to separation).
+    /// Steps taken (from the start of the run to separation; with DC_END_FORCE to the step the
+    /// force ends, after which the bodies fly apart without force).
     pub steps: u32,
 }
 
@@ -112,6 +113,20 @@ pub fn collide(
                         1.0
                     };
                     t_force_end = t + frac * dt;
+                    if pair.criterion == EndCriterion::Force && f < 0.0 && a_new == 0.0 {
+                        // Clamped from here to separation: the law's elastic term over its
+                        // dashpot term (δ^p over δ^((p-1)/2) |v|, linear and viscoelastic
+                        // alike) only falls as δ shrinks at the constant outward speed, so the
+                        // force stays 0 and every later step keeps this velocity bit for bit
+                        // (v + 0·dt): it is the exit velocity. Stepping on would only fly the
+                        // bodies apart, δ/(e v0) long: ages for a strongly damped contact.
+                        return Ok(Collision {
+                            e: -v_new / v0,
+                            delta_max: d_max,
+                            duration: t_force_end - t0,
+                            steps: n + 1,
+                        });
+                    }
                 }
                 f_prev = f;
             } else {
