@@ -1035,3 +1035,27 @@ fn contact_at_step_options_and_bad_input() {
     assert_eq!(json_of(&o)["error"]["status"].as_i64(), Some(6137));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--dt 1e-5 --step-aware"));
 }
+
+/// e → 0 with the overlap criterion needs more than MAX_STEPS_PER_CONTACT steps per contact for
+/// the e tolerance: refused at once, naming --e-tol and why; the force criterion plans it.
+#[test]
+fn plan_vanishing_restitution() {
+    let mut a = plan_with("--e", Some("1e-8"));
+    a.extend(["--criterion".to_string(), "overlap".to_string()]);
+    let args: Vec<&str> = a.iter().map(String::as_str).collect();
+    let o = run(&args);
+    assert_eq!(o.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("--e-tol 0.01") && err.contains("steps in a contact"),
+        "{err}"
+    );
+    let mut j: Vec<&str> = args.clone();
+    j.push("--json");
+    assert_eq!(json_of(&run(&j))["error"]["status"].as_i64(), Some(6141));
+    let force: Vec<&str> = args
+        .iter()
+        .map(|s| if *s == "overlap" { "force" } else { s })
+        .collect();
+    assert_eq!(run(&force).status.code(), Some(0));
+}

@@ -174,6 +174,13 @@ impl Args {
         let (flag, range) = self.flag(pe.field);
         let message = match (pe.field, pe.error) {
             (PlanField::None, e) => format!("plan: {}", describe(e)),
+            (PlanField::ETol, e @ demcontact::Error::PlanInfeasible) => format!(
+                "{flag}: {}: the step that meets it puts more than {} steps in a contact (e -> 0 \
+                 with --criterion overlap needs ever finer steps; a looser --e-tol or --criterion \
+                 force does not)",
+                describe(e),
+                plan::MAX_STEPS_PER_CONTACT
+            ),
             (_, demcontact::Error::PlanInfeasible) => {
                 // Name the real material's figure that misses the tolerance.
                 let real = plan::evaluate(&self.input(), self.E1).ok();
