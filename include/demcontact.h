@@ -490,15 +490,6 @@
 #define DC_DISPATCH_AVX512 2
 
 /**
- * The most steps per contact (the fastest pair's duration over dt) a plan accepts: a step below
- * the contact duration over 2^22 is one no scene can afford (and the plan's check would
- * simulate 64 collisions of that many steps: seconds to minutes). Reached by e → 0 with
- * DC_END_OVERLAP (near-critical damping: e = 1e-6 needs 6.3·10^5 steps per contact at
- * e_tol 1e-2, e = 1e-7 8·10^6), refused as infeasible at the e tolerance.
- */
-#define MAX_STEPS_PER_CONTACT 4194304.0
-
-/**
  * Status of a demcontact call: DC_OK (0) or a DC_ERR_* code in 6101..6199.
  * Functions return it as int32_t; dc_status_str() gives its message.
  */

@@ -95,7 +95,6 @@ module demcontact_c
   integer(c_int32_t), parameter :: DC_DISPATCH_BASELINE = 0
   integer(c_int32_t), parameter :: DC_DISPATCH_AVX2 = 1
   integer(c_int32_t), parameter :: DC_DISPATCH_AVX512 = 2
-  real(c_double), parameter :: MAX_STEPS_PER_CONTACT = 4194304.0_c_double
   integer(c_int32_t), parameter :: DC_OK = 0
   integer(c_int32_t), parameter :: DC_ERR_NULL_POINTER = 6101
   integer(c_int32_t), parameter :: DC_ERR_NOT_FINITE = 6102

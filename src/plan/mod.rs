@@ -78,6 +78,8 @@ pub const N_PHASE: u32 = 64;
 /// simulate 64 collisions of that many steps: seconds to minutes). Reached by e → 0 with
 /// DC_END_OVERLAP (near-critical damping: e = 1e-6 needs 6.3·10^5 steps per contact at
 /// e_tol 1e-2, e = 1e-7 8·10^6), refused as infeasible at the e tolerance.
+///
+/// cbindgen:ignore
 pub const MAX_STEPS_PER_CONTACT: f64 = 4_194_304.0;
 
 /// What the planner is told about the scene. See the module docs for the model.
