@@ -636,7 +636,10 @@ enum dc_status
      */
     DC_ERR_PLAN_RANGE = 6140,
     /**
-     * No Young's modulus meets the planner's tolerances: the real material itself misses one.
+     * No plan meets the planner's tolerances: the real material itself misses one (dc_plan
+     * names it), or no step a scene can run meets the e tolerance (DC_PLAN_FIELD_E_TOL; the
+     * step-per-contact bound with DC_PLAN_FIELD_STABILITY_FRACTION), or a contact this damped
+     * does not converge (DC_PLAN_FIELD_RESTITUTION).
      */
     DC_ERR_PLAN_INFEASIBLE = 6141,
     /**
@@ -2372,9 +2375,11 @@ int32_t dc_plan_input_init(struct dc_plan_input *input);
  *         DC_ERR_PLAN_RANGE (version or size not this library's (field NONE), radius_max < radius_min, solid_fraction outside (0, 1), a
  *         tolerance >= 1, load_factor < 1, stability_fraction outside (0, 1], conventional_divisor
  *         < 1, walls not 0/1), DC_ERR_PLAN_INFEASIBLE (the real material misses the tolerance
- *         named by field_out, or the e tolerance needs a step shorter than the contact duration
- *         over 2^22, DC_PLAN_FIELD_E_TOL: e → 0 with DC_END_OVERLAP, below about 1e-6 at e_tol
- *         1e-2), DC_ERR_RESULT_RANGE.
+ *         named by field_out; DC_PLAN_FIELD_E_TOL: no step meets the e tolerance with at most
+ *         2^22 steps in a contact and its realised e within it at all 64 phases, as for e → 0
+ *         with DC_END_OVERLAP below about 1e-6 at e_tol 1e-2; DC_PLAN_FIELD_STABILITY_FRACTION:
+ *         the stability step so scaled puts more than 2^22 steps in a contact;
+ *         DC_PLAN_FIELD_RESTITUTION: a contact this damped does not converge, e → 0), DC_ERR_RESULT_RANGE.
  *
  * # Safety
  * `input` must be NULL or readable for one dc_plan_input; `out` NULL or writable for one
@@ -2608,11 +2613,12 @@ int32_t dc_status_known(int32_t status);
  * independently meets tol at each of 61 other start phases; at 2 dt it fails at some phase;
  * the same for strongly damped contacts under DC_END_FORCE (p in {1, 1.5}, e in {1e-2, 1e-3},
  * tol 1e-2: the force ends long before the bodies separate, and the search stops each
- * collision at the force's end, after which the exit velocity no longer changes). e → 0 with
- * DC_END_OVERLAP (near-critical damping) needs ever finer steps: below about e = 1e-9 (tol
- * 1e-2) the answers come from the extrapolated regime, not verified, and erratic below about
- * 1e-14; a collision whose fine reference run does not end returns DC_ERR_NO_CONVERGENCE
- * (e = 1e-20). Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
+ * collision at the force's end, after which the exit velocity does not change). e → 0 needs
+ * ever finer steps, most with DC_END_OVERLAP (near-critical damping): below about e = 1e-9
+ * with DC_END_OVERLAP and 1e-11 with DC_END_FORCE (tol 1e-2) the answers come from the
+ * extrapolated regime, not verified; further down they are erratic, DC_ERR_RESULT_RANGE (the
+ * step is not a double) or DC_ERR_NO_CONVERGENCE (the fine reference run does not end)
+ * (scripts/extreme_restitution.sh prints them for e = 1e-1 ... 1e-20). Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
  * damped contacts reach the tau/8 cap at loose tolerances.
  *
  * Cost: up to ~6e6 force evaluations (tens of ms; more on a loaded machine); allocation-free;
@@ -2649,8 +2655,8 @@ int32_t dc_dt_for_accuracy(double p,
  * step some 20 times smaller (t_H: the elastic contact duration at v0). Searched on steps t_H/N,
  * N >= 10 (t_H/10 is returned when it passes: the correction is not designed beyond it); about
  * 0.1-1 s of set-up work; allocation-free. An undamped law (e = 1) gets dc_dt_for_accuracy's
- * answer. e -> 0 with DC_END_OVERLAP (near-critical damping) costs more: 0.3 s at e = 1e-6,
- * 22 s at 1e-12, 96 s at 6e-212 (refused: DC_ERR_STEP_UNREACHABLE), Hertz, tol 0.05.
+ * answer. e -> 0 with DC_END_OVERLAP (near-critical damping) costs more, seconds to minutes
+ * below e = 1e-6 (scripts/extreme_restitution.sh prints the times).
  *
  * @return as dc_dt_for_accuracy; DC_ERR_STEP_UNREACHABLE when no step down to t_H/8192 meets
  *         tol (or the step-aware damping cannot realise e at all).

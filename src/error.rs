@@ -63,7 +63,8 @@ pub enum Error {
     /// A planner input is outside its documented range (e.g. R_min > R_max, a solid fraction
     /// outside (0, 1), a tolerance ≥ 1).
     PlanRange,
-    /// No modulus meets the planner's tolerances: the real material itself misses one.
+    /// No plan meets the planner's tolerances: the real material itself misses one, no step a
+    /// scene can run meets the e tolerance, or a contact this damped does not converge.
     PlanInfeasible,
     /// A fit got fewer than two points.
     FitTooFew,

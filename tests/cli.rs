@@ -704,7 +704,8 @@ fn plan_step_aware() {
         text.contains("step-aware step") && text.contains("chosen"),
         "{text}"
     );
-    // An e tolerance the step-aware dashpot cannot meet above t_H/8192: refused with the flag.
+    // An e tolerance no step a scene can run meets (the plain plan, computed first, refuses it:
+    // its step would miss it, the search having extrapolated), refused with the flag.
     let tight = plan_with("--e-tol", Some("1e-7"));
     let mut a: Vec<&str> = tight.iter().map(String::as_str).collect();
     a.push("--step-aware");
@@ -715,7 +716,7 @@ fn plan_step_aware() {
     assert!(err.contains("--e-tol 0.0000001"), "{err}");
     a.push("--json");
     let j = json_of(&run(&a));
-    assert_eq!(j["error"]["status"].as_i64(), Some(6137), "{j}");
+    assert_eq!(j["error"]["status"].as_i64(), Some(6141), "{j}");
     // A loose e tolerance the plain dashpot meets beyond t_H/10, where the step-aware calibration
     // stops: --step-aware keeps the larger plain step and says so.
     let loose = [
@@ -1058,4 +1059,14 @@ fn plan_vanishing_restitution() {
         .map(|s| if *s == "overlap" { "force" } else { s })
         .collect();
     assert_eq!(run(&force).status.code(), Some(0));
+    // A stability fraction that leaves too fine a step: refused naming it.
+    let tiny = plan_with("--stability-fraction", Some("1e-7"));
+    let a: Vec<&str> = tiny.iter().map(String::as_str).collect();
+    let o = run(&a);
+    assert_eq!(o.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("--stability-fraction") && err.contains("steps in a contact"),
+        "{err}"
+    );
 }

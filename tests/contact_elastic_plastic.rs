@@ -166,6 +166,31 @@ fn below_yield_restitution_is_one() {
     );
 }
 
+/// Just above yield the closed form is 1 minus roundings: e stays in (0, 1] (it rounded to
+/// 1.0000000000000004 at x = 1.0000000000001885 before the clamp) and falls with x.
+#[test]
+fn restitution_just_above_yield_is_at_most_one() {
+    let mut prev = 1.0;
+    let mut x = 1.0f64;
+    for _ in 0..20_000 {
+        x = f64::from_bits(x.to_bits() + 1_000_000);
+        let mut e = 7.0;
+        assert_eq!(unsafe { dc_elastic_plastic_restitution(x, &mut e) }, DC_OK);
+        assert!(e > 0.0 && e <= 1.0, "x {x:e}: e {e:e}");
+        assert!(
+            e <= prev + 4.0 * f64::EPSILON,
+            "x {x:e}: e {e:e} above {prev:e}"
+        );
+        prev = e;
+    }
+    let mut e = 0.0;
+    assert_eq!(
+        unsafe { dc_elastic_plastic_restitution(1.0000000000001885, &mut e) },
+        DC_OK
+    );
+    assert!(e <= 1.0, "{e:e}");
+}
+
 /// The force is a function of (δ, δ_max): an unload–reload cycle to the same δ_max gives the
 /// same force, then the plastic branch continues as on a virgin load.
 #[test]

@@ -749,13 +749,13 @@ fn step_aware_step_holds_200_scenes() {
     assert!(checked >= 150, "too few scenes reached: {checked}");
 }
 
-/// e → 0 with DC_END_OVERLAP (near-critical damping) needs ever finer steps for the e tolerance:
-/// 6.3·10^5 steps per contact at e = 1e-6, 8·10^6 at 1e-7 (e_tol 1e-2). A plan needing more
-/// than `MAX_STEPS_PER_CONTACT` (2^22) is refused at once as infeasible at the e tolerance,
-/// instead of simulating 64 collisions of that many steps (12 s at 1e-7, 86 s at 1e-8); below
-/// about 1e-12 the search's fine run does not end at all (refused the same way). With
-/// DC_END_FORCE e = 1e-6 and 1e-9 need under 2000 steps and are planned, their realised e
-/// within e_tol of the target.
+/// e → 0 (e = 10^-k, k = 1 … 20, both criteria): every plan either holds (its realised e within
+/// e_tol at all 64 phases, at most `MAX_STEPS_PER_CONTACT` = 2^22 steps per contact) or is
+/// refused at once as infeasible (naming the e tolerance, or the restitution where the
+/// contact's duration does not converge), never another status and never after simulating for
+/// long. With DC_END_OVERLAP (near-critical damping) the step shrinks fast:
+/// 6.3·10^5 steps per contact at e = 1e-6 (planned), more than 2^22 at 1e-7 (refused); with
+/// DC_END_FORCE e is planned down to 1e-11 in at most 3100 steps.
 #[test]
 fn vanishing_restitution_is_planned_or_refused_at_once() {
     use demcontact::Error;
@@ -775,35 +775,73 @@ fn vanishing_restitution_is_planned_or_refused_at_once() {
         criterion,
         ..PlanInput::new()
     };
-    let pl = plan(&scene(1e-6, EndCriterion::Overlap)).unwrap();
-    assert!(
-        pl.steps_per_contact > 1e5 && pl.steps_per_contact <= MAX_STEPS_PER_CONTACT,
-        "{}",
-        pl.steps_per_contact
-    );
-    for e in [1e-7, 1e-9, 1e-20] {
-        let err = plan(&scene(e, EndCriterion::Overlap)).unwrap_err();
-        assert_eq!(
-            (err.field, err.error),
-            (PlanField::ETol, Error::PlanInfeasible),
-            "e {e}"
-        );
-    }
-    // e = 1e-20 with DC_END_FORCE: α ≈ 1e10, a step of 1e-27 s: refused the same way.
-    let err = plan(&scene(1e-20, EndCriterion::Force)).unwrap_err();
-    assert_eq!(
-        (err.field, err.error),
-        (PlanField::ETol, Error::PlanInfeasible)
-    );
-    for e in [1e-6, 1e-9] {
-        let pl = plan(&scene(e, EndCriterion::Force)).unwrap();
-        assert!(
-            pl.steps_per_contact < 3000.0,
-            "e {e}: {}",
-            pl.steps_per_contact
-        );
-        for x in [pl.e_plain_min, pl.e_plain_max] {
-            assert!((x / e - 1.0).abs() <= 0.01, "e {e}: realised {x}");
+    let mut planned = Vec::new();
+    for criterion in [EndCriterion::Overlap, EndCriterion::Force] {
+        for k in 1..=20 {
+            let e = 10f64.powi(-k);
+            let t0 = std::time::Instant::now();
+            let got = plan(&scene(e, criterion));
+            println!(
+                "{criterion:?} e 1e-{k}: {:?} in {:.2} s",
+                got.as_ref()
+                    .map(|p| p.steps_per_contact)
+                    .map_err(|e| (e.field, e.error)),
+                t0.elapsed().as_secs_f64()
+            );
+            match got {
+                Ok(pl) => {
+                    assert!(
+                        pl.steps_per_contact <= MAX_STEPS_PER_CONTACT,
+                        "{criterion:?} e {e}: {}",
+                        pl.steps_per_contact
+                    );
+                    for x in [pl.e_plain_min, pl.e_plain_max] {
+                        assert!(
+                            (x / e - 1.0).abs() <= 0.01,
+                            "{criterion:?} e {e}: realised {x}"
+                        );
+                    }
+                    planned.push((criterion, k, pl.steps_per_contact));
+                }
+                Err(err) => {
+                    assert_eq!(err.error, Error::PlanInfeasible, "{criterion:?} e {e}");
+                    assert!(
+                        matches!(err.field, PlanField::ETol | PlanField::Restitution),
+                        "{criterion:?} e {e}: {err:?}"
+                    );
+                }
+            }
         }
     }
+    println!("planned (criterion, -log10 e, steps per contact): {planned:?}");
+    let ks = |c| {
+        planned
+            .iter()
+            .filter(|p| p.0 == c)
+            .map(|p| p.1)
+            .collect::<Vec<_>>()
+    };
+    // The overlap criterion: planned to e = 1e-6 (6.3e5 steps per contact), refused below.
+    assert_eq!(
+        ks(EndCriterion::Overlap),
+        (1..=6).collect::<Vec<_>>(),
+        "{planned:?}"
+    );
+    let at6 = planned
+        .iter()
+        .find(|p| p.0 == EndCriterion::Overlap && p.1 == 6)
+        .map(|p| p.2);
+    assert!(at6.is_some_and(|s| (6.0e5..6.5e5).contains(&s)), "{at6:?}");
+    // The force criterion: planned to e = 1e-11, in at most 3100 steps per contact.
+    assert_eq!(
+        ks(EndCriterion::Force),
+        (1..=11).collect::<Vec<_>>(),
+        "{planned:?}"
+    );
+    assert!(
+        planned
+            .iter()
+            .all(|p| p.0 != EndCriterion::Force || p.2 <= 3100.0),
+        "{planned:?}"
+    );
 }

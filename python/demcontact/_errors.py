@@ -170,8 +170,8 @@ class PlanRangeError(InputError):
 
 
 class PlanInfeasibleError(InputError):
-    """plan(): no Young's modulus meets the tolerances, the real material itself misses the one
-    named by the exception's ``field`` (6141)."""
+    """plan(): no plan meets the tolerances: the real material itself misses the one named by
+    the exception's ``field``, or no step a scene can run meets the e tolerance (6141)."""
 
     status = 6141
 

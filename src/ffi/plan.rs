@@ -276,9 +276,11 @@ pub unsafe extern "C" fn dc_plan_input_init(input: *mut dc_plan_input) -> i32 {
 ///         DC_ERR_PLAN_RANGE (version or size not this library's (field NONE), radius_max < radius_min, solid_fraction outside (0, 1), a
 ///         tolerance >= 1, load_factor < 1, stability_fraction outside (0, 1], conventional_divisor
 ///         < 1, walls not 0/1), DC_ERR_PLAN_INFEASIBLE (the real material misses the tolerance
-///         named by field_out, or the e tolerance needs a step shorter than the contact duration
-///         over 2^22, DC_PLAN_FIELD_E_TOL: e → 0 with DC_END_OVERLAP, below about 1e-6 at e_tol
-///         1e-2), DC_ERR_RESULT_RANGE.
+///         named by field_out; DC_PLAN_FIELD_E_TOL: no step meets the e tolerance with at most
+///         2^22 steps in a contact and its realised e within it at all 64 phases, as for e → 0
+///         with DC_END_OVERLAP below about 1e-6 at e_tol 1e-2; DC_PLAN_FIELD_STABILITY_FRACTION:
+///         the stability step so scaled puts more than 2^22 steps in a contact;
+///         DC_PLAN_FIELD_RESTITUTION: a contact this damped does not converge, e → 0), DC_ERR_RESULT_RANGE.
 ///
 /// # Safety
 /// `input` must be NULL or readable for one dc_plan_input; `out` NULL or writable for one

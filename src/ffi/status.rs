@@ -96,7 +96,10 @@ pub enum dc_status {
     /// fraction outside (0, 1), a tolerance >= 1, ...; dc_plan names the member), or its version
     /// or size is not this library's.
     DC_ERR_PLAN_RANGE = 6140,
-    /// No Young's modulus meets the planner's tolerances: the real material itself misses one.
+    /// No plan meets the planner's tolerances: the real material itself misses one (dc_plan
+    /// names it), or no step a scene can run meets the e tolerance (DC_PLAN_FIELD_E_TOL; the
+    /// step-per-contact bound with DC_PLAN_FIELD_STABILITY_FRACTION), or a contact this damped
+    /// does not converge (DC_PLAN_FIELD_RESTITUTION).
     DC_ERR_PLAN_INFEASIBLE = 6141,
     /// An internal error was caught at the boundary (not expected; please report).
     DC_ERR_INTERNAL = 6199,
@@ -162,7 +165,7 @@ impl dc_status {
             }
             DC_ERR_PLAN_RANGE => c"a planner input (or dc_plan_input version/size) is out of range",
             DC_ERR_PLAN_INFEASIBLE => {
-                c"no Young's modulus meets the tolerances: the real material misses one"
+                c"no plan meets the tolerances: the real material misses one, or no step a scene can run meets the e tolerance"
             }
             DC_ERR_INTERNAL => c"internal error caught at the C boundary (please report)",
         }

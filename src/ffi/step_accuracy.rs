@@ -29,11 +29,12 @@ use crate::timestep;
 /// independently meets tol at each of 61 other start phases; at 2 dt it fails at some phase;
 /// the same for strongly damped contacts under DC_END_FORCE (p in {1, 1.5}, e in {1e-2, 1e-3},
 /// tol 1e-2: the force ends long before the bodies separate, and the search stops each
-/// collision at the force's end, after which the exit velocity no longer changes). e → 0 with
-/// DC_END_OVERLAP (near-critical damping) needs ever finer steps: below about e = 1e-9 (tol
-/// 1e-2) the answers come from the extrapolated regime, not verified, and erratic below about
-/// 1e-14; a collision whose fine reference run does not end returns DC_ERR_NO_CONVERGENCE
-/// (e = 1e-20). Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
+/// collision at the force's end, after which the exit velocity does not change). e → 0 needs
+/// ever finer steps, most with DC_END_OVERLAP (near-critical damping): below about e = 1e-9
+/// with DC_END_OVERLAP and 1e-11 with DC_END_FORCE (tol 1e-2) the answers come from the
+/// extrapolated regime, not verified; further down they are erratic, DC_ERR_RESULT_RANGE (the
+/// step is not a double) or DC_ERR_NO_CONVERGENCE (the fine reference run does not end)
+/// (scripts/extreme_restitution.sh prints them for e = 1e-1 ... 1e-20). Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
 /// damped contacts reach the tau/8 cap at loose tolerances.
 ///
 /// Cost: up to ~6e6 force evaluations (tens of ms; more on a loaded machine); allocation-free;
@@ -78,8 +79,8 @@ pub unsafe extern "C" fn dc_dt_for_accuracy(
 /// step some 20 times smaller (t_H: the elastic contact duration at v0). Searched on steps t_H/N,
 /// N >= 10 (t_H/10 is returned when it passes: the correction is not designed beyond it); about
 /// 0.1-1 s of set-up work; allocation-free. An undamped law (e = 1) gets dc_dt_for_accuracy's
-/// answer. e -> 0 with DC_END_OVERLAP (near-critical damping) costs more: 0.3 s at e = 1e-6,
-/// 22 s at 1e-12, 96 s at 6e-212 (refused: DC_ERR_STEP_UNREACHABLE), Hertz, tol 0.05.
+/// answer. e -> 0 with DC_END_OVERLAP (near-critical damping) costs more, seconds to minutes
+/// below e = 1e-6 (scripts/extreme_restitution.sh prints the times).
 ///
 /// @return as dc_dt_for_accuracy; DC_ERR_STEP_UNREACHABLE when no step down to t_H/8192 meets
 ///         tol (or the step-aware damping cannot realise e at all).

@@ -164,7 +164,9 @@ pub fn restitution(x: f64) -> Result<f64, Error> {
     let a = (6.0 * 3f64.sqrt() / 5.0).sqrt();
     let b = (1.0 - y * y / 6.0).sqrt();
     let q = y / (y + 2.0 * (6.0 / 5.0 - y * y / 5.0).sqrt());
-    Ok(a * b * q.sqrt().sqrt())
+    // The formula is 1 at x = 1 and falls from there; just above 1 its roundings can land an
+    // ulp or two above 1 (1.0000000000000004 at x = 1.0000000000001885), outside (0, 1].
+    Ok((a * b * q.sqrt().sqrt()).min(1.0))
 }
 
 /// The yield speed v_y [m/s] of a head-on impact: ½ m* v_y² = (8/15) E* √R* δ_y^{5/2},

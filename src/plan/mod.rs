@@ -77,7 +77,8 @@ pub const N_PHASE: u32 = 64;
 /// the contact duration over 2^22 is one no scene can afford (and the plan's check would
 /// simulate 64 collisions of that many steps: seconds to minutes). Reached by e → 0 with
 /// DC_END_OVERLAP (near-critical damping: e = 1e-6 needs 6.3·10^5 steps per contact at
-/// e_tol 1e-2, e = 1e-7 8·10^6), refused as infeasible at the e tolerance.
+/// e_tol 1e-2, e = 1e-7 8·10^6), refused as infeasible at the e tolerance (test
+/// `vanishing_restitution_is_planned_or_refused_at_once`).
 ///
 /// cbindgen:ignore
 pub const MAX_STEPS_PER_CONTACT: f64 = 4_194_304.0;
@@ -701,7 +702,16 @@ fn evaluate_checked(inp: &PlanInput, youngs: f64, alpha: f64) -> Result<Evaluati
 /// The planner. See the module docs.
 pub fn plan(inp: &PlanInput) -> Result<Plan, PlanError> {
     inp.check()?;
-    let none = PlanError::at(PlanField::None);
+    // A refusal with no single input at fault, except that a computation which does not
+    // converge at this restitution (e → 0: the contact's duration or a collision that does not
+    // end) refuses the restitution as infeasible.
+    let none = |e: Error| match e {
+        Error::NoConvergence => PlanError {
+            field: PlanField::Restitution,
+            error: Error::PlanInfeasible,
+        },
+        e => PlanError::at(PlanField::None)(e),
+    };
     let alpha = powerlaw::alpha_from_e(inp.restitution, P, inp.criterion)
         .map_err(PlanError::at(PlanField::Restitution))?;
     let e_real = inp.youngs;
@@ -797,9 +807,10 @@ pub fn plan(inp: &PlanInput) -> Result<Plan, PlanError> {
         inp.e_tol,
     )
     .map_err(|e| match e {
-        // The collision does not end within the search's fine run (e → 0 with DC_END_OVERLAP,
-        // below about 1e-12): no step resolves it.
-        Error::NoConvergence => infeasible(PlanField::ETol),
+        // e → 0 (DC_END_OVERLAP from about 1e-18, DC_END_FORCE about 1e-13 to 1e-18): the
+        // search's fine collision does not end, or its step is not a double: no step resolves
+        // the tolerance.
+        Error::NoConvergence | Error::ResultRange => infeasible(PlanField::ETol),
         e => none(e),
     })?;
     let mut dt_stab = f64::INFINITY;
@@ -849,6 +860,12 @@ pub fn plan(inp: &PlanInput) -> Result<Plan, PlanError> {
         if (c.e - inp.restitution).abs() > (e_far - inp.restitution).abs() {
             e_far = c.e;
         }
+    }
+    // The step is dt_for_accuracy's, verified at these phases where its search simulated it;
+    // where it extrapolated (tolerances far below the damping's first-order error, e → 0 with
+    // DC_END_OVERLAP) the realised e can miss: refused, not reported as a plan that holds.
+    if !((e_far - inp.restitution).abs() <= inp.e_tol * inp.restitution) {
+        return Err(infeasible(PlanField::ETol));
     }
     let min_p = min_pair(&pairs).map_err(&none)?;
     let t_hertz = {

@@ -11,8 +11,10 @@
 //!
 //! The first contact happens at a fraction `phase ∈ [0, 1)` of a step: the run starts at
 //! δ = −phase·v0·dt in free flight, so contact begins at t = phase·dt. The realised restitution is
-//! −v/v0 once δ ≤ 0 again (from then on no force acts: for clamped pairs the force is already zero
-//! since the force zero, because the raw force stays negative while δ shrinks at constant speed).
+//! −v/v0 once δ ≤ 0 again (from then on no force acts), or, for clamped pairs, at the step where
+//! the clamped force becomes zero while unloading: the raw force stays negative while δ shrinks at
+//! constant speed, so no force acts from there either and that velocity is the exit velocity (the
+//! run stops there instead of flying the bodies apart, which takes about δ/(e v0)).
 //! The contact duration is taken from the crossing the criterion defines, interpolated linearly
 //! between steps (δ = 0 for `Overlap`; the raw, unclamped force for `Force`); δ_max is the
 //! largest overlap seen at a step, as a host sees it. No allocation; the step count is bounded.
@@ -39,14 +41,15 @@ pub struct Collision {
     pub delta_max: f64,
     /// Contact duration [s] to the end event of the pair's criterion (interpolated).
     pub duration: f64,
-    /// Steps taken (from the start of the run to separation; with DC_END_FORCE to the step the
-    /// force ends, after which the bodies fly apart without force).
+    /// Steps taken (from the start of the run to separation, or for a clamped pair to the step
+    /// its force ends, after which the bodies fly apart without force).
     pub steps: u32,
 }
 
 /// Integrates one collision of `pair` (effective mass `m`, effective radius `r` for the kernels
 /// that read it) at impact speed `v0` > 0 with step `dt` > 0, contact starting at `phase` ∈ [0, 1)
-/// of a step. `Err(NoConvergence)` if the bodies have not separated after `max_steps` steps.
+/// of a step. `Err(NoConvergence)` if the collision has not ended (separated, or for a clamped
+/// pair reached the force's end) after `max_steps` steps.
 #[allow(clippy::too_many_arguments)] // the contact's parameters, each used once
 pub fn collide(
     pair: &PairModel,
@@ -115,8 +118,9 @@ pub fn collide(
                     t_force_end = t + frac * dt;
                     if pair.criterion == EndCriterion::Force && f < 0.0 && a_new == 0.0 {
                         // Clamped from here to separation: the law's elastic term over its
-                        // dashpot term (δ^p over δ^((p-1)/2) |v|, linear and viscoelastic
-                        // alike) only falls as δ shrinks at the constant outward speed, so the
+                        // dashpot term (δ^p over δ^((p-1)/2) |v|; the viscoelastic law's
+                        // δ^(3/2) over δ^(1/2) |v|) only falls as δ shrinks at the constant
+                        // outward speed, so the
                         // force stays 0 and every later step keeps this velocity bit for bit
                         // (v + 0·dt): it is the exit velocity. Stepping on would only fly the
                         // bodies apart, δ/(e v0) long: ages for a strongly damped contact.

@@ -175,11 +175,21 @@ impl Args {
         let message = match (pe.field, pe.error) {
             (PlanField::None, e) => format!("plan: {}", describe(e)),
             (PlanField::ETol, e @ demcontact::Error::PlanInfeasible) => format!(
-                "{flag}: {}: the step that meets it puts more than {} steps in a contact (e -> 0 \
-                 with --criterion overlap needs ever finer steps; a looser --e-tol or --criterion \
-                 force does not)",
+                "{flag}: {}: no step a scene can run meets it (the step puts more than {} steps \
+                 in a contact, or its realised e misses the tolerance: e -> 0 with --criterion \
+                 overlap needs ever finer steps; a looser --e-tol or --criterion force does not)",
                 describe(e),
                 plan::MAX_STEPS_PER_CONTACT
+            ),
+            (PlanField::StabilityFraction, e @ demcontact::Error::PlanInfeasible) => format!(
+                "{flag}: {}: the step it leaves puts more than {} steps in a contact",
+                describe(e),
+                plan::MAX_STEPS_PER_CONTACT
+            ),
+            (PlanField::Restitution, e @ demcontact::Error::PlanInfeasible) => format!(
+                "{flag}: {}: a contact this strongly damped does not converge (its duration or \
+                 its collision at the step)",
+                describe(e)
             ),
             (_, demcontact::Error::PlanInfeasible) => {
                 // Name the real material's figure that misses the tolerance.
