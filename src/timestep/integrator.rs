@@ -120,10 +120,10 @@ pub fn collide(
                         // Clamped from here to separation: the law's elastic term over its
                         // dashpot term (δ^p over δ^((p-1)/2) |v|; the viscoelastic law's
                         // δ^(3/2) over δ^(1/2) |v|) only falls as δ shrinks at the constant
-                        // outward speed, so the
-                        // force stays 0 and every later step keeps this velocity bit for bit
-                        // (v + 0·dt): it is the exit velocity. Stepping on would only fly the
-                        // bodies apart, δ/(e v0) long: ages for a strongly damped contact.
+                        // outward speed, so the force stays 0 and every later step keeps this
+                        // velocity bit for bit (v + 0·dt): it is the exit velocity. Stepping on
+                        // would only fly the bodies apart, about δ/(e v0): very long for a
+                        // strongly damped contact.
                         return Ok(Collision {
                             e: -v_new / v0,
                             delta_max: d_max,
