@@ -37,7 +37,7 @@ static void fuzz_case(unsigned which, uint8_t sel, const uint8_t *data, size_t n
         if (which == 0) {
             verdict(dc_dt_for_accuracy(x[0], x[1], c, x[2], x[3], tol, &out), out);
         } else {
-            /* the step-aware search at e -> 0 with DC_END_OVERLAP takes seconds to minutes (its
+            /* the step-aware search at e -> 0 with DC_END_OVERLAP takes seconds below 1e-9 (its
              * doc; scripts/extreme_restitution.sh): e no smaller than 1e-6 there */
             const double e = c == DC_END_OVERLAP && isfinite(x[1]) && x[1] > 0.0 && x[1] < 1e-6 ? 1e-6 : x[1];
             verdict(dc_dt_for_accuracy_step_aware(x[0], e, c, x[2], x[3], tol, &out), out);

@@ -40,6 +40,9 @@ pub const ONSET_A_MAX: f64 = 2.0;
 /// R is kept within these bounds (the fit is not designed beyond its nodes).
 const R_MIN: f64 = 0.25;
 const R_MAX: f64 = 2.0;
+/// Steps one simulated collision of [`phases_e`] may take before it counts as not ending (near
+/// critical damping, e → 0 with DC_END_OVERLAP, a collision lasts thousands of t_H).
+const STEP_BUDGET: u32 = 100_000;
 
 /// What the model stores (the six reserved doubles of `dc_contact_model`): `scale` =
 /// dt / (2 I_p ((p+1)/2)^(1/(p+1))) (0: off) and the coefficients of R(h).
@@ -270,12 +273,14 @@ pub(crate) fn h_of(scale: f64, p: f64, m: f64, k: f64, v: f64) -> f64 {
 }
 
 /// The phase-mean realised e of one collision (m = k = v0 = 1, F = δ^p + α R δ^β δ', velocity
-/// Verlet in the LAMMPS order through [`normal_force`]) at step dt = t_H/n.
+/// Verlet in the LAMMPS order through [`normal_force`]) at step dt = t_H/n; NaN when a phase's
+/// collision does not end within [`STEP_BUDGET`] steps.
 fn mean_e(p: f64, alpha: f64, criterion: EndCriterion, n: f64, r: f64) -> f64 {
     phases_e(p, alpha, criterion, n, r, 0.0).0
 }
 
-/// The phase mean of the realised e and the largest |e_j − e_n| over the phases j.
+/// The phase mean of the realised e and the largest |e_j − e_n| over the phases j; (NaN, ∞) when
+/// a phase's collision does not end within [`STEP_BUDGET`] steps.
 fn phases_e(p: f64, alpha: f64, criterion: EndCriterion, n: f64, r: f64, e_n: f64) -> (f64, f64) {
     let beta = (p - 1.0) / 2.0;
     let dt = t_h_prefactor(p) / n;
@@ -283,8 +288,8 @@ fn phases_e(p: f64, alpha: f64, criterion: EndCriterion, n: f64, r: f64, e_n: f6
     for j in 0..PHASES {
         let mut d = -(j as f64) / PHASES as f64 * dt;
         let (mut v, mut acc, mut slot, mut touched) = (1.0f64, 0.0f64, 0.0f64, false);
-        let mut e = 0.0;
-        for _ in 0..100_000 {
+        let mut e = f64::NAN;
+        for _ in 0..STEP_BUDGET {
             let vh = v + 0.5 * dt * acc;
             d += dt * vh;
             let f = if d > 0.0 {
@@ -315,27 +320,56 @@ fn phases_e(p: f64, alpha: f64, criterion: EndCriterion, n: f64, r: f64, e_n: f6
                 break;
             }
         }
+        if e.is_nan() {
+            return (f64::NAN, f64::INFINITY);
+        }
         sum += e;
         worst = worst.max((e - e_n).abs());
     }
     (sum / PHASES as f64, worst)
 }
 
-/// R with phase-mean e = target at dt = t_H/n, on the branch through R → 1; None when the
-/// explicit step cannot reach the target in R ∈ [R_MIN, R_MAX].
-fn solve_r(p: f64, alpha: f64, criterion: EndCriterion, e: f64, n: f64) -> Option<f64> {
-    let f = |r: f64| mean_e(p, alpha, criterion, n, r) - e;
+/// Why [`solve_r`] has no R for a node.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum NoR {
+    /// The explicit step cannot reach the target in R ∈ [R_MIN, R_MAX].
+    Unreachable,
+    /// A collision on the way did not end within [`STEP_BUDGET`] steps.
+    Budget,
+}
+
+/// R with phase-mean e = target at dt = t_H/n, on the branch through R → 1.
+fn solve_r(p: f64, alpha: f64, criterion: EndCriterion, e: f64, n: f64) -> Result<f64, NoR> {
+    solve_r_with(|r| mean_e(p, alpha, criterion, n, r), e)
+}
+
+/// [`solve_r`] on the phase mean `mean_e(R)` (NaN: a collision outlasted the budget).
+fn solve_r_with(mean_e: impl Fn(f64) -> f64, e: f64) -> Result<f64, NoR> {
+    // Solved in ln e: near critical damping (e → 0 with DC_END_OVERLAP) e(R) spans decades across
+    // the bracket, and false position on e itself creeps along the bracket's near-critical end,
+    // where the collisions are longest (test `near_critical_nodes_solve_in_few_means`).
+    let ln_e = e.ln();
+    // (f, whether a collision outlasted the budget): such an R counts as e = the smallest
+    // positive double (below every target: more damping only lengthens the creep), as does a
+    // phase mean of 0 (e underflows).
+    let f = |r: f64| {
+        let m = mean_e(r);
+        let out = m.is_nan();
+        let m = if out { 0.0 } else { m };
+        (m.max(f64::MIN_POSITIVE).ln() - ln_e, out)
+    };
     // More damping lowers e: f decreases in R. Bracket from R = 1 outwards: lo has f ≥ 0,
-    // hi has f < 0.
-    let f1 = f(1.0);
+    // hi has f < 0. Points are (R, f, outlasted).
+    let (f1, o1) = f(1.0);
     let factor = if f1 < 0.0 { 0.9 } else { 1.1 };
-    let mut prev = (1.0, f1);
+    let mut prev = (1.0, f1, o1);
     let (mut lo, mut hi) = loop {
         let r = prev.0 * factor;
         if !(R_MIN..=R_MAX).contains(&r) {
-            return None;
+            return Err(NoR::Unreachable);
         }
-        let next = (r, f(r));
+        let (fr, or) = f(r);
+        let next = (r, fr, or);
         if (next.1 >= 0.0) != (prev.1 >= 0.0) {
             break if next.1 >= 0.0 {
                 (next, prev)
@@ -345,22 +379,29 @@ fn solve_r(p: f64, alpha: f64, criterion: EndCriterion, e: f64, n: f64) -> Optio
         }
         prev = next;
     };
-    // Illinois false position on [lo, hi] (f(lo) ≥ 0 > f(hi)).
+    // Illinois false position on [lo, hi] (f(lo) ≥ 0 > f(hi)). A root found next to an R whose
+    // collision outlasted the budget is that budget's edge, not the target's R.
+    let done = |r: f64, hi: (f64, f64, bool)| if hi.2 { Err(NoR::Budget) } else { Ok(r) };
     let mut side = 0;
     for _ in 0..60 {
         let r = (lo.0 * hi.1 - hi.0 * lo.1) / (hi.1 - lo.1);
-        let fr = f(r);
-        if fr == 0.0 || (hi.0 - lo.0).abs() < 1e-13 {
-            return Some(r);
-        }
-        if fr > 0.0 {
-            lo = (r, fr);
+        let (fr, or) = f(r);
+        if or {
+            hi = (r, fr, or);
+            if side == -1 {
+                lo.1 *= 0.5;
+            }
+            side = -1;
+        } else if fr == 0.0 || (hi.0 - lo.0).abs() < 1e-13 {
+            return Ok(r);
+        } else if fr > 0.0 {
+            lo = (r, fr, or);
             if side == 1 {
                 hi.1 *= 0.5;
             }
             side = 1;
         } else {
-            hi = (r, fr);
+            hi = (r, fr, or);
             if side == -1 {
                 lo.1 *= 0.5;
             }
@@ -370,7 +411,7 @@ fn solve_r(p: f64, alpha: f64, criterion: EndCriterion, e: f64, n: f64) -> Optio
             break;
         }
     }
-    Some(0.5 * (lo.0 + hi.0))
+    done(0.5 * (lo.0 + hi.0), hi)
 }
 
 /// The solution of the 5 × 5 symmetric positive definite system a x = b by Gaussian elimination
@@ -410,7 +451,9 @@ fn solve_spd5(mut a: [[f64; 5]; 5], mut b: [f64; 5]) -> Option<[f64; 5]> {
 
 /// The coefficients of R(h) for a Tsuji law of exponent p and damping α (from the target e),
 /// solved on the discrete map at the 16 nodes and fitted by least squares in (R − 1)/h. At
-/// least 8 nodes must be reachable (from the smallest h up); otherwise None.
+/// least 8 nodes must be solved; otherwise None. Nodes are solved from the smallest h up to the
+/// first one the explicit step cannot reach; a node whose collisions outlast [`STEP_BUDGET`]
+/// steps (the smallest h near critical damping) is left out of the fit.
 pub(crate) fn calibrate(p: f64, alpha: f64, criterion: EndCriterion, e: f64) -> Option<[f64; 5]> {
     // The normal equations of the least-squares fit, accumulated row by row.
     let mut ata = [[0.0f64; 5]; 5];
@@ -418,8 +461,10 @@ pub(crate) fn calibrate(p: f64, alpha: f64, criterion: EndCriterion, e: f64) -> 
     let mut rows = 0;
     // From the smallest h up: stop at the first unreachable node.
     for &n in FIT_N.iter().rev() {
-        let Some(r) = solve_r(p, alpha, criterion, e, n) else {
-            break;
+        let r = match solve_r(p, alpha, criterion, e, n) {
+            Ok(r) => r,
+            Err(NoR::Budget) => continue,
+            Err(NoR::Unreachable) => break,
         };
         let h = 1.0 / n;
         let v = [1.0, h, h * h, h * h * h, h * h * h * h];
@@ -838,5 +883,51 @@ mod tests {
     fn t_h_prefactor_p1_is_pi() {
         // p = 1: t_H = π √(m/k) for every speed: prefactor (m v²/k)^(1/2)/v = π.
         assert!((t_h_prefactor(1.0) - core::f64::consts::PI).abs() < 1e-14);
+    }
+
+    /// Near critical damping (e → 0 with DC_END_OVERLAP) the node's R is the target's, found in
+    /// few phase means: at e = 1e-9 (Hertz, t_H/10 and t_H/128) the mean realised at the solved
+    /// R is within 1e-6 of e (an independent evaluation: the phase mean at that R), in at most 16
+    /// phase means (13 and 11; false position on e itself, swapped in, fails the bound).
+    #[test]
+    fn near_critical_nodes_solve_in_few_means() {
+        let (p, e) = (1.5, 1e-9);
+        let alpha = crate::powerlaw::alpha_from_e(e, p, EndCriterion::Overlap).unwrap();
+        for n in [10.0, 128.0] {
+            let calls = core::cell::Cell::new(0u32);
+            let r = solve_r_with(
+                |r| {
+                    calls.set(calls.get() + 1);
+                    mean_e(p, alpha, EndCriterion::Overlap, n, r)
+                },
+                e,
+            )
+            .unwrap();
+            let got = mean_e(p, alpha, EndCriterion::Overlap, n, r);
+            println!(
+                "t_H/{n}: R = {r}, mean e {got:e}, {} phase means",
+                calls.get()
+            );
+            assert!(((got - e) / e).abs() < 1e-6, "t_H/{n}: {got:e}");
+            assert!(calls.get() <= 16, "t_H/{n}: {} phase means", calls.get());
+        }
+    }
+
+    /// A node whose target lies beyond the collision budget is left out, not solved to the
+    /// budget's edge: at e = 1e-15 (Hertz, DC_END_OVERLAP, t_H/128) every collision at R = 1
+    /// outlasts 10^5 steps and the phase mean reachable within them stays above e (at the
+    /// budget's edge about 7.5e-15: a root there would be the budget's, not the target's).
+    /// The calibration still fits the nodes it solves.
+    #[test]
+    fn nodes_beyond_the_step_budget_are_left_out() {
+        let (p, e) = (1.5, 1e-15);
+        let alpha = crate::powerlaw::alpha_from_e(e, p, EndCriterion::Overlap).unwrap();
+        assert!(mean_e(p, alpha, EndCriterion::Overlap, 128.0, 1.0).is_nan());
+        assert_eq!(
+            solve_r(p, alpha, EndCriterion::Overlap, e, 128.0),
+            Err(NoR::Budget)
+        );
+        let at_edge = mean_e(p, alpha, EndCriterion::Overlap, 128.0, 0.99838);
+        assert!(at_edge > 2.0 * e, "{at_edge:e}");
     }
 }

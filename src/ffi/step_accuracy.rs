@@ -79,8 +79,9 @@ pub unsafe extern "C" fn dc_dt_for_accuracy(
 /// step some 20 times smaller (t_H: the elastic contact duration at v0). Searched on steps t_H/N,
 /// N >= 10 (t_H/10 is returned when it passes: the correction is not designed beyond it); about
 /// 0.1-1 s of set-up work; allocation-free. An undamped law (e = 1) gets dc_dt_for_accuracy's
-/// answer. e -> 0 with DC_END_OVERLAP (near-critical damping) costs more, seconds to minutes
-/// below e = 1e-6 (scripts/extreme_restitution.sh prints the times).
+/// answer. e -> 0 with DC_END_OVERLAP (near-critical damping) costs more: about 0.6 s at
+/// e = 1e-9, 2 s at 1e-12, 16 s at 1e-15, and a refusal after up to a minute from 1e-18
+/// (scripts/extreme_restitution.sh prints the times).
 ///
 /// @return as dc_dt_for_accuracy; DC_ERR_STEP_UNREACHABLE when no step down to t_H/8192 meets
 ///         tol (or the step-aware damping cannot realise e at all).
