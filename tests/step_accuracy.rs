@@ -149,11 +149,12 @@ fn bad_input() {
 }
 
 /// docs/timestep.md ("Limits, measured"): in the extrapolated regime (tol ≲ 1e-4 with strong
-/// damping) the step is not verified by simulation inside the function; for the linear
-/// spring-dashpot under the overlap end at e = 0.1, tol = 1e-4 it is too large, its error there
-/// being 2.3 × tol (erratic in dt, docs/timestep.md finding 1). Strongly damped Hertz does meet it.
+/// damping) the extrapolated step is checked by simulation inside the function and halved until
+/// it passes. The linear spring-dashpot under the overlap end at e = 0.1, tol = 1e-4, whose
+/// extrapolated step misses tol (2.3 × tol: the error is erratic in dt there, docs/timestep.md
+/// finding 1), and strongly damped Hertz under the force end both meet tol at the returned step.
 #[test]
-fn extrapolated_regime_documented_limit() {
+fn extrapolated_steps_are_verified() {
     let at = |p: f64, crit: i32| {
         let mut dt = f64::NAN;
         assert_eq!(
@@ -167,7 +168,7 @@ fn extrapolated_regime_documented_limit() {
     println!(
         "tol 1e-4, e = 0.1: E(dt)/tol = {lsd:.2} (p = 1, overlap end), {hertz:.2} (p = 1.5, force end)"
     );
-    assert!((lsd - 2.3).abs() < 0.05, "{lsd}");
+    assert!(lsd <= 1.0, "{lsd}");
     assert!(hertz <= 1.0, "{hertz}");
 }
 

@@ -862,8 +862,9 @@ pub fn plan(inp: &PlanInput) -> Result<Plan, PlanError> {
         }
     }
     // The step is dt_for_accuracy's, verified at these phases where its search simulated it;
-    // where it extrapolated (tolerances far below the damping's first-order error, e → 0 with
-    // DC_END_OVERLAP) the realised e can miss: refused, not reported as a plan that holds.
+    // where it returned an extrapolated step finer than it checks (tolerances far below the
+    // damping's first-order error, e → 0 with DC_END_OVERLAP) the realised e can miss: refused,
+    // not reported as a plan that holds.
     if !((e_far - inp.restitution).abs() <= inp.e_tol * inp.restitution) {
         return Err(infeasible(PlanField::ETol));
     }
