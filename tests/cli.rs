@@ -704,8 +704,8 @@ fn plan_step_aware() {
         text.contains("step-aware step") && text.contains("chosen"),
         "{text}"
     );
-    // An e tolerance no step a scene can run meets (the plain plan, computed first, refuses it:
-    // its step would miss it, the search having extrapolated), refused with the flag.
+    // An e tolerance no step a scene can run meets (the plain plan, computed first, refuses it),
+    // refused with the flag.
     let tight = plan_with("--e-tol", Some("1e-7"));
     let mut a: Vec<&str> = tight.iter().map(String::as_str).collect();
     a.push("--step-aware");

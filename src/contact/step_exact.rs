@@ -455,13 +455,18 @@ fn solve_spd5(mut a: [[f64; 5]; 5], mut b: [f64; 5]) -> Option<[f64; 5]> {
 /// first one the explicit step cannot reach; a node whose collisions outlast [`STEP_BUDGET`]
 /// steps (the smallest h near critical damping) is left out of the fit.
 pub(crate) fn calibrate(p: f64, alpha: f64, criterion: EndCriterion, e: f64) -> Option<[f64; 5]> {
+    calibrate_with(|n| solve_r(p, alpha, criterion, e, n))
+}
+
+/// [`calibrate`] with each node's R from `solve(n)` (n = t_H/dt).
+fn calibrate_with(solve: impl Fn(f64) -> Result<f64, NoR>) -> Option<[f64; 5]> {
     // The normal equations of the least-squares fit, accumulated row by row.
     let mut ata = [[0.0f64; 5]; 5];
     let mut aty = [0.0f64; 5];
     let mut rows = 0;
     // From the smallest h up: stop at the first unreachable node.
     for &n in FIT_N.iter().rev() {
-        let r = match solve_r(p, alpha, criterion, e, n) {
+        let r = match solve(n) {
             Ok(r) => r,
             Err(NoR::Budget) => continue,
             Err(NoR::Unreachable) => break,
@@ -917,7 +922,6 @@ mod tests {
     /// budget's edge: at e = 1e-15 (Hertz, DC_END_OVERLAP, t_H/128) every collision at R = 1
     /// outlasts 10^5 steps and the phase mean reachable within them stays above e (at the
     /// budget's edge about 7.5e-15: a root there would be the budget's, not the target's).
-    /// The calibration still fits the nodes it solves.
     #[test]
     fn nodes_beyond_the_step_budget_are_left_out() {
         let (p, e) = (1.5, 1e-15);
@@ -929,5 +933,42 @@ mod tests {
         );
         let at_edge = mean_e(p, alpha, EndCriterion::Overlap, 128.0, 0.99838);
         assert!(at_edge > 2.0 * e, "{at_edge:e}");
+    }
+
+    /// The calibration fits the nodes it solves: nodes beyond the budget (the smallest h) are
+    /// skipped and the larger h still fitted; the first node the explicit step cannot reach ends
+    /// the fit (the larger h are not tried); fewer than 8 solved nodes give None. R = 1 + h/2 at
+    /// every solved node, so a fit gives c0 = 1/2 and the higher coefficients 0.
+    #[test]
+    fn calibration_skips_budget_nodes_and_stops_at_unreachable_ones() {
+        let tried = core::cell::RefCell::new(Vec::new());
+        let fake = |budget_below_h: f64, unreachable_above_h: f64| {
+            tried.borrow_mut().clear();
+            calibrate_with(|n: f64| {
+                tried.borrow_mut().push(n);
+                let h = 1.0 / n;
+                if h < budget_below_h {
+                    Err(NoR::Budget)
+                } else if h > unreachable_above_h {
+                    Err(NoR::Unreachable)
+                } else {
+                    Ok(1.0 + 0.5 * h)
+                }
+            })
+        };
+        // The 4 smallest h outlast the budget: 12 nodes fitted.
+        let c = fake(1.0 / 60.0, 1.0).unwrap();
+        assert!(
+            (c[0] - 0.5).abs() < 1e-9 && c[1..].iter().all(|x| x.abs() < 1e-6),
+            "{c:?}"
+        );
+        assert_eq!(tried.borrow().len(), 16);
+        // Unreachable from t_H/13 up: that node is the last tried, 12 fitted.
+        let c = fake(0.0, 1.0 / 13.5).unwrap();
+        assert!((c[0] - 0.5).abs() < 1e-9, "{c:?}");
+        assert_eq!(tried.borrow().last(), Some(&13.0));
+        assert_eq!(tried.borrow().len(), 13);
+        // 9 nodes beyond the budget leave 7: None.
+        assert!(fake(1.0 / 20.0, 1.0).is_none());
     }
 }

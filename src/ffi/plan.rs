@@ -262,7 +262,8 @@ pub unsafe extern "C" fn dc_plan_input_init(input: *mut dc_plan_input) -> i32 {
 /// library's exact functions (dc_max_overlap, dc_contact_duration, dc_dt_for_accuracy,
 /// dc_dt_static, and velocity-Verlet collisions at 64 onset phases).
 ///
-/// Cost: one dc_dt_for_accuracy (up to ~200 ms for e ~ 0.1, e_tol ~ 1e-3) and 64 simulated
+/// Cost: one dc_dt_for_accuracy (up to ~200 ms for e ~ 0.1, e_tol ~ 1e-3; seconds where it
+/// checks an extrapolated step, e_tol below about 1e-4 with strong damping) and 64 simulated
 /// collisions of at most 2^22 steps each (a plan needing more steps per contact is refused:
 /// DC_ERR_PLAN_INFEASIBLE); allocation-free, thread-safe. Call it at set-up.
 ///

@@ -32,14 +32,16 @@ use crate::timestep;
 /// tol 1e-2: the force ends long before the bodies separate, and the search stops each
 /// collision at the force's end, after which the exit velocity does not change). e → 0 needs
 /// ever finer steps, most with DC_END_OVERLAP (near-critical damping): below about e = 1e-9
-/// with DC_END_OVERLAP and 1e-11 with DC_END_FORCE (tol 1e-2) the answers come from the
-/// extrapolated regime, not verified; further down they are erratic, DC_ERR_RESULT_RANGE (the
-/// step is not a double) or DC_ERR_NO_CONVERGENCE (the fine reference run does not end)
-/// (scripts/extreme_restitution.sh prints them for e = 1e-1 ... 1e-20). Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
+/// with DC_END_OVERLAP and 1e-11 with DC_END_FORCE (tol 1e-2) the answers are extrapolated
+/// steps too fine to check (over 2^18 contact steps), not verified; further down they are
+/// erratic, DC_ERR_NO_CONVERGENCE (no checked step passes, or the fine reference run does not
+/// end) or DC_ERR_RESULT_RANGE (the step is not a double) (scripts/extreme_restitution.sh prints them for e = 1e-1 ... 1e-20). Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
 /// damped contacts reach the tau/8 cap at loose tolerances.
 ///
-/// Cost: up to ~6e6 force evaluations (tens of ms; more on a loaded machine); allocation-free;
-/// call it once per material pair at set-up, not per step.
+/// Cost: up to ~6e6 force evaluations (tens of ms; more on a loaded machine), plus, where an
+/// extrapolated step is checked (tol below about 1e-4 with strong damping), up to 6 checks of 64
+/// collisions of at most 2^18 contact steps (up to ~1e8 more: seconds); allocation-free; call it
+/// once per material pair at set-up, not per step.
 ///
 /// @param p          force-law exponent, p >= 1.
 /// @param e          target restitution, 0 < e <= 1.
@@ -51,7 +53,8 @@ use crate::timestep;
 /// @param dt_out     receives the step [s] on success; untouched on error.
 /// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
 ///         DC_ERR_RESTITUTION_RANGE, DC_ERR_NOT_POSITIVE, DC_ERR_CRITERION, DC_ERR_RESULT_RANGE,
-///         DC_ERR_NO_CONVERGENCE (the reference collision does not end: see above).
+///         DC_ERR_NO_CONVERGENCE (the reference collision does not end, or no checked extrapolated
+///         step passes: see above).
 ///
 /// # Safety
 /// `dt_out` must be NULL or point to writable memory for one double.
@@ -81,7 +84,7 @@ pub unsafe extern "C" fn dc_dt_for_accuracy(
 /// N >= 10 (t_H/10 is returned when it passes: the correction is not designed beyond it); about
 /// 0.1-1 s of set-up work; allocation-free. An undamped law (e = 1) gets dc_dt_for_accuracy's
 /// answer. e -> 0 with DC_END_OVERLAP (near-critical damping) costs more: about 0.6 s at
-/// e = 1e-9, 2 s at 1e-12, 16 s at 1e-15, and a refusal after up to a minute from 1e-18
+/// e = 1e-9, 2.4 s at 1e-12, 13-16 s at 1e-15, and a refusal after 40-70 s from 1e-18
 /// (scripts/extreme_restitution.sh prints the times).
 ///
 /// @return as dc_dt_for_accuracy; DC_ERR_STEP_UNREACHABLE when no step down to t_H/8192 meets

@@ -807,9 +807,10 @@ pub fn plan(inp: &PlanInput) -> Result<Plan, PlanError> {
         inp.e_tol,
     )
     .map_err(|e| match e {
-        // e → 0 (DC_END_OVERLAP from about 1e-18, DC_END_FORCE about 1e-13 to 1e-18): the
-        // search's fine collision does not end, or its step is not a double: no step resolves
-        // the tolerance.
+        // e → 0 (DC_END_OVERLAP from about 1e-15, DC_END_FORCE about 1e-13 to 1e-18), or a
+        // tolerance below the damping's first-order error: the search's fine collision does not
+        // end, no checked extrapolated step meets the tolerance, or the step is not a double: no
+        // step resolves the tolerance.
         Error::NoConvergence | Error::ResultRange => infeasible(PlanField::ETol),
         e => none(e),
     })?;
