@@ -149,7 +149,7 @@ fn bad_input() {
 }
 
 /// docs/timestep.md ("Limits, measured"): in the extrapolated regime (tol ≲ 1e-4 with strong
-/// damping) the extrapolated step is checked by simulation inside the function and halved until
+/// damping) the extrapolated step is checked by simulation inside the function and stepped down until
 /// it passes. The linear spring-dashpot under the overlap end at e = 0.1, tol = 1e-4, whose
 /// extrapolated step misses tol without the check (the error is erratic in dt there,
 /// docs/timestep.md finding 1), and strongly damped Hertz under the force end both meet tol at
