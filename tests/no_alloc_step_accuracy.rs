@@ -34,6 +34,8 @@ fn dt_for_accuracy_does_not_allocate() {
                 (1.0, 0.9, 2.0, 10.0, 1e-3),
                 (3.0, 0.1, 0.5, 3.0, 0.5),
                 (2.0, 1.0, 1.0, 1.0, 1e-5),
+                // below the search's floor: the extrapolated step and its check
+                (1.0, 0.1, 1.0, 1.0, 1e-4),
                 (f64::NAN, 0.5, 1.0, 1.0, 1e-2),
                 (1.5, 0.0, 1.0, 1.0, 1e-2),
                 (1.5, 0.5, -1.0, 1.0, 1e-2),
