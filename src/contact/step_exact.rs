@@ -386,15 +386,11 @@ fn solve_r_with(mean_e: impl Fn(f64) -> f64, e: f64) -> Result<f64, NoR> {
     for _ in 0..60 {
         let r = (lo.0 * hi.1 - hi.0 * lo.1) / (hi.1 - lo.1);
         let (fr, or) = f(r);
-        if or {
-            hi = (r, fr, or);
-            if side == -1 {
-                lo.1 *= 0.5;
-            }
-            side = -1;
-        } else if fr == 0.0 || (hi.0 - lo.0).abs() < 1e-13 {
+        // An outlasting point becomes hi (its e is below every target), never the root.
+        if !or && (fr == 0.0 || (hi.0 - lo.0).abs() < 1e-13) {
             return Ok(r);
-        } else if fr > 0.0 {
+        }
+        if fr > 0.0 && !or {
             lo = (r, fr, or);
             if side == 1 {
                 hi.1 *= 0.5;
