@@ -379,9 +379,7 @@ fn solve_r_with(mean_e: impl Fn(f64) -> f64, e: f64) -> Result<f64, NoR> {
         }
         prev = next;
     };
-    // Illinois false position on [lo, hi] (f(lo) ≥ 0 > f(hi)). A root found next to an R whose
-    // collision outlasted the budget is that budget's edge, not the target's R.
-    let done = |r: f64, hi: (f64, f64, bool)| if hi.2 { Err(NoR::Budget) } else { Ok(r) };
+    // Illinois false position on [lo, hi] (f(lo) ≥ 0 > f(hi)).
     let mut side = 0;
     for _ in 0..60 {
         let r = (lo.0 * hi.1 - hi.0 * lo.1) / (hi.1 - lo.1);
@@ -407,7 +405,13 @@ fn solve_r_with(mean_e: impl Fn(f64) -> f64, e: f64) -> Result<f64, NoR> {
             break;
         }
     }
-    done(0.5 * (lo.0 + hi.0), hi)
+    // A root next to an R whose collision outlasted the budget is that budget's edge, not the
+    // target's R.
+    if hi.2 {
+        Err(NoR::Budget)
+    } else {
+        Ok(0.5 * (lo.0 + hi.0))
+    }
 }
 
 /// The solution of the 5 × 5 symmetric positive definite system a x = b by Gaussian elimination

@@ -95,21 +95,21 @@ fn verified(
     err: impl Fn(f64) -> f64,
     tol: f64,
 ) -> Result<f64, Error> {
-    if !(tau / h <= VERIFY_MAX_STEPS) {
-        return Ok(h);
-    }
-    for _ in 0..VERIFY_TRIES {
+    let mut checks = 0;
+    while checks < VERIFY_TRIES && tau / h <= VERIFY_MAX_STEPS {
         let e_h = err(h);
         if e_h <= tol {
             return Ok(h);
         }
+        checks += 1;
         // e_h > tol > 0 (∞ for a run that does not end: the factor is then 1/2).
         h *= (0.9 * tol / e_h).powf(1.0 / k).clamp(0.5, 0.9);
-        if !(tau / h <= VERIFY_MAX_STEPS) {
-            break;
-        }
     }
-    Err(Error::NoConvergence)
+    if checks == 0 {
+        Ok(h)
+    } else {
+        Err(Error::NoConvergence)
+    }
 }
 
 /// Dimensionless step h = dt/t* (see the module docs) and the contact duration τ/t*.
