@@ -26,6 +26,8 @@ use crate::{EndCriterion, Error};
 pub(crate) const FIT_N: [f64; 16] = [
     10.0, 11.0, 12.0, 13.0, 14.0, 16.0, 18.0, 22.0, 26.0, 30.0, 36.0, 44.0, 56.0, 72.0, 96.0, 128.0,
 ];
+/// Solved nodes [`calibrate`] needs for its fit of five coefficients.
+const MIN_NODES: usize = 8;
 /// Onset phases of the phase mean that [`calibrate`] solves.
 pub(crate) const PHASES: usize = 64;
 /// The largest h the correction is designed for (t_H/10); larger h use R(1/10).
@@ -40,6 +42,9 @@ pub const ONSET_A_MAX: f64 = 2.0;
 /// R is kept within these bounds (the fit is not designed beyond its nodes).
 const R_MIN: f64 = 0.25;
 const R_MAX: f64 = 2.0;
+/// Width of a bracket in R next to the budget's edge at which [`solve_r_with`] decides between
+/// the target and the edge.
+const EDGE_WIDTH: f64 = 1e-6;
 /// Steps one simulated collision of [`phases_e`] may take before it counts as not ending (near
 /// critical damping, e → 0 with DC_END_OVERLAP, a collision lasts thousands of t_H).
 const STEP_BUDGET: u32 = 100_000;
@@ -379,10 +384,21 @@ fn solve_r_with(mean_e: impl Fn(f64) -> f64, e: f64) -> Result<f64, NoR> {
         }
         prev = next;
     };
-    // Illinois false position on [lo, hi] (f(lo) ≥ 0 > f(hi)).
+    // Illinois false position on [lo, hi] (f(lo) ≥ 0 > f(hi)); bisection while hi outlasts (its
+    // f is a stand-in, not a value to interpolate).
     let mut side = 0;
     for _ in 0..60 {
-        let r = (lo.0 * hi.1 - hi.0 * lo.1) / (hi.1 - lo.1);
+        if hi.2 && hi.0 - lo.0 <= EDGE_WIDTH {
+            // The target's R, if the budget holds one, lies within EDGE_WIDTH of the budget's
+            // edge: that node is the budget's (as a root whose hi side outlasts is below), decided
+            // here instead of at the edge itself, where every phase runs nearly the whole budget.
+            return Err(NoR::Budget);
+        }
+        let r = if hi.2 {
+            0.5 * (lo.0 + hi.0)
+        } else {
+            (lo.0 * hi.1 - hi.0 * lo.1) / (hi.1 - lo.1)
+        };
         let (fr, or) = f(r);
         // An outlasting point becomes hi (its e is below every target), never the root.
         if !or && (fr == 0.0 || (hi.0 - lo.0).abs() < 1e-13) {
@@ -464,8 +480,13 @@ fn calibrate_with(solve: impl Fn(f64) -> Result<f64, NoR>) -> Option<[f64; 5]> {
     let mut ata = [[0.0f64; 5]; 5];
     let mut aty = [0.0f64; 5];
     let mut rows = 0;
-    // From the smallest h up: stop at the first unreachable node.
-    for &n in FIT_N.iter().rev() {
+    // From the smallest h up: stop at the first unreachable node, and as soon as the nodes left
+    // cannot bring the fit to [`MIN_NODES`] (near critical damping each budget node costs
+    // seconds of simulated collisions: the refusal should not wait for the rest).
+    for (i, &n) in FIT_N.iter().rev().enumerate() {
+        if rows + (FIT_N.len() - i) < MIN_NODES {
+            return None;
+        }
         let r = match solve(n) {
             Ok(r) => r,
             Err(NoR::Budget) => continue,
@@ -483,7 +504,7 @@ fn calibrate_with(solve: impl Fn(f64) -> Result<f64, NoR>) -> Option<[f64; 5]> {
         }
         rows += 1;
     }
-    if rows < 8 {
+    if rows < MIN_NODES {
         return None;
     }
     let c = solve_spd5(ata, aty)?;
@@ -927,17 +948,30 @@ mod tests {
         let (p, e) = (1.5, 1e-15);
         let alpha = crate::powerlaw::alpha_from_e(e, p, EndCriterion::Overlap).unwrap();
         assert!(mean_e(p, alpha, EndCriterion::Overlap, 128.0, 1.0).is_nan());
-        assert_eq!(
-            solve_r(p, alpha, EndCriterion::Overlap, e, 128.0),
-            Err(NoR::Budget)
+        // Decided within EDGE_WIDTH of the edge by bisection: about 20 phase means (false
+        // position on the edge's stand-in value crept along it for 60).
+        let means = core::cell::Cell::new(0);
+        let got = solve_r_with(
+            |r| {
+                means.set(means.get() + 1);
+                mean_e(p, alpha, EndCriterion::Overlap, 128.0, r)
+            },
+            e,
         );
+        eprintln!(
+            "e = {e:e}, t_H/128: {got:?} after {} phase means",
+            means.get()
+        );
+        assert_eq!(got, Err(NoR::Budget));
+        assert!(means.get() <= 24, "{} phase means", means.get());
         let at_edge = mean_e(p, alpha, EndCriterion::Overlap, 128.0, 0.99838);
         assert!(at_edge > 2.0 * e, "{at_edge:e}");
     }
 
     /// The calibration fits the nodes it solves: nodes beyond the budget (the smallest h) are
     /// skipped and the larger h still fitted; the first node the explicit step cannot reach ends
-    /// the fit (the larger h are not tried); fewer than 8 solved nodes give None. R = 1 + h/2 at
+    /// the fit (the larger h are not tried); fewer than 8 solved nodes give None, decided as soon as
+    /// the nodes left cannot make 8. R = 1 + h/2 at
     /// every solved node, so a fit gives c0 = 1/2 and the higher coefficients 0.
     #[test]
     fn calibration_skips_budget_nodes_and_stops_at_unreachable_ones() {
@@ -968,7 +1002,46 @@ mod tests {
         assert!((c[0] - 0.5).abs() < 1e-9, "{c:?}");
         assert_eq!(tried.borrow().last(), Some(&13.0));
         assert_eq!(tried.borrow().len(), 13);
-        // 9 nodes beyond the budget leave 7: None.
+        // 9 nodes beyond the budget leave 7: None, decided at the 9th budget node (the 7 left
+        // are not solved).
         assert!(fake(1.0 / 20.0, 1.0).is_none());
+        assert_eq!(tried.borrow().len(), 9);
+        // 8 beyond the budget leave exactly 8: every one solved and fitted.
+        assert!(fake(1.0 / 24.0, 1.0).is_some());
+        assert_eq!(tried.borrow().len(), 16);
+    }
+
+    /// Next to the budget's edge (R's whose collisions outlast it: NaN means), on a stand-in
+    /// e(R) = exp(−40 R), edge at R = 0.95: a target whose R lies past the edge is `Budget`; one
+    /// whose R lies inside it, even 1e-5 from it, is solved to 1e-12.
+    #[test]
+    fn roots_next_to_the_budget_edge() {
+        let mean = |r: f64| {
+            if r >= 0.95 {
+                f64::NAN
+            } else {
+                (-40.0 * r).exp()
+            }
+        };
+        let solve = |r_target: f64| {
+            let means = core::cell::Cell::new(0);
+            let got = solve_r_with(
+                |r| {
+                    means.set(means.get() + 1);
+                    mean(r)
+                },
+                (-40.0 * r_target).exp(),
+            );
+            (got, means.get())
+        };
+        let (got, means) = solve(0.97);
+        assert_eq!(got, Err(NoR::Budget));
+        assert!(means <= 24, "{means} means");
+        for r_target in [0.93, 0.94999] {
+            let (got, means) = solve(r_target);
+            let r = got.unwrap();
+            assert!((r - r_target).abs() < 1e-12, "{r} for {r_target}");
+            assert!(means <= 60, "{means} means");
+        }
     }
 }
