@@ -2665,8 +2665,8 @@ int32_t dc_dt_for_accuracy(double p,
  * N >= 10 (t_H/10 is returned when it passes: the correction is not designed beyond it); about
  * 0.1-1 s of set-up work; allocation-free. An undamped law (e = 1) gets dc_dt_for_accuracy's
  * answer. e -> 0 with DC_END_OVERLAP (near-critical damping) costs more: about 0.6 s at
- * e = 1e-9, 2.4 s at 1e-12, 13-16 s at 1e-15, and a refusal after 40-70 s from 1e-18
- * (scripts/extreme_restitution.sh prints the times).
+ * e = 1e-9, 2.7 s at 1e-12, 6.4 s at 1e-15, 9.5 s at 1e-17, and a refusal after about 6 s from
+ * 1e-18 (scripts/extreme_restitution.sh prints the times).
  *
  * @return as dc_dt_for_accuracy; DC_ERR_STEP_UNREACHABLE when no step down to t_H/8192 meets
  *         tol (or the step-aware damping cannot realise e at all).

@@ -949,7 +949,7 @@ mod tests {
         let alpha = crate::powerlaw::alpha_from_e(e, p, EndCriterion::Overlap).unwrap();
         assert!(mean_e(p, alpha, EndCriterion::Overlap, 128.0, 1.0).is_nan());
         // Decided within EDGE_WIDTH of the edge by bisection: about 20 phase means (false
-        // position on the edge's stand-in value crept along it for 60).
+        // position on the edge's stand-in value crept along it for 62).
         let means = core::cell::Cell::new(0);
         let got = solve_r_with(
             |r| {
