@@ -100,35 +100,6 @@ fn scaling_with_speed_and_stiffness() {
     assert!((b / (a * t_star) - 1.0).abs() < 1e-12, "{a} {b}");
 }
 
-/// e → 0: the error law measured at the search's finest steps, extrapolated by tens of decades,
-/// gave steps no host can run and nobody checked (1.3e-23 s, t*·3e-21, at e = 1e-19 with
-/// DC_END_FORCE). An answer is now a step within 2^22 steps of a contact (looser here: at least
-/// 1e-7 t*, the contact lasting a few t*) or DC_ERR_NO_CONVERGENCE. Hertz, v0 = 1 m/s,
-/// ω0 = 1e3, tol 0.05, as scripts/extreme_restitution.sh runs it.
-#[test]
-fn vanishing_restitution_steps_are_affordable_or_refused() {
-    let (p, v0, w0, tol) = (1.5f64, 1.0f64, 1e3, 0.05);
-    let t_star = (v0 / w0).powf(2.0 / (p + 1.0)) / v0;
-    let cases = [
-        (DC_END_FORCE, 1e-19),
-        (DC_END_FORCE, 1e-20),
-        (DC_END_OVERLAP, 1e-16),
-        (DC_END_OVERLAP, 1e-17),
-    ];
-    for (crit, e) in cases {
-        let mut dt = f64::NAN;
-        let s = unsafe { dc_dt_for_accuracy(p, e, crit, v0, w0, tol, &mut dt) };
-        eprintln!(
-            "criterion {crit}, e = {e:e}: status {s}, dt = {dt:e} s = {:e} t*",
-            dt / t_star
-        );
-        assert!(
-            s == DC_ERR_NO_CONVERGENCE || (s == DC_OK && dt >= 1e-7 * t_star),
-            "criterion {crit}, e = {e:e}: status {s}, dt {dt:e}"
-        );
-    }
-}
-
 #[test]
 fn bad_input() {
     let mut out = 42.0;

@@ -24,10 +24,7 @@ use crate::timestep;
 /// fitted law, by 10 % to a factor 2, up to 6 checks) until it passes, as long as a collision at
 /// that step takes at most 2^18 contact steps (DC_ERR_NO_CONVERGENCE when none passes within
 /// that bound: the error is erratic in dt there); a finer extrapolated step is returned
-/// unverified, up to 2^22 steps per contact (the bound of dc_plan), and refused beyond
-/// (DC_ERR_NO_CONVERGENCE: as e -> 0 the extrapolation reaches tens of decades below the steps
-/// it was measured at, e.g. 1.3e-23 s at e = 1e-19, Hertz, v0 = 1 m/s, omega0 = 1e3, tol 0.05,
-/// DC_END_FORCE). Never returns more than tau/8.
+/// unverified. Never returns more than tau/8.
 ///
 /// Accuracy (tests/step_accuracy.rs: p in {1, 1.5, 2, 3}, e in {0.1, 0.5, 0.9}, both criteria,
 /// tol in {1e-2, 1e-3}, v0 = 0.7, omega0 = 13): at the returned dt a collision integrated
@@ -38,9 +35,8 @@ use crate::timestep;
 /// ever finer steps, most with DC_END_OVERLAP (near-critical damping): below about e = 1e-9
 /// with DC_END_OVERLAP and 1e-11 with DC_END_FORCE (tol 1e-2) the answers are extrapolated
 /// steps too fine to check (over 2^18 contact steps), not verified; further down they are
-/// erratic, DC_ERR_NO_CONVERGENCE (no checked step passes, the step would put over 2^22 steps
-/// in a contact, or the fine reference run does not end) or DC_ERR_RESULT_RANGE (the step is
-/// not a double) (scripts/extreme_restitution.sh prints them for e = 1e-1 ... 1e-20). Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
+/// erratic, DC_ERR_NO_CONVERGENCE (no checked step passes, or the fine reference run does not
+/// end) or DC_ERR_RESULT_RANGE (the step is not a double) (scripts/extreme_restitution.sh prints them for e = 1e-1 ... 1e-20). Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
 /// damped contacts reach the tau/8 cap at loose tolerances.
 ///
 /// Cost: up to ~6e6 force evaluations (tens of ms; more on a loaded machine), plus, where an

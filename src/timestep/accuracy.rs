@@ -20,8 +20,7 @@
 //! (clamped to [0.5, 2]) and h is extrapolated, then checked at the same phases and stepped
 //! down along that law until it passes, while a collision at that step takes at most
 //! [`VERIFY_MAX_STEPS`] contact steps (NoConvergence when none passes within that bound); a
-//! step finer than the bound is returned as extrapolated, not verified, up to
-//! [`MAX_STEPS_PER_CONTACT`] steps per contact (finer: NoConvergence).
+//! step finer than the bound is returned as extrapolated, not verified.
 //! Cost: at most ~6·10⁶ force evaluations (tens of ms; up to a few hundred ms on a loaded
 //! machine for e ≤ 0.1 and tol ≤ 1e-3), plus, where an extrapolated step is checked, up to 6
 //! checks of 64 collisions of at most 2^18 contact steps (up to ~10⁸ more: seconds); no
@@ -80,10 +79,6 @@ pub fn worst_restitution_error(pair: &PairModel, e: f64, tau: f64, h: f64, n_pha
 /// collisions of at most this many contact steps); finer steps are returned as extrapolated.
 const VERIFY_MAX_STEPS: f64 = 262_144.0;
 
-/// Steps per contact beyond which an unverified extrapolated step is refused: the bound of a plan
-/// ([`crate::plan::MAX_STEPS_PER_CONTACT`], 2^22).
-const MAX_STEPS_PER_CONTACT: f64 = crate::plan::MAX_STEPS_PER_CONTACT;
-
 /// Checks of an extrapolated step before it is given up.
 const VERIFY_TRIES: u32 = 6;
 
@@ -92,10 +87,7 @@ const VERIFY_TRIES: u32 = 6;
 /// step where E ∝ h^k would give 0.9 of `tol` (at least 10 % and at most a factor 2 smaller:
 /// the extrapolation aims at `tol` itself, so a first check often fails by a few per cent);
 /// NoConvergence when no checked step passes (the error is erratic in h there:
-/// docs/timestep.md, finding 1); returned as it is when already finer than the bound, unless it
-/// puts more than [`MAX_STEPS_PER_CONTACT`] steps in a contact (NoConvergence: a step no scene can
-/// afford, from an error law extrapolated that far below the steps it was measured at, is not an
-/// answer; e → 0 extrapolates by tens of decades).
+/// docs/timestep.md, finding 1); returned as it is when already finer than the bound.
 fn verified(
     mut h: f64,
     k: f64,
@@ -113,7 +105,7 @@ fn verified(
         // e_h > tol > 0 (∞ for a run that does not end: the factor is then 1/2).
         h *= (0.9 * tol / e_h).powf(1.0 / k).clamp(0.5, 0.9);
     }
-    if checks == 0 && tau / h <= MAX_STEPS_PER_CONTACT {
+    if checks == 0 {
         Ok(h)
     } else {
         Err(Error::NoConvergence)
@@ -223,8 +215,7 @@ mod tests {
     /// An extrapolated step that misses by a few per cent (a first-order error 1.03 tol at
     /// h0, τ/h0 = 150 000: halving would leave the checked range) is refined to a passing step
     /// within the range; an error that never passes gives NoConvergence after at most
-    /// VERIFY_TRIES checks; a step finer than the range is returned unchecked, up to 2^22 steps per
-    /// contact, and refused beyond.
+    /// VERIFY_TRIES checks; a step finer than the range is returned unchecked.
     #[test]
     fn extrapolated_step_refined_within_the_checked_range() {
         let (tau, tol, h0) = (1.0, 1e-4, 1.0 / 150_000.0);
@@ -255,15 +246,6 @@ mod tests {
         checks.set(0);
         let fine = h0 / 4.0;
         assert_eq!(verified(fine, 1.0, tau, never, tol), Ok(fine));
-        assert_eq!(checks.get(), 0);
-
-        // Unchecked up to 2^22 steps per contact; finer, refused (unchecked either way).
-        let edge = tau / MAX_STEPS_PER_CONTACT;
-        assert_eq!(verified(edge, 1.0, tau, never, tol), Ok(edge));
-        assert_eq!(
-            verified(edge * 0.999, 1.0, tau, never, tol),
-            Err(Error::NoConvergence)
-        );
         assert_eq!(checks.get(), 0);
     }
 }
