@@ -535,7 +535,8 @@ enum dc_status
      */
     DC_ERR_RESULT_RANGE = 6108,
     /**
-     * An iteration failed to converge (not expected for valid input; please report).
+     * A search or iteration found no answer within its bounds: e.g. dc_dt_for_accuracy where no
+     * step it can check meets the tolerance (e -> 0, very tight tolerances).
      */
     DC_ERR_NO_CONVERGENCE = 6109,
     /**
@@ -1826,7 +1827,7 @@ int32_t dc_contact_model_set_carry(struct dc_contact_model *model, int32_t carry
  * returned unchanged (not step-aware, the same history length). Binary collisions are exact; an
  * enduring contact keeps its static overlap (the correction acts on the dashpot only). Set-up
  * cost of the first call: about 10 ms at e_n = 0.1; with DC_END_OVERLAP more as e_n -> 0 (near
- * critical damping): about 0.6 s at 1e-9, 2.4 s at 1e-12 (dc_dt_for_accuracy_step_aware runs the
+ * critical damping): about 0.6 s at 1e-9, 2.7 s at 1e-12 (dc_dt_for_accuracy_step_aware runs the
  * same calibration; scripts/extreme_restitution.sh prints its times).
  *
  * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_NOT_FINITE (dt),
@@ -2621,10 +2622,16 @@ int32_t dc_status_known(int32_t status);
  * tol 1e-2: the force ends long before the bodies separate, and the search stops each
  * collision at the force's end, after which the exit velocity does not change). e → 0 needs
  * ever finer steps, most with DC_END_OVERLAP (near-critical damping): below about e = 1e-9
- * with DC_END_OVERLAP and 1e-11 with DC_END_FORCE (tol 1e-2) the answers are extrapolated
- * steps too fine to check (over 2^18 contact steps), not verified; further down they are
- * erratic, DC_ERR_NO_CONVERGENCE (no checked step passes, or the fine reference run does not
- * end) or DC_ERR_RESULT_RANGE (the step is not a double) (scripts/extreme_restitution.sh prints them for e = 1e-1 ... 1e-20). Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
+ * with DC_END_OVERLAP (tol 1e-2) the answers are extrapolated steps too fine to check (over
+ * 2^18 contact steps), not verified; further down they are erratic or DC_ERR_NO_CONVERGENCE
+ * (no checked step passes, or the fine reference run does not end). With DC_END_FORCE the
+ * force ends ever sooner (tau = 0.02 t* at e = 1e-8, 2e-6 t* at 1e-19; the search's grid is
+ * scaled by tau, from the library's quadrature where the force ends within 100 steps of the
+ * reference run): answered to about e = 1e-12 (Hertz, tol 5e-2: 636 steps per contact), then
+ * DC_ERR_NO_CONVERGENCE (the collisions at the search's finest steps do not end within their
+ * step budget, so there is no error law to extrapolate). DC_ERR_RESULT_RANGE: the step is not
+ * a double
+ * (scripts/extreme_restitution.sh prints them for e = 1e-1 ... 1e-20). Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
  * damped contacts reach the tau/8 cap at loose tolerances.
  *
  * Cost: up to ~6e6 force evaluations (tens of ms; more on a loaded machine), plus, where an

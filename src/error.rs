@@ -19,7 +19,8 @@ pub enum Error {
     Criterion,
     /// The result is not representable as a finite double (overflow).
     ResultRange,
-    /// An iterative method did not converge (never expected; reported rather than hidden).
+    /// A search or iterative method found no answer within its bounds (e.g. no step
+    /// `dt_for_accuracy` can check meets the tolerance); reported rather than hidden.
     NoConvergence,
     /// A caller-provided buffer is too short, or a requested count is zero.
     BufferTooShort,

@@ -755,7 +755,7 @@ fn step_aware_step_holds_200_scenes() {
 /// contact's duration does not converge), never another status and never after simulating for
 /// long. With DC_END_OVERLAP (near-critical damping) the step shrinks fast:
 /// 6.3·10^5 steps per contact at e = 1e-6 (planned), more than 2^22 at 1e-7 (refused); with
-/// DC_END_FORCE e is planned down to 1e-11 in at most 3100 steps.
+/// DC_END_FORCE e is planned down to 1e-12 in at most 3100 steps.
 #[test]
 fn vanishing_restitution_is_planned_or_refused_at_once() {
     use demcontact::Error;
@@ -832,10 +832,10 @@ fn vanishing_restitution_is_planned_or_refused_at_once() {
         .find(|p| p.0 == EndCriterion::Overlap && p.1 == 6)
         .map(|p| p.2);
     assert!(at6.is_some_and(|s| (6.0e5..6.5e5).contains(&s)), "{at6:?}");
-    // The force criterion: planned to e = 1e-11, in at most 3100 steps per contact.
+    // The force criterion: planned to e = 1e-12, in at most 3100 steps per contact.
     assert_eq!(
         ks(EndCriterion::Force),
-        (1..=11).collect::<Vec<_>>(),
+        (1..=12).collect::<Vec<_>>(),
         "{planned:?}"
     );
     assert!(

@@ -100,6 +100,47 @@ fn scaling_with_speed_and_stiffness() {
     assert!((b / (a * t_star) - 1.0).abs() < 1e-12, "{a} {b}");
 }
 
+/// DC_END_FORCE at e → 0: the force ends within microseconds (τ = 1.9e-6 t* at e = 1e-19), far
+/// inside one step of a run at 1e-3 t*; a search scaled by such a run's duration answered
+/// 1.3e-23 s there (Hertz, v0 = 1 m/s, ω0 = 1e3, tol 0.05, as scripts/extreme_restitution.sh
+/// runs it), 10^14 steps per contact. An answer is a step that resolves the true duration
+/// (`dc_contact_duration`) with at most 2^22 steps, or DC_ERR_NO_CONVERGENCE; e = 1e-12, within
+/// the search's grid for the true duration, is answered.
+#[test]
+fn vanishing_restitution_force_end_is_scaled_by_its_duration() {
+    let (p, v0, w0, tol) = (1.5f64, 1.0f64, 1e3f64, 0.05);
+    for e in [1e-12, 1e-19, 1e-20] {
+        let (mut alpha, mut tau, mut dt) = (f64::NAN, f64::NAN, f64::NAN);
+        unsafe {
+            assert_eq!(dc_alpha_from_e(e, p, DC_END_FORCE, &mut alpha), DC_OK);
+            assert_eq!(
+                demcontact::ffi::powerlaw::dc_contact_duration(
+                    p,
+                    alpha,
+                    v0,
+                    w0,
+                    DC_END_FORCE,
+                    &mut tau
+                ),
+                DC_OK
+            );
+        }
+        let s = unsafe { dc_dt_for_accuracy(p, e, DC_END_FORCE, v0, w0, tol, &mut dt) };
+        eprintln!(
+            "e = {e:e}: duration {tau:e} s, status {s}, dt {dt:e} s, {:e} steps",
+            tau / dt
+        );
+        if e == 1e-12 {
+            assert_eq!(s, DC_OK);
+        }
+        assert!(
+            s == DC_ERR_NO_CONVERGENCE
+                || (s == DC_OK && tau / dt >= 1.0 && tau / dt <= 4_194_304.0),
+            "e = {e:e}: status {s}, dt {dt:e}, duration {tau:e}"
+        );
+    }
+}
+
 #[test]
 fn bad_input() {
     let mut out = 42.0;

@@ -57,7 +57,8 @@ class UsageError(DemcontactError, ValueError):
 
 
 class InternalError(DemcontactError, RuntimeError):
-    """Something that should never happen (a non-converged iteration or a caught panic): please report."""
+    """A search with no answer within its bounds (NoConvergenceError), or a caught panic
+    (PanicError: never seen, please report)."""
 
 
 # ---- one class per code ---------------------------------------------------------------------
@@ -237,7 +238,8 @@ class PlanError(UsageError):
 
 
 class NoConvergenceError(InternalError):
-    """An iteration failed to converge (6109; never seen: please report)."""
+    """A search or iteration found no answer within its bounds (6109), e.g. dt_for_accuracy at
+    e -> 0 or very tight tolerances, where no step it can check meets the tolerance."""
 
     status = 6109
 

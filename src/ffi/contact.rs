@@ -600,7 +600,7 @@ pub unsafe extern "C" fn dc_contact_model_set_carry(
 /// returned unchanged (not step-aware, the same history length). Binary collisions are exact; an
 /// enduring contact keeps its static overlap (the correction acts on the dashpot only). Set-up
 /// cost of the first call: about 10 ms at e_n = 0.1; with DC_END_OVERLAP more as e_n -> 0 (near
-/// critical damping): about 0.6 s at 1e-9, 2.4 s at 1e-12 (dc_dt_for_accuracy_step_aware runs the
+/// critical damping): about 0.6 s at 1e-9, 2.7 s at 1e-12 (dc_dt_for_accuracy_step_aware runs the
 /// same calibration; scripts/extreme_restitution.sh prints its times).
 ///
 /// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_NOT_FINITE (dt),

@@ -39,7 +39,8 @@ pub enum dc_status {
     DC_ERR_CRITERION = 6107,
     /// The result overflows a double (inputs valid but extreme).
     DC_ERR_RESULT_RANGE = 6108,
-    /// An iteration failed to converge (not expected for valid input; please report).
+    /// A search or iteration found no answer within its bounds: e.g. dc_dt_for_accuracy where no
+    /// step it can check meets the tolerance (e -> 0, very tight tolerances).
     DC_ERR_NO_CONVERGENCE = 6109,
     /// A caller-provided buffer is too short, or a requested sample count is zero.
     DC_ERR_BUFFER_TOO_SHORT = 6110,
@@ -130,7 +131,7 @@ impl dc_status {
             DC_ERR_NEGATIVE => c"a damping coefficient or overlap must be >= 0",
             DC_ERR_CRITERION => c"end-of-contact criterion must be DC_END_OVERLAP or DC_END_FORCE",
             DC_ERR_RESULT_RANGE => c"the result is not representable as a finite double",
-            DC_ERR_NO_CONVERGENCE => c"an iteration did not converge (please report)",
+            DC_ERR_NO_CONVERGENCE => c"no answer within the search's bounds (no checked step or iterate converged)",
             DC_ERR_BUFFER_TOO_SHORT => c"a buffer is too short or a sample count is zero",
             DC_ERR_NO_EVENT => c"the requested event never happens for these inputs",
             DC_ERR_LEVEL => c"quadrature accuracy level out of range",

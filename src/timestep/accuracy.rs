@@ -12,7 +12,8 @@
 //! criterion, so velocity-Verlet is only first order in e), with a phase dependence that is often
 //! a jump between two branches (N or N + 1 contact steps): hence many phases, including the ends.
 //!
-//! Search, aiming at SAFETY·tol: τ from one fine run; then h = τ/8, τ/16, … down to τ/8192 until
+//! Search, aiming at SAFETY·tol: τ from one fine run (from the library's quadrature where that
+//! run does not resolve the contact: [`reference_duration`]); then h = τ/8, τ/16, … down to τ/8192 until
 //! E(h) passes, then 5 bisections in log h between the last failing and the first passing step,
 //! returning the passing end (so the returned step passed at all sampled phases, and is within a
 //! factor 2^(1/32) of the largest passing step on that bracket). Below τ/8192 (tol below ~1e-4
@@ -29,6 +30,7 @@
 use super::integrator::{Scheme, collide};
 use crate::force::PairModel;
 use crate::force::powerlaw::powerlaw_from_alpha;
+use crate::powerlaw::{Contact, contact_duration};
 use crate::powerlaw::{alpha_from_e, check_exponent};
 use crate::{EndCriterion, Error};
 
@@ -79,6 +81,11 @@ pub fn worst_restitution_error(pair: &PairModel, e: f64, tau: f64, h: f64, n_pha
 /// collisions of at most this many contact steps); finer steps are returned as extrapolated.
 const VERIFY_MAX_STEPS: f64 = 262_144.0;
 
+/// Step of the reference run [t*], and the steps a contact duration must span in it to be
+/// taken as resolved.
+const REF_STEP: f64 = 1e-3;
+const REF_RESOLVED: f64 = 100.0;
+
 /// Checks of an extrapolated step before it is given up.
 const VERIFY_TRIES: u32 = 6;
 
@@ -112,6 +119,36 @@ fn verified(
     }
 }
 
+/// The contact duration τ of the dimensionless collision (v0 = ω0 = 1) from a fine run (1 % is
+/// plenty: τ only scales the search grid). A contact shorter than [`REF_RESOLVED`] steps of that
+/// run (DC_END_FORCE below about e = 1e-6, where the force ends within τ ≈ 0.07 t* and less:
+/// 1.9e-6 t* at e = 1e-19, and the run's explicit steps are too coarse for its damping) takes
+/// the library's quadrature of the same contact instead ([`contact_duration`], 1e-10 relative).
+pub(crate) fn reference_duration(pair: &PairModel) -> Result<f64, Error> {
+    let tau = collide(
+        pair,
+        1.0,
+        1.0,
+        1.0,
+        REF_STEP,
+        0.5,
+        Scheme::VelocityVerlet,
+        10_000_000,
+    )?
+    .duration;
+    let tau = if tau >= REF_RESOLVED * REF_STEP {
+        tau
+    } else {
+        let c = Contact::new(pair.p, pair.alpha, 1.0, 1.0)?;
+        contact_duration(&c, pair.criterion, 4)?
+    };
+    if tau > 0.0 && tau.is_finite() {
+        Ok(tau)
+    } else {
+        Err(Error::NoConvergence)
+    }
+}
+
 /// Dimensionless step h = dt/t* (see the module docs) and the contact duration τ/t*.
 pub(crate) fn unit_step(
     p: f64,
@@ -120,21 +157,7 @@ pub(crate) fn unit_step(
     tol: f64,
 ) -> Result<(f64, f64), Error> {
     let pair = unit_pair(p, e, criterion)?;
-    // Reference duration from a fine run (1% is plenty: τ only scales the search grid).
-    let tau = collide(
-        &pair,
-        1.0,
-        1.0,
-        1.0,
-        1e-3,
-        0.5,
-        Scheme::VelocityVerlet,
-        10_000_000,
-    )?
-    .duration;
-    if !(tau > 0.0 && tau.is_finite()) {
-        return Err(Error::NoConvergence);
-    }
+    let tau = reference_duration(&pair)?;
     let err = |h: f64| worst_restitution_error(&pair, e, tau, h, N_PHASE);
     let tol = SAFETY * tol;
     let mut h = tau / TOP_DIV;
@@ -152,6 +175,11 @@ pub(crate) fn unit_step(
             break;
         }
         if h <= floor * 1.000001 {
+            if !e_h.is_finite() {
+                // The finest searched step's collisions do not end within their step budget
+                // (e → 0 with DC_END_FORCE): no error law to extrapolate.
+                return Err(Error::NoConvergence);
+            }
             // Extrapolate E ∝ h^k from the two finest measurements.
             let k = if e_fail.is_finite() && e_h > 0.0 {
                 (e_fail / e_h).log2().clamp(0.5, 2.0)
@@ -211,6 +239,78 @@ pub fn dt_for_accuracy(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The search's reference duration within 2 % of both the library's quadrature of the same
+    /// contact (`dc_contact_duration`, 1e-10 relative) and a run at a step 2·10^4 times finer than
+    /// the duration, including DC_END_FORCE contacts at small e that end within a few steps of
+    /// the reference run (τ = 0.02 t* at e = 1e-8, 5.5e-5 t* at e = 1e-12 with p = 1, against its
+    /// step of 1e-3 t*), where the reference takes the quadrature; and, shorter still (p = 1,
+    /// e = 1e-15 and 1e-19), against the force-zero time of the overdamped linear contact.
+    #[test]
+    fn reference_duration_resolves_short_contacts() {
+        for (p, e, crit) in [
+            (1.5, 0.5, EndCriterion::Overlap),
+            (1.5, 1e-3, EndCriterion::Force),
+            (1.5, 1e-8, EndCriterion::Force),
+            (1.0, 1e-12, EndCriterion::Force),
+        ] {
+            let tau = reference_duration(&unit_pair(p, e, crit).unwrap()).unwrap();
+            let alpha = alpha_from_e(e, p, crit).unwrap();
+            let mut exact = f64::NAN;
+            let s = unsafe {
+                crate::ffi::powerlaw::dc_contact_duration(
+                    p,
+                    alpha,
+                    1.0,
+                    1.0,
+                    crit as i32,
+                    &mut exact,
+                )
+            };
+            assert_eq!(s, 0);
+            // And a run at a step 2·10^4 times finer than the duration (whichever of the two
+            // the reference took, the other checks it).
+            let pair = unit_pair(p, e, crit).unwrap();
+            let fine = collide(
+                &pair,
+                1.0,
+                1.0,
+                1.0,
+                exact / 2e4,
+                0.5,
+                Scheme::VelocityVerlet,
+                1 << 26,
+            )
+            .unwrap()
+            .duration;
+            eprintln!(
+                "p {p} e {e:e} {crit:?}: reference {tau:e}, quadrature {exact:e}, fine run {fine:e}"
+            );
+            assert!(
+                (tau / exact - 1.0).abs() < 0.02,
+                "p {p} e {e:e}: {tau:e} vs {exact:e}"
+            );
+            assert!(
+                (tau / fine - 1.0).abs() < 0.02,
+                "p {p} e {e:e}: {tau:e} vs {fine:e}"
+            );
+        }
+        // Shorter still (an explicit run at any affordable step does not end there), p = 1: the
+        // overdamped linear contact δ'' + α δ' + δ = 0, δ'(0) = 1, roots s± = −α/2 ± √(α²/4 − 1),
+        // whose force −δ'' first vanishes at s₋² e^(s₋ t) = s₊² e^(s₊ t):
+        // t = 2 ln(s₋/s₊)/(s₊ − s₋) (the quadrature's closed form is not used here).
+        for e in [1e-15, 1e-19] {
+            let alpha = alpha_from_e(e, 1.0, EndCriterion::Force).unwrap();
+            let tau = reference_duration(&unit_pair(1.0, e, EndCriterion::Force).unwrap()).unwrap();
+            let q = (0.25 * alpha * alpha - 1.0).sqrt();
+            // s₊ from s₊ s₋ = 1 (−α/2 + q cancels).
+            let sm = -0.5 * alpha - q;
+            let sp = 1.0 / sm;
+            let t = 2.0 * (sm / sp).ln() / (sp - sm);
+            eprintln!("p 1 e {e:e} Force: reference {tau:e}, closed form {t:e}");
+            assert!((tau / t - 1.0).abs() < 1e-6, "e {e:e}: {tau:e} vs {t:e}");
+        }
+    }
 
     /// An extrapolated step that misses by a few per cent (a first-order error 1.03 tol at
     /// h0, τ/h0 = 150 000: halving would leave the checked range) is refined to a passing step
