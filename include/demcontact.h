@@ -2624,14 +2624,14 @@ int32_t dc_status_known(int32_t status);
  * ever finer steps, most with DC_END_OVERLAP (near-critical damping): below about e = 1e-9
  * with DC_END_OVERLAP (tol 1e-2) the answers are extrapolated steps too fine to check (over
  * 2^18 contact steps), not verified; further down they are erratic or DC_ERR_NO_CONVERGENCE
- * (no checked step passes, or the fine reference run does not end). With DC_END_FORCE the
- * force ends ever sooner (tau = 0.02 t* at e = 1e-8, 2e-6 t* at 1e-19; the search's grid is
- * scaled by tau, from the library's quadrature where the force ends within 100 steps of the
- * reference run): answered to about e = 1e-12 (Hertz, tol 5e-2: 636 steps per contact), then
- * DC_ERR_NO_CONVERGENCE (the collisions at the search's finest steps do not end within their
- * step budget, so there is no error law to extrapolate). DC_ERR_RESULT_RANGE: the step is not
- * a double
- * (scripts/extreme_restitution.sh prints them for e = 1e-1 ... 1e-20). Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
+ * (no checked step passes). With DC_END_FORCE the force ends ever sooner (Hertz: tau =
+ * 0.02 t* at e = 1e-8, 2e-6 t* at 1e-19; the search's grid is scaled by tau, from the
+ * library's quadrature where the force ends within 100 steps of the reference run, below
+ * about e = 1.5e-6 with Hertz): answered to about e = 1e-12 (Hertz, tol 5e-2: 636 steps per
+ * contact), then DC_ERR_NO_CONVERGENCE (the collisions at the search's finest steps do not end
+ * within their step budget, so there is no error law to extrapolate). DC_ERR_RESULT_RANGE
+ * only where dt itself over- or underflows (extreme v0/omega0).
+ * scripts/extreme_restitution.sh prints the answers for e = 1e-1 ... 1e-20. Typical results (docs/report.md): dt/tau ~ 0.2 tol at e = 0.1, ~ tol at e = 0.5; weakly
  * damped contacts reach the tau/8 cap at loose tolerances.
  *
  * Cost: up to ~6e6 force evaluations (tens of ms; more on a loaded machine), plus, where an
@@ -2649,8 +2649,8 @@ int32_t dc_status_known(int32_t status);
  * @param dt_out     receives the step [s] on success; untouched on error.
  * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
  *         DC_ERR_RESTITUTION_RANGE, DC_ERR_NOT_POSITIVE, DC_ERR_CRITERION, DC_ERR_RESULT_RANGE,
- *         DC_ERR_NO_CONVERGENCE (the reference collision does not end, or no checked extrapolated
- *         step passes: see above).
+ *         DC_ERR_NO_CONVERGENCE (the collisions at the finest step searched do not end, or no
+ *         checked extrapolated step passes: see above).
  *
  * # Safety
  * `dt_out` must be NULL or point to writable memory for one double.

@@ -101,7 +101,7 @@ fn scaling_with_speed_and_stiffness() {
 }
 
 /// DC_END_FORCE at e → 0: the force ends within microseconds (τ = 1.9e-6 t* at e = 1e-19), far
-/// inside one step of a run at 1e-3 t*; a search scaled by such a run's duration answered
+/// inside one step of a run at 1e-3 t*; a search scaled by such a run's duration would answer
 /// 1.3e-23 s there (Hertz, v0 = 1 m/s, ω0 = 1e3, tol 0.05, as scripts/extreme_restitution.sh
 /// runs it), 10^14 steps per contact. An answer is a step that resolves the true duration
 /// (`dc_contact_duration`) with at most 2^22 steps, or DC_ERR_NO_CONVERGENCE; e = 1e-12, within

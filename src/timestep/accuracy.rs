@@ -30,6 +30,7 @@
 use super::integrator::{Scheme, collide};
 use crate::force::PairModel;
 use crate::force::powerlaw::powerlaw_from_alpha;
+use crate::powerlaw::plan::LEVEL_MAX;
 use crate::powerlaw::{Contact, contact_duration};
 use crate::powerlaw::{alpha_from_e, check_exponent};
 use crate::{EndCriterion, Error};
@@ -119,13 +120,14 @@ fn verified(
     }
 }
 
-/// The contact duration τ of the dimensionless collision (v0 = ω0 = 1) from a fine run (1 % is
-/// plenty: τ only scales the search grid). A contact shorter than [`REF_RESOLVED`] steps of that
-/// run (DC_END_FORCE below about e = 1e-6, where the force ends within τ ≈ 0.07 t* and less:
-/// 1.9e-6 t* at e = 1e-19, and the run's explicit steps are too coarse for its damping) takes
-/// the library's quadrature of the same contact instead ([`contact_duration`], 1e-10 relative).
+/// The contact duration τ of the dimensionless collision (v0 = ω0 = 1) from a run at
+/// [`REF_STEP`] (a few per cent short for strongly damped contacts: τ only scales the search
+/// grid). A contact shorter than [`REF_RESOLVED`] steps of that run (DC_END_FORCE with Hertz
+/// below about e = 1.5e-6, with p = 1 below about 3e-5; under one step below about e = 1e-11,
+/// 1.9e-6 t* at e = 1e-19 with Hertz), or a run that does not end, takes the library's
+/// quadrature of the same contact instead ([`contact_duration`], 1e-10 relative).
 pub(crate) fn reference_duration(pair: &PairModel) -> Result<f64, Error> {
-    let tau = collide(
+    let run = collide(
         pair,
         1.0,
         1.0,
@@ -134,13 +136,13 @@ pub(crate) fn reference_duration(pair: &PairModel) -> Result<f64, Error> {
         0.5,
         Scheme::VelocityVerlet,
         10_000_000,
-    )?
-    .duration;
-    let tau = if tau >= REF_RESOLVED * REF_STEP {
-        tau
-    } else {
-        let c = Contact::new(pair.p, pair.alpha, 1.0, 1.0)?;
-        contact_duration(&c, pair.criterion, 4)?
+    );
+    let tau = match run {
+        Ok(c) if c.duration >= REF_RESOLVED * REF_STEP => c.duration,
+        _ => {
+            let c = Contact::new(pair.p, pair.alpha, 1.0, 1.0)?;
+            contact_duration(&c, pair.criterion, LEVEL_MAX as u32)?
+        }
     };
     if tau > 0.0 && tau.is_finite() {
         Ok(tau)
