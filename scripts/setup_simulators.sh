@@ -17,7 +17,9 @@ need=()
 [ "${DC_SETUP_ONLY:-}" = lammps ] || {
 command -v liggghts >/dev/null || need+=(liggghts)
 [ -f /usr/include/liggghts/contact_models.h ] || need+=(libliggghts-dev)
-command -v mpicxx >/dev/null || need+=(libopenmpi-dev)
+# the MPI headers, not only the wrapper: openmpi-bin (pulled in by Debian's lammps) brings mpicxx
+# without them, and CMake's FindMPI then fails on the missing include directory
+echo '#include <mpi.h>' | mpicxx -E -x c++ - >/dev/null 2>&1 || need+=(libopenmpi-dev)
 command -v mpirun >/dev/null || need+=(openmpi-bin)
 command -v yade >/dev/null || need+=(yade)   # YADE 2023.02a: builtin corrections, Python client
 command -v python3 >/dev/null || need+=(python3)
