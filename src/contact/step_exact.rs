@@ -939,6 +939,19 @@ mod tests {
         }
     }
 
+    /// [`solve_r_with`] on `mean`, with the number of phase means it asked for.
+    fn solve_counting(mean: impl Fn(f64) -> f64, e: f64) -> (Result<f64, NoR>, usize) {
+        let means = core::cell::Cell::new(0);
+        let got = solve_r_with(
+            |r| {
+                means.set(means.get() + 1);
+                mean(r)
+            },
+            e,
+        );
+        (got, means.get())
+    }
+
     /// A node whose target lies beyond the collision budget is left out, not solved to the
     /// budget's edge: at e = 1e-15 (Hertz, DC_END_OVERLAP, t_H/128) every collision at R = 1
     /// outlasts 10^5 steps and the phase mean reachable within them stays above e (at the
@@ -950,20 +963,10 @@ mod tests {
         assert!(mean_e(p, alpha, EndCriterion::Overlap, 128.0, 1.0).is_nan());
         // Decided within EDGE_WIDTH of the edge by bisection: about 20 phase means (false
         // position on the edge's stand-in value would creep along it for 62).
-        let means = core::cell::Cell::new(0);
-        let got = solve_r_with(
-            |r| {
-                means.set(means.get() + 1);
-                mean_e(p, alpha, EndCriterion::Overlap, 128.0, r)
-            },
-            e,
-        );
-        eprintln!(
-            "e = {e:e}, t_H/128: {got:?} after {} phase means",
-            means.get()
-        );
+        let (got, means) = solve_counting(|r| mean_e(p, alpha, EndCriterion::Overlap, 128.0, r), e);
+        eprintln!("e = {e:e}, t_H/128: {got:?} after {means} phase means");
         assert_eq!(got, Err(NoR::Budget));
-        assert!(means.get() <= 24, "{} phase means", means.get());
+        assert!(means <= 24, "{means} phase means");
         let at_edge = mean_e(p, alpha, EndCriterion::Overlap, 128.0, 0.99838);
         assert!(at_edge > 2.0 * e, "{at_edge:e}");
     }
@@ -1020,17 +1023,7 @@ mod tests {
         // ln e curved in R, so that false position needs more than one step.
         let ln_e = |r: f64| -40.0 * r - 30.0 * r * r * r;
         let mean = |r: f64| if r >= 0.95 { f64::NAN } else { ln_e(r).exp() };
-        let solve = |r_target: f64| {
-            let means = core::cell::Cell::new(0);
-            let got = solve_r_with(
-                |r| {
-                    means.set(means.get() + 1);
-                    mean(r)
-                },
-                ln_e(r_target).exp(),
-            );
-            (got, means.get())
-        };
+        let solve = |r_target: f64| solve_counting(mean, ln_e(r_target).exp());
         let (got, means) = solve(0.97);
         assert_eq!(got, Err(NoR::Budget));
         assert!(means <= 24, "{means} means");

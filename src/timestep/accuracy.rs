@@ -243,7 +243,7 @@ mod tests {
     use super::*;
 
     /// The search's reference duration within 2 % of both the library's quadrature of the same
-    /// contact (`dc_contact_duration`, 1e-10 relative) and a run at a step 2·10^4 times finer than
+    /// contact ([`contact_duration`], 1e-10 relative) and a run at a step 2·10^4 times finer than
     /// the duration, including DC_END_FORCE contacts at small e that end within a few steps of
     /// the reference run (τ = 0.02 t* at e = 1e-8, 5.5e-5 t* at e = 1e-12 with p = 1, against its
     /// step of 1e-3 t*), where the reference takes the quadrature; and, shorter still (p = 1,
@@ -256,23 +256,17 @@ mod tests {
             (1.5, 1e-8, EndCriterion::Force),
             (1.0, 1e-12, EndCriterion::Force),
         ] {
-            let tau = reference_duration(&unit_pair(p, e, crit).unwrap()).unwrap();
+            let pair = unit_pair(p, e, crit).unwrap();
+            let tau = reference_duration(&pair).unwrap();
             let alpha = alpha_from_e(e, p, crit).unwrap();
-            let mut exact = f64::NAN;
-            let s = unsafe {
-                crate::ffi::powerlaw::dc_contact_duration(
-                    p,
-                    alpha,
-                    1.0,
-                    1.0,
-                    crit as i32,
-                    &mut exact,
-                )
-            };
-            assert_eq!(s, 0);
+            let exact = contact_duration(
+                &Contact::new(p, alpha, 1.0, 1.0).unwrap(),
+                crit,
+                LEVEL_MAX as u32,
+            )
+            .unwrap();
             // And a run at a step 2·10^4 times finer than the duration (whichever of the two
             // the reference took, the other checks it).
-            let pair = unit_pair(p, e, crit).unwrap();
             let fine = collide(
                 &pair,
                 1.0,
