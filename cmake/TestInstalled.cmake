@@ -33,5 +33,7 @@ if(PKG_CONFIG)
   set(ENV{LD_LIBRARY_PATH} "${pcdir}/..")
   run("${BUILD_DIR}/consumer-build/consumer_pc")
 else()
-  message(STATUS "pkg-config not found: pkg-config check skipped")
+  # The CMake consumer above passed; the pkg-config one did not run: a skip, not a pass.
+  message(FATAL_ERROR "SKIPPED: installed_package's pkg-config check (pkg-config not installed; "
+                      "the find_package consumer passed)")
 endif()

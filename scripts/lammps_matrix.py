@@ -188,6 +188,9 @@ def main():
     ap.add_argument("--cells", nargs="*", default=CELLS[1:], choices=CELLS[1:], help="smoke cells to run")
     ap.add_argument("--plugin", help="run the smoke with this plugin instead of the one built (failure check)")
     a = ap.parse_args()
+    # Older releases lack the builtin reference models of some smoke cells: the harness may leave
+    # a reference out (printed REFERENCE UNAVAILABLE, counted below) only when this is set.
+    os.environ["DC_ALLOW_NO_REFERENCE"] = "1"
     os.makedirs(MATRIX, exist_ok=True)
     t0 = time.time()
     rows = []

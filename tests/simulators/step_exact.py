@@ -124,7 +124,22 @@ def run_lammps(a, geom, crit, variant, targets, workdir):
                                                             a.np, a.dt_reset))
     pre = H.mpi_prefix(a.np, os.path.join(os.path.dirname(exe), "mpirun"))
     H.run(pre + [exe, "-in", "in.step", "-log", "log.lammps"], d, H.mpi_env())
+    if a.dt_reset:
+        check_dt_reset(os.path.join(d, "log.lammps"), dt)
     return realised(geom, cols, H.read_last_dump(os.path.join(d, "final.dump")))
+
+
+def check_dt_reset(log, dt):
+    """--dt-reset's premise: fix dt/reset did set the step the collisions ran at (the thermo
+    column Dt of every step after the first equals dt to its printed digits, 1e-6: the deck's
+    timestep is DT_RESET_FACTOR dt), else the run is a plain one at the deck's larger timestep and
+    proves nothing about the models following the reset."""
+    runs = H.parse_thermo(open(log).read())
+    rows = [r for r in (runs[0] if runs else []) if int(r["Step"]) >= 1]
+    bad = [r for r in rows if not abs(float(r["Dt"]) / dt - 1.0) <= 1e-6]
+    if not rows or bad:
+        raise SystemExit("FAIL: %s: fix dt/reset did not set dt = %.17g (%d rows after step 0; first off: %s)"
+                         % (log, dt, len(rows), bad[0] if bad else "none"))
 
 
 # ------------------------------------------------------------------ LIGGGHTS
@@ -183,6 +198,8 @@ def run_liggghts(a, geom, crit, variant, targets, workdir):
     open(os.path.join(d, "in.step"), "w").write(liggghts_deck(geom, crit, variant, targets, dt, steps, cols,
                                                               a.liggghts_submodels, a.np, a.dt_reset))
     H.run(H.mpi_prefix(a.np) + [exe, "-in", "in.step", "-log", "log.liggghts"], d, env)
+    if a.dt_reset:
+        check_dt_reset(os.path.join(d, "log.liggghts"), dt)
     return realised(geom, cols, H.read_last_dump(os.path.join(d, "final.dump")))
 
 

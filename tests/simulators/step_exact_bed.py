@@ -199,9 +199,9 @@ def bed(a, exe, workdir):
     bad = []
     p, s = res["plain"], res["step_exact"]
     print("step_exact / plain after settling: mean overlap %.4f, largest %.4f" % (s["mean"] / p["mean"], s["max"] / p["max"]))
-    if abs(s["mean"] / p["mean"] - 1) > 0.02:
+    if not abs(s["mean"] / p["mean"] - 1) <= 0.02:
         bad.append("mean overlap step_exact/plain = %.4f" % (s["mean"] / p["mean"]))
-    if abs(s["max"] / p["max"] - 1) > 0.10:
+    if not abs(s["max"] / p["max"] - 1) <= 0.10:
         bad.append("largest overlap step_exact/plain = %.4f" % (s["max"] / p["max"]))
     for name, r in res.items():
         if not r["ke"] < ke_limit * n:

