@@ -9,6 +9,9 @@
  *  - omega0 = sqrt(k/m) for the power-law contact m d'' + alpha sqrt(m k) d^((p-1)/2) d' + k d^p = 0,
  *    with m the effective mass, k the stiffness and p >= 1 the force-law exponent.
  *  - No function allocates, keeps global state or blocks: all are safe to call from any thread.
+ *  - Pointers to dc_contact_model, dc_contact_state and dc_contact_batch must be aligned for
+ *    their type (as every object a C or C++ compiler places is): every function taking them
+ *    reads them in place. Other input structs are read by value, at any alignment.
  */
 
 #ifndef DEMCONTACT_H
@@ -621,8 +624,9 @@ enum dc_status
      */
     DC_ERR_INTEGRATOR = 6135,
     /**
-     * The model's normal law has no step-aware form (only Tsuji power laws and Hertz have one;
-     * viscoelastic, DMT, elastic-plastic and JKR do not): see dc_contact_model_set_step.
+     * The model's normal law has no step-aware form (only Tsuji power laws with p <= 3 and Hertz
+     * have one; viscoelastic, DMT, elastic-plastic, JKR and p > 3 do not): see
+     * dc_contact_model_set_step.
      */
     DC_ERR_STEP_UNSUPPORTED = 6136,
     /**
@@ -1824,7 +1828,10 @@ int32_t dc_contact_model_set_carry(struct dc_contact_model *model, int32_t carry
  * as it is. The force calls must then be given this same dt: R is calibrated for the dt given
  * here, while the dt of each force call sets the onset test and the onset and end corrections
  * (see dc_contact_force). An undamped normal law (e_n = 1) has nothing to correct and is
- * returned unchanged (not step-aware, the same history length). Binary collisions are exact; an
+ * returned unchanged (not step-aware, the same history length). Near the elastic limit
+ * (1 - e_n < 1e-3) a law whose calibration finds no damping factor (the dashpot weaker than the
+ * step's own error: Hertz from 1 - e_n = 1e-7) takes R = 1, the onset and end corrections
+ * alone: the phase mean of e within 2.3e-5 of e_n at t_H/10 (Hertz). Binary collisions are exact; an
  * enduring contact keeps its static overlap (the correction acts on the dashpot only). Set-up
  * cost of the first call: about 10 ms at e_n = 0.1; with DC_END_OVERLAP more as e_n -> 0 (near
  * critical damping): about 0.6 s at 1e-9, 2.7 s at 1e-12 (dc_dt_for_accuracy_step_aware runs the
@@ -1832,15 +1839,17 @@ int32_t dc_contact_model_set_carry(struct dc_contact_model *model, int32_t carry
  *
  * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_NOT_FINITE (dt),
  *         DC_ERR_NOT_POSITIVE (dt <= 0), DC_ERR_INTEGRATOR, DC_ERR_STEP_UNSUPPORTED (a normal
- *         law other than a Tsuji power law or Hertz: viscoelastic, DMT, elastic-plastic, JKR),
- *         DC_ERR_STEP_UNREACHABLE (the explicit step cannot realise e_n: strong damping, e_n well
- *         below 0.1), DC_ERR_RESULT_RANGE (dt so small that dt over the t_H prefactor underflows
+ *         law other than a Tsuji power law with p <= 3 or Hertz: viscoelastic, DMT,
+ *         elastic-plastic, JKR, p > 3), DC_ERR_STEP_UNREACHABLE (the explicit step cannot
+ *         realise e_n: strong damping, e_n well below 0.1), DC_ERR_RESULT_RANGE (dt so small that dt over the t_H prefactor underflows
  *         to 0, e.g. a subnormal dt such as 5e-324). `model` is untouched on error.
  *
  * # Safety
  * `model` NULL or readable and writable for one dc_contact_model.
  */
-int32_t dc_contact_model_set_step(struct dc_contact_model *model, double dt, int32_t integrator);
+int32_t dc_contact_model_set_step(struct dc_contact_model *model,
+                                  double dt,
+                                  int32_t integrator);
 
 /**
  * The number of doubles of history one contact of this model needs (0 for a normal-only or
@@ -2387,8 +2396,10 @@ int32_t dc_plan_input_init(struct dc_plan_input *input);
  *         DC_PLAN_FIELD_RESTITUTION: a contact this damped does not converge, e → 0), DC_ERR_RESULT_RANGE.
  *
  * # Safety
- * `input` must be NULL or readable for one dc_plan_input; `out` NULL or writable for one
- * dc_plan_result; `field_out` NULL or writable for one int32_t.
+ * `input` must be NULL or readable for its leading `version` and `size` members, and for the
+ * `size` bytes they announce when they are this library's (`size` is then sizeof one
+ * dc_plan_input); `out` NULL or writable for one dc_plan_result; `field_out` NULL or writable
+ * for one int32_t.
  */
 int32_t dc_plan(const struct dc_plan_input *input,
                 struct dc_plan_result *out,
@@ -2608,12 +2619,17 @@ int32_t dc_status_known(int32_t status);
  * (evenly spaced over [0, 1), both ends included) per trial step, stepping down by halves from
  * tau/8 and bisecting (5 times, in log dt) between the last failing and the first passing step,
  * aiming at 0.9 tol. The returned step passed at all 64 phases. Below tau/8192 (tol below about
- * 1e-4 for strongly damped contacts) the error law E ~ dt^k fitted on the two finest steps
- * (k in [0.5, 2]) is extrapolated, then checked at the 64 phases and stepped down (along the
- * fitted law, by 10 % to a factor 2, up to 6 checks) until it passes, as long as a collision at
- * that step takes at most 2^18 contact steps (DC_ERR_NO_CONVERGENCE when none passes within
- * that bound: the error is erratic in dt there); a finer extrapolated step is returned
- * unverified. Never returns more than tau/8.
+ * 1e-4 for strongly damped contacts) the error law E ~ dt^k fitted on the two finest steps is
+ * extrapolated where those two show one (an error below e itself, and a halving of the step
+ * that divides it by 2^0.4 to 2^2.5: first to second order; k clamped to [0.5, 2]), then
+ * checked at the 64 phases and stepped down (along the fitted law, by 10 % to a factor 2, up
+ * to 6 checks) until it passes, as long as a collision at that step takes at most 2^18
+ * contact steps (DC_ERR_NO_CONVERGENCE when none passes within that bound: the error is
+ * erratic in dt there); a finer extrapolated step is returned unverified, up to 2^52 steps per
+ * contact (a finer one would be below the double resolution of the contact's own time).
+ * DC_ERR_NO_CONVERGENCE where the two finest steps show no such law (p = 1e6, e = 0.5: the
+ * error at tau/8192 is 1e137 times e) or the law asks for more than 2^52 steps per contact
+ * (tol = 1e-300). Never returns more than tau/8.
  *
  * Accuracy (tests/step_accuracy.rs: p in {1, 1.5, 2, 3}, e in {0.1, 0.5, 0.9}, both criteria,
  * tol in {1e-2, 1e-3}, v0 = 0.7, omega0 = 13): at the returned dt a collision integrated
@@ -2621,10 +2637,11 @@ int32_t dc_status_known(int32_t status);
  * the same for strongly damped contacts under DC_END_FORCE (p in {1, 1.5}, e in {1e-2, 1e-3},
  * tol 1e-2: the force ends long before the bodies separate, and the search stops each
  * collision at the force's end, after which the exit velocity does not change). e → 0 needs
- * ever finer steps, most with DC_END_OVERLAP (near-critical damping): below about e = 1e-9
- * with DC_END_OVERLAP (tol 1e-2) the answers are extrapolated steps too fine to check (over
- * 2^18 contact steps), not verified; further down they are erratic or DC_ERR_NO_CONVERGENCE
- * (no checked step passes). With DC_END_FORCE the force ends ever sooner (Hertz: tau =
+ * ever finer steps, most with DC_END_OVERLAP (near-critical damping), where the error at the
+ * finest searched step nears e itself and halving the step stops lowering it at first order
+ * (Hertz, tol 5e-2: 28 % at e = 1e-6, 75 % at 1e-8, halving slopes 0.79 and 0.31): answered to
+ * e = 1e-6 (checked), at 1e-7 with a step extrapolated beyond the check (about 5e5 steps per
+ * contact, not verified), and DC_ERR_NO_CONVERGENCE from 1e-8 (no error law to extrapolate). With DC_END_FORCE the force ends ever sooner (Hertz: tau =
  * 0.02 t* at e = 1e-8, 2e-6 t* at 1e-19; the search's grid is scaled by tau, from the
  * library's quadrature where the force ends within 100 steps of the reference run, below
  * about e = 1.5e-6 with Hertz): answered to about e = 1e-12 (Hertz, tol 5e-2: 636 steps per
@@ -2649,8 +2666,9 @@ int32_t dc_status_known(int32_t status);
  * @param dt_out     receives the step [s] on success; untouched on error.
  * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
  *         DC_ERR_RESTITUTION_RANGE, DC_ERR_NOT_POSITIVE, DC_ERR_CRITERION, DC_ERR_RESULT_RANGE,
- *         DC_ERR_NO_CONVERGENCE (the collisions at the finest step searched do not end, or no
- *         checked extrapolated step passes: see above).
+ *         DC_ERR_NO_CONVERGENCE (the collisions at the finest step searched do not end, they
+ *         show no error law to extrapolate, the law asks for more than 2^52 steps per contact,
+ *         or no checked extrapolated step passes: see above).
  *
  * # Safety
  * `dt_out` must be NULL or point to writable memory for one double.
@@ -2675,8 +2693,9 @@ int32_t dc_dt_for_accuracy(double p,
  * e = 1e-9, 2.7 s at 1e-12, 6.4 s at 1e-15, 9.5 s at 1e-17, and a refusal after about 6 s from
  * 1e-18 (scripts/extreme_restitution.sh prints the times).
  *
- * @return as dc_dt_for_accuracy; DC_ERR_STEP_UNREACHABLE when no step down to t_H/8192 meets
- *         tol (or the step-aware damping cannot realise e at all).
+ * @return as dc_dt_for_accuracy; DC_ERR_STEP_UNSUPPORTED for p > 3 (no step-aware form);
+ *         DC_ERR_STEP_UNREACHABLE when no step down to t_H/8192 meets tol (or the step-aware
+ *         damping cannot realise e at all).
  *
  * # Safety
  * `dt_out` must be NULL or point to writable memory for one double.

@@ -55,8 +55,8 @@ pub enum Error {
     BuiltinVersion,
     /// An integrator code other than `DC_INTEGRATOR_*`.
     Integrator,
-    /// The normal law has no step-aware form (only Tsuji power laws and Hertz have one;
-    /// viscoelastic, adhesive DMT, elastic-plastic and JKR do not).
+    /// The normal law has no step-aware form (only Tsuji power laws with p ≤ 3 and Hertz have
+    /// one; viscoelastic, adhesive DMT, elastic-plastic, JKR and p > 3 do not).
     StepUnsupported,
     /// The host's explicit step cannot realise this restitution with the step-aware damping
     /// (strong damping at steps near t_H/10).

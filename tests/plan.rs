@@ -845,3 +845,43 @@ fn vanishing_restitution_is_planned_or_refused_at_once() {
         "{planned:?}"
     );
 }
+
+/// A tolerance so far below what the real material gives that the modulus it asks for
+/// overflows (overlap_tol or static_tol 1e-300) is that tolerance's infeasibility, named
+/// (DC_ERR_PLAN_INFEASIBLE, the member), as 1e-4 is, not a range error with no member at fault.
+#[test]
+fn unmeetable_tolerances_are_named_however_small() {
+    use demcontact::Error;
+    use demcontact::plan::PlanField;
+    let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+    let base = random_input(&mut rng);
+    for (tol, field) in [
+        (1e-4, PlanField::OverlapTol),
+        (1e-300, PlanField::OverlapTol),
+    ] {
+        let inp = PlanInput {
+            overlap_tol: tol,
+            static_tol: 0.5,
+            duration_tol: f64::INFINITY,
+            ..base
+        };
+        let err = plan(&inp).unwrap_err();
+        assert_eq!(
+            (err.field, err.error),
+            (field, Error::PlanInfeasible),
+            "overlap_tol {tol:e}"
+        );
+    }
+    let inp = PlanInput {
+        pressure: 1e3,
+        static_tol: 1e-300,
+        overlap_tol: 0.5,
+        duration_tol: f64::INFINITY,
+        ..base
+    };
+    let err = plan(&inp).unwrap_err();
+    assert_eq!(
+        (err.field, err.error),
+        (PlanField::StaticTol, Error::PlanInfeasible)
+    );
+}

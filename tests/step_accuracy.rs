@@ -243,3 +243,45 @@ fn strongly_damped_force_criterion() {
     }
     assert!(failures.is_empty(), "failed:\n{}", failures.join("\n"));
 }
+
+/// Where the finest searched step shows no error law to extrapolate (an error of e itself, or
+/// one that a halving changes by other than a first- to second-order factor: p = 1e6, whose
+/// error at τ/8192 is a relative 1e137), or where the extrapolation asks for more steps per
+/// contact than the double resolution of the contact's time allows (2^52: tol = 1e-300),
+/// `dc_dt_for_accuracy` refuses with DC_ERR_NO_CONVERGENCE instead of answering an unchecked
+/// step (1.4e-29 s for p = 1e6, against about 1e-6 s that meets the tolerance; 5.4e-310 s for
+/// tol = 1e-300). p = 1e4 is still answered, and meets its tolerance.
+#[test]
+fn extrapolation_without_an_error_law_is_refused() {
+    let dt_of = |p: f64, e: f64, crit: i32, tol: f64| {
+        let mut dt = f64::NAN;
+        let s = unsafe { dc_dt_for_accuracy(p, e, crit, 1.0, 1.0, tol, &mut dt) };
+        (s, dt)
+    };
+    for crit in [DC_END_OVERLAP, DC_END_FORCE] {
+        let (s, dt) = dt_of(1e6, 0.5, crit, 0.01);
+        println!("p 1e6, e 0.5, tol 0.01, criterion {crit}: status {s}, dt {dt:e}");
+        assert_eq!(s, DC_ERR_NO_CONVERGENCE, "dt {dt:e}");
+        let (s, dt) = dt_of(1.5, 0.1, crit, 1e-300);
+        println!("p 1.5, e 0.1, tol 1e-300, criterion {crit}: status {s}, dt {dt:e}");
+        assert_eq!(s, DC_ERR_NO_CONVERGENCE, "dt {dt:e}");
+        let (s, dt) = dt_of(1e4, 0.5, crit, 0.01);
+        println!("p 1e4, e 0.5, tol 0.01, criterion {crit}: status {s}, dt {dt:e}");
+        assert_eq!(s, DC_OK);
+        assert!(dt > 1e-9, "{dt:e}");
+    }
+    // e → 0 with DC_END_OVERLAP (Hertz, v0 = 1, ω0 = 1e3, tol 5e-2, as
+    // scripts/extreme_restitution.sh): the error at the finest searched step nears e itself
+    // (28 % at e = 1e-6, 75 % at 1e-8) and a halving stops lowering it at first order (slopes
+    // 0.79, 0.31): answered to 1e-6 (a checked step), refused from 1e-8.
+    let mut dt = f64::NAN;
+    let s = unsafe { dc_dt_for_accuracy(1.5, 1e-6, DC_END_OVERLAP, 1.0, 1e3, 0.05, &mut dt) };
+    println!("Hertz overlap e 1e-6: status {s}, dt {dt:e}");
+    assert_eq!(s, DC_OK);
+    for e in [1e-8, 1e-12, 1e-16] {
+        let mut dt = f64::NAN;
+        let s = unsafe { dc_dt_for_accuracy(1.5, e, DC_END_OVERLAP, 1.0, 1e3, 0.05, &mut dt) };
+        println!("Hertz overlap e {e:e}: status {s}, dt {dt:e}");
+        assert_eq!(s, DC_ERR_NO_CONVERGENCE, "e {e:e}: dt {dt:e}");
+    }
+}

@@ -660,3 +660,35 @@ fn subnormal_dt_is_a_range_error() {
         assert!(ok.step.scale > 0.0, "{law:?}");
     }
 }
+
+/// Power laws beyond p = 3 have no step-aware form (the onset and end corrections' ζ(−β, x) is
+/// built for β = (p − 1)/2 ≤ 1): `set_step` and the step-aware step search answer
+/// DC_ERR_STEP_UNSUPPORTED, the model untouched; p = 3 itself is made step-aware. A dt whose
+/// scale underflows is refused as a range error (before the calibration).
+#[test]
+fn step_aware_exponents_up_to_three() {
+    use demcontact::Error;
+    use demcontact::contact::step_exact::dt_for_accuracy;
+    let with_p = |p: f64| {
+        let mut s = spec(Law::P2, 0.5, 1);
+        s.p = p;
+        contact_model(&s).unwrap()
+    };
+    for p in [3.5, 10.0] {
+        assert_eq!(
+            set_step(&with_p(p), 1e-6, 0).err(),
+            Some(Error::StepUnsupported),
+            "p {p}"
+        );
+        assert_eq!(
+            dt_for_accuracy(p, 0.5, demcontact::EndCriterion::Force, 1.0, 1.0, 0.01).err(),
+            Some(Error::StepUnsupported),
+            "p {p}"
+        );
+    }
+    assert!(set_step(&with_p(3.0), 1e-6, 0).unwrap().step.on());
+    assert_eq!(
+        set_step(&with_p(2.0), 5e-324, 0).err(),
+        Some(Error::ResultRange)
+    );
+}

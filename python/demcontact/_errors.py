@@ -151,7 +151,7 @@ class IntegratorError(InputError):
 
 class StepUnsupportedError(InputError):
     """ContactModel.set_step on a normal law with no step-aware form (viscoelastic, DMT,
-    elastic-plastic, JKR; 6136)."""
+    elastic-plastic, JKR, a power law with p > 3; 6136)."""
 
     status = 6136
 

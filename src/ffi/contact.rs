@@ -597,7 +597,10 @@ pub unsafe extern "C" fn dc_contact_model_set_carry(
 /// as it is. The force calls must then be given this same dt: R is calibrated for the dt given
 /// here, while the dt of each force call sets the onset test and the onset and end corrections
 /// (see dc_contact_force). An undamped normal law (e_n = 1) has nothing to correct and is
-/// returned unchanged (not step-aware, the same history length). Binary collisions are exact; an
+/// returned unchanged (not step-aware, the same history length). Near the elastic limit
+/// (1 - e_n < 1e-3) a law whose calibration finds no damping factor (the dashpot weaker than the
+/// step's own error: Hertz from 1 - e_n = 1e-7) takes R = 1, the onset and end corrections
+/// alone: the phase mean of e within 2.3e-5 of e_n at t_H/10 (Hertz). Binary collisions are exact; an
 /// enduring contact keeps its static overlap (the correction acts on the dashpot only). Set-up
 /// cost of the first call: about 10 ms at e_n = 0.1; with DC_END_OVERLAP more as e_n -> 0 (near
 /// critical damping): about 0.6 s at 1e-9, 2.7 s at 1e-12 (dc_dt_for_accuracy_step_aware runs the
@@ -605,9 +608,9 @@ pub unsafe extern "C" fn dc_contact_model_set_carry(
 ///
 /// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID, DC_ERR_NOT_FINITE (dt),
 ///         DC_ERR_NOT_POSITIVE (dt <= 0), DC_ERR_INTEGRATOR, DC_ERR_STEP_UNSUPPORTED (a normal
-///         law other than a Tsuji power law or Hertz: viscoelastic, DMT, elastic-plastic, JKR),
-///         DC_ERR_STEP_UNREACHABLE (the explicit step cannot realise e_n: strong damping, e_n well
-///         below 0.1), DC_ERR_RESULT_RANGE (dt so small that dt over the t_H prefactor underflows
+///         law other than a Tsuji power law with p <= 3 or Hertz: viscoelastic, DMT,
+///         elastic-plastic, JKR, p > 3), DC_ERR_STEP_UNREACHABLE (the explicit step cannot
+///         realise e_n: strong damping, e_n well below 0.1), DC_ERR_RESULT_RANGE (dt so small that dt over the t_H prefactor underflows
 ///         to 0, e.g. a subnormal dt such as 5e-324). `model` is untouched on error.
 ///
 /// # Safety

@@ -52,7 +52,10 @@ where
 
 // The pointer policy, one way for every export:
 // * a struct or vector the caller passes IN is read by value (`read_unaligned`) after a NULL
-//   check: any alignment works and nothing borrows caller memory past the read;
+//   check: any alignment works and nothing borrows caller memory past the read; except the
+//   per-contact hot path's dc_contact_model, dc_contact_state and dc_contact_batch, borrowed in
+//   place (`as_ref`, no copy of the model per call): they must be aligned for their type, as the
+//   header's conventions say (every object a C compiler places is);
 // * a value the library passes OUT is written by value (`write_unaligned`), only on success,
 //   after a NULL check made before any work;
 // * arrays of doubles (batches, trajectories) must be aligned and must not overlap: see

@@ -284,8 +284,10 @@ pub unsafe extern "C" fn dc_plan_input_init(input: *mut dc_plan_input) -> i32 {
 ///         DC_PLAN_FIELD_RESTITUTION: a contact this damped does not converge, e → 0), DC_ERR_RESULT_RANGE.
 ///
 /// # Safety
-/// `input` must be NULL or readable for one dc_plan_input; `out` NULL or writable for one
-/// dc_plan_result; `field_out` NULL or writable for one int32_t.
+/// `input` must be NULL or readable for its leading `version` and `size` members, and for the
+/// `size` bytes they announce when they are this library's (`size` is then sizeof one
+/// dc_plan_input); `out` NULL or writable for one dc_plan_result; `field_out` NULL or writable
+/// for one int32_t.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn dc_plan(
     input: *const dc_plan_input,
@@ -302,13 +304,17 @@ pub unsafe extern "C" fn dc_plan(
     }
     let mut field = PlanField::None;
     let status = guard(|| {
-        // SAFETY: readability is the caller's contract.
-        let i = unsafe { read_in(input) }?;
-        if i.version != DC_PLAN_INPUT_VERSION
-            || i.size as usize != core::mem::size_of::<dc_plan_input>()
+        // The two leading u32 (version, size) first: a caller compiled against another
+        // version's struct may have fewer bytes than this one, never read past them.
+        // SAFETY: readability of the leading members is the caller's contract.
+        let head = unsafe { read_in(input.cast::<[u32; 2]>()) }?;
+        if head[0] != DC_PLAN_INPUT_VERSION
+            || head[1] as usize != core::mem::size_of::<dc_plan_input>()
         {
             return Err(dc_status::DC_ERR_PLAN_RANGE);
         }
+        // SAFETY: the caller's struct is this version's, readability its contract.
+        let i = unsafe { read_in(input) }?;
         let criterion = parse_criterion(i.criterion).inspect_err(|_| {
             field = PlanField::Criterion;
         })?;

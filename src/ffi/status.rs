@@ -87,8 +87,9 @@ pub enum dc_status {
     /// An integrator code other than DC_INTEGRATOR_VELOCITY_VERLET or
     /// DC_INTEGRATOR_SYMPLECTIC_EULER.
     DC_ERR_INTEGRATOR = 6135,
-    /// The model's normal law has no step-aware form (only Tsuji power laws and Hertz have one;
-    /// viscoelastic, DMT, elastic-plastic and JKR do not): see dc_contact_model_set_step.
+    /// The model's normal law has no step-aware form (only Tsuji power laws with p <= 3 and Hertz
+    /// have one; viscoelastic, DMT, elastic-plastic, JKR and p > 3 do not): see
+    /// dc_contact_model_set_step.
     DC_ERR_STEP_UNSUPPORTED = 6136,
     /// The host's explicit step cannot realise this restitution with the step-aware damping
     /// (strong damping, e well below 0.1, at steps near t_H/10).

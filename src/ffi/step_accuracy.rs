@@ -19,12 +19,17 @@ use crate::timestep;
 /// (evenly spaced over [0, 1), both ends included) per trial step, stepping down by halves from
 /// tau/8 and bisecting (5 times, in log dt) between the last failing and the first passing step,
 /// aiming at 0.9 tol. The returned step passed at all 64 phases. Below tau/8192 (tol below about
-/// 1e-4 for strongly damped contacts) the error law E ~ dt^k fitted on the two finest steps
-/// (k in [0.5, 2]) is extrapolated, then checked at the 64 phases and stepped down (along the
-/// fitted law, by 10 % to a factor 2, up to 6 checks) until it passes, as long as a collision at
-/// that step takes at most 2^18 contact steps (DC_ERR_NO_CONVERGENCE when none passes within
-/// that bound: the error is erratic in dt there); a finer extrapolated step is returned
-/// unverified. Never returns more than tau/8.
+/// 1e-4 for strongly damped contacts) the error law E ~ dt^k fitted on the two finest steps is
+/// extrapolated where those two show one (an error below e itself, and a halving of the step
+/// that divides it by 2^0.4 to 2^2.5: first to second order; k clamped to [0.5, 2]), then
+/// checked at the 64 phases and stepped down (along the fitted law, by 10 % to a factor 2, up
+/// to 6 checks) until it passes, as long as a collision at that step takes at most 2^18
+/// contact steps (DC_ERR_NO_CONVERGENCE when none passes within that bound: the error is
+/// erratic in dt there); a finer extrapolated step is returned unverified, up to 2^52 steps per
+/// contact (a finer one would be below the double resolution of the contact's own time).
+/// DC_ERR_NO_CONVERGENCE where the two finest steps show no such law (p = 1e6, e = 0.5: the
+/// error at tau/8192 is 1e137 times e) or the law asks for more than 2^52 steps per contact
+/// (tol = 1e-300). Never returns more than tau/8.
 ///
 /// Accuracy (tests/step_accuracy.rs: p in {1, 1.5, 2, 3}, e in {0.1, 0.5, 0.9}, both criteria,
 /// tol in {1e-2, 1e-3}, v0 = 0.7, omega0 = 13): at the returned dt a collision integrated
@@ -32,10 +37,11 @@ use crate::timestep;
 /// the same for strongly damped contacts under DC_END_FORCE (p in {1, 1.5}, e in {1e-2, 1e-3},
 /// tol 1e-2: the force ends long before the bodies separate, and the search stops each
 /// collision at the force's end, after which the exit velocity does not change). e → 0 needs
-/// ever finer steps, most with DC_END_OVERLAP (near-critical damping): below about e = 1e-9
-/// with DC_END_OVERLAP (tol 1e-2) the answers are extrapolated steps too fine to check (over
-/// 2^18 contact steps), not verified; further down they are erratic or DC_ERR_NO_CONVERGENCE
-/// (no checked step passes). With DC_END_FORCE the force ends ever sooner (Hertz: tau =
+/// ever finer steps, most with DC_END_OVERLAP (near-critical damping), where the error at the
+/// finest searched step nears e itself and halving the step stops lowering it at first order
+/// (Hertz, tol 5e-2: 28 % at e = 1e-6, 75 % at 1e-8, halving slopes 0.79 and 0.31): answered to
+/// e = 1e-6 (checked), at 1e-7 with a step extrapolated beyond the check (about 5e5 steps per
+/// contact, not verified), and DC_ERR_NO_CONVERGENCE from 1e-8 (no error law to extrapolate). With DC_END_FORCE the force ends ever sooner (Hertz: tau =
 /// 0.02 t* at e = 1e-8, 2e-6 t* at 1e-19; the search's grid is scaled by tau, from the
 /// library's quadrature where the force ends within 100 steps of the reference run, below
 /// about e = 1.5e-6 with Hertz): answered to about e = 1e-12 (Hertz, tol 5e-2: 636 steps per
@@ -60,8 +66,9 @@ use crate::timestep;
 /// @param dt_out     receives the step [s] on success; untouched on error.
 /// @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_NOT_FINITE, DC_ERR_EXPONENT_RANGE,
 ///         DC_ERR_RESTITUTION_RANGE, DC_ERR_NOT_POSITIVE, DC_ERR_CRITERION, DC_ERR_RESULT_RANGE,
-///         DC_ERR_NO_CONVERGENCE (the collisions at the finest step searched do not end, or no
-///         checked extrapolated step passes: see above).
+///         DC_ERR_NO_CONVERGENCE (the collisions at the finest step searched do not end, they
+///         show no error law to extrapolate, the law asks for more than 2^52 steps per contact,
+///         or no checked extrapolated step passes: see above).
 ///
 /// # Safety
 /// `dt_out` must be NULL or point to writable memory for one double.
@@ -94,8 +101,9 @@ pub unsafe extern "C" fn dc_dt_for_accuracy(
 /// e = 1e-9, 2.7 s at 1e-12, 6.4 s at 1e-15, 9.5 s at 1e-17, and a refusal after about 6 s from
 /// 1e-18 (scripts/extreme_restitution.sh prints the times).
 ///
-/// @return as dc_dt_for_accuracy; DC_ERR_STEP_UNREACHABLE when no step down to t_H/8192 meets
-///         tol (or the step-aware damping cannot realise e at all).
+/// @return as dc_dt_for_accuracy; DC_ERR_STEP_UNSUPPORTED for p > 3 (no step-aware form);
+///         DC_ERR_STEP_UNREACHABLE when no step down to t_H/8192 meets tol (or the step-aware
+///         damping cannot realise e at all).
 ///
 /// # Safety
 /// `dt_out` must be NULL or point to writable memory for one double.

@@ -745,9 +745,6 @@ pub fn plan(inp: &PlanInput) -> Result<Plan, PlanError> {
             (0.0, Binding::Overlap),
             |b, x| if x.0 > b.0 { x } else { b },
         );
-    if !(youngs.is_finite() && youngs > 0.0) {
-        return Err(none(Error::ResultRange));
-    }
     // Which tolerance an evaluation misses, if any.
     let missed = |ev: &Evaluation| {
         if !(ev.max_overlap_ratio <= inp.overlap_tol) {
@@ -770,6 +767,11 @@ pub fn plan(inp: &PlanInput) -> Result<Plan, PlanError> {
             return Err(infeasible(f));
         }
         youngs = e_real;
+    }
+    // After the real material's check: a bound that overflows (a tolerance far below what the
+    // real material gives, 1e-300) is that tolerance's infeasibility, named, not a range error.
+    if !(youngs.is_finite() && youngs > 0.0) {
+        return Err(none(Error::ResultRange));
     }
     // Re-check with the library's functions at the chosen modulus; rounding in the inversion can
     // land a few ulps outside a tolerance: step up until inside (never above the real E).
@@ -807,10 +809,10 @@ pub fn plan(inp: &PlanInput) -> Result<Plan, PlanError> {
         inp.e_tol,
     )
     .map_err(|e| match e {
-        // e → 0 (DC_END_OVERLAP from about 1e-15, DC_END_FORCE about 1e-13 to 1e-18), or a
+        // e → 0 (DC_END_OVERLAP from about 1e-8, DC_END_FORCE from about 1e-13), or a
         // tolerance below the damping's first-order error: the search's fine collision does not
-        // end, no checked extrapolated step meets the tolerance, or the step is not a double: no
-        // step resolves the tolerance.
+        // end, its finest steps show no error law, no checked extrapolated step meets the
+        // tolerance, or the step is not a double: no step resolves the tolerance.
         Error::NoConvergence | Error::ResultRange => infeasible(PlanField::ETol),
         e => none(e),
     })?;

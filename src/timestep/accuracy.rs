@@ -18,10 +18,12 @@
 //! returning the passing end (so the returned step passed at all sampled phases, and is within a
 //! factor 2^(1/32) of the largest passing step on that bracket). Below τ/8192 (tol below ~1e-4
 //! for strongly damped contacts) the last two measurements fix the local order k of E ∝ h^k
-//! (clamped to [0.5, 2]) and h is extrapolated, then checked at the same phases and stepped
-//! down along that law until it passes, while a collision at that step takes at most
+//! where they show one ([`K_MIN`] ≤ k ≤ [`K_MAX`] and an error below e itself; NoConvergence
+//! otherwise; k clamped to [0.5, 2]) and h is extrapolated, then checked at the same phases and
+//! stepped down along that law until it passes, while a collision at that step takes at most
 //! [`VERIFY_MAX_STEPS`] contact steps (NoConvergence when none passes within that bound); a
-//! step finer than the bound is returned as extrapolated, not verified.
+//! step finer than the bound is returned as extrapolated, not verified, up to [`MAX_STEPS`]
+//! steps per contact (NoConvergence beyond).
 //! Cost: at most ~6·10⁶ force evaluations (tens of ms; up to a few hundred ms on a loaded
 //! machine for e ≤ 0.1 and tol ≤ 1e-3), plus, where an extrapolated step is checked, up to 6
 //! checks of 64 collisions of at most 2^18 contact steps (up to ~10⁸ more: seconds); no
@@ -89,6 +91,13 @@ const REF_RESOLVED: f64 = 100.0;
 
 /// Checks of an extrapolated step before it is given up.
 const VERIFY_TRIES: u32 = 6;
+/// The halving slopes log2(E(2h)/E(h)) at the finest searched step that count as an error law
+/// E ∝ h^k to extrapolate (first to second order, with margin).
+const K_MIN: f64 = 0.4;
+const K_MAX: f64 = 2.5;
+/// No answer with more steps per contact than 2^52: such a step is below the double resolution
+/// of the contact's own time and overlap (t + dt and δ + v dt round to t and δ).
+const MAX_STEPS: f64 = 4_503_599_627_370_496.0;
 
 /// The extrapolated step `h_ex` (error law E ∝ h^k), checked where affordable: while
 /// τ/h ≤ [`VERIFY_MAX_STEPS`], up to [`VERIFY_TRIES`] checks, each failing one followed by the
@@ -182,13 +191,23 @@ pub(crate) fn unit_step(
                 // (e → 0 with DC_END_FORCE): no error law to extrapolate.
                 return Err(Error::NoConvergence);
             }
-            // Extrapolate E ∝ h^k from the two finest measurements.
-            let k = if e_fail.is_finite() && e_h > 0.0 {
-                (e_fail / e_h).log2().clamp(0.5, 2.0)
+            // Extrapolate E ∝ h^k from the two finest measurements, where they show such a law:
+            // an error of e itself (≥ 100 %) or a halving that changes it by other than a
+            // first- to second-order factor (with margin) is no asymptotic law, and its
+            // extrapolation can miss by tens of decades (p = 1e6, e = 0.5: 1e-29 t* for 1e-6 t*).
+            let k_raw = if e_fail.is_finite() && e_h > 0.0 {
+                (e_fail / e_h).log2()
             } else {
                 1.0
             };
+            if !(e_h < 1.0 && (K_MIN..=K_MAX).contains(&k_raw)) {
+                return Err(Error::NoConvergence);
+            }
+            let k = k_raw.clamp(0.5, 2.0);
             let h_ex = h * (tol / e_h).powf(1.0 / k);
+            if !(tau / h_ex <= MAX_STEPS) {
+                return Err(Error::NoConvergence);
+            }
             return verified(h_ex, k, tau, err, tol).map(|h| (h, tau));
         }
         h_fail = h;
