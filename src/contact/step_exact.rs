@@ -1069,9 +1069,9 @@ mod tests {
     /// 2.6e-3 off at t_H/10); the step-aware step search answers too.
     #[test]
     fn near_elastic_laws_take_r_one() {
-        // The other exponents: wherever R ≡ 1 is taken (1 − e < 1e-3 with no calibration), its
-        // mean within the same bound.
-        for p in [1.0, 2.0, 3.0] {
+        // Wherever R ≡ 1 is taken (1 − e < 1e-3 with no calibration), every exponent: its phase
+        // mean within 5e-5 at t_H/10 and t_H/20.
+        for p in [1.0, 1.5, 2.0, 3.0] {
             for crit in [EndCriterion::Overlap, EndCriterion::Force] {
                 for d in [1e-3 * 0.99, 1e-4, 1e-5, 1e-6, 1e-7, 1e-10] {
                     let e = 1.0 - d;
@@ -1079,6 +1079,7 @@ mod tests {
                     if calibrate(p, alpha, crit, e).is_some() {
                         continue;
                     }
+                    assert_eq!(coefficients(p, alpha, crit, e), Ok([0.0; 5]));
                     for n in [10.0, 20.0] {
                         let (mean, _) = phases_e(p, alpha, crit, n, 1.0, e);
                         eprintln!(
@@ -1093,24 +1094,13 @@ mod tests {
                 }
             }
         }
+        // Hertz takes it from 1 − e = 1e-7 on, and the step-aware step search answers there.
         let p = 1.5;
         for crit in [EndCriterion::Overlap, EndCriterion::Force] {
             for d in [1e-7, 1e-10] {
                 let e = 1.0 - d;
                 let alpha = crate::powerlaw::alpha_from_e(e, p, crit).unwrap();
                 assert!(calibrate(p, alpha, crit, e).is_none(), "{crit:?} 1-e {d:e}");
-                assert_eq!(coefficients(p, alpha, crit, e), Ok([0.0; 5]));
-                for n in [10.0, 20.0] {
-                    let (mean, _) = phases_e(p, alpha, crit, n, 1.0, e);
-                    eprintln!(
-                        "{crit:?} 1-e {d:e} t_H/{n}: mean e off by {:e}",
-                        mean / e - 1.0
-                    );
-                    assert!(
-                        (mean / e - 1.0).abs() < 5e-5,
-                        "{crit:?} 1-e {d:e} t_H/{n}: {mean}"
-                    );
-                }
                 let dt = dt_for_accuracy(p, e, crit, 1.0, 1.0, 1e-3).unwrap();
                 assert!(dt > 0.0 && dt.is_finite());
             }
