@@ -27,8 +27,8 @@ use crate::timestep;
 /// contact steps (DC_ERR_NO_CONVERGENCE when none passes within that bound: the error is
 /// erratic in dt there); a finer extrapolated step is returned unverified, up to 2^52 steps per
 /// contact (a finer one would be below the double resolution of the contact's own time).
-/// DC_ERR_NO_CONVERGENCE where the two finest steps show no such law (p = 1e6, e = 0.5: the
-/// error at tau/8192 is 1e137 times e) or the law asks for more than 2^52 steps per contact
+/// DC_ERR_NO_CONVERGENCE where the two finest steps show no such law (p = 1e6, e = 0.5) or the
+/// law asks for more than 2^52 steps per contact
 /// (tol = 1e-300). Never returns more than tau/8.
 ///
 /// Accuracy (tests/step_accuracy.rs: p in {1, 1.5, 2, 3}, e in {0.1, 0.5, 0.9}, both criteria,
@@ -39,9 +39,8 @@ use crate::timestep;
 /// collision at the force's end, after which the exit velocity does not change). e → 0 needs
 /// ever finer steps, most with DC_END_OVERLAP (near-critical damping), where the error at the
 /// finest searched step nears e itself and halving the step stops lowering it at first order
-/// (Hertz, tol 5e-2: 28 % at e = 1e-6, 75 % at 1e-8, halving slopes 0.79 and 0.31): answered to
-/// e = 1e-6 (checked), at 1e-7 with a step extrapolated beyond the check (about 5e5 steps per
-/// contact, not verified), and DC_ERR_NO_CONVERGENCE from 1e-8 (no error law to extrapolate). With DC_END_FORCE the force ends ever sooner (Hertz: tau =
+/// (Hertz, tol 5e-2): answered to e = 1e-7, DC_ERR_NO_CONVERGENCE from 1e-8 (no error law to
+/// extrapolate; tests/step_accuracy.rs, extrapolation_without_an_error_law_is_refused). With DC_END_FORCE the force ends ever sooner (Hertz: tau =
 /// 0.02 t* at e = 1e-8, 2e-6 t* at 1e-19; the search's grid is scaled by tau, from the
 /// library's quadrature where the force ends within 100 steps of the reference run, below
 /// about e = 1.5e-6 with Hertz): answered to about e = 1e-12 (Hertz, tol 5e-2: 636 steps per
