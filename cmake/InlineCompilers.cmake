@@ -34,7 +34,7 @@ file(MAKE_DIRECTORY "${OUT}")
 #     bit. Twice: nvcc -O2 (host: x86-64 baseline, no FMA), and with the host compiler on FMA
 #     hardware (-Xcompiler -O3,-march=native,-ffp-contract=off: nvcc's front end lacks
 #     __builtin_assoc_barrier, so the header's host side under nvcc needs contraction off).
-#  2. dc_forces_arith (the 17 kernels without libm) compiled to an sm_90 cubin with -fmad=true
+#  2. dc_forces_arith (all 19 kernels: none needs libm) compiled to an sm_90 cubin with -fmad=true
 #     (nvcc's default) and -fmad=false: its machine code must be the same bytes, i.e. nothing was
 #     fused and every + - * / sqrt is rounded as on the host (prec-div, prec-sqrt on by default).
 # nvcc_checks(CUBINS PROGRAMS...): each program's two nvcc builds and runs (item 1), and item 2
@@ -81,7 +81,7 @@ function(nvcc_checks cubins)
             "-fmad=false (a product fused with an addition; hex dumps in ${OUT})")
   endif()
   message("dc_forces_arith: sm_90 machine code identical with -fmad=true and -fmad=false "
-          "(${len_true} characters of hex dump): no contraction in the 17 force kernels")
+          "(${len_true} characters of hex dump): no contraction in the 19 force kernels")
 endfunction()
 
 # NVCC: the build's DEMCONTACT_NVCC (scripts/setup_cuda.sh installs NVIDIA's nvcc wheels into

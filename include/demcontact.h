@@ -1803,6 +1803,9 @@ int32_t dc_contact_model_init(const struct dc_contact_spec *spec, struct dc_cont
  * dc_contact_model_init gives: objective) or DC_CARRY_PROJECT (LAMMPS' projection and
  * rescale: cheaper, not objective about the normal). The history layout and length do not
  * change, so a run may switch between the two. Call it at set-up, like dc_contact_model_init.
+ * The rotation resolves spins up to |w1 + w2| dt/2 < 2^20 rad in one step; a step beyond it
+ * (no physical spin) takes the projection alone, as a normal turned by more than 120 degrees
+ * does.
  *
  * @return DC_OK, DC_ERR_NULL_POINTER, DC_ERR_CONTACT_MODEL_INVALID (not a valid model),
  *         DC_ERR_SPEC_MODEL (unknown carry). `model` is untouched on error.

@@ -252,12 +252,74 @@ DCI_ALWAYS_INLINE_FN double dci_from_bits(uint64_t u) {
 #define DCI_DBL_MIN 0x1p-1022
 #define DCI_POW_OFF UINT64_C(0x3fe5c00000000000) /* bits of 0.6796875 */
 
-/* The power's 32-entry tables (src/numerics/pow_table.rs): function-local, so that they work
- * in CUDA/HIP device code too (static elsewhere: no copy per call). */
+/* Tables (the power's 32-entry tables of src/numerics/pow_table.rs, the Hurwitz zeta series of
+ * the step-aware onset): on the host, static const arrays local to their function; in CUDA/HIP
+ * device code (DCI_DEVICE_PASS), arrays in device global memory at file scope, read through the
+ * cache. A function-local const array in device code is built in each thread's local memory
+ * (the kernels of examples_cpp/gpu/gpu_check.cu had a 1024-byte stack frame for these four). */
+#if defined(__CUDA_ARCH__) || defined(__HIP_DEVICE_COMPILE__)
+#define DCI_DEVICE_PASS 1
+#endif
 #if defined(__CUDACC__) || defined(__HIPCC__)
-#define DCI_TABLE const
-#else
-#define DCI_TABLE static const
+#define DCI_DEVICE_TABLE static __device__ const
+#endif
+#define DCI_POW_INVC { \
+    0x1.745d1745d1746p+0, 0x1.6c16c16c16c17p+0, 0x1.642c8590b2164p+0, \
+    0x1.5c9882b931057p+0, 0x1.5555555555555p+0, 0x1.4e5e0a72f0539p+0, \
+    0x1.47ae147ae147bp+0, 0x1.4141414141414p+0, 0x1.3b13b13b13b14p+0, \
+    0x1.3521cfb2b78c1p+0, 0x1.2f684bda12f68p+0, 0x1.29e4129e4129ep+0, \
+    0x1.2492492492492p+0, 0x1.1f7047dc11f70p+0, 0x1.1a7b9611a7b96p+0, \
+    0x1.15b1e5f75270dp+0, 0x1.1111111111111p+0, 0x1.0c9714fbcda3bp+0, \
+    0x1.0842108421084p+0, 0x1.0410410410410p+0, 0x1.0000000000000p+0, \
+    0x1.f07c1f07c1f08p-1, 0x1.e1e1e1e1e1e1ep-1, 0x1.d41d41d41d41dp-1, \
+    0x1.c71c71c71c71cp-1, 0x1.bacf914c1bad0p-1, 0x1.af286bca1af28p-1, \
+    0x1.a41a41a41a41ap-1, 0x1.999999999999ap-1, 0x1.8f9c18f9c18fap-1, \
+    0x1.8618618618618p-1, 0x1.7d05f417d05f4p-1 \
+    }
+#define DCI_POW_LOGC { \
+    -0x1.7fafa3bd8151cp-2, -0x1.68ac83e9c6a14p-2, -0x1.522ae0738a3d8p-2, \
+    -0x1.3c25277333184p-2, -0x1.269621134db92p-2, -0x1.1178e8227e47cp-2, \
+    -0x1.f991c6cb3b379p-3, -0x1.d1037f2655e7bp-3, -0x1.a93ed3c8ad9e3p-3, \
+    -0x1.823c16551a3c2p-3, -0x1.5bf406b543db2p-3, -0x1.365fcb0159016p-3, \
+    -0x1.1178e8227e47cp-3, -0x1.da727638446a2p-4, -0x1.9335e5d594989p-4, \
+    -0x1.4d3115d207eacp-4, -0x1.08598b59e3a07p-4, -0x1.894aa149fb343p-5, \
+    -0x1.0415d89e74444p-5, -0x1.0205658935847p-6, 0x0.0p+0, \
+    0x1.f829b0e783300p-6, 0x1.f0a30c01162a6p-5, 0x1.6f0d28ae56b4cp-4, \
+    0x1.e27076e2af2e6p-4, 0x1.29552f81ff523p-3, 0x1.5ff3070a793d4p-3, \
+    0x1.9525a9cf456b4p-3, 0x1.c8ff7c79a9a22p-3, 0x1.fb9186d5e3e2bp-3, \
+    0x1.1675cababa60ep-2, 0x1.2e8e2bae11d31p-2 \
+    }
+#define DCI_POW_EXP2_HI { \
+    0x1.0000000000000p+0, 0x1.059b0d3158574p+0, 0x1.0b5586cf9890fp+0, \
+    0x1.11301d0125b51p+0, 0x1.172b83c7d517bp+0, 0x1.1d4873168b9aap+0, \
+    0x1.2387a6e756238p+0, 0x1.29e9df51fdee1p+0, 0x1.306fe0a31b715p+0, \
+    0x1.371a7373aa9cbp+0, 0x1.3dea64c123422p+0, 0x1.44e086061892dp+0, \
+    0x1.4bfdad5362a27p+0, 0x1.5342b569d4f82p+0, 0x1.5ab07dd485429p+0, \
+    0x1.6247eb03a5585p+0, 0x1.6a09e667f3bcdp+0, 0x1.71f75e8ec5f74p+0, \
+    0x1.7a11473eb0187p+0, 0x1.82589994cce13p+0, 0x1.8ace5422aa0dbp+0, \
+    0x1.93737b0cdc5e5p+0, 0x1.9c49182a3f090p+0, 0x1.a5503b23e255dp+0, \
+    0x1.ae89f995ad3adp+0, 0x1.b7f76f2fb5e47p+0, 0x1.c199bdd85529cp+0, \
+    0x1.cb720dcef9069p+0, 0x1.d5818dcfba487p+0, 0x1.dfc97337b9b5fp+0, \
+    0x1.ea4afa2a490dap+0, 0x1.f50765b6e4540p+0 \
+    }
+#define DCI_POW_EXP2_LO { \
+    0x0.0p+0, 0x1.d73e2a475b465p-55, 0x1.8a62e4adc610bp-54, \
+    -0x1.6c51039449b3ap-54, -0x1.19041b9d78a76p-55, 0x1.e016e00a2643cp-54, \
+    0x1.9b07eb6c70573p-54, 0x1.612e8afad1255p-55, 0x1.6f46ad23182e4p-55, \
+    -0x1.63aeabf42eae2p-54, 0x1.ada0911f09ebcp-55, 0x1.89b7a04ef80d0p-59, \
+    0x1.d4397afec42e2p-56, -0x1.07abe1db13cadp-55, 0x1.6324c054647adp-54, \
+    -0x1.383c17e40b497p-54, -0x1.bdd3413b26456p-54, -0x1.16e4786887a99p-55, \
+    -0x1.41577ee04992fp-55, -0x1.d4c1dd41532d8p-54, 0x1.6e9f156864b27p-54, \
+    -0x1.75fc781b57ebcp-57, 0x1.c7c46b071f2bep-56, -0x1.d2f6edb8d41e1p-54, \
+    0x1.7a1cd345dcc81p-54, -0x1.5584f7e54ac3bp-56, 0x1.11065895048ddp-55, \
+    0x1.503cbd1e949dbp-56, 0x1.2ed02d75b3707p-55, -0x1.1a5cd4f184b5cp-54, \
+    -0x1.e9c23179c2893p-54, 0x1.9d3e12dd8a18bp-54 \
+    }
+#if defined(__CUDACC__) || defined(__HIPCC__)
+DCI_DEVICE_TABLE double dci_dev_invc[32] = DCI_POW_INVC;
+DCI_DEVICE_TABLE double dci_dev_logc[32] = DCI_POW_LOGC;
+DCI_DEVICE_TABLE double dci_dev_exp2_hi[32] = DCI_POW_EXP2_HI;
+DCI_DEVICE_TABLE double dci_dev_exp2_lo[32] = DCI_POW_EXP2_LO;
 #endif
 
 /* 2^k for an integer-valued k in [-1022, 1023]. */
@@ -275,54 +337,13 @@ DC_INLINE_FN double dci_exp2i(double kf) {
  * j = k mod 32. */
 DC_INLINE_FN double dc_pow_inline(double x, double q) {
     DCI_NO_CONTRACT
-    DCI_TABLE double invc[32] = {
-        0x1.745d1745d1746p+0, 0x1.6c16c16c16c17p+0, 0x1.642c8590b2164p+0,
-        0x1.5c9882b931057p+0, 0x1.5555555555555p+0, 0x1.4e5e0a72f0539p+0,
-        0x1.47ae147ae147bp+0, 0x1.4141414141414p+0, 0x1.3b13b13b13b14p+0,
-        0x1.3521cfb2b78c1p+0, 0x1.2f684bda12f68p+0, 0x1.29e4129e4129ep+0,
-        0x1.2492492492492p+0, 0x1.1f7047dc11f70p+0, 0x1.1a7b9611a7b96p+0,
-        0x1.15b1e5f75270dp+0, 0x1.1111111111111p+0, 0x1.0c9714fbcda3bp+0,
-        0x1.0842108421084p+0, 0x1.0410410410410p+0, 0x1.0000000000000p+0,
-        0x1.f07c1f07c1f08p-1, 0x1.e1e1e1e1e1e1ep-1, 0x1.d41d41d41d41dp-1,
-        0x1.c71c71c71c71cp-1, 0x1.bacf914c1bad0p-1, 0x1.af286bca1af28p-1,
-        0x1.a41a41a41a41ap-1, 0x1.999999999999ap-1, 0x1.8f9c18f9c18fap-1,
-        0x1.8618618618618p-1, 0x1.7d05f417d05f4p-1};
-    DCI_TABLE double logc[32] = {
-        -0x1.7fafa3bd8151cp-2, -0x1.68ac83e9c6a14p-2, -0x1.522ae0738a3d8p-2,
-        -0x1.3c25277333184p-2, -0x1.269621134db92p-2, -0x1.1178e8227e47cp-2,
-        -0x1.f991c6cb3b379p-3, -0x1.d1037f2655e7bp-3, -0x1.a93ed3c8ad9e3p-3,
-        -0x1.823c16551a3c2p-3, -0x1.5bf406b543db2p-3, -0x1.365fcb0159016p-3,
-        -0x1.1178e8227e47cp-3, -0x1.da727638446a2p-4, -0x1.9335e5d594989p-4,
-        -0x1.4d3115d207eacp-4, -0x1.08598b59e3a07p-4, -0x1.894aa149fb343p-5,
-        -0x1.0415d89e74444p-5, -0x1.0205658935847p-6, 0x0.0p+0,
-        0x1.f829b0e783300p-6, 0x1.f0a30c01162a6p-5, 0x1.6f0d28ae56b4cp-4,
-        0x1.e27076e2af2e6p-4, 0x1.29552f81ff523p-3, 0x1.5ff3070a793d4p-3,
-        0x1.9525a9cf456b4p-3, 0x1.c8ff7c79a9a22p-3, 0x1.fb9186d5e3e2bp-3,
-        0x1.1675cababa60ep-2, 0x1.2e8e2bae11d31p-2};
-    DCI_TABLE double exp2_hi[32] = {
-        0x1.0000000000000p+0, 0x1.059b0d3158574p+0, 0x1.0b5586cf9890fp+0,
-        0x1.11301d0125b51p+0, 0x1.172b83c7d517bp+0, 0x1.1d4873168b9aap+0,
-        0x1.2387a6e756238p+0, 0x1.29e9df51fdee1p+0, 0x1.306fe0a31b715p+0,
-        0x1.371a7373aa9cbp+0, 0x1.3dea64c123422p+0, 0x1.44e086061892dp+0,
-        0x1.4bfdad5362a27p+0, 0x1.5342b569d4f82p+0, 0x1.5ab07dd485429p+0,
-        0x1.6247eb03a5585p+0, 0x1.6a09e667f3bcdp+0, 0x1.71f75e8ec5f74p+0,
-        0x1.7a11473eb0187p+0, 0x1.82589994cce13p+0, 0x1.8ace5422aa0dbp+0,
-        0x1.93737b0cdc5e5p+0, 0x1.9c49182a3f090p+0, 0x1.a5503b23e255dp+0,
-        0x1.ae89f995ad3adp+0, 0x1.b7f76f2fb5e47p+0, 0x1.c199bdd85529cp+0,
-        0x1.cb720dcef9069p+0, 0x1.d5818dcfba487p+0, 0x1.dfc97337b9b5fp+0,
-        0x1.ea4afa2a490dap+0, 0x1.f50765b6e4540p+0};
-    DCI_TABLE double exp2_lo[32] = {
-        0x0.0p+0, 0x1.d73e2a475b465p-55, 0x1.8a62e4adc610bp-54,
-        -0x1.6c51039449b3ap-54, -0x1.19041b9d78a76p-55, 0x1.e016e00a2643cp-54,
-        0x1.9b07eb6c70573p-54, 0x1.612e8afad1255p-55, 0x1.6f46ad23182e4p-55,
-        -0x1.63aeabf42eae2p-54, 0x1.ada0911f09ebcp-55, 0x1.89b7a04ef80d0p-59,
-        0x1.d4397afec42e2p-56, -0x1.07abe1db13cadp-55, 0x1.6324c054647adp-54,
-        -0x1.383c17e40b497p-54, -0x1.bdd3413b26456p-54, -0x1.16e4786887a99p-55,
-        -0x1.41577ee04992fp-55, -0x1.d4c1dd41532d8p-54, 0x1.6e9f156864b27p-54,
-        -0x1.75fc781b57ebcp-57, 0x1.c7c46b071f2bep-56, -0x1.d2f6edb8d41e1p-54,
-        0x1.7a1cd345dcc81p-54, -0x1.5584f7e54ac3bp-56, 0x1.11065895048ddp-55,
-        0x1.503cbd1e949dbp-56, 0x1.2ed02d75b3707p-55, -0x1.1a5cd4f184b5cp-54,
-        -0x1.e9c23179c2893p-54, 0x1.9d3e12dd8a18bp-54};
+#if defined(DCI_DEVICE_PASS)
+    const double *const invc = dci_dev_invc, *const logc = dci_dev_logc;
+    const double *const exp2_hi = dci_dev_exp2_hi, *const exp2_lo = dci_dev_exp2_lo;
+#else
+    static const double invc[32] = DCI_POW_INVC, logc[32] = DCI_POW_LOGC;
+    static const double exp2_hi[32] = DCI_POW_EXP2_HI, exp2_lo[32] = DCI_POW_EXP2_LO;
+#endif
     const int pos = x > 0.0 && x < (double)INFINITY;
     double safe = pos ? x : 1.0;
     const int sub = safe < DCI_DBL_MIN;
@@ -451,7 +472,12 @@ DCI_ALWAYS_INLINE_FN double dci_visco_damped(double k, double c, double d, doubl
 /* src/force/dmt.rs `reach` */
 DC_INLINE_FN double dci_dmt_reach(double k, double h, double r) {
     DCI_NO_CONTRACT
-    return pow((h * sqrt(r)) / k, 2.0 / 3.0);
+    const double x = (h * sqrt(r)) / k;
+    if (x >= 0.0) {
+        return dc_pow_inline(x, 2.0 / 3.0);
+    } else {
+        return x;
+    }
 }
 /* src/force/dmt.rs `tail` */
 DC_INLINE_FN double dci_dmt_tail(double k, double h, double d, double r) {
@@ -1088,9 +1114,64 @@ DCI_ALWAYS_INLINE_FN double dci_harmonic(double a, double b) {
     return b == (double)INFINITY ? a : a * (b / (a + b));
 }
 
+/* src/numerics/trig.rs `sin_cos`: sin x and cos x in + - * and floor only (no libm: CUDA's sin
+ * is not glibc's), |x| < 2^19, else NaN: a Cody-Waite reduction by pi/2 in three parts (the
+ * first two of 33 bits: exact products for |k| < 2^20), Taylor series to r^17 and r^16 on
+ * |r| <= pi/4 with the reduction's rounding error rl carried, the quadrant k mod 4. Within
+ * 1 ulp of glibc; the library's bits. */
+DCI_ALWAYS_INLINE_FN void dci_sin_cos(double x, double *sin_out, double *cos_out) {
+    DCI_NO_CONTRACT
+    if (!(fabs(x) < 524288.0)) {
+        *sin_out = *cos_out = (double)NAN;
+        return;
+    }
+    const double k = floor(DCI_M(x, 0x1.45f306dc9c883p-1) + 0.5);
+    /* r + rl = x - k pi/2 (t exact; (t - u) - k P2 is u's rounding error exactly) */
+    const double t = x - DCI_M(k, 0x1.921fb544p+0);
+    const double u = t - DCI_M(k, 0x1.0b4611a6p-34);
+    const double v = ((t - u) - DCI_M(k, 0x1.0b4611a6p-34)) - DCI_M(k, 0x1.3198a2e037073p-69);
+    const double r = u + v;
+    const double rl = (u - r) + v;
+    const double z = r * r;
+    const double ps =
+        -0x1.5555555555555p-3 +
+        DCI_M(z, 0x1.1111111111111p-7 +
+                     DCI_M(z, -0x1.a01a01a01a01ap-13 +
+                                  DCI_M(z, 0x1.71de3a556c734p-19 +
+                                               DCI_M(z, -0x1.ae64567f544e4p-26 +
+                                                            DCI_M(z, 0x1.6124613a86d09p-33 +
+                                                                         DCI_M(z, -0x1.ae7f3e733b81fp-41 +
+                                                                                      DCI_M(z, 0x1.952c77030ad4ap-49)))))));
+    const double pc =
+        0x1.5555555555555p-5 +
+        DCI_M(z, -0x1.6c16c16c16c17p-10 +
+                     DCI_M(z, 0x1.a01a01a01a01ap-16 +
+                                  DCI_M(z, -0x1.27e4fb7789f5cp-22 +
+                                               DCI_M(z, 0x1.1eed8eff8d898p-29 +
+                                                            DCI_M(z, -0x1.93974a8c07c9dp-37 +
+                                                                         DCI_M(z, 0x1.ae7f3e733b81fp-45))))));
+    const double s = r + (rl + DCI_M(r * z, ps));
+    const double hz = DCI_M(0.5, z), w = 1.0 - hz; /* (1 - w) - hz: w's rounding error, exactly */
+    const double c = w + (((1.0 - w) - hz) + (DCI_M(z * z, pc) - DCI_M(r, rl)));
+    const double q = k - DCI_M(4.0, floor(DCI_M(0.25, k)));
+    if (q == 0.0) {
+        *sin_out = s;
+        *cos_out = c;
+    } else if (q == 1.0) {
+        *sin_out = c;
+        *cos_out = -s;
+    } else if (q == 2.0) {
+        *sin_out = -s;
+        *cos_out = -c;
+    } else {
+        *sin_out = -c;
+        *cos_out = s;
+    }
+}
+
 /* The frame motion of one step (src/contact/frame.rs `FrameStep::new`): the rotation by the
  * mean spin q = (w1 + w2)/2 dt (Rodrigues, s = sin|q|/|q|, c = (1 - cos|q|)/|q|^2, Taylor series for
- * |q|^2 < 1e-3, else libm sin as the library's f64::sin), then the minimal tilt from the spun old
+ * |q|^2 < 1e-3, else dci_sin_cos of |q|/2, as the library), then the minimal tilt from the spun old
  * normal to n, then the projection on the plane normal to n. DC_CARRY_PROJECT (project = 1):
  * the projection alone, rescaled to the old length. */
 typedef struct dci_frame {
@@ -1111,11 +1192,12 @@ DCI_ALWAYS_INLINE_FN void dci_rodrigues(double q2, double *s, double *c) {
         *s = 1.0 - DCI_M(q2 / 6.0, 1.0 - DCI_M(q2 / 20.0, 1.0 - q2 / 42.0));
         *c = 0.5 * (1.0 - DCI_M(q2 / 12.0, 1.0 - DCI_M(q2 / 30.0, 1.0 - q2 / 56.0)));
     } else {
+        /* sin = 2 sin(th/2) cos(th/2), 1 - cos = 2 sin^2(th/2): one reduction, no cancellation */
         const double th = sqrt(q2);
-        const double sn = sin(th);
-        const double h = sin(0.5 * th); /* 1 - cos = 2 sin^2(th/2), no cancellation */
-        *s = sn / th;
-        *c = 2.0 * h * h / q2;
+        double sh, ch;
+        dci_sin_cos(0.5 * th, &sh, &ch);
+        *s = 2.0 * (sh * ch) / th;
+        *c = 2.0 * (sh * sh) / q2;
     }
 }
 DCI_ALWAYS_INLINE_FN dci_frame dci_frame_new(dci_v3 n_old, dci_v3 n, dci_v3 q) {
@@ -1409,42 +1491,52 @@ DCI_ALWAYS_INLINE_FN double dci_euler_maclaurin(double b, double acc, double xx)
     return acc;
 }
 
+/* The Hurwitz series' coefficients (tables: see DCI_POW_INVC) */
+#define DCI_HURWITZ_Q { \
+    -0.7899114703787721, \
+    -0.5035045668819903, \
+    -0.029871702822718397, \
+    0.003350820175184365, \
+    -0.0006291463053583874, \
+    0.00014330484309451767, \
+    -3.603711518903692e-05, \
+    9.61171113531629e-06, \
+    -2.6718054638719184e-06, \
+    7.606060861039445e-07, \
+    -2.088381669309575e-07, \
+    6.139160979448287e-08, \
+    -2.6962573574681468e-08, \
+    8.154777349940339e-09 \
+    }
+#define DCI_HURWITZ_H { \
+    -0.6462183156061935, \
+    -0.5047780514486088, \
+    -0.06087846318918256, \
+    0.004611378001305343, \
+    -0.0007497468708554522, \
+    0.00015652782761019915, \
+    -3.69837684257766e-05, \
+    9.39590269177627e-06, \
+    -2.5082644438857636e-06, \
+    6.901610637606485e-07, \
+    -1.849878904556762e-07, \
+    5.295304614101252e-08, \
+    -2.229009773544556e-08, \
+    6.602811603891717e-09 \
+    }
+#if defined(__CUDACC__) || defined(__HIPCC__)
+DCI_DEVICE_TABLE double dci_dev_hurwitz_q[14] = DCI_HURWITZ_Q;
+DCI_DEVICE_TABLE double dci_dev_hurwitz_h[14] = DCI_HURWITZ_H;
+#endif
 /* Hurwitz zeta(-b, x), x >= 1, 0 <= b <= 1 (hurwitz_neg) */
 DCI_ALWAYS_INLINE_FN double dci_hurwitz_neg(double b, double x) {
     DCI_NO_CONTRACT
     /* zeta(-1/4, x) and zeta(-1/2, x) ~ P(2x - 3) on x in [1, 2] (HURWITZ_Q, HURWITZ_H) */
-    DCI_TABLE double dci_hurwitz_q[14] = {
-        -0.7899114703787721,
-        -0.5035045668819903,
-        -0.029871702822718397,
-        0.003350820175184365,
-        -0.0006291463053583874,
-        0.00014330484309451767,
-        -3.603711518903692e-05,
-        9.61171113531629e-06,
-        -2.6718054638719184e-06,
-        7.606060861039445e-07,
-        -2.088381669309575e-07,
-        6.139160979448287e-08,
-        -2.6962573574681468e-08,
-        8.154777349940339e-09,
-    };
-    DCI_TABLE double dci_hurwitz_h[14] = {
-        -0.6462183156061935,
-        -0.5047780514486088,
-        -0.06087846318918256,
-        0.004611378001305343,
-        -0.0007497468708554522,
-        0.00015652782761019915,
-        -3.69837684257766e-05,
-        9.39590269177627e-06,
-        -2.5082644438857636e-06,
-        6.901610637606485e-07,
-        -1.849878904556762e-07,
-        5.295304614101252e-08,
-        -2.229009773544556e-08,
-        6.602811603891717e-09,
-    };
+#if defined(DCI_DEVICE_PASS)
+    const double *const dci_hurwitz_q = dci_dev_hurwitz_q, *const dci_hurwitz_h = dci_dev_hurwitz_h;
+#else
+    static const double dci_hurwitz_q[14] = DCI_HURWITZ_Q, dci_hurwitz_h[14] = DCI_HURWITZ_H;
+#endif
     if (x <= 2.0 && b == 0.25) return dci_horner14(dci_hurwitz_q, 2.0 * x - 3.0);
     if (x <= 2.0 && b == 0.5) return dci_horner14(dci_hurwitz_h, 2.0 * x - 3.0);
     if (x >= 5.0) return dci_euler_maclaurin(b, 0.0, x);

@@ -1270,3 +1270,62 @@ fn batches_report_overflow_with_nan_and_history_kept() {
         assert_eq!((s, bad), (DC_ERR_RESULT_RANGE, over[0]));
     }
 }
+
+/// A spin that turns the contact frame by |q| = |ω1 + ω2| dt/2 ≥ 2^20 rad in one step (no step
+/// resolves it; the frame rotation's own sin and cos, `numerics::trig`, give NaN there): the
+/// rotate carry falls back to the projection, as for a normal turned by more than 120°, so the
+/// step is DC_OK with finite outputs and history, and the same as the projection carry's for a
+/// contact whose normal did not turn (where the projection is no change).
+#[test]
+fn frame_rotations_beyond_two_to_the_twenty_fall_back_to_the_projection() {
+    let mut s = spec();
+    hertz(&mut s);
+    s.tangential = DC_TANGENTIAL_MINDLIN;
+    s.mu = 0.5;
+    let (st, m) = init(&s);
+    assert_eq!(st, DC_OK);
+    let mut mp = m;
+    assert_eq!(
+        unsafe { dc_contact_model_set_carry(&mut mp, DC_CARRY_PROJECT) },
+        DC_OK
+    );
+    let dt = 1e-6;
+    // |q| = w dt/2 for w1 = (w, 0, 0), w2 = 0; the normal (1, 0, 0) the same in both steps.
+    let at = |q: f64| dc_contact_state {
+        w1: [2.0 * q / dt, 0.0, 0.0],
+        w2: [0.0; 3],
+        ..states()[0]
+    };
+    let step = |m: &dc_contact_model, st: &dc_contact_state| {
+        let mut h = [0.0; DC_CONTACT_HISTORY_MAX as usize];
+        let mut out = sentinel_res();
+        // a contact under way: the first step stores the normal and a spring, the second carries
+        let first = dc_contact_state {
+            w1: [0.0; 3],
+            ..*st
+        };
+        assert_eq!(
+            unsafe { dc_contact_force(m, &first, dt, h.as_mut_ptr(), h.len(), &mut out) },
+            DC_OK
+        );
+        assert!(h[3..6].iter().any(|&x| x != 0.0), "a spring to carry");
+        let status = unsafe { dc_contact_force(m, st, dt, h.as_mut_ptr(), h.len(), &mut out) };
+        (status, h, out)
+    };
+    let two20 = 1_048_576.0;
+    let (st_below, h_below, _) = step(&m, &at(two20 * 0.999));
+    assert_eq!(st_below, DC_OK);
+    let (_, h_proj_below, _) = step(&mp, &at(two20 * 0.999));
+    assert_ne!(h_below, h_proj_below, "below 2^20 the spring is rotated");
+    for q in [two20, 1e12, 1e300] {
+        let (status, h, out) = step(&m, &at(q));
+        assert_eq!(status, DC_OK, "rotate carry, |q| = {q:e}");
+        assert!(
+            h.iter().all(|x| x.is_finite()),
+            "|q| = {q:e}: history {h:?}"
+        );
+        let (sp, hp, outp) = step(&mp, &at(q));
+        assert_eq!(sp, DC_OK);
+        assert_eq!((h, out), (hp, outp), "|q| = {q:e}: the projection's step");
+    }
+}

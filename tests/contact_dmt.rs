@@ -74,6 +74,13 @@ fn force_matches_definition_and_is_continuous() {
     assert!(f(-dc * (1.0 - 1e-12)).abs() < 1e-10 * pull && f(-dc * 1.000001) == 0.0);
     assert_eq!(f(f64::NAN), 0.0);
     assert_eq!(f(-1.0), 0.0);
+    // The unchecked call with a bad radius (r_eff < 0 or NaN): the tail's reach is NaN, so no
+    // tail force (the library's own power gives a finite number for a NaN argument; the reach
+    // keeps the NaN).
+    for r in [-1e-3, f64::NAN] {
+        let t = unsafe { dc_normal_force(&m.normal, -0.5 * dc, 0.0, r, 1e-6) };
+        assert!(t == 0.0 || t.is_nan(), "r_eff {r}: tail force {t}");
+    }
 }
 
 /// A sphere onto the wall at v0 (normal incidence), velocity-Verlet; returns the rebound speed

@@ -11,8 +11,8 @@ __global__ void dc_forces(const dc_pair *pair, int n, const double *d, const dou
     if (i < n) out[i] = dc_normal_force_inline(pair, d[i], vn[i], r[i], m[i]);
 }
 
-/* The 17 kernels that need no libm (only + - * / sqrt and dc_pow_inline), each with its code as a
- * constant: ctest inline_cuda compiles this one to a cubin with -fmad=true (nvcc's default) and
+/* Every kernel code, 1 to 19 (none needs libm: only + - * / sqrt and dc_pow_inline, DMT's
+ * reach included), each with its code as a constant: ctest inline_cuda compiles this one to a cubin with -fmad=true (nvcc's default) and
  * with -fmad=false and requires the same machine code, i.e. nothing in it was fused. */
 #define DCI_CASE(K)                                                                   \
     case K: out[i] = dc_normal_force_kernel_inline(K, pair, d[i], vn[i], r[i], m[i]); \
@@ -24,7 +24,7 @@ __global__ void dc_forces_arith(const dc_pair *pair, int n, const double *d, con
     switch (pair->kernel) {
         DCI_CASE(1) DCI_CASE(2) DCI_CASE(3) DCI_CASE(4) DCI_CASE(5) DCI_CASE(6) DCI_CASE(7)
         DCI_CASE(8) DCI_CASE(9) DCI_CASE(10) DCI_CASE(11) DCI_CASE(12) DCI_CASE(13)
-        DCI_CASE(14) DCI_CASE(15) DCI_CASE(16) DCI_CASE(17)
+        DCI_CASE(14) DCI_CASE(15) DCI_CASE(16) DCI_CASE(17) DCI_CASE(18) DCI_CASE(19)
     default: out[i] = 0.0;
     }
 }

@@ -17,6 +17,7 @@ __device__ double hypot(double, double);
 __device__ double acos(double);
 __device__ int isfinite(double);
 __device__ double fabs(double);
+__device__ double floor(double);
 __device__ double sin(double);
 __device__ double copysign(double, double);
 __device__ double pow(double, double);

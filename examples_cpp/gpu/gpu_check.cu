@@ -19,6 +19,12 @@
  *     device-to-device copy bandwidth measured in the same run (cudaMemcpy) divided by the bytes
  *     the kernel must move per contact (counted below, kernel by kernel). The timed kernels'
  *     first results are checked too (entries: bits; hand-written: same formula, relative 1e-9).
+ *  5. the step-exact option: trajectories as in 3, each with its own model made step-aware by
+ *     the library's dc_contact_model_set_step for that trajectory's dt (velocity Verlet and
+ *     symplectic Euler alternately), every shape whose normal law the option takes (the damped
+ *     Tsuji laws), the approach speed the drift that made each overlap (so that each contact's
+ *     first step is an onset): every step's bits, and the steps the option changes (the library
+ *     runs the plain model alongside).
  * Exit status: 0 all identical, 1 any bit difference or a regime not reached, 2 bad arguments,
  * 3 a CUDA or set-up error. Prints one table.
  *
@@ -282,11 +288,38 @@ struct TrajectoryEach {
     }
 };
 
+/* 5. step-exact trajectories: as stage 3, but trajectory c has its own model models[c] (made
+ * step-aware for that trajectory's dt); plant: one ulp on the step-aware slot (index slot) */
+struct StepTrajectoryEach {
+    const dc_contact_model *models;
+    const double *in;
+    double *hist_steps, *res;
+    int32_t *ires;
+    size_t C, T, plant;
+    int slot;
+    GC_DEV void operator()(size_t c) const {
+        const size_t N = C * T;
+        double h[NH];
+        for (int k = 0; k < NH; k++) h[k] = 0.0;
+        for (size_t t = 0; t < T; t++) {
+            const size_t j = t * C + c;
+            dc_contact_state s;
+            load_state(in, N, j, &s);
+            dc_contact_result r;
+            sentinel(&r);
+            const int32_t st = dc_contact_force_inline(&models[c], &s, in[F_DT * N + j], h, NH, &r);
+            if (j == plant) h[slot] = ulp_up(h[slot]);
+            store_result(res, ires, N, j, &r, st);
+            for (int k = 0; k < NH; k++) hist_steps[k * N + j] = h[k];
+        }
+    }
+};
+
 /* ---------------------------------------------------------------- the timed Hertz-Mindlin batch
  * Inputs: the 20 state fields (F_N .. F_M2; dt one value); history: 6 doubles per contact (the
  * last normal, the tangential spring), read and written; outputs: f_n, force, torque1, torque2
  * (10 doubles). Contacts with a non-OK status: the first index in *first_bad. */
-enum { B_FN = 0, B_FORCE = 1, B_T1 = 4, B_T2 = 7, NB = 10, HB = 6 };
+enum { B_FN = 0, B_FORCE = 1, B_T1 = 4, B_T2 = 7, NB = 10, HB = 6, HS = HB + 1 };
 struct BenchArgs {
     const dc_contact_model *model;
     const double *in;
@@ -295,6 +328,7 @@ struct BenchArgs {
     double dt;
     size_t N;
 };
+template <int H>
 GC_HD static inline void bench_store(const BenchArgs &a, size_t j, const dc_contact_result &r,
                                      const double *h) {
     a.out[B_FN * a.N + j] = r.f_n;
@@ -303,36 +337,37 @@ GC_HD static inline void bench_store(const BenchArgs &a, size_t j, const dc_cont
         a.out[(B_T1 + k) * a.N + j] = r.torque1[k];
         a.out[(B_T2 + k) * a.N + j] = r.torque2[k];
     }
-    for (int k = 0; k < HB; k++) a.hist[k * a.N + j] = h[k];
+    for (int k = 0; k < H; k++) a.hist[k * a.N + j] = h[k];
 }
-/* One timed contact through an entry: Entry::call evaluates it (the history's 6 doubles in h) */
-template <class Entry> struct BenchEntry {
+/* One timed contact through an entry: Entry::call evaluates it (the history's H doubles in h:
+ * 6, or 7 for the step-aware model, whose last one is the step-aware slot) */
+template <class Entry, int H = HB> struct BenchEntry {
     BenchArgs a;
     GC_DEV void operator()(size_t j) const {
         dc_contact_state s;
         load_state(a.in, a.N, j, &s);
-        double h[HB];
-        for (int k = 0; k < HB; k++) h[k] = a.hist[k * a.N + j];
+        double h[H];
+        for (int k = 0; k < H; k++) h[k] = a.hist[k * a.N + j];
         dc_contact_result r;
-        if (Entry::call(a.model, &s, a.dt, h, &r) != DC_OK) {
+        if (Entry::call(a.model, &s, a.dt, h, H, &r) != DC_OK) {
             gc_first_bad(a.first_bad, j);
             return;
         }
-        bench_store(a, j, r, h);
+        bench_store<H>(a, j, r, h);
     }
 };
 /* the generic entry: the model's selectors read at run time */
 struct GenericCall {
     GC_HD static int32_t call(const dc_contact_model *m, const dc_contact_state *s, double dt,
-                              double *h, dc_contact_result *r) {
-        return dc_contact_force_inline(m, s, dt, h, HB, r);
+                              double *h, size_t hl, dc_contact_result *r) {
+        return dc_contact_force_inline(m, s, dt, h, hl, r);
     }
 };
 /* the shaped entry: Hertz damped clamped, Mindlin, no rolling, no twisting, projection carry as
  * constants (the host checked the model's shape with dc_contact_model_shape_inline) */
 struct ShapedCall {
     GC_HD static int32_t call(const dc_contact_model *m, const dc_contact_state *s, double dt,
-                              double *h, dc_contact_result *r) {
+                              double *h, size_t, dc_contact_result *r) {
         return dc_contact_force_shaped_inline(m, DC_KERNEL_HERTZ_DAMPED_CLAMPED, DC_TANGENTIAL_MINDLIN,
                                               DC_ROLLING_NONE, DC_TWISTING_NONE, DC_CARRY_PROJECT, s,
                                               dt, h, r);
@@ -340,6 +375,7 @@ struct ShapedCall {
 };
 typedef BenchEntry<GenericCall> BenchGeneric;
 typedef BenchEntry<ShapedCall> BenchShaped;
+typedef BenchEntry<GenericCall, HS> BenchStep; /* the step-aware model through the generic entry */
 /* Hand-written: the same formula without the header (no checks, no statuses): Hertz
  * F = k sqrt(R d) d + c sqrt(m sqrt(R d)) vn clamped at 0; Mindlin k_t = kt0 sqrt(R d), dashpot
  * c_t = 2 zeta sqrt(kappa/(1+kappa) m k_t); the spring projected on the tangent plane and
@@ -613,6 +649,38 @@ static void random_trajectory(double *in, size_t C, size_t T, size_t c, const dc
     }
     for (size_t t = 0; t < T; t++)
         in[F_OV * N + t * C + c] = amp * (0.3 - base + sin(phase + freq * (double)t));
+}
+
+/* the damped Tsuji kernel codes, the laws dc_contact_model_set_step accepts (linear, p = 3/2,
+ * p = 2, general p <= 3, Hertz: damped, and damped and force-clamped) */
+static int step_kernel(int k) { return k <= 15 && (k - 1) % 3 != 0; }
+
+/* step-exact trajectory c: as random_trajectory, with contacts of a few steps (the overlap's
+ * phase advancing 0.2-1.2 rad a step) and body 1's velocity along n set so that the approach
+ * speed (v2 - v1).n is the one that drifted the overlap to its value: a collision as a host
+ * integrates it, so that each contact's first step is an onset (overlap <= speed x dt) */
+static void step_trajectory(double *in, size_t C, size_t T, size_t c, const dc_contact_model *m) {
+    const size_t N = C * T;
+    random_trajectory(in, C, T, c, m);
+    const double r = r_eff_of(in, N, c), amp = r * logu(-6, -2);
+    const double phase = 6.3 * uni(), freq = 0.2 + uni(), base = 0.6 * uni() - 0.3;
+    const double dt = in[F_DT * N + c];
+    for (size_t t = 0; t < T; t++) {
+        const size_t j = t * C + c;
+        const double d = amp * (base + sin(phase + freq * (double)t)),
+                     prev = amp * (base + sin(phase + freq * ((double)t - 1.0)));
+        in[F_OV * N + j] = d;
+        /* approach speed u = (d - prev)/dt, the drift that made this step's overlap (velocity
+         * Verlet: the force from the new position and the half-step velocity): v1.n = v2.n - u */
+        const double u = (d - prev) / dt;
+        double v1n = 0.0, v2n = 0.0;
+        for (int a = 0; a < 3; a++) {
+            v1n += in[(F_V1 + a) * N + j] * in[(F_N + a) * N + j];
+            v2n += in[(F_V2 + a) * N + j] * in[(F_N + a) * N + j];
+        }
+        for (int a = 0; a < 3; a++)
+            in[(F_V1 + a) * N + j] += (v2n - u - v1n) * in[(F_N + a) * N + j];
+    }
 }
 
 /* ---------------------------------------------------------------- the host reference and comparisons */
@@ -912,7 +980,7 @@ int main(int argc, char **argv) {
 
     /* ---- 4. the timed Hertz-Mindlin batch */
     const size_t NBn = (size_t)o.bench;
-    double sec_copy = 0, sec_gen = 0, sec_shaped = 0, sec_hand = 0, copy_bw = 0;
+    double sec_copy = 0, sec_gen = 0, sec_shaped = 0, sec_hand = 0, sec_step = 0, copy_bw = 0;
     long bench_diff = 0, bench_compared = 0;
     double hand_rel = 0.0;
     dc_contact_model hm;
@@ -1020,10 +1088,62 @@ int main(int argc, char **argv) {
                 }
             }
         }
+        /* the same batch with the model made step-aware at dt (velocity Verlet): its history
+         * has the step-aware slot after the 6 (zero: each contact's first step here, an onset
+         * where the overlap is within a drift; the timed passes after it are steady steps) */
+        dc_contact_model hs = hm;
+        if (dc_contact_model_set_step(&hs, dt, DC_INTEGRATOR_VELOCITY_VERLET) != DC_OK ||
+            hs.history_len != HS)
+            die("the step-aware Hertz-Mindlin model of the timed batch");
+        dc_contact_model *d_hs = dev_alloc<dc_contact_model>(1);
+        to_dev(d_hs, &hs, 1);
+        double *d_hist_s = dev_alloc<double>(HS * N);
+        const BenchStep stp{BenchArgs{d_hs, d_in, d_hist_s, d_out, d_first, dt, N}};
+        {
+            std::vector<double> hist0s(HS * N, 0.0), rhs(HS * N), dhs(HS * N);
+            for (size_t q = 0; q < HB * N; q++) hist0s[q] = hist0[q];
+            for (size_t j = 0; j < N; j++) {
+                dc_contact_state s;
+                load_state(in.data(), N, j, &s);
+                double h[HS];
+                for (int k = 0; k < HS; k++) h[k] = hist0s[k * N + j];
+                dc_contact_result r;
+                if (dc_contact_force(&hs, &s, dt, h, HS, &r) != DC_OK)
+                    die("timed batch: a step-aware reference contact failed");
+                ref[B_FN * N + j] = r.f_n;
+                for (int k = 0; k < 3; k++) {
+                    ref[(B_FORCE + k) * N + j] = r.force[k];
+                    ref[(B_T1 + k) * N + j] = r.torque1[k];
+                    ref[(B_T2 + k) * N + j] = r.torque2[k];
+                }
+                for (int k = 0; k < HS; k++) rhs[k * N + j] = h[k];
+            }
+            to_dev(d_hist_s, hist0s.data(), HS * N);
+            to_dev(d_first, &no_bad, 1);
+            launch(N, stp);
+            dev_sync();
+            unsigned long long first = 0;
+            to_host(&first, d_first, 1);
+            to_host(out.data(), d_out, NB * N);
+            to_host(dhs.data(), d_hist_s, HS * N);
+            if (first != no_bad) die("timed batch: a step-aware device contact returned an error status");
+            for (size_t j = 0; j < N; j++) {
+                int d = 0;
+                for (int f = 0; f < NB; f++) d |= bits_differ(out[f * N + j], ref[f * N + j]);
+                for (int k = 0; k < HS; k++) d |= bits_differ(dhs[k * N + j], rhs[k * N + j]);
+                if (d && bench_diff < 5)
+                    fprintf(stderr, "gpu_check: timed batch (step-aware generic entry): contact %zu differs\n", j);
+                bench_diff += d;
+                bench_compared++;
+            }
+        }
         const int reps = o.cpu_smoke ? 1 : 10;
         sec_gen = kernel_seconds(N, gen, reps);
         sec_shaped = kernel_seconds(N, shp, reps);
         sec_hand = kernel_seconds(N, hand, reps);
+        sec_step = kernel_seconds(N, stp, reps);
+        dev_free(d_hist_s);
+        dev_free(d_hs);
         /* the copy roofline: a buffer as large as the batch's inputs, device to device */
         const size_t bytes = NF * N * sizeof(double);
         char *d_copy = dev_alloc<char>(bytes);
@@ -1038,20 +1158,109 @@ int main(int argc, char **argv) {
     }
     dev_free(d_models);
 
-    /* ---- step-exact option: NOT YET IN THE LIBRARY.
-     * When the library gains its step-exact option, its check goes here: the same trajectories
-     * (stage 3) with the option on, device against library, bit for bit, and a row in the table.
-     * Nothing is compared for it now; the table says so. */
+    /* ---- 5. the step-exact option (dc_contact_model_set_step): trajectories as stage 3, each
+     * with its own step-aware model (made by the library for that trajectory's dt, velocity
+     * Verlet and symplectic Euler alternately), over every shape whose normal law the option
+     * takes; the library also runs each trajectory with the plain model, to count the steps the
+     * option changes (the onset steps among them). */
+    Counts cs;
+    long step_onsets = 0, step_onset_changed = 0, step_changed = 0, step_integrator[2] = {0, 0};
+    long step_k_onset[N_KERNELS + 1] = {0}, step_k_changed[N_KERNELS + 1] = {0};
+    std::vector<int> step_shapes;
+    for (int sh = 0; sh < N_SHAPES; sh++)
+        if (step_kernel(shape_of(sh).kernel)) step_shapes.push_back(sh);
+    size_t step_C = 0;
+    {
+        const size_t per = o.traj_contacts < 2 * N_SHAPES ? 1 : 2; /* as stage 3's models */
+        const size_t C = step_shapes.size() * per, T = (size_t)o.steps, N = C * T;
+        step_C = C;
+        std::vector<dc_contact_model> plain(C), stepm(C);
+        std::vector<double> in(NF * N), dres(NR * N), rres(NR * N), dhist(NH * N), rhist(NH * N);
+        std::vector<int32_t> dires(NI * N), rires(NI * N);
+        for (size_t c = 0; c < C; c++) {
+            const int sh = step_shapes[c % step_shapes.size()];
+            make_model(sh, &plain[c]);
+            step_trajectory(in.data(), C, T, c, &plain[c]);
+            const double dt = in[F_DT * N + c];
+            const int32_t integ = (int32_t)(c % 2);
+            int32_t st = DC_ERR_STEP_UNREACHABLE;
+            /* a model whose e_n the explicit step cannot realise (e_n well below 0.1): redrawn */
+            for (int attempt = 0; attempt < 100 && st == DC_ERR_STEP_UNREACHABLE; attempt++) {
+                if (attempt > 0) make_model(sh, &plain[c]);
+                stepm[c] = plain[c];
+                st = dc_contact_model_set_step(&stepm[c], dt, integ);
+            }
+            if (st != DC_OK || stepm[c].history_len != plain[c].history_len + 1) {
+                fprintf(stderr, "gpu_check: step-exact shape %d: dc_contact_model_set_step status %d, "
+                                "history %u (plain %u)\n", sh, (int)st, stepm[c].history_len,
+                        plain[c].history_len);
+                exit(EXIT_SETUP);
+            }
+        }
+        dc_contact_model *d_step = dev_alloc<dc_contact_model>(C);
+        to_dev(d_step, stepm.data(), C);
+        double *d_in = dev_alloc<double>(NF * N), *d_res = dev_alloc<double>(NR * N),
+               *d_hist = dev_alloc<double>(NH * N);
+        int32_t *d_ires = dev_alloc<int32_t>(NI * N);
+        to_dev(d_in, in.data(), NF * N);
+        const size_t pc = C / 2;
+        const size_t plant = o.plant ? (T / 2) * C + pc : none;
+        const int slot = (int)stepm[pc].history_len - 1;
+        launch(C, StepTrajectoryEach{d_step, d_in, d_hist, d_res, d_ires, C, T, plant, slot});
+        dev_sync();
+        to_host(dres.data(), d_res, NR * N);
+        to_host(dires.data(), d_ires, NI * N);
+        to_host(dhist.data(), d_hist, NH * N);
+        const Side dev{dres.data(), dires.data(), dhist.data()}, ref{rres.data(), rires.data(), rhist.data()};
+        for (size_t c = 0; c < C; c++) {
+            const dc_contact_model *m = &stepm[c];
+            const int k = (int)m->normal.kernel, sl = (int)m->history_len - 1;
+            double h[NH] = {0}, hp[NH] = {0};
+            for (size_t t = 0; t < T; t++) {
+                const size_t j = t * C + c;
+                dc_contact_state s;
+                load_state(in.data(), N, j, &s);
+                const double dt = in[F_DT * N + j];
+                double u = 0.0; /* approach speed (v2 - v1).n */
+                for (int a = 0; a < 3; a++) u += (s.v2[a] - s.v1[a]) * s.n[a];
+                const int onset = h[sl] == 0.0 && s.overlap > 0.0 && u > 0.0 && s.overlap <= u * dt;
+                reference_step(cs, "step-exact trajectories", j, m, step_shapes[c % step_shapes.size()],
+                               in.data(), N, j, h, dev, ref);
+                dc_contact_result rp;
+                const int32_t sp = dc_contact_force(&plain[c], &s, dt, hp, NH, &rp);
+                if (rires[I_STATUS * N + j] != DC_OK || sp != DC_OK) continue;
+                step_integrator[c % 2]++;
+                const int changed = bits_differ(rres[R_FN * N + j], rp.f_n);
+                step_changed += changed;
+                step_k_changed[k] += changed;
+                step_onsets += onset;
+                step_onset_changed += onset && changed;
+                step_k_onset[k] += onset && changed;
+            }
+        }
+        dev_free(d_step);
+        dev_free(d_in);
+        dev_free(d_res);
+        dev_free(d_hist);
+        dev_free(d_ires);
+    }
 
     /* ---- the table */
     /* bytes each timed kernel must move per contact: 20 state doubles read, the history (6) read
      * and written, 10 results written; the hand loop skips the old normal (3 doubles read) */
     const double bytes_entry = (20 + HB + HB + NB) * 8.0, bytes_hand = bytes_entry - 3 * 8.0;
     const double rate_gen = (double)NBn / sec_gen, rate_shaped = (double)NBn / sec_shaped,
-                 rate_hand = (double)NBn / sec_hand;
+                 rate_hand = (double)NBn / sec_hand, rate_step = (double)NBn / sec_step;
+    const double bytes_step = bytes_entry + 2 * 8.0; /* the step-aware slot read and written */
     int coverage_ok = 1;
     for (int s = 0; s < N_SHAPES; s++) coverage_ok &= cb.shape_ok[s] > 0 && ct.shape_ok[s] > 0;
     for (int k = 1; k <= N_KERNELS; k++) coverage_ok &= cn.shape_ok[k] > 0;
+    /* step-exact: every shape it takes ran, and in each of its kernel codes the option changed
+     * onset forces and other steps; both integrators ran */
+    for (int sh : step_shapes) coverage_ok &= cs.shape_ok[sh] > 0;
+    for (int k = 1; k <= N_KERNELS; k++)
+        if (step_kernel(k)) coverage_ok &= step_k_onset[k] > 0 && step_k_changed[k] > step_k_onset[k];
+    coverage_ok &= step_integrator[0] > 0 && step_integrator[1] > 0;
     coverage_ok &= cb.sliding > 0 && cb.rolling > 0 && cb.separated > 0 && cb.sin_branch > 0 &&
                    ct.sliding > 0 && ct.rolling > 0 && ct.separated > 0 && ct.sin_branch > 0 &&
                    cn.dmt_tail > 0 && ct.dmt_tail > 0;
@@ -1070,10 +1279,16 @@ int main(int argc, char **argv) {
            "%ld, errors %ld, sliding %ld, rolling/twisting limit %ld, separated %ld, frame sin branch "
            "%ld, DMT tail %ld |\n", o.traj_contacts, o.steps, ct.compared, ct.differ, ct.ok, ct.errors,
            ct.sliding, ct.rolling, ct.separated, ct.sin_branch, ct.dmt_tail);
-    printf("| timed batch, first pass: generic and shaped entries vs dc_contact_force | %ld | %ld | "
+    printf("| timed batch, first pass: generic, shaped and step-aware entries vs dc_contact_force | %ld | %ld | "
            "hand-written loop within %.2g (relative; same formula if <= 1e-9) |\n",
            bench_compared, bench_diff, hand_rel);
-    printf("| step-exact option | - | - | not yet in the library: nothing compared |\n");
+    printf("| step-exact trajectories: %zu contacts x %ld steps, models made step-aware by "
+           "dc_contact_model_set_step (%zu shapes, velocity Verlet / symplectic Euler) | %ld | %ld | "
+           "ok %ld (VV %ld, SE %ld), errors %ld, onsets %ld (force changed by the option: %ld), "
+           "steps changed by the option %ld, sliding %ld, separated %ld |\n",
+           step_C, o.steps, step_shapes.size(), cs.compared, cs.differ, cs.ok, step_integrator[0],
+           step_integrator[1], cs.errors, step_onsets, step_onset_changed, step_changed, cs.sliding,
+           cs.separated);
     printf("| copy roofline: %s | - | - | %.1f GB/s (read + written) |\n",
            o.cpu_smoke ? "memcpy (CPU stand-in)" : "cudaMemcpy device to device", copy_bw * 1e-9);
     /* the throughput target (a figure to report, not a pass condition of the exit status) */
@@ -1090,12 +1305,16 @@ int main(int argc, char **argv) {
            "of roofline; entries at %.2f (generic) and %.2f (shaped) of it%s |\n", NBn, rate_hand,
            bytes_hand, rate_hand * bytes_hand / copy_bw, rate_gen / rate_hand, rate_shaped / rate_hand,
            unit_note);
+    printf("| Hertz-Mindlin batch, step-aware (dc_contact_model_set_step), dc_contact_force_inline | %zu "
+           "| - | %.3g contacts/s, %.0f B/contact, %.2f of roofline; time per contact %.3f x the plain "
+           "generic entry's%s |\n", NBn, rate_step, bytes_step, rate_step * bytes_step / copy_bw,
+           rate_gen / rate_step, unit_note);
 
-    const long total_cmp = cn.compared + cb.compared + ct.compared + bench_compared;
-    const long total_diff = cn.differ + cb.differ + ct.differ + bench_diff;
-    const Counts *stage[3] = {&cn, &cb, &ct};
-    const char *names[3] = {"normal forces", "contact batch", "trajectories"};
-    for (int s = 0; s < 3; s++) {
+    const long total_cmp = cn.compared + cb.compared + ct.compared + cs.compared + bench_compared;
+    const long total_diff = cn.differ + cb.differ + ct.differ + cs.differ + bench_diff;
+    const Counts *stage[4] = {&cn, &cb, &ct, &cs};
+    const char *names[4] = {"normal forces", "contact batch", "trajectories", "step-exact trajectories"};
+    for (int s = 0; s < 4; s++) {
         if (!stage[s]->differ) continue;
         failed_stages++;
         printf("DIFFERENCES: %s: %ld of %ld; by kernel code:", names[s], stage[s]->differ,
@@ -1108,7 +1327,7 @@ int main(int argc, char **argv) {
         failed_stages++;
         printf("DIFFERENCES: timed batch: %ld of %ld\n", bench_diff, bench_compared);
     }
-    if (o.plant) printf("gpu_check: --plant-ulp: one ulp planted in each of the 3 checked stages\n");
+    if (o.plant) printf("gpu_check: --plant-ulp: one ulp planted in each of the 4 checked stages\n");
     if (!coverage_ok) printf("gpu_check: FAILED: a shape, kernel code or regime was not reached (see the table)\n");
     if (!hand_ok) printf("gpu_check: FAILED: the hand-written loop is not the entries' formula\n");
     printf("gpu_check: %ld values compared, %ld differences (%d stages differ)\n", total_cmp,

@@ -8,7 +8,7 @@
 //! 1. *spin*: the rotation by the mean spin of the two bodies ω̄ = ½ (ω1 + ω2) over the step,
 //!    the rotation vector q = ω̄ dt with its true angle |q| (Rodrigues,
 //!    v' = v + s q×v + c q×(q×v), s = sin|q|/|q|, c = (1 − cos|q|)/|q|², from their Taylor series
-//!    for |q|² < 1e-3, accurate to rounding there, else from sin/cos). For a rigid motion this
+//!    for |q|² < 1e-3, accurate to rounding there, else from our own sin/cos, `numerics::trig`). For a rigid motion this
 //!    *is* the step rotation of the frame, whatever its axis.
 //! 2. *tilt*: the minimal rotation taking the spun old normal R n_old to the current normal n
 //!    (Rodrigues about R n_old × n): the non-rigid remainder (the bodies rolling or sliding over
@@ -43,6 +43,7 @@
 //! to rounding when nothing turned).
 
 use super::vec3::{V3, add, cross, dot, norm2, scale, tangential};
+use crate::numerics::trig::sin_cos;
 
 /// Below this |q|² the Taylor series of s and c (to q⁶) are exact to rounding (the first
 /// omitted terms are q⁸/9! and q⁸/10!, < 3e-18).
@@ -94,11 +95,14 @@ fn rodrigues_coefficients(q2: f64) -> (f64, f64) {
         let c = 0.5 * (1.0 - q2 / 12.0 * (1.0 - q2 / 30.0 * (1.0 - q2 / 56.0)));
         (s, c)
     } else {
+        // sin θ = 2 sin(θ/2) cos(θ/2) and 1 − cos θ = 2 sin²(θ/2) (no cancellation), from one
+        // reduction of θ/2, so that the rotation stays orthogonal to rounding; our own sin and
+        // cos, not libm's, so that the header gives these bits on a GPU too. θ ≥ 2^20 (a spin
+        // no step resolves): NaN, so that `new` finds no carry and the projection alone applies,
+        // as for a normal turned by more than 120°.
         let th = q2.sqrt();
-        let sn = th.sin();
-        // 1 − cos θ = 2 sin²(θ/2) without cancellation.
-        let h = (0.5 * th).sin();
-        (sn / th, 2.0 * h * h / q2)
+        let (sh, ch) = sin_cos(0.5 * th);
+        (2.0 * (sh * ch) / th, 2.0 * (sh * sh) / q2)
     }
 }
 

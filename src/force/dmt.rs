@@ -17,9 +17,11 @@
 //! never clamped (clamping would remove the adhesion): only `DC_END_OVERLAP` is accepted.
 //!
 //! Constants: k = (4/3) E*, c = α √k (0 undamped), h = 2π w. Per contact in contact: 2 square
-//! roots as Hertz; in the tail one `powf`.
+//! roots as Hertz; in the tail one power (`pow_dd`, the library's own: the same bits in the
+//! header and on a GPU).
 
 use super::pair::{Consts, Law, PairModel, Registered, SpecLaw, pick};
+use crate::numerics::pow_dd::pow_dd;
 use crate::powerlaw::alpha_from_e;
 use crate::{EndCriterion, Error};
 
@@ -66,10 +68,14 @@ fn tail(c: &Consts, d: f64, r: f64) -> f64 {
 }
 
 /// The tail's length d_c = (h √r/k)^{2/3} = (3π w √R*/(2E*))^{2/3} [m]: the law's reach
-/// beyond touching (0 for w = 0).
+/// beyond touching (0 for w = 0). The power is the library's own `pow_dd` (the header's
+/// `dc_pow_inline`), not libm's, so that the header gives these bits on a GPU too.
 #[inline(always)]
 pub fn reach(c: &Consts, r: f64) -> f64 {
-    (c.h * r.sqrt() / c.k).powf(2.0 / 3.0)
+    // pow_dd gives a finite number for a NaN argument (r < 0 or NaN in the unchecked force
+    // call): NaN kept, so that the tail gives no force there, as libm's pow did.
+    let x = c.h * r.sqrt() / c.k;
+    if x >= 0.0 { pow_dd(x, 2.0 / 3.0) } else { x }
 }
 
 /// The critical load of the Coulomb limits (see [`Law::critical_load`]): |F + 2 F_po| with the

@@ -9,6 +9,7 @@
 //! * `lagrange8`: 8-point Lagrange stencils for the cumulative integral of equally spaced
 //!   samples (the trajectory's times).
 //! * `series`: the exponential of a power series, Horner evaluation.
+//! * `trig`: sin and cos in plain arithmetic, the same bits in the library and the C header.
 //! * [`taylor`]: Taylor-series (automatic differentiation) building blocks over real or complex
 //!   numbers, for the viscoelastic reference integrator.
 
@@ -37,5 +38,6 @@ pub mod roots;
 pub(crate) mod series;
 pub(crate) mod simd;
 pub mod taylor;
+pub(crate) mod trig;
 
 pub use roots::newton_bracketed;
