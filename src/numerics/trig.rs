@@ -1,8 +1,8 @@
 //! sin x and cos x for the contact frame's rotation by the mean spin ([`crate::contact::frame`]),
 //! in plain + − × and `floor` only: no libm, never contracted in Rust, so that the library and
 //! the C header's twin `dci_sin_cos` give the same bits on every CPU and on a GPU. CUDA's `sin`
-//! is not glibc's: with each side calling its platform's `sin`, the header on an H200 gave
-//! results an ulp or a few from the library's in the rotate carry's large-angle steps
+//! is not glibc's: with each side calling its platform's `sin`, the header on an H200 gives
+//! results one to many ulp from the library's in the rotate carry's large-angle steps
 //! (docs/gpu.md, "With libm on the device").
 //!
 //! * Reduction (Cody–Waite): k = ⌊x·2/π + ½⌋, r = ((x − k P1) − k P2) − k P3 with π/2 =
@@ -18,16 +18,16 @@
 //! * The quadrant k mod 4 selects ±sin r or ±cos r.
 //!
 //! Range: |x| < [`X_MAX`] = 2^19, a chosen bound (the frame rotates by 2x: a step turning it
-//! by 2^20 rad or more is no physical spin; the products k·P1, k·P2 stay exact well beyond it);
-//! there, and for NaN or ±∞,
-//! both results are NaN (the frame then finds no carry: the projection alone applies). Measured error against glibc (tests below): within 1 ulp, also next to
-//! multiples of π/2.
+//! by 2^20 rad or more is no physical spin; the products k·P1, k·P2 stay exact well beyond it).
+//! There, and for NaN or ±∞, both results are NaN (the frame then finds no carry: the
+//! projection alone applies). Measured error against glibc (tests below): within 1 ulp, also
+//! next to multiples of π/2.
 
 /// |x| from which [`sin_cos`] returns NaN.
 pub(crate) const X_MAX: f64 = 524_288.0;
 /// 2/π rounded to double.
 const TWO_OVER_PI: f64 = f64::from_bits(0x3FE4_5F30_6DC9_C883);
-/// π/2 = P1 + P2 + P3 (P1, P2: 33 significant bits).
+/// π/2 = P1 + P2 + P3 (P1, P2: at most 33 significant bits).
 const P1: f64 = f64::from_bits(0x3FF9_21FB_5440_0000);
 const P2: f64 = f64::from_bits(0x3DD0_B461_1A60_0000);
 const P3: f64 = f64::from_bits(0x3BA3_198A_2E03_7073);
