@@ -261,8 +261,11 @@ struct ContactEach {
     }
 };
 
-/* 3. trajectories: thread c runs contact c over T steps (step t is contact t * C + c of the
- * arrays, N = T * C), its history in registers; every step's result and history stored */
+/* 3. and 5. trajectories: thread c runs contact c over T steps (step t is contact t * C + c of
+ * the arrays, N = T * C) with model models[mi[c]] (stage 3) or its own models[c] (mi NULL:
+ * stage 5, each made step-aware for its trajectory's dt), its history in registers; every step's
+ * result and history stored. plant: one ulp on history double `slot` (the tangential spring, or
+ * the step-aware state), carried on. */
 struct TrajectoryEach {
     const dc_contact_model *models;
     const int32_t *mi;
@@ -270,35 +273,10 @@ struct TrajectoryEach {
     double *hist_steps, *res;
     int32_t *ires;
     size_t C, T, plant;
-    GC_DEV void operator()(size_t c) const {
-        const size_t N = C * T;
-        double h[NH];
-        for (int k = 0; k < NH; k++) h[k] = 0.0;
-        for (size_t t = 0; t < T; t++) {
-            const size_t j = t * C + c;
-            dc_contact_state s;
-            load_state(in, N, j, &s);
-            dc_contact_result r;
-            sentinel(&r);
-            const int32_t st = dc_contact_force_inline(&models[mi[c]], &s, in[F_DT * N + j], h, NH, &r);
-            if (j == plant) h[3] = ulp_up(h[3]); /* the tangential spring: carried on */
-            store_result(res, ires, N, j, &r, st);
-            for (int k = 0; k < NH; k++) hist_steps[k * N + j] = h[k];
-        }
-    }
-};
-
-/* 5. step-exact trajectories: as stage 3, but trajectory c has its own model models[c] (made
- * step-aware for that trajectory's dt); plant: one ulp on the step-aware slot (index slot) */
-struct StepTrajectoryEach {
-    const dc_contact_model *models;
-    const double *in;
-    double *hist_steps, *res;
-    int32_t *ires;
-    size_t C, T, plant;
     int slot;
     GC_DEV void operator()(size_t c) const {
         const size_t N = C * T;
+        const dc_contact_model *m = mi ? &models[mi[c]] : &models[c];
         double h[NH];
         for (int k = 0; k < NH; k++) h[k] = 0.0;
         for (size_t t = 0; t < T; t++) {
@@ -307,7 +285,7 @@ struct StepTrajectoryEach {
             load_state(in, N, j, &s);
             dc_contact_result r;
             sentinel(&r);
-            const int32_t st = dc_contact_force_inline(&models[c], &s, in[F_DT * N + j], h, NH, &r);
+            const int32_t st = dc_contact_force_inline(m, &s, in[F_DT * N + j], h, NH, &r);
             if (j == plant) h[slot] = ulp_up(h[slot]);
             store_result(res, ires, N, j, &r, st);
             for (int k = 0; k < NH; k++) hist_steps[k * N + j] = h[k];
@@ -828,6 +806,39 @@ static Options parse(int argc, char **argv) {
     return o;
 }
 
+/* The timed batch's reference: the library's step of each contact from hist0 (H doubles per
+ * contact), its 10 outputs into ref and its history into rhist. */
+static void bench_reference(const dc_contact_model &m, const double *in, const double *hist0, int H,
+                            size_t N, double dt, double *ref, double *rhist) {
+    for (size_t j = 0; j < N; j++) {
+        dc_contact_state s;
+        load_state(in, N, j, &s);
+        double h[NH];
+        for (int k = 0; k < H; k++) h[k] = hist0[k * N + j];
+        dc_contact_result r;
+        if (dc_contact_force(&m, &s, dt, h, (size_t)H, &r) != DC_OK) die("timed batch: a reference contact failed");
+        ref[B_FN * N + j] = r.f_n;
+        for (int k = 0; k < 3; k++) {
+            ref[(B_FORCE + k) * N + j] = r.force[k];
+            ref[(B_T1 + k) * N + j] = r.torque1[k];
+            ref[(B_T2 + k) * N + j] = r.torque2[k];
+        }
+        for (int k = 0; k < H; k++) rhist[k * N + j] = h[k];
+    }
+}
+/* An entry's first pass against the reference, bit for bit (outputs and H history doubles). */
+static void bench_compare(const double *out, const double *dh, const double *ref, const double *rhist,
+                          int H, size_t N, const char *entry, long &differ, long &compared) {
+    for (size_t j = 0; j < N; j++) {
+        int d = 0;
+        for (int f = 0; f < NB; f++) d |= bits_differ(out[f * N + j], ref[f * N + j]);
+        for (int k = 0; k < H; k++) d |= bits_differ(dh[k * N + j], rhist[k * N + j]);
+        if (d && differ < 5) fprintf(stderr, "gpu_check: timed batch (%s entry): contact %zu differs\n", entry, j);
+        differ += d;
+        compared++;
+    }
+}
+
 /* chunk size of the batch checks (device and host buffers reused) */
 static const size_t CHUNK = 1u << 21;
 
@@ -959,7 +970,7 @@ int main(int argc, char **argv) {
         size_t pc = 0;
         while (pc + 1 < C && models[(size_t)mi[pc]].tangential == DC_TANGENTIAL_NONE) pc++;
         const size_t plant = o.plant ? (T / 2) * C + pc : none;
-        launch(C, TrajectoryEach{d_models, d_mi, d_in, d_hist, d_res, d_ires, C, T, plant});
+        launch(C, TrajectoryEach{d_models, d_mi, d_in, d_hist, d_res, d_ires, C, T, plant, 3});
         dev_sync();
         to_host(dres.data(), d_res, NR * N);
         to_host(dires.data(), d_ires, NI * N);
@@ -1036,21 +1047,7 @@ int main(int argc, char **argv) {
         to_dev(d_hm, &hm, 1);
         const BenchArgs a{d_hm, d_in, d_hist, d_out, d_first, dt, N};
         /* the reference: the library from the same history */
-        for (size_t j = 0; j < N; j++) {
-            dc_contact_state s;
-            load_state(in.data(), N, j, &s);
-            double h[HB];
-            for (int k = 0; k < HB; k++) h[k] = hist0[k * N + j];
-            dc_contact_result r;
-            if (dc_contact_force(&hm, &s, dt, h, HB, &r) != DC_OK) die("timed batch: a reference contact failed");
-            ref[B_FN * N + j] = r.f_n;
-            for (int k = 0; k < 3; k++) {
-                ref[(B_FORCE + k) * N + j] = r.force[k];
-                ref[(B_T1 + k) * N + j] = r.torque1[k];
-                ref[(B_T2 + k) * N + j] = r.torque2[k];
-            }
-            for (int k = 0; k < HB; k++) rhist[k * N + j] = h[k];
-        }
+        bench_reference(hm, in.data(), hist0.data(), HB, N, dt, ref.data(), rhist.data());
         /* each kernel once from the starting history, checked; then timed (the history evolving) */
         const BenchGeneric gen{a};
         const BenchShaped shp{a};
@@ -1067,24 +1064,18 @@ int main(int argc, char **argv) {
             to_host(out.data(), d_out, NB * N);
             to_host(dh.data(), d_hist, HB * N);
             if (kind < 2 && first != no_bad) die("timed batch: a device contact returned an error status");
+            if (kind < 2) {
+                bench_compare(out.data(), dh.data(), ref.data(), rhist.data(), HB, N,
+                              kind ? "shaped" : "generic", bench_diff, bench_compared);
+                continue;
+            }
+            /* the hand loop: the same formula, so within a few ulp of the force's size */
             for (size_t j = 0; j < N; j++) {
-                if (kind < 2) {
-                    int d = 0;
-                    for (int f = 0; f < NB; f++) d |= bits_differ(out[f * N + j], ref[f * N + j]);
-                    for (int k = 0; k < HB; k++) d |= bits_differ(dh[k * N + j], rhist[k * N + j]);
-                    if (d && bench_diff < 5)
-                        fprintf(stderr, "gpu_check: timed batch (%s entry): contact %zu differs\n",
-                                kind ? "shaped" : "generic", j);
-                    bench_diff += d;
-                    bench_compared++;
-                } else {
-                    /* the hand loop: the same formula, so within a few ulp of the force's size */
-                    const double scale = fabs(ref[B_FN * N + j]) + 1e-300;
-                    for (int f = 0; f < NB; f++) {
-                        const double e = fabs(out[f * N + j] - ref[f * N + j]) /
-                                         (f < B_T1 ? scale : scale * in[F_R1 * N + j]);
-                        hand_rel = e > hand_rel || e != e ? e : hand_rel;
-                    }
+                const double scale = fabs(ref[B_FN * N + j]) + 1e-300;
+                for (int f = 0; f < NB; f++) {
+                    const double e = fabs(out[f * N + j] - ref[f * N + j]) /
+                                     (f < B_T1 ? scale : scale * in[F_R1 * N + j]);
+                    hand_rel = e > hand_rel || e != e ? e : hand_rel;
                 }
             }
         }
@@ -1102,22 +1093,7 @@ int main(int argc, char **argv) {
         {
             std::vector<double> hist0s(HS * N, 0.0), rhs(HS * N), dhs(HS * N);
             for (size_t q = 0; q < HB * N; q++) hist0s[q] = hist0[q];
-            for (size_t j = 0; j < N; j++) {
-                dc_contact_state s;
-                load_state(in.data(), N, j, &s);
-                double h[HS];
-                for (int k = 0; k < HS; k++) h[k] = hist0s[k * N + j];
-                dc_contact_result r;
-                if (dc_contact_force(&hs, &s, dt, h, HS, &r) != DC_OK)
-                    die("timed batch: a step-aware reference contact failed");
-                ref[B_FN * N + j] = r.f_n;
-                for (int k = 0; k < 3; k++) {
-                    ref[(B_FORCE + k) * N + j] = r.force[k];
-                    ref[(B_T1 + k) * N + j] = r.torque1[k];
-                    ref[(B_T2 + k) * N + j] = r.torque2[k];
-                }
-                for (int k = 0; k < HS; k++) rhs[k * N + j] = h[k];
-            }
+            bench_reference(hs, in.data(), hist0s.data(), HS, N, dt, ref.data(), rhs.data());
             to_dev(d_hist_s, hist0s.data(), HS * N);
             to_dev(d_first, &no_bad, 1);
             launch(N, stp);
@@ -1127,15 +1103,8 @@ int main(int argc, char **argv) {
             to_host(out.data(), d_out, NB * N);
             to_host(dhs.data(), d_hist_s, HS * N);
             if (first != no_bad) die("timed batch: a step-aware device contact returned an error status");
-            for (size_t j = 0; j < N; j++) {
-                int d = 0;
-                for (int f = 0; f < NB; f++) d |= bits_differ(out[f * N + j], ref[f * N + j]);
-                for (int k = 0; k < HS; k++) d |= bits_differ(dhs[k * N + j], rhs[k * N + j]);
-                if (d && bench_diff < 5)
-                    fprintf(stderr, "gpu_check: timed batch (step-aware generic entry): contact %zu differs\n", j);
-                bench_diff += d;
-                bench_compared++;
-            }
+            bench_compare(out.data(), dhs.data(), ref.data(), rhs.data(), HS, N, "step-aware generic",
+                          bench_diff, bench_compared);
         }
         const int reps = o.cpu_smoke ? 1 : 10;
         sec_gen = kernel_seconds(N, gen, reps);
@@ -1206,7 +1175,7 @@ int main(int argc, char **argv) {
         const size_t pc = C / 2;
         const size_t plant = o.plant ? (T / 2) * C + pc : none;
         const int slot = (int)stepm[pc].history_len - 1;
-        launch(C, StepTrajectoryEach{d_step, d_in, d_hist, d_res, d_ires, C, T, plant, slot});
+        launch(C, TrajectoryEach{d_step, nullptr, d_in, d_hist, d_res, d_ires, C, T, plant, slot});
         dev_sync();
         to_host(dres.data(), d_res, NR * N);
         to_host(dires.data(), d_ires, NI * N);

@@ -41,3 +41,14 @@ pub mod taylor;
 pub(crate) mod trig;
 
 pub use roots::newton_bracketed;
+
+/// |got − want| in units of the spacing of doubles at want (the subnormal spacing 2^−1074
+/// below 2^−1022): the error measure of the libm-free kernels' tests (`pow_dd`, `trig`).
+#[cfg(test)]
+pub(crate) fn ulps(got: f64, want: f64) -> f64 {
+    if got == want {
+        return 0.0;
+    }
+    let e = want.abs().log2().floor().max(-1022.0);
+    (got - want).abs() / 2f64.powf(e - 52.0)
+}

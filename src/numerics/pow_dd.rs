@@ -100,6 +100,7 @@ pub(crate) fn pow_dd(x: f64, q: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::numerics::ulps;
 
     /// Deterministic log-uniform samples over [10^lo, 10^hi].
     fn samples(n: usize, lo: f64, hi: f64) -> impl Iterator<Item = f64> {
@@ -111,16 +112,6 @@ mod tests {
             let u = (s >> 11) as f64 / (1u64 << 53) as f64;
             10f64.powf(lo + (hi - lo) * u)
         })
-    }
-
-    /// |got − want| in units of the spacing of doubles at want (the subnormal spacing 2^−1074
-    /// below 2^−1022).
-    fn ulps(got: f64, want: f64) -> f64 {
-        if got == want {
-            return 0.0;
-        }
-        let e = want.abs().log2().floor().max(-1022.0);
-        (got - want).abs() / 2f64.powf(e - 52.0)
     }
 
     #[test]

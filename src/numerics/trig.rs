@@ -88,15 +88,7 @@ pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// |got − want| in units of the spacing of doubles at want.
-    fn ulps(got: f64, want: f64) -> f64 {
-        if got == want {
-            return 0.0;
-        }
-        let e = want.abs().log2().floor().max(-1022.0);
-        (got - want).abs() / 2f64.powf(e - 52.0)
-    }
+    use crate::numerics::ulps;
 
     #[test]
     fn constants_are_what_they_say() {
