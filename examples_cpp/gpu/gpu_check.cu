@@ -722,6 +722,15 @@ static void compare_contact(Counts &c, const char *stage, size_t j, size_t shown
     c.kernel_diff[kernel]++;
 }
 
+/* the device's results, statuses and histories of n contacts, copied into the host buffers of
+ * `host` */
+static void fetch(const Side &host, const double *d_res, const int32_t *d_ires, const double *d_hist,
+                  size_t n) {
+    to_host(host.res, d_res, NR * n);
+    to_host(host.ires, d_ires, NI * n);
+    to_host(host.hist, d_hist, NH * n);
+}
+
 /* the library's step of contact j (its history h in and out), stored in ref, the regimes
  * tallied, compared with the device's */
 static void reference_step(Counts &c, const char *stage, size_t shown, const dc_contact_model *m,
@@ -932,10 +941,8 @@ int main(int argc, char **argv) {
             const size_t plant = o.plant && done == 0 ? n / 3 : none;
             launch(n, ContactEach{d_models, d_mi, d_in, d_hist, d_res, d_ires, n, plant});
             dev_sync();
-            to_host(dres.data(), d_res, NR * n);
-            to_host(dires.data(), d_ires, NI * n);
-            to_host(dhist.data(), d_hist, NH * n);
             const Side dev{dres.data(), dires.data(), dhist.data()}, ref{rres.data(), rires.data(), rhist.data()};
+            fetch(dev, d_res, d_ires, d_hist, n);
             for (size_t j = 0; j < n; j++) {
                 double h[NH];
                 for (int k = 0; k < NH; k++) h[k] = hist0[k * n + j];
@@ -972,10 +979,8 @@ int main(int argc, char **argv) {
         const size_t plant = o.plant ? (T / 2) * C + pc : none;
         launch(C, TrajectoryEach{d_models, d_mi, d_in, d_hist, d_res, d_ires, C, T, plant, 3});
         dev_sync();
-        to_host(dres.data(), d_res, NR * N);
-        to_host(dires.data(), d_ires, NI * N);
-        to_host(dhist.data(), d_hist, NH * N);
         const Side dev{dres.data(), dires.data(), dhist.data()}, ref{rres.data(), rires.data(), rhist.data()};
+        fetch(dev, d_res, d_ires, d_hist, N);
         for (size_t c = 0; c < C; c++) {
             double h[NH] = {0};
             for (size_t t = 0; t < T; t++)
@@ -1177,10 +1182,8 @@ int main(int argc, char **argv) {
         const int slot = (int)stepm[pc].history_len - 1;
         launch(C, TrajectoryEach{d_step, nullptr, d_in, d_hist, d_res, d_ires, C, T, plant, slot});
         dev_sync();
-        to_host(dres.data(), d_res, NR * N);
-        to_host(dires.data(), d_ires, NI * N);
-        to_host(dhist.data(), d_hist, NH * N);
         const Side dev{dres.data(), dires.data(), dhist.data()}, ref{rres.data(), rires.data(), rhist.data()};
+        fetch(dev, d_res, d_ires, d_hist, N);
         for (size_t c = 0; c < C; c++) {
             const dc_contact_model *m = &stepm[c];
             const int k = (int)m->normal.kernel, sl = (int)m->history_len - 1;
