@@ -1247,8 +1247,10 @@ typedef struct dci_kin {
     int wall;
 } dci_kin;
 
+/* stages = 0 (a model with no tangential, rolling or twisting stage): the relative motion of the
+ * contact point (vt, w_roll, w_rel) is left at zero, unread */
 DCI_ALWAYS_INLINE_FN dci_kin dci_kin_of(const dc_contact_state *s, dci_v3 n_old, double dt,
-                                        int32_t carry, dci_frame *frame) {
+                                        int32_t carry, int stages, dci_frame *frame) {
     DCI_NO_CONTRACT
     dci_kin k;
     const dci_v3 n = dci_load3(s->n), v1 = dci_load3(s->v1), v2 = dci_load3(s->v2);
@@ -1261,15 +1263,19 @@ DCI_ALWAYS_INLINE_FN dci_kin dci_kin_of(const dc_contact_state *s, dci_v3 n_old,
     k.a2 = s->r2 - DCI_M(0.5, d);
     const dci_v3 vr = dci_sub(v1, v2);
     k.vn = -dci_dot(vr, n);
-    const dci_v3 arm = k.wall ? dci_scale(k.a1, w1) : dci_add(dci_scale(k.a1, w1), dci_scale(k.a2, w2));
-    const dci_v3 vc = dci_sub(vr, dci_cross(arm, n));
-    k.w_rel = dci_sub(w1, w2);
     k.n = n;
     k.d = d;
     k.r_eff = dci_harmonic(s->r1, s->r2);
     k.m_eff = dci_harmonic(s->m1, s->m2);
-    k.vt = dci_tangential(vc, n);
-    k.w_roll = dci_tangential(k.w_rel, n);
+    if (stages) {
+        const dci_v3 arm = k.wall ? dci_scale(k.a1, w1) : dci_add(dci_scale(k.a1, w1), dci_scale(k.a2, w2));
+        const dci_v3 vc = dci_sub(vr, dci_cross(arm, n));
+        k.w_rel = dci_sub(w1, w2);
+        k.vt = dci_tangential(vc, n);
+        k.w_roll = dci_tangential(k.w_rel, n);
+    } else {
+        k.vt = k.w_roll = k.w_rel = dci_v(0.0, 0.0, 0.0);
+    }
     k.m1 = s->m1;
     k.m2 = s->m2;
     k.r1 = s->r1;
@@ -1828,7 +1834,12 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_sh
     DCI_NO_CONTRACT
     dci_frame frame;
     const dci_v3 n_old = lay.len >= 3 && lay.nrm ? dci_v(h[0], h[1], h[2]) : dci_v(0.0, 0.0, 0.0);
-    const dci_kin k = dci_kin_of(s, n_old, dt, sh.carry, &frame);
+    /* the frame step only where a stage carries a vector spring (tangential, EPSD rolling), as
+     * the library (src/contact/evaluate.rs); the contact point's relative motion only where a
+     * stage reads it (the else branch below) */
+    const int carried = lay.tangential >= 0 || lay.rolling >= 0;
+    const int stages = lay.nrm || sh.rolling != DC_ROLLING_NONE;
+    const dci_kin k = dci_kin_of(s, n_old, dt, carried ? sh.carry : DC_CARRY_PROJECT, stages, &frame);
     const dc_pair *pair = &m->normal;
     /* fe: the force at vn = 0, for Ai's rolling stiffness rule below (same pass, same bits) */
     double fe;
