@@ -8,9 +8,10 @@
  * advances its history). Model as the settled bed of docs/benchmarks.md (E = 5 MPa, nu = 0.3,
  * e = 0.5, Mindlin, mu = 0.5, e_t = 0.5); overlaps up to 1e-5 m of 1 mm spheres, random normals,
  * spins up to 0.5 rad/s.
- * Run: build-bench/bench/contact_inline_bench (cmake target contact_inline_bench). */
+ * Run: cmake --build build --target contact_inline_bench && build/bench/contact_inline_bench. */
 #define _POSIX_C_SOURCE 199309L
 #include <demcontact_inline.h>
+#include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
@@ -94,7 +95,7 @@ int main(void) {
                         dc_contact_result r;
                         const int32_t q = call(v, &m, i, &r);
                         if (q != DC_OK) {
-                            fprintf(stderr, "contact_inline_bench: %s returned %d\n", NAMES[v], q);
+                            fprintf(stderr, "contact_inline_bench: %s returned %" PRId32 "\n", NAMES[v], q);
                             return 1;
                         }
                         sink += r.force[0];
