@@ -375,7 +375,7 @@ inline int32_t eval_as<demcontact_shaped::Generic>(const Model &m, const State &
    what the states are built from, dt and every owned and ghost atom's radius and mass (finite,
    > 0), velocity and spin (finite) (scan_bad_values.h), the history and result checks collected
    and tested after the loop, before LAMMPS integrates. When the scan finds a bad value the pass
-   takes the per-contact checks instead (the same errors, naming the contact, as before). Not
+   takes the per-contact checks instead (the checked entry's errors, naming the contact). Not
    checked up front: the normal and overlap, computed here from positions (coinciding atoms or a
    position not finite give results not finite, caught after the loop). */
 static bool states_ok(const Atom *atom, double dt)
