@@ -92,8 +92,9 @@ pub unsafe extern "C" fn dc_dt_for_accuracy(
 /// dc_dt_for_accuracy for a model made step-aware by dc_contact_model_set_step: the largest
 /// velocity-Verlet step at which the step-aware collision realises e within relative tolerance
 /// `tol` at every contact-onset phase (64 phases), same arguments and meaning. Much larger than
-/// the plain answer: about t_H/20 for tol = 1.5e-2 at e = 0.1, where the plain model needs a
-/// step some 20 times smaller (t_H: the elastic contact duration at v0). Searched on steps t_H/N,
+/// the plain answer: about t_H/11 for tol = 1.5e-2 at e = 0.1 (Hertz, v0 = 1 m/s), where the
+/// plain model needs a step some 18 times smaller (t_H: the elastic contact duration at v0;
+/// docs/timestep.md, "The step a tolerance allows"). Searched on steps t_H/N,
 /// N >= 10 (t_H/10 is returned when it passes: the correction is not designed beyond it); about
 /// 0.1-1 s of set-up work; allocation-free. An undamped law (e = 1) gets dc_dt_for_accuracy's
 /// answer. e -> 0 with DC_END_OVERLAP (near-critical damping) costs more: about 0.6 s at
