@@ -1836,7 +1836,7 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_sh
     const dci_v3 n_old = lay.len >= 3 && lay.nrm ? dci_v(h[0], h[1], h[2]) : dci_v(0.0, 0.0, 0.0);
     /* the frame step only where a stage carries a vector spring (tangential, EPSD rolling), as
      * the library (src/contact/evaluate.rs); the contact point's relative motion only where a
-     * stage reads it (the else branch below; the library computes it always, unread there) */
+     * stage reads it (the stages branch below; the library computes it always, unread there) */
     const int carried = lay.tangential >= 0 || lay.rolling >= 0;
     const int stages = lay.nrm || sh.rolling != DC_ROLLING_NONE;
     const dci_kin k = dci_kin_of(s, n_old, dt, carried ? sh.carry : DC_CARRY_PROJECT, stages, &frame);
@@ -1863,7 +1863,7 @@ DCI_ALWAYS_INLINE_FN void dci_contact_evaluate(const dc_contact_model *m, dci_sh
         for (int i = 0; i < lay.len; i++) h[i] = 0.0;
         if (lay.nstate >= 0) h[lay.nstate] = keep;
         force = dci_normal_vector(f, k.n);
-    } else if (!lay.nrm && sh.rolling == DC_ROLLING_NONE) {
+    } else if (!stages) {
         force = dci_normal_vector(f, k.n);
     } else {
         if (lay.nrm) {
